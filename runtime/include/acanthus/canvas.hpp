@@ -1,0 +1,55 @@
+// Drawing for %draw bodies and the default renderer. Cairo underneath; one path for all formats.
+#pragma once
+
+#include <acanthus/proxy.hpp>
+
+typedef struct _cairo cairo_t;
+
+namespace acanthus {
+
+struct Color {
+    double r = 0, g = 0, b = 0, a = 1;
+};
+
+// Colour wheel: t in [0, 1) goes red, yellow, green, cyan, blue, magenta (wraps).
+Color hue(double t, double saturation = 0.85, double value = 0.9);
+// Parses "#rgb", "#rrggbb", "#rrggbbaa", "none" / "transparent", or a CSS colour name.
+// Throws InputError on a bad string.
+Color parse_color(const std::string& text);
+
+class Canvas {
+public:
+    // Draws into `cr` (not owned). Coordinates are the region's user units.
+    explicit Canvas(cairo_t* cr);
+
+    void set_color(double r, double g, double b, double a = 1.0);
+    void set_color(Color c);
+    void set_line_width(double w);
+    double line_width() const;
+
+    void move_to(Point p);
+    void line_to(Point p);
+    void curve_to(Point c1, Point c2, Point p);
+    void arc(Point center, double radius, double start, double end);
+    void close_path();
+    void fill();
+    void stroke();
+    // Adds the proxy's outline to the path and fills or strokes it.
+    void fill(const Proxy& proxy);
+    void stroke(const Proxy& proxy);
+    void fill_circle(Point center, double radius);
+    void fill_circle(Point center, double radius, Color color);
+    // Appends the proxy's geometry to the current path.
+    void add_proxy(const Proxy& proxy);
+
+    void save();
+    void restore();
+
+    // The escape hatch: the underlying Cairo context.
+    cairo_t* cairo() { return cr_; }
+
+private:
+    cairo_t* cr_;
+};
+
+}  // namespace acanthus

@@ -1,0 +1,87 @@
+// The growth engine of Wong et al. section 4.1: largest empty circle, candidate parents, rules.
+#pragma once
+
+#include <acanthus/pattern.hpp>
+#include <acanthus/region.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace acanthus {
+
+struct GrowthOptions {
+    int resolution = 512;          // render buffer pixels on the longer side of R's bounds
+    double epsilon = -1;           // candidate-parent distance; < 0 means 2 pixels
+    double min_radius = -1;        // smallest empty circle; < 0 means 1 pixel
+    long max_elements = 1000000;
+    long max_iterations = 10000000;
+    double time_limit = 0;         // seconds of growth; 0 means none
+    bool reference_engine = false; // recompute the whole distance field every iteration
+    std::vector<Point> seeds;      // empty: centre of the largest inscribed circle
+    std::uint64_t rng_seed = 1;
+};
+
+// Pixel grid over the region: pixel (i, j) covers [x0 + i*size, x0 + (i+1)*size) horizontally.
+struct GridFrame {
+    double x0 = 0, y0 = 0, pixel = 1;
+    int width = 0, height = 0;
+    Point center_of(int i, int j) const { return {x0 + (i + 0.5) * pixel, y0 + (j + 0.5) * pixel}; }
+};
+
+// One iteration as Figure 8 shows it (built only for the iteration asked for).
+struct DebugFrame {
+    long iteration = 0;
+    GridFrame grid;
+    std::vector<std::uint8_t> occupancy;  // width*height; 0 free, 1 boundary, 2 element
+    std::vector<Circle> eligible;         // candidate circles that could be chosen
+    std::vector<Circle> excluded;         // candidates rejected by the exclude list
+    std::optional<Circle> chosen;         // C
+    std::vector<const Element*> candidates;  // elements within epsilon of C, tried in order
+    std::vector<const Element*> placed;      // elements before this iteration
+    std::vector<const Element*> added;       // children committed in this iteration
+};
+
+struct RuleStats {
+    long successes = 0;
+    long failures = 0;
+};
+
+struct GrowthStats {
+    long iterations = 0;
+    std::vector<RuleStats> rules;  // parallel to Pattern::rules
+    long exclude_points = 0;       // size of the exclude list at the end
+    double seconds = 0;            // growth time
+    std::string stop_reason;       // "exhausted", "max-elements", "max-iterations", "time-limit"
+};
+
+class GrowthEngine {
+public:
+    GrowthEngine(const Pattern& pattern, const Region& region, GrowthOptions options);
+    ~GrowthEngine();
+    GrowthEngine(const GrowthEngine&) = delete;
+    GrowthEngine& operator=(const GrowthEngine&) = delete;
+
+    // Throws InputError (seed outside R) or RuleFailure.
+    void run();
+
+    // Called with the Figure 8 picture of iteration `debug_iteration` (1-based).
+    void on_debug_frame(long debug_iteration, std::function<void(const DebugFrame&)> callback);
+    // Called after every `every`-th iteration with the placed elements (growth frames).
+    void on_frame(long every, std::function<void(long iteration, const std::vector<const Element*>&)> callback);
+    // Called about every `every` iterations for progress lines.
+    void on_progress(std::function<void(long iteration, long elements)> callback);
+
+    // Placed elements in placement order (seeds first); owned by the engine.
+    std::vector<const Element*> elements() const;
+    const GrowthStats& stats() const;
+    const GridFrame& grid() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace acanthus

@@ -1,0 +1,61 @@
+// The compiled form of a rule file: element types, rules, parameters, %exhausted.
+#pragma once
+
+#include <acanthus/element.hpp>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace acanthus {
+
+class RuleCall;
+
+enum Result { FAILURE = 0, SUCCESS = 1 };
+enum Flow { STOP = 0, CONTINUE = 1 };
+
+struct RuleInfo {
+    std::string name;                // "flower --> stem flower"
+    int line = 0;                    // line of %rule in `file`
+    std::string file;                // rule file the rule came from (imports keep their own)
+    const ElementType* parent = nullptr;
+    std::vector<const ElementType*> children;  // static children, in order
+    Result (*body)(RuleCall&) = nullptr;
+};
+
+struct ParamInfo {
+    std::string name;
+    std::string type;          // "int", "double", "bool", "std::string"
+    std::string default_text;  // as written in the rule file
+    int line = 0;
+    // Parses `text` into the parameter; false with `error` set on a bad value.
+    bool (*assign)(std::string_view text, std::string& error) = nullptr;
+    std::string (*current)() = nullptr;
+};
+
+struct Pattern {
+    std::string name;          // rule file stem, e.g. "flowers"
+    std::string file;          // rule file path as given to the compiler
+    std::vector<const ElementType*> types;
+    const ElementType* seed = nullptr;
+    std::vector<RuleInfo> rules;          // file order, imports where %import stands
+    std::vector<ParamInfo> params;
+    Flow (*exhausted)() = nullptr;        // null means STOP
+    int exhausted_line = 0;
+};
+
+// Parameter parsing used by generated assign functions.
+bool parse_param(std::string_view text, int& out, std::string& error);
+bool parse_param(std::string_view text, long& out, std::string& error);
+bool parse_param(std::string_view text, double& out, std::string& error);
+bool parse_param(std::string_view text, float& out, std::string& error);
+bool parse_param(std::string_view text, bool& out, std::string& error);
+bool parse_param(std::string_view text, std::string& out, std::string& error);
+std::string format_param(int v);
+std::string format_param(long v);
+std::string format_param(double v);
+std::string format_param(float v);
+std::string format_param(bool v);
+std::string format_param(const std::string& v);
+
+}  // namespace acanthus

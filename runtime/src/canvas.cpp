@@ -1,0 +1,128 @@
+// Canvas: the drawing surface of %draw bodies and of the default styles, a thin layer over Cairo.
+#include <acanthus/canvas.hpp>
+
+#include <cairo.h>
+
+#include <cmath>
+
+namespace acanthus {
+
+namespace {
+
+// A point proxy has no extent; it is shown as a dot this many line widths in radius.
+constexpr double point_dot_radius = 1.5;
+
+}  // namespace
+
+Canvas::Canvas(cairo_t* cr) : cr_(cr) {}
+
+void Canvas::set_color(double r, double g, double b, double a) {
+    cairo_set_source_rgba(cr_, r, g, b, a);
+}
+
+void Canvas::set_color(Color c) { cairo_set_source_rgba(cr_, c.r, c.g, c.b, c.a); }
+
+void Canvas::set_line_width(double w) { cairo_set_line_width(cr_, w); }
+
+double Canvas::line_width() const { return cairo_get_line_width(cr_); }
+
+void Canvas::move_to(Point p) { cairo_move_to(cr_, p.x, p.y); }
+
+void Canvas::line_to(Point p) { cairo_line_to(cr_, p.x, p.y); }
+
+void Canvas::curve_to(Point c1, Point c2, Point p) {
+    cairo_curve_to(cr_, c1.x, c1.y, c2.x, c2.y, p.x, p.y);
+}
+
+// Angles grow from +x towards +y, the same sense as Direction and ArcProxy (y points down).
+void Canvas::arc(Point center, double radius, double start, double end) {
+    cairo_arc(cr_, center.x, center.y, radius, start, end);
+}
+
+void Canvas::close_path() { cairo_close_path(cr_); }
+
+void Canvas::fill() { cairo_fill(cr_); }
+
+void Canvas::stroke() { cairo_stroke(cr_); }
+
+void Canvas::fill(const Proxy& proxy) {
+    add_proxy(proxy);
+    cairo_fill(cr_);
+}
+
+void Canvas::stroke(const Proxy& proxy) {
+    add_proxy(proxy);
+    // A point has no outline to stroke: its dot is filled instead.
+    if (proxy.kind() == ProxyKind::point)
+        cairo_fill(cr_);
+    else
+        cairo_stroke(cr_);
+}
+
+void Canvas::fill_circle(Point center, double radius) {
+    cairo_new_sub_path(cr_);
+    cairo_arc(cr_, center.x, center.y, radius, 0, 2 * M_PI);
+    cairo_close_path(cr_);
+    cairo_fill(cr_);
+}
+
+void Canvas::fill_circle(Point center, double radius, Color color) {
+    cairo_save(cr_);
+    set_color(color);
+    fill_circle(center, radius);
+    cairo_restore(cr_);
+}
+
+// Unset or non-finite proxies add nothing: NaN coordinates would corrupt Cairo's fixed-point path.
+void Canvas::add_proxy(const Proxy& proxy) {
+    if (!proxy.finite()) return;
+    switch (proxy.kind()) {
+        case ProxyKind::point: {
+            const auto& p = static_cast<const PointProxy&>(proxy);
+            cairo_new_sub_path(cr_);
+            cairo_arc(cr_, p.x, p.y, point_dot_radius * line_width(), 0, 2 * M_PI);
+            cairo_close_path(cr_);
+            break;
+        }
+        case ProxyKind::circle: {
+            const auto& c = static_cast<const CircleProxy&>(proxy);
+            cairo_new_sub_path(cr_);
+            cairo_arc(cr_, c.center.x, c.center.y, std::abs(c.radius), 0, 2 * M_PI);
+            cairo_close_path(cr_);
+            break;
+        }
+        case ProxyKind::arc: {
+            const auto& a = static_cast<const ArcProxy&>(proxy);
+            cairo_new_sub_path(cr_);
+            cairo_arc(cr_, a.center.x, a.center.y, std::abs(a.radius), a.start, a.end);
+            break;
+        }
+        case ProxyKind::linesegment: {
+            const auto& l = static_cast<const LineSegmentProxy&>(proxy);
+            cairo_move_to(cr_, l.p0.x, l.p0.y);
+            cairo_line_to(cr_, l.p1.x, l.p1.y);
+            break;
+        }
+        case ProxyKind::bezier: {
+            const auto& b = static_cast<const BezierProxy&>(proxy);
+            cairo_move_to(cr_, b.c[0].x, b.c[0].y);
+            cairo_curve_to(cr_, b.c[1].x, b.c[1].y, b.c[2].x, b.c[2].y, b.c[3].x, b.c[3].y);
+            break;
+        }
+        case ProxyKind::polygon: {
+            const auto& poly = static_cast<const PolygonProxy&>(proxy);
+            if (poly.points.empty()) break;
+            cairo_move_to(cr_, poly.points[0].x, poly.points[0].y);
+            for (std::size_t i = 1; i < poly.points.size(); ++i)
+                cairo_line_to(cr_, poly.points[i].x, poly.points[i].y);
+            cairo_close_path(cr_);
+            break;
+        }
+    }
+}
+
+void Canvas::save() { cairo_save(cr_); }
+
+void Canvas::restore() { cairo_restore(cr_); }
+
+}  // namespace acanthus
