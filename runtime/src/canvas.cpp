@@ -1,8 +1,7 @@
 // Canvas: the drawing surface of %draw bodies and of the default styles, a thin layer over Cairo.
-#include <acanthus/canvas.hpp>
-
 #include <cairo.h>
 
+#include <acanthus/canvas.hpp>
 #include <cmath>
 
 namespace acanthus {

@@ -1,7 +1,6 @@
 // Colours for %draw bodies and the renderer: the hue wheel and CSS-style colour strings.
 #include <acanthus/canvas.hpp>
 #include <acanthus/error.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -21,12 +20,18 @@ Color hue(double t, double saturation, double value) {
     double f = h - sector;
     double p = v * (1 - s), q = v * (1 - s * f), u = v * (1 - s * (1 - f));
     switch (sector) {
-        case 0: return {v, u, p, 1};
-        case 1: return {q, v, p, 1};
-        case 2: return {p, v, u, 1};
-        case 3: return {p, q, v, 1};
-        case 4: return {u, p, v, 1};
-        default: return {v, p, q, 1};
+        case 0:
+            return {v, u, p, 1};
+        case 1:
+            return {q, v, p, 1};
+        case 2:
+            return {p, v, u, 1};
+        case 3:
+            return {p, q, v, 1};
+        case 4:
+            return {u, p, v, 1};
+        default:
+            return {v, p, q, 1};
     }
 }
 
@@ -39,18 +44,15 @@ struct NamedColor {
 
 // The 16 basic CSS colours, their common aliases and a few frequently used extended names.
 constexpr std::array<NamedColor, 38> named_colors{{
-    {"black", 0x000000},     {"silver", 0xc0c0c0},     {"gray", 0x808080},
-    {"grey", 0x808080},      {"white", 0xffffff},      {"maroon", 0x800000},
-    {"red", 0xff0000},       {"purple", 0x800080},     {"fuchsia", 0xff00ff},
-    {"magenta", 0xff00ff},   {"green", 0x008000},      {"lime", 0x00ff00},
-    {"olive", 0x808000},     {"yellow", 0xffff00},     {"navy", 0x000080},
-    {"blue", 0x0000ff},      {"teal", 0x008080},       {"aqua", 0x00ffff},
-    {"cyan", 0x00ffff},      {"orange", 0xffa500},     {"brown", 0xa52a2a},
-    {"pink", 0xffc0cb},      {"gold", 0xffd700},       {"beige", 0xf5f5dc},
-    {"ivory", 0xfffff0},     {"linen", 0xfaf0e6},      {"wheat", 0xf5deb3},
-    {"tan", 0xd2b48c},       {"khaki", 0xf0e68c},      {"indigo", 0x4b0082},
-    {"violet", 0xee82ee},    {"crimson", 0xdc143c},    {"darkgreen", 0x006400},
-    {"darkblue", 0x00008b},  {"darkred", 0x8b0000},    {"lightgray", 0xd3d3d3},
+    {"black", 0x000000},     {"silver", 0xc0c0c0},   {"gray", 0x808080},    {"grey", 0x808080},
+    {"white", 0xffffff},     {"maroon", 0x800000},   {"red", 0xff0000},     {"purple", 0x800080},
+    {"fuchsia", 0xff00ff},   {"magenta", 0xff00ff},  {"green", 0x008000},   {"lime", 0x00ff00},
+    {"olive", 0x808000},     {"yellow", 0xffff00},   {"navy", 0x000080},    {"blue", 0x0000ff},
+    {"teal", 0x008080},      {"aqua", 0x00ffff},     {"cyan", 0x00ffff},    {"orange", 0xffa500},
+    {"brown", 0xa52a2a},     {"pink", 0xffc0cb},     {"gold", 0xffd700},    {"beige", 0xf5f5dc},
+    {"ivory", 0xfffff0},     {"linen", 0xfaf0e6},    {"wheat", 0xf5deb3},   {"tan", 0xd2b48c},
+    {"khaki", 0xf0e68c},     {"indigo", 0x4b0082},   {"violet", 0xee82ee},  {"crimson", 0xdc143c},
+    {"darkgreen", 0x006400}, {"darkblue", 0x00008b}, {"darkred", 0x8b0000}, {"lightgray", 0xd3d3d3},
     {"lightgrey", 0xd3d3d3}, {"darkgray", 0xa9a9a9},
 }};
 
@@ -72,10 +74,12 @@ Color from_rgb(unsigned rgb) {
 }  // namespace
 
 Color parse_color(const std::string& text) {
-    std::string s;
-    for (char c : text)
-        if (!std::isspace(static_cast<unsigned char>(c)))
-            s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    // Surrounding blanks are forgiven (shell quoting); blanks inside are not.
+    std::size_t begin = 0, end = text.size();
+    while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
+    while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+    std::string s = text.substr(begin, end - begin);
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (s == "none" || s == "transparent") return {0, 0, 0, 0};
     if (!s.empty() && s[0] == '#') {
         std::string_view hex = std::string_view(s).substr(1);

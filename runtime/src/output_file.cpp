@@ -1,12 +1,11 @@
 // Atomic output: temporary file in the target's directory, then rename(2).
 #include "output_file.hpp"
 
-#include <acanthus/error.hpp>
-
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <acanthus/error.hpp>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>

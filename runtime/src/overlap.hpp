@@ -14,6 +14,8 @@ bool overlaps(const Proxy& a, const Proxy& b, double tolerance);
 // True when any part of the proxy lies outside the region (beyond tolerance) or crosses its
 // boundary.
 bool leaves_region(const Proxy& p, const Region& region, double tolerance);
+// The same against the region's internal paths (tests build a RegionData directly).
+bool leaves_region(const Proxy& p, const detail::RegionData& region, double tolerance);
 // Distance from a point to the proxy (0 inside an area proxy).
 double distance_to(const Proxy& p, Point q);
 

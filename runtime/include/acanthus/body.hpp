@@ -29,6 +29,7 @@ using acanthus::Rect;
 using acanthus::Vector;
 using acanthus::distance;
 using acanthus::hue;
+using acanthus::parse_color;
 using acanthus::lerp;
 using acanthus::midpoint;
 using acanthus::Result;

@@ -1,0 +1,145 @@
+#include "build_command.hpp"
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "output_file.hpp"
+#include "process.hpp"
+
+namespace acanthus {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string compiler(const Toolchain& toolchain, const BuildOptions& options) {
+    if (!options.cxx.empty()) return options.cxx;
+    if (const char* env = std::getenv("CXX"); env && *env) return env;
+    return toolchain.default_cxx.empty() ? "c++" : toolchain.default_cxx;
+}
+
+// FNV-1a, 64 bit: a cache key, not a security boundary.
+class Hash {
+  public:
+    void add(std::string_view s) {
+        for (char c : s) {
+            state_ ^= static_cast<unsigned char>(c);
+            state_ *= 0x100000001b3ULL;
+        }
+        state_ ^= 0xff;  // separates fields
+        state_ *= 0x100000001b3ULL;
+    }
+    std::string hex() const {
+        static const char digits[] = "0123456789abcdef";
+        std::string out(16, '0');
+        for (int i = 0; i < 16; ++i) out[15 - i] = digits[(state_ >> (4 * i)) & 15];
+        return out;
+    }
+
+  private:
+    std::uint64_t state_ = 0xcbf29ce484222325ULL;
+};
+
+// Path, size and modification time: changes whenever the library is rebuilt.
+std::string file_identity(const std::string& path) {
+    if (path.empty()) return "-";
+    std::error_code ec;
+    auto size = fs::file_size(path, ec);
+    auto time = fs::last_write_time(path, ec);
+    return path + ":" + std::to_string(size) + ":" +
+           std::to_string(time.time_since_epoch().count());
+}
+
+}  // namespace
+
+std::vector<std::string> compile_command(const Toolchain& toolchain, const BuildOptions& options,
+                                         const std::string& source, const std::string& executable) {
+    std::vector<std::string> cmd{compiler(toolchain, options), "-std=c++20",
+                                 "-O" + options.optimization};
+    for (const std::string& dir : toolchain.include_dirs) cmd.push_back("-I" + dir);
+    cmd.insert(cmd.end(), {source, "-o", executable, "-Wl,--start-group"});
+    if (!toolchain.stdlib_library.empty()) cmd.push_back(toolchain.stdlib_library);
+    cmd.push_back(toolchain.runtime_library);
+    cmd.push_back("-Wl,--end-group");
+    cmd.insert(cmd.end(), toolchain.link_flags.begin(), toolchain.link_flags.end());
+    return cmd;
+}
+
+bool build_executable(const Toolchain& toolchain, const BuildOptions& options,
+                      const std::string& stem, const std::string& cpp,
+                      const std::string& executable, std::string& error) {
+    std::error_code ec;
+    if (!fs::exists(toolchain.runtime_library, ec)) {
+        error = "the Acanthus runtime library '" + toolchain.runtime_library +
+                "' does not exist (build the 'acanthus_runtime' target first)";
+        return false;
+    }
+    std::string dir_template = (fs::temp_directory_path(ec) / "acanthus-build.XXXXXX").string();
+    if (!mkdtemp(dir_template.data())) {
+        error = "cannot create a temporary directory";
+        return false;
+    }
+    fs::path work(dir_template);
+    std::string source = (work / (stem + ".cpp")).string();
+    bool ok = write_file_atomically(source, cpp, error);
+    std::string temp;
+    if (ok) {
+        temp = temporary_sibling(executable, error);
+        ok = !temp.empty();
+    }
+    if (ok) {
+        std::vector<std::string> cmd = compile_command(toolchain, options, source, temp);
+        int status = run_process(cmd, error);
+        if (status != 0) {
+            if (status > 0)
+                error = "the C++ compiler failed (exit status " + std::to_string(status) + ")";
+            ok = false;
+        }
+    }
+    if (ok && std::rename(temp.c_str(), executable.c_str()) != 0) {
+        error = "cannot write '" + executable + "'";
+        ok = false;
+    }
+    if (!ok) remove_if_present(temp);
+    fs::remove_all(work, ec);
+    return ok;
+}
+
+std::string cache_directory() {
+    if (const char* dir = std::getenv("ACANTHUS_CACHE_DIR"); dir && *dir) return dir;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
+        return (fs::path(xdg) / "acanthus").string();
+    }
+    if (const char* home = std::getenv("HOME"); home && *home) {
+        return (fs::path(home) / ".cache" / "acanthus").string();
+    }
+    return (fs::temp_directory_path() / "acanthus-cache").string();
+}
+
+bool cached_executable(const Toolchain& toolchain, const BuildOptions& options,
+                       const std::string& stem, const std::string& cpp, std::string& executable,
+                       std::string& error) {
+    Hash hash;
+    hash.add(cpp);
+    for (const std::string& part : compile_command(toolchain, options, "SOURCE", "EXECUTABLE")) {
+        hash.add(part);
+    }
+    hash.add(file_identity(toolchain.runtime_library));
+    hash.add(file_identity(toolchain.stdlib_library));
+    fs::path dir(cache_directory());
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) {
+        error = "cannot create the cache directory '" + dir.string() + "': " + ec.message();
+        return false;
+    }
+    executable = (dir / (stem + "-" + hash.hex())).string();
+    if (access(executable.c_str(), X_OK) == 0) return true;
+    return build_executable(toolchain, options, stem, cpp, executable, error);
+}
+
+}  // namespace acanthus

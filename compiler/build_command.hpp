@@ -1,0 +1,35 @@
+// `acanthus build` and `acanthus run`: generated C++ -> executable with the system compiler,
+// and the content-addressed cache `run` uses.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "toolchain.hpp"
+
+namespace acanthus {
+
+struct BuildOptions {
+    std::string cxx;                 // empty: $CXX, then the compiler Acanthus was built with
+    std::string optimization = "2";  // -O LEVEL
+};
+
+// The compiler command line that turns `source` into `executable`.
+std::vector<std::string> compile_command(const Toolchain& toolchain, const BuildOptions& options,
+                                         const std::string& source, const std::string& executable);
+
+// Compiles `cpp` (generated from `stem`.acr) into `executable`, atomically. The compiler's
+// messages go to stderr. False with `error` set when compiling fails.
+bool build_executable(const Toolchain& toolchain, const BuildOptions& options,
+                      const std::string& stem, const std::string& cpp,
+                      const std::string& executable, std::string& error);
+
+// The executable `run` uses for `cpp`: <cache>/<stem>-<hash>, built when missing.
+bool cached_executable(const Toolchain& toolchain, const BuildOptions& options,
+                       const std::string& stem, const std::string& cpp, std::string& executable,
+                       std::string& error);
+
+// $ACANTHUS_CACHE_DIR, else $XDG_CACHE_HOME/acanthus, else ~/.cache/acanthus.
+std::string cache_directory();
+
+}  // namespace acanthus

@@ -1,0 +1,31 @@
+#include "compilation.hpp"
+
+#include <ostream>
+
+#include "diagnostics.hpp"
+#include "import_loader.hpp"
+#include "semantic_checker.hpp"
+
+namespace acanthus {
+
+bool compile_rule_file(const CompileRequest& request, bool generate_code, std::string& cpp,
+                       std::ostream& diagnostics_out) {
+    SourceFiles files;
+    Diagnostics diagnostics(files);
+    ImportLoader loader(files, diagnostics, request.include_dirs, request.stdlib_dirs);
+    std::string error;
+    if (!loader.load(request.input, error)) {
+        diagnostics_out << "acanthus: error: cannot read '" << request.input << "': " << error
+                        << '\n';
+        return false;
+    }
+    PatternModel model = check_program(loader.program(), files, diagnostics);
+    if (diagnostics.error_count() > 0) {
+        diagnostics.print(diagnostics_out);
+        return false;
+    }
+    if (generate_code) cpp = generate_cpp(model, files, request.generate);
+    return true;
+}
+
+}  // namespace acanthus

@@ -1,0 +1,24 @@
+// One run of the front end and code generator over a rule file: load with imports, check,
+// generate. Diagnostics are printed to `diagnostics_out`.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "code_generator.hpp"
+
+namespace acanthus {
+
+struct CompileRequest {
+    std::string input;                      // rule file path as given
+    std::vector<std::string> include_dirs;  // -I, in order
+    std::vector<std::string> stdlib_dirs;   // searched after the -I directories
+    GenerateOptions generate;
+};
+
+// True with `cpp` set when the rule file has no errors. `generate_code` false only checks.
+bool compile_rule_file(const CompileRequest& request, bool generate_code, std::string& cpp,
+                       std::ostream& diagnostics_out);
+
+}  // namespace acanthus

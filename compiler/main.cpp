@@ -1,0 +1,167 @@
+// acanthus: compiles rule files (.acr) to C++, checks them, builds and runs them.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+
+#include "build_command.hpp"
+#include "compilation.hpp"
+#include "output_file.hpp"
+#include "toolchain.hpp"
+#include "toolchain_config.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using acanthus::BuildOptions;
+using acanthus::CompileRequest;
+using acanthus::Toolchain;
+
+constexpr int kBadInput = 1;
+constexpr int kBadUsage = 2;
+
+std::string stem_of(const std::string& path) {
+    std::string stem = fs::path(path).stem().string();
+    return stem.empty() ? "pattern" : stem;
+}
+
+CompileRequest make_request(const std::string& input, const std::vector<std::string>& includes,
+                            const Toolchain& toolchain) {
+    CompileRequest r;
+    r.input = input;
+    r.include_dirs = includes;
+    r.stdlib_dirs = toolchain.stdlib_dirs;
+    return r;
+}
+
+int fail(const std::string& message) {
+    std::cerr << "acanthus: error: " << message << '\n';
+    return kBadInput;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "acanthus: the Acanthus rule compiler.\n"
+        "Compiles a rule file (.acr) to C++, checks it, builds it into a program or runs it."};
+    app.set_version_flag("--version", std::string("acanthus ") + ACANTHUS_VERSION_STRING);
+    app.require_subcommand(1);
+
+    std::string input, output;
+    std::vector<std::string> includes;
+    bool no_lines = false, no_main = false;
+    BuildOptions build_options;
+
+    auto* compile = app.add_subcommand("compile", "Compile a rule file to one C++ file");
+    compile->add_option("file", input, "Rule file (.acr)")->required();
+    compile->add_option("-o,--output", output,
+                        "Output C++ file ('-' for stdout; default: FILE's stem + .cpp)");
+    compile->add_option("-I", includes, "Directory searched by %import (repeatable, in order)")
+        ->allow_extra_args(false);
+    compile->add_flag("--no-line-directives", no_lines, "Do not emit #line directives");
+    compile->add_flag("--no-main", no_main, "Export acanthus_pattern() instead of main()");
+
+    auto* check = app.add_subcommand("check", "Check a rule file and report every error");
+    check->add_option("file", input, "Rule file (.acr)")->required();
+    check->add_option("-I", includes, "Directory searched by %import (repeatable, in order)")
+        ->allow_extra_args(false);
+
+    auto* build = app.add_subcommand("build", "Build a rule file into an executable program");
+    build->add_option("file", input, "Rule file (.acr)")->required();
+    build->add_option("-o,--output", output, "Executable to write (default: FILE's stem)");
+    build->add_option("-I", includes, "Directory searched by %import (repeatable, in order)")
+        ->allow_extra_args(false);
+    build->add_option("--cxx", build_options.cxx,
+                      "C++ compiler (default: $CXX, then the one Acanthus was built with)");
+    build->add_option("-O", build_options.optimization, "Optimization level (default 2)");
+
+    auto* run = app.add_subcommand(
+        "run",
+        "Build a rule file (cached by content) and run it; arguments after FILE go to the program");
+    run->add_option("-I", includes, "Directory searched by %import (repeatable, in order)")
+        ->allow_extra_args(false);
+    run->add_option("--cxx", build_options.cxx, "C++ compiler");
+    run->add_option("-O", build_options.optimization, "Optimization level (default 2)");
+    run->prefix_command();
+    run->footer(
+        "Usage: acanthus run [-I DIR]... [--cxx CXX] [-O LEVEL] FILE.acr [program options...]");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : kBadUsage;
+    }
+
+    static const std::string levels[] = {"0", "1", "2", "3", "s", "g", "fast", "z"};
+    if (std::find(std::begin(levels), std::end(levels), build_options.optimization) ==
+        std::end(levels)) {
+        std::cerr << "acanthus: error: bad optimization level '" << build_options.optimization
+                  << "' (use 0, 1, 2, 3, s, g, z or fast)\n";
+        return kBadUsage;
+    }
+
+    Toolchain toolchain = acanthus::find_toolchain();
+    std::vector<std::string> program_args;
+    if (run->parsed()) {
+        program_args = run->remaining();
+        if (program_args.empty()) {
+            std::cerr << "acanthus: error: 'run' needs a rule file\n" << run->help();
+            return kBadUsage;
+        }
+        input = program_args.front();
+        program_args.erase(program_args.begin());
+    }
+
+    CompileRequest request = make_request(input, includes, toolchain);
+    request.generate.line_directives = !no_lines;
+    request.generate.emit_main = !no_main;
+    std::string cpp;
+
+    if (check->parsed()) {
+        return acanthus::compile_rule_file(request, false, cpp, std::cerr) ? 0 : kBadInput;
+    }
+
+    if (compile->parsed()) {
+        if (output.empty()) output = stem_of(input) + ".cpp";
+        request.generate.output_name = output == "-" ? "<stdout>" : output;
+        if (!acanthus::compile_rule_file(request, true, cpp, std::cerr)) return kBadInput;
+        if (output == "-") {
+            std::cout << cpp << std::flush;
+            return std::cout ? 0 : kBadInput;
+        }
+        std::string error;
+        if (!acanthus::write_file_atomically(output, cpp, error)) return fail(error);
+        return 0;
+    }
+
+    std::string stem = stem_of(input);
+    request.generate.output_name = stem + ".cpp";
+    if (!acanthus::compile_rule_file(request, true, cpp, std::cerr)) return kBadInput;
+    std::string error;
+
+    if (build->parsed()) {
+        if (output.empty()) output = stem;
+        if (!acanthus::build_executable(toolchain, build_options, stem, cpp, output, error)) {
+            return fail(error);
+        }
+        return 0;
+    }
+
+    // run
+    std::string executable;
+    if (!acanthus::cached_executable(toolchain, build_options, stem, cpp, executable, error)) {
+        return fail(error);
+    }
+    std::vector<char*> args;
+    args.push_back(stem.data());
+    for (std::string& a : program_args) args.push_back(a.data());
+    args.push_back(nullptr);
+    std::cout.flush();
+    execv(executable.c_str(), args.data());
+    return fail("cannot run '" + executable + "': " + std::strerror(errno));
+}

@@ -1,0 +1,22 @@
+// Where the runtime headers, libraries and stdlib rule files are: the install layout next to
+// the running executable when it is there, else the build tree baked in at configure time.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace acanthus {
+
+struct Toolchain {
+    bool installed = false;
+    std::vector<std::string> include_dirs;  // -I for the generated C++
+    std::string runtime_library;            // libacanthus.a
+    std::string stdlib_library;             // libacanthus_stdlib.a, or empty
+    std::vector<std::string> link_flags;    // -lcairo ...
+    std::vector<std::string> stdlib_dirs;   // where %import looks after -I
+    std::string default_cxx;
+};
+
+Toolchain find_toolchain();
+
+}  // namespace acanthus

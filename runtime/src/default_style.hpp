@@ -1,0 +1,34 @@
+// How an element looks when its type has no %draw: the outline, filled and order styles.
+#pragma once
+
+#include <acanthus/canvas.hpp>
+#include <acanthus/element.hpp>
+#include <acanthus/skeletal_stroke.hpp>
+#include <string>
+
+namespace acanthus::detail {
+
+enum class RenderStyle {
+    outline,  // every proxy in outline, the paper's default rendering
+    filled,   // areas filled with a light colour and outlined, curves stroked
+    order,    // coloured by placement order, oldest red to newest purple (Figure 14)
+};
+
+// Throws UsageError on anything but "outline", "filled" or "order".
+RenderStyle parse_render_style(const std::string& name);
+
+// The hue wheel position of placement rank `rank` among `count` elements: red 0 to purple 0.8.
+double order_hue(long rank, long count);
+
+// How curves (arc, linesegment, bezier) are drawn: plain lines, or a skeletal stroke this wide.
+struct CurveStroke {
+    const SkeletalStroke* stroke = nullptr;
+    double width = 0;  // user units
+};
+
+// Draws `element`'s proxies with the canvas's current line width. `order_color` is used by the
+// order style only.
+void draw_default(Canvas& canvas, const Element& element, RenderStyle style, Color order_color,
+                  const CurveStroke& curves = {});
+
+}  // namespace acanthus::detail

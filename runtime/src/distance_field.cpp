@@ -1,0 +1,238 @@
+#include "distance_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace acanthus {
+namespace {
+
+constexpr std::int32_t kInfinite = DistanceField::infinite;
+
+// Felzenszwalb & Huttenlocher's separable squared EDT over a w x h grid, with a feature
+// transform when `site` is not null (site index j*w+i in the same grid). Parabola
+// intersections are compared as exact integer fractions, so the result is exact.
+template <class IsSite>
+void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t* site,
+                   DistanceField::Scratch& s) {
+    const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+    s.column_distance.resize(n);
+    s.column_site_row.resize(n);
+    std::int32_t* g = s.column_distance.data();
+    std::int32_t* row = s.column_site_row.data();
+
+    // Phase 1, row by row for cache friendliness: nearest site above, then below.
+    s.last.assign(w, -1);
+    for (int j = 0; j < h; ++j) {
+        std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
+        std::int32_t* rj = row + static_cast<std::size_t>(j) * w;
+        for (int i = 0; i < w; ++i) {
+            if (is_site(i, j)) s.last[i] = j;
+            const int l = s.last[i];
+            gj[i] = l >= 0 ? j - l : kInfinite;
+            rj[i] = l;
+        }
+    }
+    s.last.assign(w, -1);
+    for (int j = h - 1; j >= 0; --j) {
+        std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
+        std::int32_t* rj = row + static_cast<std::size_t>(j) * w;
+        for (int i = 0; i < w; ++i) {
+            if (gj[i] == 0) {
+                s.last[i] = j;
+            } else if (s.last[i] >= 0 && s.last[i] - j < gj[i]) {
+                gj[i] = s.last[i] - j;
+                rj[i] = s.last[i];
+            }
+        }
+    }
+
+    // Phase 2: per row, the lower envelope of parabolas (x - q)^2 + g(q)^2 over columns q
+    // that have a site. The envelope piece k starts at num[k] / den[k].
+    s.hull_column.resize(w);
+    s.hull_f.resize(w);
+    s.hull_num.resize(w);
+    s.hull_den.resize(w);
+    int* v = s.hull_column.data();
+    std::int64_t* f = s.hull_f.data();
+    std::int64_t* num = s.hull_num.data();
+    std::int64_t* den = s.hull_den.data();
+    for (int j = 0; j < h; ++j) {
+        const std::size_t base = static_cast<std::size_t>(j) * w;
+        const std::int32_t* gj = g + base;
+        int k = -1;
+        for (int q = 0; q < w; ++q) {
+            if (gj[q] == kInfinite) continue;
+            const std::int64_t fq =
+                static_cast<std::int64_t>(gj[q]) * gj[q] + static_cast<std::int64_t>(q) * q;
+            std::int64_t sn = 0, sd = 1;
+            while (k >= 0) {
+                sn = fq - f[k];
+                sd = 2 * static_cast<std::int64_t>(q - v[k]);
+                // Drop piece k when the new parabola already wins where piece k starts.
+                if (k > 0 && sn * den[k] <= num[k] * sd) {
+                    --k;
+                    continue;
+                }
+                break;
+            }
+            ++k;
+            v[k] = q;
+            f[k] = fq;
+            num[k] = sn;
+            den[k] = sd;
+        }
+        if (k < 0) {
+            std::fill(d2 + base, d2 + base + w, kInfinite);
+            if (site) std::fill(site + base, site + base + w, -1);
+            continue;
+        }
+        const int top = k;
+        k = 0;
+        for (int x = 0; x < w; ++x) {
+            while (k < top && num[k + 1] <= static_cast<std::int64_t>(x) * den[k + 1]) ++k;
+            const int c = v[k];
+            const std::int64_t dx = x - c;
+            const std::int64_t gc = gj[c];
+            d2[base + x] = static_cast<std::int32_t>(dx * dx + gc * gc);
+            if (site) site[base + x] = row[base + c] * w + c;
+        }
+    }
+}
+
+}  // namespace
+
+DistanceField::DistanceField(int width, int height) : width_(width), height_(height) {
+    // Squared distances must fit in 32 bits.
+    if (width <= 0 || height <= 0 || width > 30000 || height > 30000)
+        throw std::invalid_argument("DistanceField: grid size out of range");
+    const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    occ_.assign(n, 0);
+    dist2_.assign(n, kInfinite);
+    boundary2_.assign(n, kInfinite);
+    site_.assign(n, -1);
+    visit_.assign(n, 0);
+}
+
+double DistanceField::distance(int i, int j) const {
+    const std::int32_t d = dist2_[static_cast<std::size_t>(j) * width_ + i];
+    return d == kInfinite ? HUGE_VAL : std::sqrt(static_cast<double>(d));
+}
+
+ObstacleKind DistanceField::nearest_kind(int index) const {
+    const std::int32_t d = dist2_[index];
+    if (d == kInfinite) return ObstacleKind::none;
+    return boundary2_[index] == d ? ObstacleKind::boundary : ObstacleKind::element;
+}
+
+void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
+    if (occupancy.size() != occ_.size())
+        throw std::invalid_argument("DistanceField::compute: occupancy size mismatch");
+    occ_ = occupancy;
+    const int w = width_;
+    const std::uint8_t* occ = occ_.data();
+    separable_edt(
+        w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
+        dist2_.data(), site_.data(), scratch_);
+    separable_edt(
+        w, height_,
+        [&](int i, int j) {
+            return occ[static_cast<std::size_t>(j) * w + i] ==
+                   static_cast<std::uint8_t>(ObstacleKind::boundary);
+        },
+        boundary2_.data(), nullptr, scratch_);
+}
+
+void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
+                              std::vector<int>* changed) {
+    if (kind == ObstacleKind::none) return;
+    std::vector<int> fresh;
+    fresh.reserve(pixels.size());
+    for (int p : pixels) {
+        if (p < 0 || static_cast<std::size_t>(p) >= occ_.size() || occ_[p] != 0) continue;
+        occ_[p] = static_cast<std::uint8_t>(kind);  // also drops duplicates
+        fresh.push_back(p);
+    }
+    if (fresh.empty()) return;
+    propagate(fresh, dist2_, &site_, changed);
+    if (kind == ObstacleKind::boundary) propagate(fresh, boundary2_, nullptr, changed);
+}
+
+void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
+                              std::vector<std::int32_t>* site, std::vector<int>* out) {
+    const int w = width_, h = height_;
+    int bx0 = w, by0 = h, bx1 = -1, by1 = -1;
+    for (int p : sites) {
+        const int i = p % w, j = p / w;
+        bx0 = std::min(bx0, i);
+        bx1 = std::max(bx1, i);
+        by0 = std::min(by0, j);
+        by1 = std::max(by1, j);
+    }
+
+    static constexpr int kDi[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
+    static constexpr int kDj[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+    for (int rho = 8;; rho *= 2) {
+        const int wx0 = std::max(0, bx0 - rho), wx1 = std::min(w - 1, bx1 + rho);
+        const int wy0 = std::max(0, by0 - rho), wy1 = std::min(h - 1, by1 + rho);
+        const int ww = wx1 - wx0 + 1, wh = wy1 - wy0 + 1;
+        const std::size_t wn = static_cast<std::size_t>(ww) * static_cast<std::size_t>(wh);
+        window_sites_.assign(wn, 0);
+        for (int p : sites)
+            window_sites_[static_cast<std::size_t>(p / w - wy0) * ww + (p % w - wx0)] = 1;
+        window_d2_.resize(wn);
+        window_site_.resize(wn);
+        const std::uint8_t* mask = window_sites_.data();
+        separable_edt(
+            ww, wh, [&](int i, int j) { return mask[static_cast<std::size_t>(j) * ww + i] != 0; },
+            window_d2_.data(), window_site_.data(), window_scratch_);
+
+        if (++stamp_ == 0) {
+            std::fill(visit_.begin(), visit_.end(), 0);
+            stamp_ = 1;
+        }
+        queue_.clear();
+        improved_.clear();
+        for (int p : sites) {
+            visit_[p] = stamp_;
+            queue_.push_back(p);
+            improved_.push_back({p, 0, p});
+        }
+        bool escaped = false;
+        for (std::size_t head = 0; head < queue_.size() && !escaped; ++head) {
+            const int q = queue_[head];
+            const int qi = q % w, qj = q / w;
+            for (int k = 0; k < 8; ++k) {
+                const int ri = qi + kDi[k], rj = qj + kDj[k];
+                if (ri < 0 || ri >= w || rj < 0 || rj >= h) continue;
+                const int r = rj * w + ri;
+                if (visit_[r] == stamp_) continue;
+                if (ri < wx0 || ri > wx1 || rj < wy0 || rj > wy1) {
+                    escaped = true;
+                    break;
+                }
+                visit_[r] = stamp_;
+                const std::size_t local = static_cast<std::size_t>(rj - wy0) * ww + (ri - wx0);
+                const std::int64_t m = window_d2_[local];
+                const std::int64_t old = d2[r];
+                if (m < old) {
+                    const int ls = window_site_[local];
+                    improved_.push_back({r, static_cast<std::int32_t>(m),
+                                         (ls / ww + wy0) * w + (ls % ww + wx0)});
+                }
+                // Keep going while sqrt(m) < sqrt(old) + 1 (see the header for why).
+                const std::int64_t t = m - old - 1;
+                if (t < 0 || t * t < 4 * old) queue_.push_back(r);
+            }
+        }
+        if (!escaped) break;
+    }
+
+    for (const Improvement& im : improved_) {
+        d2[im.pixel] = im.d2;
+        if (site) (*site)[im.pixel] = im.site;
+        if (out) out->push_back(im.pixel);
+    }
+}
+
+}  // namespace acanthus

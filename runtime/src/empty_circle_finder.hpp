@@ -1,0 +1,96 @@
+// FindEmptyCircle of Wong et al. section 4.1 over the distance field.
+//
+// Candidate centres are the medial axis: free pixels on a crest of the distance field, i.e. whose
+// squared distance is at least that of both neighbours along one of the four lines (horizontal,
+// vertical, two diagonals) through the pixel. (The paper's Manhattan-distance MAT takes pixels
+// at least as large as their neighbours; city-block distances have plateaus along ridges, so that
+// rule yields the whole ridge. Exact Euclidean distances rise along a ridge, where that rule
+// would keep only the peaks, so the crest is tested across the ridge instead.) The candidate circle of a pixel is centred on the pixel centre with
+// radius (sqrt(d2) - kMargin) pixels: every rasterized shape lies in the closed squares of its
+// obstacle pixels, which reach at most sqrt(1/2) pixel beyond their centres, and curves are
+// flattened within PixelCover::kFlatten, so the circle errs on the small side and is empty.
+// A candidate is eligible when its nearest obstacle is an element (a circle stopped by the
+// boundary is discarded; ties go to the boundary), its radius is at least the minimum, and it
+// contains no exclude-list point. The largest eligible candidate wins; ties go to the smaller
+// pixel index.
+//
+// find() keeps candidates in a max-heap with lazy invalidation: distances only decrease as
+// obstacles are added, so a pixel leaves the medial axis only when its own distance changes
+// (lower neighbours never spoil a crest), and joins it only when it or a neighbour changes; update() re-evaluates exactly those pixels.
+// Candidates blocked by an exclude point wait under that point's id until it is removed.
+// find_by_scan() is the reference: a scan of the whole grid with the same rules.
+// discard() records (pixel, d2) pairs that both searches skip, so the two stay identical.
+#pragma once
+
+#include "distance_field.hpp"
+#include "exclude_list.hpp"
+
+#include <acanthus/growth.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <queue>
+#include <vector>
+
+namespace acanthus {
+
+struct EmptyCircle {
+    int pixel = -1;
+    std::int64_t d2 = 0;  // squared distance of the centre pixel to its nearest obstacle pixel
+    Circle circle;        // conservative circle (see EmptyCircleFinder)
+};
+
+class EmptyCircleFinder {
+public:
+    static constexpr double kMargin = 0.75;  // pixels, >= sqrt(1/2) + PixelCover::kFlatten
+
+    // `min_radius` in user units.
+    EmptyCircleFinder(const DistanceField& field, const GridFrame& grid, double min_radius);
+
+    Circle circle_of(int pixel) const;
+    bool on_medial_axis(int pixel) const;
+    // On the medial axis, nearest obstacle an element, radius at least the minimum.
+    bool shape_eligible(int pixel) const;
+
+    // Incremental search. rebuild() scans the whole grid once; update() takes the pixels whose
+    // distance changed; release() returns candidates blocked by removed exclude points.
+    void rebuild();
+    void update(const std::vector<int>& changed);
+    void release(const std::vector<int>& removed_ids);
+    void release_all();
+    std::optional<EmptyCircle> find(const ExcludeList& exclude);
+    // Drops a candidate found by find() or find_by_scan() (the engine found the boundary nearer
+    // than every element when measured exactly). It stays dropped, in both searches, until its
+    // distance changes.
+    void discard(const EmptyCircle& c);
+
+    // Reference search: a full scan.
+    std::optional<EmptyCircle> find_by_scan(const ExcludeList& exclude) const;
+
+    // The `limit` best shape-eligible candidates in choice order (for debug frames), by scan.
+    std::vector<int> best_candidates(std::size_t limit) const;
+
+    std::size_t heap_size() const { return heap_.size(); }
+
+private:
+    using Key = std::uint64_t;  // d2 in the high word, ~pixel in the low word: max is best
+    static Key key_of(int pixel, std::int64_t d2) {
+        return (static_cast<Key>(d2) << 32) | (0xffffffffu - static_cast<std::uint32_t>(pixel));
+    }
+    static int pixel_of(Key k) { return static_cast<int>(0xffffffffu - static_cast<std::uint32_t>(k)); }
+    static std::int64_t d2_of(Key k) { return static_cast<std::int64_t>(k >> 32); }
+    bool radius_ok(std::int64_t d2) const;
+    void consider(int pixel);
+
+    const DistanceField& field_;
+    GridFrame grid_;
+    double min_radius_;
+    std::priority_queue<Key> heap_;
+    std::vector<std::int32_t> registered_;  // d2 of the pixel's live entry (heap or blocked), 0 none
+    std::vector<std::int32_t> discarded_;   // d2 at which the pixel was discarded, 0 none
+    std::vector<std::vector<Key>> blocked_;  // by exclude point id
+    std::vector<std::uint32_t> seen_;        // visit stamps for update()
+    std::uint32_t stamp_ = 0;
+};
+
+}  // namespace acanthus

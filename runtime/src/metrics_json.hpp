@@ -1,0 +1,31 @@
+// The --metrics report and the coverage figure it carries.
+#pragma once
+
+#include <acanthus/growth.hpp>
+#include <acanthus/pattern.hpp>
+#include <acanthus/region.hpp>
+#include <string>
+#include <vector>
+
+namespace acanthus {
+
+// One JSON object on one line (no newline): elements, iterations, rules (list of {"rule", "line",
+// "successes", "failures"} in Pattern::rules order), exclude_points, coverage, seconds {total,
+// growth, render}, engine ("incremental" or "reference"). Growth seconds come from `stats`.
+std::string metrics_json(const Pattern& pattern, const GrowthStats& stats, long elements,
+                         double coverage, double total_seconds, double render_seconds,
+                         bool reference_engine);
+
+// Fraction of the region's area covered by the elements: circles and polygons filled, arcs,
+// line segments and Béziers stroked `stroke_width` user units wide (points cover nothing).
+// Measured by rasterizing with Cairo at 1024 pixels on the region's longer side, antialiased,
+// clipped to the region, and dividing by the region rasterized the same way; so the figure is
+// exact up to about one pixel along every edge.
+double coverage(const Region& region, const std::vector<const Element*>& elements,
+                double stroke_width);
+
+// The width render_to_file gives outlines, in user units, for an output `output_width` wide; the
+// natural stroke_width for coverage().
+double rendered_line_width(const Region& region, double output_width);
+
+}  // namespace acanthus

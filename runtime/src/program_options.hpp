@@ -1,0 +1,41 @@
+// The generated program's command line (DESIGN.md section 6), parsed with CLI11.
+#pragma once
+
+#include <acanthus/growth.hpp>
+#include <acanthus/pattern.hpp>
+#include <acanthus/render.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace acanthus::detail {
+
+enum class ProgressMode { automatic, forced, quiet };
+
+struct ProgramOptions {
+    std::string region;               // --region argument; empty: Region::default_panel()
+    std::vector<std::string> params;  // --param NAME=VALUE, in command-line order
+    bool list_params = false;
+    GrowthOptions growth;  // seeds, rng seed, resolution, epsilon, limits, engine
+    std::string output;    // -o; "-" is SVG on stdout
+    RenderOptions render;
+    std::string json;  // --json; empty: none
+    bool metrics = false;
+    ProgressMode progress = ProgressMode::automatic;
+    long debug_iteration = 0;  // --debug-frame N (0: none)
+    std::string debug_path;
+    std::string frames_dir;  // --frames; empty: none
+    long frames_every = 1;
+};
+
+// Parses argv. Prints --help / --version to stdout and returns nullopt (exit 0). Every malformed
+// command line throws UsageError with CLI11's or our message (exit 2). Nothing is validated
+// against the region or the pattern's parameters here; run_program does that before growing.
+std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
+                                                    const std::string& program, int argc,
+                                                    char** argv);
+
+// "X,Y" with two finite numbers; nullopt otherwise.
+std::optional<Point> parse_seed(const std::string& text);
+
+}  // namespace acanthus::detail

@@ -1,0 +1,104 @@
+#include <2geom/curve.h>
+#include <2geom/elliptical-arc.h>
+#include <2geom/path.h>
+#include <2geom/svg-path-writer.h>
+
+#include <acanthus/region.hpp>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "region_curves.hpp"
+#include "region_data.hpp"
+
+namespace acanthus {
+namespace {
+
+Point to_point(Geom::Point p) { return {p[Geom::X], p[Geom::Y]}; }
+
+// Appends points of `c` (excluding its initial point) so that no chord strays more than
+// `tolerance` from the curve, by recursive bisection checked at the quarter points.
+void flatten(const Geom::Curve& c, double t0, double t1, Geom::Point p0, Geom::Point p1,
+             double tolerance, int depth, std::vector<Point>& out) {
+    auto off_chord = [&](double t) {
+        Geom::Point q = c.pointAt(t);
+        Geom::Point d = p1 - p0;
+        double len = Geom::L2(d);
+        if (len == 0) return Geom::distance(q, p0);
+        return std::abs(Geom::cross(q - p0, d)) / len;
+    };
+    double tm = (t0 + t1) / 2;
+    bool flat = off_chord(t0 + (t1 - t0) / 4) <= tolerance && off_chord(tm) <= tolerance &&
+                off_chord(t1 - (t1 - t0) / 4) <= tolerance;
+    if (flat || depth >= 18) {
+        out.push_back(to_point(p1));
+        return;
+    }
+    Geom::Point pm = c.pointAt(tm);
+    flatten(c, t0, tm, p0, pm, tolerance, depth + 1, out);
+    flatten(c, tm, t1, pm, p1, tolerance, depth + 1, out);
+}
+
+}  // namespace
+
+Region::Region(std::unique_ptr<detail::RegionData> data) : data_(std::move(data)) {}
+Region::Region(const Region& other) : data_(std::make_unique<detail::RegionData>(*other.data_)) {}
+Region::Region(Region&&) noexcept = default;
+Region& Region::operator=(const Region& other) {
+    if (this != &other) data_ = std::make_unique<detail::RegionData>(*other.data_);
+    return *this;
+}
+Region& Region::operator=(Region&&) noexcept = default;
+Region::~Region() = default;
+
+const std::string& Region::name() const { return data_->name; }
+Rect Region::bounds() const { return data_->bounds; }
+double Region::area() const { return data_->area; }
+bool Region::evenodd() const { return data_->evenodd; }
+
+bool Region::contains(Point p) const {
+    if (!p.finite() || !data_->bounds.contains(p)) return false;
+    int w = detail::winding_number(data_->paths, Geom::Point(p.x, p.y));
+    return data_->evenodd ? (w % 2) != 0 : w != 0;
+}
+
+double Region::distance_to_boundary(Point p) const {
+    Geom::Point q(p.x, p.y);
+    double best = std::numeric_limits<double>::infinity();
+    for (const Geom::Path& path : data_->paths) {
+        for (std::size_t i = 0; i < path.size_closed(); ++i) {
+            const Geom::Curve& c = path[i];
+            // Cheap box distance first: most curves are far from the best one found so far.
+            if (Geom::distance(q, c.boundsFast()) >= best) continue;
+            double t = c.nearestTime(q);
+            best = std::min(best, Geom::distance(q, c.pointAt(t)));
+        }
+    }
+    return best;
+}
+
+std::vector<std::vector<Point>> Region::rings(double tolerance) const {
+    double tol =
+        tolerance > 0 ? tolerance : 1e-3 * std::max(data_->bounds.width(), data_->bounds.height());
+    std::vector<std::vector<Point>> out;
+    for (const Geom::Path& path : data_->paths) {
+        std::vector<Point> ring;
+        ring.push_back(to_point(path.initialPoint()));
+        for (std::size_t i = 0; i < path.size_closed(); ++i) {
+            const Geom::Curve& c = path[i];
+            if (c.isLineSegment() || c.isDegenerate()) {
+                ring.push_back(to_point(c.finalPoint()));
+            } else {
+                flatten(c, 0, 1, c.initialPoint(), c.finalPoint(), tol, 0, ring);
+            }
+        }
+        // The closing point repeats the first; rings are implicitly closed.
+        if (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+        if (ring.size() >= 3) out.push_back(std::move(ring));
+    }
+    return out;
+}
+
+std::string Region::path_data() const { return Geom::write_svg_path(data_->paths); }
+
+}  // namespace acanthus

@@ -1,0 +1,80 @@
+// The space a fill places shapes into: a panel's flattened rings, or the room a growing ornament
+// leaves (through the Environment). Answers exact admission tests and rasterizes itself.
+#pragma once
+
+#include "placed_shape.hpp"
+
+#include <acanthus/growth.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace acanthus {
+class Environment;
+}
+
+namespace acanthus::dartfill {
+
+// Pixel grid over `bounds` with `resolution` pixels on the longer side, plus a margin.
+GridFrame make_grid(Rect bounds, int resolution);
+// Indices (j * width + i) of the pixels whose centres lie inside the shape; at least the pixel
+// under one interior point, so that a shape smaller than a pixel still shows.
+void shape_pixels(const GridFrame& grid, const PlacedShape& shape, std::vector<int>& out);
+
+class Container {
+public:
+    virtual ~Container() = default;
+    virtual Rect bounds() const = 0;
+    virtual double area() const = 0;
+    // True when the shape lies inside the space (touching its edge within `tolerance` is
+    // allowed) and clear of its obstacles.
+    virtual bool admits(const PlacedShape& shape, double tolerance) const = 0;
+    // occupancy[j * width + i] = 1 where the pixel is outside the space or blocked, else 0.
+    virtual std::vector<std::uint8_t> rasterize(const GridFrame& grid) const = 0;
+};
+
+// A panel given by closed rings (flattened region boundary) and its fill rule.
+class RingContainer : public Container {
+public:
+    RingContainer(std::vector<std::vector<Point>> rings, bool evenodd);
+    ~RingContainer() override;
+    static std::unique_ptr<RingContainer> from_region(const Region& region);
+
+    Rect bounds() const override { return bounds_; }
+    double area() const override { return area_; }
+    bool admits(const PlacedShape& shape, double tolerance) const override;
+    std::vector<std::uint8_t> rasterize(const GridFrame& grid) const override;
+    bool contains(Point p) const;
+
+private:
+    struct Edge {
+        Point a, b;
+    };
+    struct Index;
+    std::vector<Edge> edges_;
+    bool evenodd_;
+    Rect bounds_;
+    double area_ = 0;
+    std::unique_ptr<Index> index_;
+};
+
+// The space left in the panel of the running growth engine: admission asks the Environment
+// (region and placed elements); the extent is found by flood-filling from `start`.
+class EnvironmentContainer : public Container {
+public:
+    EnvironmentContainer(Environment& env, Point start, double cell);
+
+    Rect bounds() const override { return bounds_; }
+    double area() const override;
+    bool admits(const PlacedShape& shape, double tolerance) const override;
+    std::vector<std::uint8_t> rasterize(const GridFrame& grid) const override;
+
+private:
+    Environment& env_;
+    Rect bounds_;
+    mutable double area_ = -1;  // measured when the first raster is made
+};
+
+}  // namespace acanthus::dartfill

@@ -1,0 +1,60 @@
+#include "methods.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace acanthus::dartfill {
+
+FillContext::FillContext(const std::vector<Shape>& shapes, const Container& container,
+                         const Options& options, Random& random)
+    : shapes_(shapes), container_(container), options_(options), random_(random) {
+    Rect b = container.bounds();
+    tolerance_ = options.tolerance >= 0 ? options.tolerance : 1e-6 * std::max(b.width(), b.height());
+}
+
+int FillContext::resolution() const {
+    if (options_.resolution > 0) return options_.resolution;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const Shape& s : shapes_)
+        smallest = std::min({smallest, s.bounds().width(), s.bounds().height()});
+    Rect b = container_.bounds();
+    double pixels = std::max(b.width(), b.height()) / (smallest * options_.scale_min / 8);
+    return static_cast<int>(std::clamp(std::isfinite(pixels) ? pixels : 1024.0, 64.0, 1024.0));
+}
+
+Vector FillContext::pole_offset(const Pose& pose) const {
+    const Shape& shape = shapes_[cycle_];
+    return (shape.pole() - shape.center()).rotated(pose.rotation) * pose.scale;
+}
+
+Pose FillContext::random_pose(Point position) {
+    Pose pose;
+    pose.position = position;
+    pose.rotation = random_.uniform(options_.rotation_min, options_.rotation_max);
+    pose.scale = random_.uniform(options_.scale_min, options_.scale_max);
+    return pose;
+}
+
+const PlacedShape* FillContext::try_place(Layout& layout, const Pose& pose) {
+    return fits(layout, pose) ? place(layout, pose) : nullptr;
+}
+
+bool FillContext::fits(const Layout& layout, const Pose& pose) {
+    ++trials_;
+    PlacedShape candidate(shapes_[cycle_], cycle_, pose);
+    return container_.admits(candidate, tolerance_) && !layout.collides(candidate);
+}
+
+const PlacedShape* FillContext::place(Layout& layout, const Pose& pose) {
+    layout.add(PlacedShape(shapes_[cycle_], cycle_, pose));
+    cycle_ = (cycle_ + 1) % static_cast<int>(shapes_.size());
+    return &layout.shapes().back();
+}
+
+bool FillContext::full(const Layout& layout) const {
+    return options_.max_elements > 0 &&
+           static_cast<long>(layout.shapes().size()) >= options_.max_elements;
+}
+
+}  // namespace acanthus::dartfill

@@ -1,0 +1,358 @@
+// run_program: the generated program's command line, exit codes, and "no partial output".
+// The pattern is written by hand the way the compiler generates one (dots of Appendix A).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <acanthus/body.hpp>
+#include <acanthus/program.hpp>
+#include <acanthus/rule_call.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "program_options.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace acanthus;
+
+// %param double dot_radius = 3.0;  %param bool explode = false;  %param int limit = 1000;
+double dot_radius = 3.0;
+bool explode = false;
+int limit = 1000;
+int dot_count = 0;
+
+template <class T>
+bool assign(T& target, std::string_view text, std::string& error) {
+    T value{};
+    if (!parse_param(text, value, error)) return false;
+    target = value;
+    return true;
+}
+
+struct seed final : Element {
+    PointProxy p0;
+    const ElementType& type() const override;
+    std::size_t proxy_count() const override { return 1; }
+    Proxy& proxy(std::size_t) override { return p0; }
+};
+
+struct dot final : Element {
+    CircleProxy p0;
+    int order = 0;
+    const ElementType& type() const override;
+    std::size_t proxy_count() const override { return 1; }
+    Proxy& proxy(std::size_t) override { return p0; }
+    void write_fields(FieldWriter& out) const override { out.field("order", order); }
+};
+
+Element* create_seed() { return new seed; }
+Element* create_dot() { return new dot; }
+const ElementType seed_type{"seed", {ProxyKind::point}, &create_seed, nullptr, 1};
+const ElementType dot_type{"dot", {ProxyKind::circle}, &create_dot, nullptr, 5};
+const ElementType& seed::type() const { return seed_type; }
+const ElementType& dot::type() const { return dot_type; }
+
+Result seed_rule(RuleCall& call_) {
+    seed& parent = call_.parent<seed>();
+    dot* c0 = call_.make_static<dot>();
+    c0->p0.set(parent.p0, dot_radius);
+    c0->order = dot_count++;
+    parent.sterile = true;
+    return SUCCESS;
+}
+
+Result dot_rule(RuleCall& call_) {
+    using namespace acanthus::body;
+    dot& parent = call_.parent<dot>();
+    dot* c0 = call_.make_static<dot>();
+    if (explode) throw std::runtime_error("exploded on purpose");
+    if (goal().radius < 0.5 || dot_count >= limit) return FAILURE;
+    double r = min(dot_radius, goal().radius);
+    c0->p0.set(parent.p0.center.offset(goal().center - parent.p0.center, parent.p0.radius + r), r);
+    c0->order = dot_count++;
+    return SUCCESS;
+}
+
+Pattern make_pattern() {
+    Pattern p;
+    p.name = "testdots";
+    p.file = "testdots.acr";
+    p.types = {&seed_type, &dot_type};
+    p.seed = &seed_type;
+    p.rules.push_back(
+        RuleInfo{"seed --> dot", 14, "testdots.acr", &seed_type, {&dot_type}, &seed_rule});
+    p.rules.push_back(
+        RuleInfo{"dot --> dot", 24, "testdots.acr", &dot_type, {&dot_type}, &dot_rule});
+    p.params.push_back(
+        ParamInfo{"dot_radius", "double", "3.0", 2,
+                  [](std::string_view t, std::string& e) { return assign(dot_radius, t, e); },
+                  [] { return format_param(dot_radius); }});
+    p.params.push_back(
+        ParamInfo{"explode", "bool", "false", 3,
+                  [](std::string_view t, std::string& e) { return assign(explode, t, e); },
+                  [] { return format_param(explode); }});
+    p.params.push_back(
+        ParamInfo{"limit", "int", "1000", 4,
+                  [](std::string_view t, std::string& e) { return assign(limit, t, e); },
+                  [] { return format_param(limit); }});
+    return p;
+}
+
+struct Outcome {
+    int code = -1;
+    std::string out, err;
+};
+
+class Program : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dot_radius = 3.0;
+        explode = false;
+        limit = 1000;
+        dot_count = 0;
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() /
+               ("acanthus-test-program-" + std::to_string(::getpid()) + "-" + info->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    Outcome run(std::vector<std::string> args) {
+        dot_count = 0;
+        args.insert(args.begin(), "testdots");
+        std::vector<char*> argv;
+        for (std::string& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        Outcome o;
+        ::testing::internal::CaptureStdout();
+        ::testing::internal::CaptureStderr();
+        o.code = run_program(pattern_, static_cast<int>(args.size()), argv.data());
+        o.out = ::testing::internal::GetCapturedStdout();
+        o.err = ::testing::internal::GetCapturedStderr();
+        return o;
+    }
+
+    static std::string read(const std::string& p) {
+        std::ifstream in(p, std::ios::binary);
+        std::ostringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+    static void write(const std::string& p, const std::string& text) {
+        std::ofstream(p, std::ios::binary) << text;
+    }
+    // Every file in the test directory except `keep`.
+    std::vector<std::string> files() const {
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename());
+        return names;
+    }
+
+    Pattern pattern_ = make_pattern();
+    fs::path dir_;
+};
+
+TEST_F(Program, HelpExitsZeroAndShowsOptionsAndExamples) {
+    Outcome o = run({"--help"});
+    EXPECT_EQ(o.code, 0);
+    for (const char* word : {"--region", "--seed", "--param", "--metrics", "--debug-frame",
+                             "--frames", "Examples:", "dot_radius", "Exit status"})
+        EXPECT_NE(o.out.find(word), std::string::npos) << word;
+}
+
+TEST_F(Program, VersionExitsZero) {
+    Outcome o = run({"--version"});
+    EXPECT_EQ(o.code, 0);
+    EXPECT_NE(o.out.find("Acanthus"), std::string::npos);
+}
+
+TEST_F(Program, UnknownOptionIsUsageError) {
+    Outcome o = run({"--bogus", "-o", path("out.svg")});
+    EXPECT_EQ(o.code, 2);
+    EXPECT_EQ(o.err.rfind("testdots: error: ", 0), 0u) << o.err;
+    EXPECT_NE(o.err.find("--bogus"), std::string::npos);
+    EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Program, MalformedValuesAreUsageErrors) {
+    for (std::vector<std::string> args : {std::vector<std::string>{"--seed", "12"},
+                                          {"--seed", "1,x"},
+                                          {"--style", "dotted"},
+                                          {"--resolution", "0"},
+                                          {"--width", "-3"},
+                                          {"--background", "notacolour"},
+                                          {"--param", "dot_radius"},
+                                          {"--debug-frame", "0", "a.png"},
+                                          {"--debug-frame", "3", "a.svg"},
+                                          {"--every", "3"},
+                                          {"--progress", "--quiet"},
+                                          {"--metrics", "-o", "-"},
+                                          {"--epsilon", "nan"}}) {
+        args.push_back("-o");
+        args.push_back(path("out.svg"));
+        Outcome o = run(args);
+        EXPECT_EQ(o.code, 2) << args[0] << " " << args[1] << "\n" << o.err;
+    }
+    EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Program, BadParameterValueNamesTheParameter) {
+    write(path("out.svg"), "previous");
+    Outcome o = run({"--param", "dot_radius=big", "-o", path("out.svg")});
+    EXPECT_EQ(o.code, 1);
+    EXPECT_NE(o.err.find("dot_radius"), std::string::npos) << o.err;
+    EXPECT_EQ(read(path("out.svg")), "previous");
+}
+
+TEST_F(Program, UnknownParameterIsBadInput) {
+    Outcome o = run({"--param", "colour=red", "-o", path("out.svg")});
+    EXPECT_EQ(o.code, 1);
+    EXPECT_NE(o.err.find("'colour'"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("dot_radius"), std::string::npos) << o.err;  // lists what exists
+    EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Program, ListParamsShowsDefaultAndCurrent) {
+    Outcome o = run({"--param", "dot_radius=2.5", "--list-params"});
+    EXPECT_EQ(o.code, 0);
+    std::istringstream lines(o.out);
+    std::string header, row;
+    std::getline(lines, header);
+    std::getline(lines, row);
+    EXPECT_NE(header.find("current"), std::string::npos);
+    EXPECT_NE(row.find("dot_radius"), std::string::npos);
+    EXPECT_NE(row.find("3.0"), std::string::npos);
+    EXPECT_NE(row.find("2.5"), std::string::npos);
+    EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Program, BadRegionFileIsNamedAndNothingIsWritten) {
+    write(path("bad.svg"), "<svg xmlns='http://www.w3.org/2000/svg'><rect width='10'");
+    write(path("out.png"), "previous");
+    Outcome o = run({"--region", path("bad.svg"), "-o", path("out.png")});
+    EXPECT_EQ(o.code, 1);
+    EXPECT_NE(o.err.find("bad.svg"), std::string::npos) << o.err;
+    EXPECT_EQ(read(path("out.png")), "previous");
+
+    o = run({"--region", path("missing.svg"), "-o", path("out2.svg")});
+    EXPECT_EQ(o.code, 1);
+    EXPECT_NE(o.err.find("missing.svg"), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(path("out2.svg")));
+}
+
+TEST_F(Program, UnknownOutputExtensionIsUsageError) {
+    Outcome o = run({"--region", "rect:100,100", "-o", path("out.gif")});
+    EXPECT_EQ(o.code, 2);
+    EXPECT_NE(o.err.find("out.gif"), std::string::npos) << o.err;
+    EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Program, MissingOutputDirectoryIsRefusedBeforeGrowing) {
+    Outcome o = run({"--region", "rect:100,100", "-o", path("no/such/dir/out.svg")});
+    EXPECT_EQ(o.code, 1);
+    EXPECT_NE(o.err.find("no/such/dir"), std::string::npos) << o.err;
+}
+
+TEST_F(Program, SeedOutsideRegionIsBadInput) {
+    Outcome o = run({"--region", "rect:100,50", "--seed", "150,20", "-o", path("out.svg")});
+    EXPECT_EQ(o.code, 1);
+    EXPECT_NE(o.err.find("150,20"), std::string::npos) << o.err;
+    EXPECT_TRUE(files().empty());
+}
+
+TEST_F(Program, RuleFailureExitsThreeNamingRuleAndLine) {
+    write(path("out.svg"), "previous");
+    Outcome o = run({"--region", "circle:50", "--param", "explode=true", "-o", path("out.svg"),
+                     "--json", path("tree.json")});
+    EXPECT_EQ(o.code, 3);
+    EXPECT_NE(o.err.find("testdots.acr:24"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("dot --> dot"), std::string::npos) << o.err;
+    EXPECT_EQ(read(path("out.svg")), "previous");
+    EXPECT_FALSE(fs::exists(path("tree.json")));
+}
+
+TEST_F(Program, GrowsRendersAndReportsMetrics) {
+    Outcome o = run({"--region", "ellipse:60,40", "--rng-seed", "3", "-o", path("out.svg"),
+                     "--json", path("tree.json"), "--metrics", "--resolution", "128"});
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(read(path("out.svg")).find("<svg"), std::string::npos);
+
+    nlohmann::json metrics = nlohmann::json::parse(o.out);
+    EXPECT_GT(metrics.at("elements").get<long>(), 10);
+    EXPECT_EQ(metrics.at("engine"), "incremental");
+    EXPECT_GT(metrics.at("coverage").get<double>(), 0.1);
+    EXPECT_EQ(metrics.at("rules").size(), 2u);
+
+    nlohmann::json tree = nlohmann::json::parse(read(path("tree.json")));
+    EXPECT_EQ(tree.at("elements").size(), metrics.at("elements").get<std::size_t>());
+    EXPECT_EQ(tree.at("elements")[0].at("type"), "seed");
+}
+
+TEST_F(Program, SameSeedSameBytes) {
+    ASSERT_EQ(run({"--region", "circle:50", "--resolution", "128", "-o", path("a.svg")}).code, 0);
+    ASSERT_EQ(run({"--region", "circle:50", "--resolution", "128", "-o", path("b.svg")}).code, 0);
+    EXPECT_EQ(read(path("a.svg")), read(path("b.svg")));
+}
+
+TEST_F(Program, ParamChangesTheResult) {
+    ASSERT_EQ(run({"--region", "circle:50", "--resolution", "128", "--json", path("a.json"), "-o",
+                   path("a.svg")})
+                  .code,
+              0);
+    ASSERT_EQ(run({"--region", "circle:50", "--resolution", "128", "--param", "limit=5", "--json",
+                   path("b.json"), "-o", path("b.svg")})
+                  .code,
+              0);
+    auto a = nlohmann::json::parse(read(path("a.json"))).at("elements").size();
+    auto b = nlohmann::json::parse(read(path("b.json"))).at("elements").size();
+    EXPECT_EQ(b, 6u);  // the seed and five dots
+    EXPECT_GT(a, b);
+}
+
+TEST_F(Program, SvgToStdout) {
+    Outcome o = run({"--region", "rect:60,60", "--resolution", "64", "-o", "-"});
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(o.out.find("<svg"), std::string::npos);
+}
+
+TEST_F(Program, DebugFrameAndGrowthFrames) {
+    Outcome o = run({"--region", "circle:50", "--resolution", "128", "--param", "limit=20", "-o",
+                     path("out.png"), "--debug-frame", "3", path("debug.png"), "--frames",
+                     path("frames"), "--every", "5"});
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_TRUE(fs::exists(path("out.png")));
+    EXPECT_EQ(read(path("debug.png")).substr(0, 4), "\x89PNG");
+    EXPECT_TRUE(fs::exists(path("frames/frame-000001.png")));
+    EXPECT_TRUE(fs::exists(path("frames/frame-000002.png")));
+}
+
+TEST_F(Program, DebugFrameAfterTheEndWarns) {
+    Outcome o = run({"--region", "circle:50", "--resolution", "64", "--param", "limit=3", "-o",
+                     path("out.svg"), "--debug-frame", "100000", path("debug.png")});
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(o.err.find("warning"), std::string::npos);
+    EXPECT_FALSE(fs::exists(path("debug.png")));
+}
+
+TEST(ParseSeed, AcceptsTwoNumbersOnly) {
+    using acanthus::detail::parse_seed;
+    ASSERT_TRUE(parse_seed("10,20.5"));
+    EXPECT_EQ(*parse_seed("10,20.5"), (Point{10, 20.5}));
+    EXPECT_EQ(*parse_seed(" -1e1 , +3"), (Point{-10, 3}));
+    EXPECT_FALSE(parse_seed("10"));
+    EXPECT_FALSE(parse_seed("10,"));
+    EXPECT_FALSE(parse_seed("a,b"));
+    EXPECT_FALSE(parse_seed("1,2,3"));
+    EXPECT_FALSE(parse_seed("inf,2"));
+}
+
+}  // namespace
