@@ -1,13 +1,17 @@
 // dartfill: the fill-gap method against naive dart throwing (Sakurai & Miyata, Table 1), and our
 // medial variant, on the same shapes, panel and seed in one run.
-//   bench_dartfill [--panel SPEC] [--naive-cancellations N] [--seed S] [--resolution PX]
+//   bench_dartfill [--panel SPEC] [--naive-cancellations N] [--seed S] [--runs K] [--resolution PX]
+// Each method runs with seeds S .. S+K-1; elements and seconds are summed over the runs, and
+// seconds are CPU time of the fill call, so a loaded machine does not skew the ratio.
 // Last line: {"benchmark":"dartfill", ...}.
 #include <acanthus/dartfill.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
 
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <exception>
 #include <string>
 
@@ -34,15 +38,30 @@ struct Run {
     long trials = 0;
 };
 
+double cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 Run measure(const dartfill::ShapeSet& shapes, const Region& region, dartfill::Options options,
-            dartfill::Method method, std::uint64_t seed) {
+            dartfill::Method method, std::uint64_t seed, int runs) {
     options.method = method;
-    dartfill::FillResult r = dartfill::fill(shapes, region, options, seed);
-    Run run{r.placements.size(), r.stats.seconds, r.stats.coverage, r.stats.trials};
-    std::printf("%-8s elements %5zu  seconds %8.3f  coverage %.3f  trials %ld\n",
-                std::string(dartfill::to_string(method)).c_str(), run.elements, run.seconds,
-                run.coverage, run.trials);
-    return run;
+    Run total;
+    for (int k = 0; k < runs; ++k) {
+        double start = cpu_seconds();
+        dartfill::FillResult r = dartfill::fill(shapes, region, options, seed + k);
+        double seconds = cpu_seconds() - start;
+        total.elements += r.placements.size();
+        total.seconds += seconds;
+        total.coverage += r.stats.coverage / runs;
+        total.trials += r.stats.trials;
+        std::printf("%-8s seed %3llu  elements %5zu  cpu seconds %8.4f  coverage %.3f  trials %ld\n",
+                    std::string(dartfill::to_string(method)).c_str(),
+                    static_cast<unsigned long long>(seed + k), r.placements.size(), seconds,
+                    r.stats.coverage, r.stats.trials);
+    }
+    return total;
 }
 
 }  // namespace
@@ -51,6 +70,7 @@ int main(int argc, char** argv) {
     std::string panel = "rect:300,300";
     dartfill::Options options;
     std::uint64_t seed = 1;
+    int runs = 5;
     for (int i = 1; i + 1 < argc; i += 2) {
         std::string flag = argv[i];
         const char* value = argv[i + 1];
@@ -58,6 +78,7 @@ int main(int argc, char** argv) {
         else if (flag == "--naive-cancellations") options.naive_cancellations = std::atol(value);
         else if (flag == "--seed") seed = std::strtoull(value, nullptr, 10);
         else if (flag == "--resolution") options.resolution = std::atoi(value);
+        else if (flag == "--runs") runs = std::max(1, std::atoi(value));
         else {
             std::fprintf(stderr, "bench_dartfill: unknown option %s\n", argv[i]);
             return 2;
@@ -66,18 +87,19 @@ int main(int argc, char** argv) {
     try {
         Region region = Region::from_argument(panel);
         dartfill::ShapeSet shapes = pebbles();
-        std::printf("panel %s, %zu shapes, naive stops after %ld consecutive cancellations\n",
-                    panel.c_str(), shapes.size(), options.naive_cancellations);
-        Run naive = measure(shapes, region, options, dartfill::Method::naive, seed);
-        Run gap = measure(shapes, region, options, dartfill::Method::fill_gap, seed);
-        Run third = measure(shapes, region, options, dartfill::Method::medial, seed);
+        std::printf("panel %s, %zu shapes, naive stops after %ld consecutive cancellations, "
+                    "%d runs\n",
+                    panel.c_str(), shapes.size(), options.naive_cancellations, runs);
+        Run naive = measure(shapes, region, options, dartfill::Method::naive, seed, runs);
+        Run gap = measure(shapes, region, options, dartfill::Method::fill_gap, seed, runs);
+        Run third = measure(shapes, region, options, dartfill::Method::medial, seed, runs);
         std::printf(
-            "{\"benchmark\":\"dartfill\",\"panel\":\"%s\",\"naive_elements\":%zu,"
+            "{\"benchmark\":\"dartfill\",\"panel\":\"%s\",\"runs\":%d,\"naive_elements\":%zu,"
             "\"naive_seconds\":%.4f,\"naive_coverage\":%.4f,\"fillgap_elements\":%zu,"
             "\"fillgap_seconds\":%.4f,\"fillgap_coverage\":%.4f,\"speedup\":%.2f,"
             "\"fillgap_element_ratio\":%.3f,\"third_method\":\"medial\",\"third_elements\":%zu,"
             "\"third_seconds\":%.4f,\"third_coverage\":%.4f,\"third_speedup\":%.2f}\n",
-            panel.c_str(), naive.elements, naive.seconds, naive.coverage, gap.elements,
+            panel.c_str(), runs, naive.elements, naive.seconds, naive.coverage, gap.elements,
             gap.seconds, gap.coverage, naive.seconds / gap.seconds,
             static_cast<double>(gap.elements) / static_cast<double>(naive.elements),
             third.elements, third.seconds, third.coverage, naive.seconds / third.seconds);

@@ -60,6 +60,7 @@ function(acanthus_add_pattern name)
 
   if(TARGET Acanthus::acanthus)
     add_custom_command(OUTPUT "${generated}"
+      COMMAND "${CMAKE_COMMAND}" -E make_directory "${gen_dir}"
       COMMAND Acanthus::acanthus compile "${rules}" -o "${generated}" ${import_flags}
       COMMAND "${CMAKE_COMMAND}" "-DRULES=${rules}" "-DOUTPUT=${generated}"
               "-DDEPFILE=${depfile}" "-DDIRS=${dirs_arg}" -P "${scan_script}"

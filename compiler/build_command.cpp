@@ -1,5 +1,6 @@
 #include "build_command.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -99,6 +100,12 @@ bool build_executable(const Toolchain& toolchain, const BuildOptions& options,
                 error = "the C++ compiler failed (exit status " + std::to_string(status) + ")";
             ok = false;
         }
+    }
+    if (ok) {
+        // The temporary was created 0600; give the program the usual executable mode.
+        mode_t mask = umask(0);
+        umask(mask);
+        chmod(temp.c_str(), 0777 & ~mask);
     }
     if (ok && std::rename(temp.c_str(), executable.c_str()) != 0) {
         error = "cannot write '" + executable + "'";

@@ -62,7 +62,7 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
 }  // namespace
 
 ScanState::ScanState(std::uint32_t file, const std::string& text, Diagnostics& d)
-    : diagnostics(d), file_(file), text_(text) {
+    : diagnostics(d), text_(text) {
     pos_.file = file;
     token_.begin = token_.end = pos_;
 }

@@ -67,7 +67,6 @@ class ScanState {
     Diagnostics& diagnostics;
 
   private:
-    std::uint32_t file_;
     const std::string& text_;
     SourcePosition pos_;
     SourceRange token_;

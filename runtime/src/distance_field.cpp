@@ -158,6 +158,64 @@ void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
     if (kind == ObstacleKind::boundary) propagate(fresh, boundary2_, nullptr, changed);
 }
 
+namespace {
+
+constexpr int kDi[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
+constexpr int kDj[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
+
+// Blobs spanning at most this many columns are measured directly from their runs of sites.
+constexpr std::size_t kDirectColumns = 24;
+
+}  // namespace
+
+// The wavefront of the header comment. `measure(i, j, site)` returns m exactly for pixels in
+// the measurable area and sets the nearest new site (on entry `site` is the nearest new site of
+// the pixel the wavefront came from, a good first guess); `measurable(i, j)` says whether it can.
+// Returns false (nothing changed) when the wavefront reached an unmeasurable pixel.
+template <class Measure, class Measurable>
+bool DistanceField::wavefront(const std::vector<int>& sites, const std::vector<std::int32_t>& d2,
+                              Measure measure, Measurable measurable) {
+    const int w = width_, h = height_;
+    if (++stamp_ == 0) {
+        std::fill(visit_.begin(), visit_.end(), 0);
+        stamp_ = 1;
+    }
+    queue_.clear();
+    queue_site_.clear();
+    improved_.clear();
+    for (int p : sites) {
+        visit_[p] = stamp_;
+        queue_.push_back(p);
+        queue_site_.push_back(p);
+        improved_.push_back({p, 0, p});
+    }
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+        const int q = queue_[head];
+        const int hint = queue_site_[head];
+        const int qi = q % w, qj = q / w;
+        for (int k = 0; k < 8; ++k) {
+            const int ri = qi + kDi[k], rj = qj + kDj[k];
+            if (ri < 0 || ri >= w || rj < 0 || rj >= h) continue;
+            const int r = rj * w + ri;
+            if (visit_[r] == stamp_) continue;
+            if (!measurable(ri, rj)) return false;
+            visit_[r] = stamp_;
+            const std::int64_t old = d2[r];
+            if (old == 0) continue;  // an obstacle: never nearer to a new site
+            std::int32_t site = hint;
+            const std::int64_t m = measure(ri, rj, site);
+            if (m < old) improved_.push_back({r, static_cast<std::int32_t>(m), site});
+            // Keep going while sqrt(m) < sqrt(old) + 1 (see the header for why).
+            const std::int64_t t = m - old - 1;
+            if (t < 0 || t * t < 4 * old) {
+                queue_.push_back(r);
+                queue_site_.push_back(site);
+            }
+        }
+    }
+    return true;
+}
+
 void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
                               std::vector<std::int32_t>* site, std::vector<int>* out) {
     const int w = width_, h = height_;
@@ -170,9 +228,63 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
         by1 = std::max(by1, j);
     }
 
-    static constexpr int kDi[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
-    static constexpr int kDj[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
-    for (int rho = 8;; rho *= 2) {
+    // Runs of site rows per column: m(i, j) = min over columns c of (i - c)^2 + g_c(j)^2 where
+    // g_c(j) is the distance from row j to the nearest site row of column c.
+    sorted_sites_.assign(sites.begin(), sites.end());
+    std::sort(sorted_sites_.begin(), sorted_sites_.end(), [w](int a, int b) {
+        return a % w != b % w ? a % w < b % w : a < b;
+    });
+    run_columns_.clear();
+    run_start_.clear();
+    runs_.clear();
+    for (int p : sorted_sites_) {
+        const int c = p % w, row = p / w;
+        if (run_columns_.empty() || run_columns_.back() != c) {
+            run_columns_.push_back(c);
+            run_start_.push_back(static_cast<int>(runs_.size()));
+            runs_.push_back({row, row});
+        } else if (runs_.back().second + 1 == row) {
+            runs_.back().second = row;
+        } else if (runs_.back().second != row) {
+            runs_.push_back({row, row});
+        }
+    }
+    run_start_.push_back(static_cast<int>(runs_.size()));
+
+    bool done = false;
+    if (run_columns_.size() <= kDirectColumns) {
+        const std::size_t ncol = run_columns_.size();
+        auto measure = [&](int i, int j, std::int32_t& best_site) {
+            // The guess bounds the search: columns at least that far away cannot win.
+            const std::int64_t gx = i - best_site % w, gy = j - best_site / w;
+            std::int64_t best = gx * gx + gy * gy;
+            for (std::size_t k = 0; k < ncol; ++k) {
+                const std::int64_t dx = i - run_columns_[k];
+                const std::int64_t dx2 = dx * dx;
+                if (dx2 >= best) continue;
+                for (int r = run_start_[k]; r < run_start_[k + 1]; ++r) {
+                    const auto [lo, hi] = runs_[static_cast<std::size_t>(r)];
+                    const int row = j < lo ? lo : (j > hi ? hi : j);
+                    const std::int64_t dy = j - row;
+                    const std::int64_t d = dx2 + dy * dy;
+                    if (d < best) {
+                        best = d;
+                        best_site = row * w + run_columns_[k];
+                    }
+                }
+            }
+            return best;
+        };
+        done = wavefront(sites, d2, measure, [](int, int) { return true; });
+    }
+
+    // Wide blobs: an EDT of the new sites over a window around them, doubled until the
+    // wavefront stays inside. It starts at twice the old distance of the new sites (the empty
+    // space they were put in).
+    std::int64_t room = 0;
+    for (int p : sites) room = std::max<std::int64_t>(room, d2[p] == infinite ? 0 : d2[p]);
+    int rho = std::max(8, 2 * static_cast<int>(std::sqrt(static_cast<double>(room))) + 2);
+    for (; !done; rho *= 2) {
         const int wx0 = std::max(0, bx0 - rho), wx1 = std::min(w - 1, bx1 + rho);
         const int wy0 = std::max(0, by0 - rho), wy1 = std::min(h - 1, by1 + rho);
         const int ww = wx1 - wx0 + 1, wh = wy1 - wy0 + 1;
@@ -186,46 +298,14 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
         separable_edt(
             ww, wh, [&](int i, int j) { return mask[static_cast<std::size_t>(j) * ww + i] != 0; },
             window_d2_.data(), window_site_.data(), window_scratch_);
-
-        if (++stamp_ == 0) {
-            std::fill(visit_.begin(), visit_.end(), 0);
-            stamp_ = 1;
-        }
-        queue_.clear();
-        improved_.clear();
-        for (int p : sites) {
-            visit_[p] = stamp_;
-            queue_.push_back(p);
-            improved_.push_back({p, 0, p});
-        }
-        bool escaped = false;
-        for (std::size_t head = 0; head < queue_.size() && !escaped; ++head) {
-            const int q = queue_[head];
-            const int qi = q % w, qj = q / w;
-            for (int k = 0; k < 8; ++k) {
-                const int ri = qi + kDi[k], rj = qj + kDj[k];
-                if (ri < 0 || ri >= w || rj < 0 || rj >= h) continue;
-                const int r = rj * w + ri;
-                if (visit_[r] == stamp_) continue;
-                if (ri < wx0 || ri > wx1 || rj < wy0 || rj > wy1) {
-                    escaped = true;
-                    break;
-                }
-                visit_[r] = stamp_;
-                const std::size_t local = static_cast<std::size_t>(rj - wy0) * ww + (ri - wx0);
-                const std::int64_t m = window_d2_[local];
-                const std::int64_t old = d2[r];
-                if (m < old) {
-                    const int ls = window_site_[local];
-                    improved_.push_back({r, static_cast<std::int32_t>(m),
-                                         (ls / ww + wy0) * w + (ls % ww + wx0)});
-                }
-                // Keep going while sqrt(m) < sqrt(old) + 1 (see the header for why).
-                const std::int64_t t = m - old - 1;
-                if (t < 0 || t * t < 4 * old) queue_.push_back(r);
-            }
-        }
-        if (!escaped) break;
+        auto measure = [&](int i, int j, std::int32_t& best_site) {
+            const std::size_t local = static_cast<std::size_t>(j - wy0) * ww + (i - wx0);
+            const int ls = window_site_[local];
+            best_site = (ls / ww + wy0) * w + (ls % ww + wx0);
+            return static_cast<std::int64_t>(window_d2_[local]);
+        };
+        auto measurable = [&](int i, int j) { return i >= wx0 && i <= wx1 && j >= wy0 && j <= wy1; };
+        done = wavefront(sites, d2, measure, measurable);
     }
 
     for (const Improvement& im : improved_) {

@@ -4,9 +4,11 @@
 // pixels whose nearest site changes.
 //
 // Exactness of add_sites(): the squared distance of a pixel q changes exactly when
-// m(q) = min over new sites s of |q - s|^2 is below its old value D(q). m is computed exactly by
-// an EDT of the new sites alone over a window around them (all new sites lie in the window, so
-// the window EDT is exact), and the wavefront visits every pixel with sqrt(m) < sqrt(D) + 1.
+// m(q) = min over new sites s of |q - s|^2 is below its old value D(q). m is computed exactly:
+// for blobs spanning few columns (a placed element, usually) directly from the runs of new sites
+// in each column, else by an EDT of the new sites alone over a window around them (all new sites
+// lie in the window, so the window EDT is exact). The wavefront visits every pixel with
+// sqrt(m) < sqrt(D) + 1.
 // Along the straight segment from a changed pixel to its nearest new site, sqrt(m) - sqrt(D)
 // only decreases, and the 8-connected (Bresenham) path of that segment stays within half a
 // pixel of it, which raises sqrt(m) - sqrt(D) by less than 1; so every changed pixel is reached.
@@ -19,6 +21,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace acanthus {
@@ -65,6 +68,9 @@ private:
     // Updates `d2` (and `site` when not null) for the new sites; returns changed pixels in `out`.
     void propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
                    std::vector<std::int32_t>* site, std::vector<int>* out);
+    template <class Measure, class Measurable>
+    bool wavefront(const std::vector<int>& sites, const std::vector<std::int32_t>& d2,
+                   Measure measure, Measurable measurable);
 
     int width_;
     int height_;
@@ -76,7 +82,10 @@ private:
     // Incremental update state.
     std::vector<std::uint32_t> visit_;  // visit stamp per pixel
     std::uint32_t stamp_ = 0;
-    std::vector<int> queue_;
+    std::vector<int> queue_, queue_site_;
+    std::vector<int> sorted_sites_;
+    std::vector<int> run_columns_, run_start_;        // new sites as runs of rows per column
+    std::vector<std::pair<int, int>> runs_;
     std::vector<std::uint8_t> window_sites_;
     std::vector<std::int32_t> window_d2_, window_site_;
     Scratch scratch_, window_scratch_;

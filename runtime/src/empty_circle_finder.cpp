@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace acanthus {
 namespace {
@@ -16,6 +17,17 @@ EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame
     const std::size_t n = static_cast<std::size_t>(grid.width) * grid.height;
     registered_.assign(n, 0);
     discarded_.assign(n, 0);
+    // radius_ok() is monotone in d2: find its threshold once, for a cheap integer test.
+    if (std::isnan(min_radius_)) min_radius_ = 0;
+    const double want = std::max(0.0, min_radius_ / grid.pixel) + kMargin;
+    if (want > 1e5) {  // beyond any squared distance of a grid
+        min_d2_ = std::numeric_limits<std::int64_t>::max();
+    } else {
+        std::int64_t t = std::max<std::int64_t>(1, static_cast<std::int64_t>(want * want) - 2);
+        while (!radius_ok(t)) ++t;
+        while (t > 1 && radius_ok(t - 1)) --t;
+        min_d2_ = t;
+    }
     seen_.assign(n, 0);
 }
 
@@ -47,7 +59,7 @@ bool EmptyCircleFinder::on_medial_axis(int pixel) const {
 
 bool EmptyCircleFinder::shape_eligible(int pixel) const {
     const std::int64_t d2 = field_.squared_distance(pixel);
-    if (d2 == DistanceField::infinite || !radius_ok(d2)) return false;
+    if (d2 < min_d2_ || d2 == DistanceField::infinite) return false;
     return field_.nearest_kind(pixel) == ObstacleKind::element && on_medial_axis(pixel);
 }
 

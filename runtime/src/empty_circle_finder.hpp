@@ -85,6 +85,7 @@ private:
     const DistanceField& field_;
     GridFrame grid_;
     double min_radius_;
+    std::int64_t min_d2_ = 1;  // smallest d2 whose radius is at least min_radius_
     std::priority_queue<Key> heap_;
     std::vector<std::int32_t> registered_;  // d2 of the pixel's live entry (heap or blocked), 0 none
     std::vector<std::int32_t> discarded_;   // d2 at which the pixel was discarded, 0 none

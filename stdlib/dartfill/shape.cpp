@@ -197,7 +197,10 @@ Shape Shape::from_points(std::string name, std::vector<Point> outline) {
     double area = signed_area(ring);
     double extent = std::max(box.width(), box.height());
     std::size_t ei = 0, ej = 0;
-    if (!(extent > 0)) refuse(name, "has zero area");
+    bool collinear = true;
+    for (std::size_t i = 2; i < ring.size() && collinear; ++i)
+        collinear = orient(ring[0], ring[1], ring[i]) == 0;
+    if (!(extent > 0) || collinear) refuse(name, "has zero area");
     if (find_self_intersection(ring, ei, ej))
         refuse(name, "outline intersects itself (edges " + std::to_string(ei) + " and " +
                          std::to_string(ej) + ")");

@@ -4,9 +4,13 @@
 
 #include <acanthus/point.hpp>
 
+// Boost.Geometry's rescale policy trips a false -Wmaybe-uninitialized in GCC 12.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
 #include <boost/geometry/geometries/polygon.hpp>
+#pragma GCC diagnostic pop
 
 #include <algorithm>
 #include <cmath>

@@ -158,6 +158,15 @@ TEST(DistanceField, IncrementalMatchesFullComputeAfterEveryStep) {
                     if (i < 0 || j < 0 || i >= w || j >= h || di * di + dj * dj > r * r) continue;
                     blob.push_back(j * w + i);
                 }
+            // Sometimes a long slanted stroke across more columns than are measured directly.
+            if (rng.chance(0.25)) {
+                const int len = static_cast<int>(rng.uniform_int(20, 60));
+                const double slope = rng.uniform(-0.7, 0.7);
+                for (int k = 0; k < len; ++k) {
+                    const int i = (ci + k) % w, j = static_cast<int>(cj + slope * k + 4 * h) % h;
+                    blob.push_back(j * w + i);
+                }
+            }
             const ObstacleKind kind = rng.chance(0.15) ? ObstacleKind::boundary : ObstacleKind::element;
             const std::vector<std::int64_t> before = [&] {
                 std::vector<std::int64_t> v(occ.size());

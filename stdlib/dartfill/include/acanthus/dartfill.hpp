@@ -116,9 +116,10 @@ FillResult fill(const ShapeSet& shapes, const Options& options);
 
 // Inside a rule body: makes one element of type T per placement (T has a polygon proxy p0 and
 // int/double fields shape, rotation and scale, as `aggregate` in dartfill.acr), adds each with
-// new_child() and returns how many were added.
+// new_child() and returns how many were added. Sterile aggregates (the default) end growth
+// around them at once; pass false when other rules grow on them.
 template <class T>
-int add_aggregates(const FillResult& result) {
+int add_aggregates(const FillResult& result, bool sterile = true) {
     int added = 0;
     for (const Placement& p : result.placements) {
         T* e = new T;
@@ -126,6 +127,7 @@ int add_aggregates(const FillResult& result) {
         e->shape = p.shape;
         e->rotation = p.rotation;
         e->scale = p.scale;
+        e->sterile = sterile;
         acanthus::body::new_child(*e);
         ++added;
     }
