@@ -7,11 +7,10 @@
 #include <acanthus/dartfill.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
-
-#include <ctime>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
+#include <ctime>
 #include <exception>
 #include <string>
 
@@ -22,12 +21,15 @@ namespace {
 // The three concave pebbles of rules/pebbles.acr.
 dartfill::ShapeSet pebbles() {
     dartfill::ShapeSet set;
-    set.add_path("bean", "M 0 7 C 0 0 8 -2 12 2 C 14 4 16 4 18 2 C 22 -1 27 4 25 10 "
-                         "C 23 16 4 17 0 7 Z");
-    set.add_path("peanut", "M 0 6 C 0 -1 10 -1 12 3 C 14 -1 24 -1 24 6 C 24 13 14 13 12 9 "
-                           "C 10 13 0 13 0 6 Z");
-    set.add_path("kidney", "M 2 0 C 10 -3 20 2 21 10 C 21 14 17 15 15 12 C 13 9 8 9 6 13 "
-                           "C 4 16 -1 14 0 9 C 0 5 -1 1 2 0 Z");
+    set.add_path("bean",
+                 "M 0 7 C 0 0 8 -2 12 2 C 14 4 16 4 18 2 C 22 -1 27 4 25 10 "
+                 "C 23 16 4 17 0 7 Z");
+    set.add_path("peanut",
+                 "M 0 6 C 0 -1 10 -1 12 3 C 14 -1 24 -1 24 6 C 24 13 14 13 12 9 "
+                 "C 10 13 0 13 0 6 Z");
+    set.add_path("kidney",
+                 "M 2 0 C 10 -3 20 2 21 10 C 21 14 17 15 15 12 C 13 9 8 9 6 13 "
+                 "C 4 16 -1 14 0 9 C 0 5 -1 1 2 0 Z");
     return set;
 }
 
@@ -56,10 +58,11 @@ Run measure(const dartfill::ShapeSet& shapes, const Region& region, dartfill::Op
         total.seconds += seconds;
         total.coverage += r.stats.coverage / runs;
         total.trials += r.stats.trials;
-        std::printf("%-8s seed %3llu  elements %5zu  cpu seconds %8.4f  coverage %.3f  trials %ld\n",
-                    std::string(dartfill::to_string(method)).c_str(),
-                    static_cast<unsigned long long>(seed + k), r.placements.size(), seconds,
-                    r.stats.coverage, r.stats.trials);
+        std::printf(
+            "%-8s seed %3llu  elements %5zu  cpu seconds %8.4f  coverage %.3f  trials %ld\n",
+            std::string(dartfill::to_string(method)).c_str(),
+            static_cast<unsigned long long>(seed + k), r.placements.size(), seconds,
+            r.stats.coverage, r.stats.trials);
     }
     return total;
 }
@@ -74,11 +77,16 @@ int main(int argc, char** argv) {
     for (int i = 1; i + 1 < argc; i += 2) {
         std::string flag = argv[i];
         const char* value = argv[i + 1];
-        if (flag == "--panel") panel = value;
-        else if (flag == "--naive-cancellations") options.naive_cancellations = std::atol(value);
-        else if (flag == "--seed") seed = std::strtoull(value, nullptr, 10);
-        else if (flag == "--resolution") options.resolution = std::atoi(value);
-        else if (flag == "--runs") runs = std::max(1, std::atoi(value));
+        if (flag == "--panel")
+            panel = value;
+        else if (flag == "--naive-cancellations")
+            options.naive_cancellations = std::atol(value);
+        else if (flag == "--seed")
+            seed = std::strtoull(value, nullptr, 10);
+        else if (flag == "--resolution")
+            options.resolution = std::atoi(value);
+        else if (flag == "--runs")
+            runs = std::max(1, std::atoi(value));
         else {
             std::fprintf(stderr, "bench_dartfill: unknown option %s\n", argv[i]);
             return 2;
@@ -87,9 +95,10 @@ int main(int argc, char** argv) {
     try {
         Region region = Region::from_argument(panel);
         dartfill::ShapeSet shapes = pebbles();
-        std::printf("panel %s, %zu shapes, naive stops after %ld consecutive cancellations, "
-                    "%d runs\n",
-                    panel.c_str(), shapes.size(), options.naive_cancellations, runs);
+        std::printf(
+            "panel %s, %zu shapes, naive stops after %ld consecutive cancellations, "
+            "%d runs\n",
+            panel.c_str(), shapes.size(), options.naive_cancellations, runs);
         Run naive = measure(shapes, region, options, dartfill::Method::naive, seed, runs);
         Run gap = measure(shapes, region, options, dartfill::Method::fill_gap, seed, runs);
         Run third = measure(shapes, region, options, dartfill::Method::medial, seed, runs);
@@ -101,8 +110,8 @@ int main(int argc, char** argv) {
             "\"third_seconds\":%.4f,\"third_coverage\":%.4f,\"third_speedup\":%.2f}\n",
             panel.c_str(), runs, naive.elements, naive.seconds, naive.coverage, gap.elements,
             gap.seconds, gap.coverage, naive.seconds / gap.seconds,
-            static_cast<double>(gap.elements) / static_cast<double>(naive.elements),
-            third.elements, third.seconds, third.coverage, naive.seconds / third.seconds);
+            static_cast<double>(gap.elements) / static_cast<double>(naive.elements), third.elements,
+            third.seconds, third.coverage, naive.seconds / third.seconds);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_dartfill: %s\n", e.what());
         return 1;

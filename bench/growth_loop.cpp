@@ -104,6 +104,8 @@ int main(int argc, char** argv) {
                  elements, stats.iterations, stats.seconds, stats.stop_reason.c_str(), eps);
     std::fprintf(stderr, "  seconds per element around 2k: %.3g, around 20k: %.3g\n", cost_2k, cost_20k);
     const double incremental_rss = peak_rss_mb();
+    if (std::getenv("ACANTHUS_BENCH_TRACE"))
+        for (const Sample& s : samples) std::fprintf(stderr, "  %ld elements at %.3f s\n", s.elements, s.seconds);
 
     // Reference engine over the first elements of the same growth.
     options.reference_engine = true;

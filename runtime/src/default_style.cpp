@@ -30,11 +30,12 @@ double order_hue(long rank, long count) {
 }
 
 void draw_default(Canvas& canvas, const Element& element, RenderStyle style, Color order_color,
-                  const CurveStroke& curves) {
+                  const CurveStroke& curves, bool skip_curves) {
     double width = canvas.line_width();
     for (std::size_t k = 0; k < element.proxy_count(); ++k) {
         const Proxy& proxy = element.proxy(k);
         bool area = is_area(proxy.kind());
+        if (skip_curves && !area && proxy.kind() != ProxyKind::point) continue;
         if (curves.stroke && !area && proxy.kind() != ProxyKind::point) {
             canvas.set_color(style == RenderStyle::order ? order_color : ink);
             if (proxy.finite()) curves.stroke->draw(canvas, proxy, curves.width);

@@ -28,7 +28,8 @@ struct CurveStroke {
 
 // Draws `element`'s proxies with the canvas's current line width. `order_color` is used by the
 // order style only.
+// With `skip_curves`, curve proxies are left out (a skeletal stroke draws them afterwards).
 void draw_default(Canvas& canvas, const Element& element, RenderStyle style, Color order_color,
-                  const CurveStroke& curves = {});
+                  const CurveStroke& curves = {}, bool skip_curves = false);
 
 }  // namespace acanthus::detail

@@ -104,7 +104,7 @@ void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t*
 
 DistanceField::DistanceField(int width, int height) : width_(width), height_(height) {
     // Squared distances must fit in 32 bits.
-    if (width <= 0 || height <= 0 || width > 30000 || height > 30000)
+    if (width <= 0 || height <= 0 || width > 30000 || height > 30000)  // also packs in 16 bits
         throw std::invalid_argument("DistanceField: grid size out of range");
     const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     occ_.assign(n, 0);
@@ -112,6 +112,7 @@ DistanceField::DistanceField(int width, int height) : width_(width), height_(hei
     boundary2_.assign(n, kInfinite);
     site_.assign(n, -1);
     visit_.assign(n, 0);
+    hint_.assign(n, 0);
 }
 
 double DistanceField::distance(int i, int j) const {
@@ -160,60 +161,86 @@ void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
 
 namespace {
 
-constexpr int kDi[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
-constexpr int kDj[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
-
 // Blobs spanning at most this many columns are measured directly from their runs of sites.
 constexpr std::size_t kDirectColumns = 24;
 
 }  // namespace
 
-// The wavefront of the header comment. `measure(i, j, site)` returns m exactly for pixels in
-// the measurable area and sets the nearest new site (on entry `site` is the nearest new site of
-// the pixel the wavefront came from, a good first guess); `measurable(i, j)` says whether it can.
-// Returns false (nothing changed) when the wavefront reached an unmeasurable pixel.
+// The wavefront of the header comment, as an 8-connected scanline fill: a pixel is "inside"
+// when it is a new site or sqrt(m) < sqrt(D) + 1; the fill evaluates every inside pixel
+// reachable from the new sites and all their 8-neighbours, once each. `measure(i, j, si, sj)`
+// returns m exactly for pixels in the measurable area and sets the nearest new site (on entry
+// (si, sj) is the nearest new site of an adjacent inside pixel, a good first guess);
+// `measurable(i, j)` says whether it can. Returns false (nothing changed) when the fill reached
+// an unmeasurable pixel.
 template <class Measure, class Measurable>
 bool DistanceField::wavefront(const std::vector<int>& sites, const std::vector<std::int32_t>& d2,
                               Measure measure, Measurable measurable) {
     const int w = width_, h = height_;
-    if (++stamp_ == 0) {
+    // visit_ == base: evaluated, outside; base + 1: inside; base + 2: inside, its row span filled.
+    if (stamp_ > std::numeric_limits<std::uint32_t>::max() - 4) {
         std::fill(visit_.begin(), visit_.end(), 0);
-        stamp_ = 1;
+        stamp_ = 0;
     }
-    queue_.clear();
-    queue_site_.clear();
+    const std::uint32_t base = stamp_ + 1;
+    stamp_ += 3;
     improved_.clear();
+    stack_.clear();
+    auto pack = [](int i, int j) { return (static_cast<std::uint32_t>(i) << 16) | static_cast<std::uint32_t>(j); };
     for (int p : sites) {
-        visit_[p] = stamp_;
-        queue_.push_back(p);
-        queue_site_.push_back(p);
+        const int i = p % w, j = p / w;
+        visit_[p] = base + 1;
+        hint_[p] = pack(i, j);
         improved_.push_back({p, 0, p});
+        stack_.push_back(pack(i, j));
     }
-    for (std::size_t head = 0; head < queue_.size(); ++head) {
-        const int q = queue_[head];
-        const int hint = queue_site_[head];
-        const int qi = q % w, qj = q / w;
-        for (int k = 0; k < 8; ++k) {
-            const int ri = qi + kDi[k], rj = qj + kDj[k];
-            if (ri < 0 || ri >= w || rj < 0 || rj >= h) continue;
-            const int r = rj * w + ri;
-            if (visit_[r] == stamp_) continue;
-            if (!measurable(ri, rj)) return false;
-            visit_[r] = stamp_;
-            const std::int64_t old = d2[r];
-            if (old == 0) continue;  // an obstacle: never nearer to a new site
-            std::int32_t site = hint;
-            const std::int64_t m = measure(ri, rj, site);
-            if (m < old) improved_.push_back({r, static_cast<std::int32_t>(m), site});
-            // Keep going while sqrt(m) < sqrt(old) + 1 (see the header for why).
-            const std::int64_t t = m - old - 1;
-            if (t < 0 || t * t < 4 * old) {
-                queue_.push_back(r);
-                queue_site_.push_back(site);
+    bool escaped = false;
+    // Evaluates pixel (i, j) once; `from` is an adjacent inside pixel. Returns whether inside.
+    auto inside = [&](int i, int j, int from) {
+        const int r = j * w + i;
+        const std::uint32_t v = visit_[r];
+        if (v >= base) return v > base;
+        if (!measurable(i, j)) {
+            escaped = true;
+            return false;
+        }
+        const std::int64_t old = d2[r];
+        bool in = false;
+        if (old != 0) {  // an obstacle is never nearer to a new site
+            int si = static_cast<int>(hint_[from] >> 16), sj = static_cast<int>(hint_[from] & 0xffff);
+            const std::int64_t m = measure(i, j, si, sj);
+            if (m < old) improved_.push_back({r, static_cast<std::int32_t>(m), sj * w + si});
+            const std::int64_t t = m - old - 1;  // sqrt(m) < sqrt(old) + 1
+            in = t < 0 || t * t < 4 * old;
+            if (in) hint_[r] = pack(si, sj);
+        }
+        visit_[r] = base + (in ? 1 : 0);
+        return in;
+    };
+    while (!stack_.empty() && !escaped) {
+        const std::uint32_t top = stack_.back();
+        stack_.pop_back();
+        const int i = static_cast<int>(top >> 16), j = static_cast<int>(top & 0xffff);
+        const int row = j * w;
+        if (visit_[row + i] == base + 2) continue;
+        int xl = i, xr = i;
+        while (xl > 0 && inside(xl - 1, j, row + xl)) --xl;
+        while (xr < w - 1 && inside(xr + 1, j, row + xr)) ++xr;
+        if (escaped) break;
+        for (int x = xl; x <= xr; ++x) visit_[row + x] = base + 2;
+        for (int nj = j - 1; nj <= j + 1 && !escaped; nj += 2) {
+            if (nj < 0 || nj >= h) continue;
+            const int x0 = std::max(0, xl - 1), x1 = std::min(w - 1, xr + 1);
+            bool run = false;
+            for (int x = x0; x <= x1 && !escaped; ++x) {
+                const int from = row + std::clamp(x, xl, xr);
+                const bool in = inside(x, nj, from);
+                if (in && !run && visit_[nj * w + x] == base + 1) stack_.push_back(pack(x, nj));
+                run = in;
             }
         }
     }
-    return true;
+    return !escaped;
 }
 
 void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
@@ -254,9 +281,9 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
     bool done = false;
     if (run_columns_.size() <= kDirectColumns) {
         const std::size_t ncol = run_columns_.size();
-        auto measure = [&](int i, int j, std::int32_t& best_site) {
+        auto measure = [&](int i, int j, int& si, int& sj) {
             // The guess bounds the search: columns at least that far away cannot win.
-            const std::int64_t gx = i - best_site % w, gy = j - best_site / w;
+            const std::int64_t gx = i - si, gy = j - sj;
             std::int64_t best = gx * gx + gy * gy;
             for (std::size_t k = 0; k < ncol; ++k) {
                 const std::int64_t dx = i - run_columns_[k];
@@ -269,7 +296,8 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
                     const std::int64_t d = dx2 + dy * dy;
                     if (d < best) {
                         best = d;
-                        best_site = row * w + run_columns_[k];
+                        si = run_columns_[k];
+                        sj = row;
                     }
                 }
             }
@@ -298,10 +326,11 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
         separable_edt(
             ww, wh, [&](int i, int j) { return mask[static_cast<std::size_t>(j) * ww + i] != 0; },
             window_d2_.data(), window_site_.data(), window_scratch_);
-        auto measure = [&](int i, int j, std::int32_t& best_site) {
+        auto measure = [&](int i, int j, int& si, int& sj) {
             const std::size_t local = static_cast<std::size_t>(j - wy0) * ww + (i - wx0);
             const int ls = window_site_[local];
-            best_site = (ls / ww + wy0) * w + (ls % ww + wx0);
+            si = ls % ww + wx0;
+            sj = ls / ww + wy0;
             return static_cast<std::int64_t>(window_d2_[local]);
         };
         auto measurable = [&](int i, int j) { return i >= wx0 && i <= wx1 && j >= wy0 && j <= wy1; };

@@ -80,9 +80,10 @@ private:
     std::vector<std::int32_t> site_;
 
     // Incremental update state.
-    std::vector<std::uint32_t> visit_;  // visit stamp per pixel
+    std::vector<std::uint32_t> visit_;  // fill state per pixel, relative to stamp_
     std::uint32_t stamp_ = 0;
-    std::vector<int> queue_, queue_site_;
+    std::vector<std::uint32_t> hint_;   // nearest new site (i << 16 | j) of inside pixels
+    std::vector<std::uint32_t> stack_;  // fill seeds (i << 16 | j)
     std::vector<int> sorted_sites_;
     std::vector<int> run_columns_, run_start_;        // new sites as runs of rows per column
     std::vector<std::pair<int, int>> runs_;

@@ -1,35 +1,39 @@
 // FindEmptyCircle of Wong et al. section 4.1 over the distance field.
 //
-// Candidate centres are the medial axis: free pixels on a crest of the distance field, i.e. whose
-// squared distance is at least that of both neighbours along one of the four lines (horizontal,
-// vertical, two diagonals) through the pixel. (The paper's Manhattan-distance MAT takes pixels
-// at least as large as their neighbours; city-block distances have plateaus along ridges, so that
-// rule yields the whole ridge. Exact Euclidean distances rise along a ridge, where that rule
-// would keep only the peaks, so the crest is tested across the ridge instead.) The candidate circle of a pixel is centred on the pixel centre with
-// radius (sqrt(d2) - kMargin) pixels: every rasterized shape lies in the closed squares of its
-// obstacle pixels, which reach at most sqrt(1/2) pixel beyond their centres, and curves are
-// flattened within PixelCover::kFlatten, so the circle errs on the small side and is empty.
-// A candidate is eligible when its nearest obstacle is an element (a circle stopped by the
-// boundary is discarded; ties go to the boundary), its radius is at least the minimum, and it
-// contains no exclude-list point. The largest eligible candidate wins; ties go to the smaller
-// pixel index.
+// Candidate centres are the medial axis: free pixels on a crest of the distance field along one
+// of the four lines through the pixel (horizontal, vertical, two diagonals): neither neighbour on
+// the line is farther from the obstacles, and the distance bends there by at least kBend pixels
+// (2 d(p) - d(a) - d(b) >= kBend). The paper's Manhattan-distance MAT takes pixels at least as
+// large as their neighbours; city-block distances have plateaus along ridges, so that yields the
+// whole ridge. Exact Euclidean distances rise along a ridge, so the crest is tested across it,
+// and the bend threshold drops the faint crests between neighbouring pixels of one rasterized
+// shape (a theta-medial axis).
 //
-// find() keeps candidates in a max-heap with lazy invalidation: distances only decrease as
-// obstacles are added, so a pixel leaves the medial axis only when its own distance changes
-// (lower neighbours never spoil a crest), and joins it only when it or a neighbour changes; update() re-evaluates exactly those pixels.
+// The candidate circle of a pixel is centred on the pixel centre with radius (sqrt(d2) - kMargin)
+// pixels: every rasterized shape lies in the closed squares of its obstacle pixels, which reach
+// at most sqrt(1/2) pixel beyond their centres, and curves are flattened within
+// PixelCover::kFlatten, so the circle errs on the small side and is empty. A candidate is eligible
+// when its nearest obstacle is an element (a circle stopped by the boundary is discarded; ties go
+// to the boundary), its radius is at least the minimum, and it contains no exclude-list point.
+// The largest eligible candidate wins; ties go to the smaller pixel index.
+//
+// find() keeps the eligible candidates as per-pixel states with the best of each 8 x 8 tile in a
+// MaxTree. Distances only decrease as obstacles are added, so a pixel leaves the medial axis only
+// when its own distance changes (lower neighbours never spoil a crest) and joins it only when it
+// or a neighbour changes: update() re-evaluates the tiles holding those pixels.
 // Candidates blocked by an exclude point wait under that point's id until it is removed.
-// find_by_scan() is the reference: a scan of the whole grid with the same rules.
-// discard() records (pixel, d2) pairs that both searches skip, so the two stay identical.
+// find_by_scan() is the reference: a scan of the whole grid with the same rules. discard()
+// records (pixel, d2) pairs that both searches skip, so the two stay identical.
 #pragma once
 
 #include "distance_field.hpp"
 #include "exclude_list.hpp"
+#include "max_tree.hpp"
 
 #include <acanthus/growth.hpp>
 
 #include <cstdint>
 #include <optional>
-#include <queue>
 #include <vector>
 
 namespace acanthus {
@@ -43,6 +47,7 @@ struct EmptyCircle {
 class EmptyCircleFinder {
 public:
     static constexpr double kMargin = 0.75;  // pixels, >= sqrt(1/2) + PixelCover::kFlatten
+    static constexpr double kBend = 0.5;     // pixels: smallest bend of a medial-axis crest
 
     // `min_radius` in user units.
     EmptyCircleFinder(const DistanceField& field, const GridFrame& grid, double min_radius);
@@ -70,8 +75,6 @@ public:
     // The `limit` best shape-eligible candidates in choice order (for debug frames), by scan.
     std::vector<int> best_candidates(std::size_t limit) const;
 
-    std::size_t heap_size() const { return heap_.size(); }
-
 private:
     using Key = std::uint64_t;  // d2 in the high word, ~pixel in the low word: max is best
     static Key key_of(int pixel, std::int64_t d2) {
@@ -79,19 +82,39 @@ private:
     }
     static int pixel_of(Key k) { return static_cast<int>(0xffffffffu - static_cast<std::uint32_t>(k)); }
     static std::int64_t d2_of(Key k) { return static_cast<std::int64_t>(k >> 32); }
+    enum State : std::uint8_t { none = 0, candidate = 1, blocked = 2 };
+    static constexpr int kTileShift = 3;  // 8 x 8 pixel tiles
+
     bool radius_ok(std::int64_t d2) const;
+    // d2 of a pixel between neighbours of d2 a and b on a line: a crest that bends enough.
+    static bool crest(std::int64_t d, std::int64_t a, std::int64_t b);
     void consider(int pixel);
+    int tile_of(int pixel) const;
+    void mark_dirty(int tile);
+    void rescan(int tile);   // tile maximum from the pixel states
+    void refresh(int tile);  // re-decides every pixel of the tile, then rescans it
+    // Row of a pixel index without a division (a multiply and a correction).
+    int row_of(int pixel) const {
+        int j = static_cast<int>(pixel * inv_width_);
+        if (j * grid_.width > pixel) --j;
+        else if ((j + 1) * grid_.width <= pixel) ++j;
+        return j;
+    }
 
     const DistanceField& field_;
     GridFrame grid_;
     double min_radius_;
+    double inv_width_;
     std::int64_t min_d2_ = 1;  // smallest d2 whose radius is at least min_radius_
-    std::priority_queue<Key> heap_;
-    std::vector<std::int32_t> registered_;  // d2 of the pixel's live entry (heap or blocked), 0 none
+    int tiles_w_ = 0, tiles_h_ = 0;
+
+    std::vector<std::uint8_t> state_;       // State per pixel, valid for state_d2_
+    std::vector<std::int32_t> state_d2_;    // d2 at which state_ was decided
     std::vector<std::int32_t> discarded_;   // d2 at which the pixel was discarded, 0 none
-    std::vector<std::vector<Key>> blocked_;  // by exclude point id
-    std::vector<std::uint32_t> seen_;        // visit stamps for update()
-    std::uint32_t stamp_ = 0;
+    std::vector<std::vector<std::pair<int, std::int32_t>>> blocked_;  // by exclude id: (pixel, d2)
+    MaxTree tiles_;
+    std::vector<std::uint8_t> dirty_;
+    std::vector<int> dirty_list_;
 };
 
 }  // namespace acanthus

@@ -5,9 +5,11 @@
 // placement order, oldest red to newest purple, as Figure 14 of the paper does: it is a diagnostic
 // view of the growth, and a %draw would hide exactly what it shows.
 // Seeds are not drawn (they are markers, not ornament) unless the seed type has a %draw.
-// RenderOptions::stroke (a built-in skeletal stroke name or an .svg stroke file) replaces the
-// plain line of every curve proxy drawn by a default style with that stroke, four outline
-// widths wide; %draw bodies use SkeletalStroke themselves if they want one.
+// RenderOptions::stroke (a built-in skeletal stroke name or an .svg stroke file) applies to every
+// curve of the pattern: %draw bodies are set aside, area proxies are drawn in the chosen style,
+// and curve proxies that join end to start in placement order (a spiral's segments, a vine's
+// pieces) are warped along as one skeleton, as wide as a twelfth of its length (between one and
+// eight outline widths), so larger curves get bolder strokes (Figure 17).
 #include <cairo.h>
 
 #include <acanthus/error.hpp>
@@ -70,6 +72,60 @@ RuleFailure draw_failure(const Pattern& pattern, const ElementType& type, const 
     return RuleFailure(pattern.file, type.line, "%draw " + type.name, why);
 }
 
+bool is_curve(const Proxy& p) {
+    return p.kind() == ProxyKind::arc || p.kind() == ProxyKind::linesegment ||
+           p.kind() == ProxyKind::bezier;
+}
+
+std::pair<Point, Point> curve_ends(const Proxy& p) {
+    switch (p.kind()) {
+        case ProxyKind::arc: {
+            const auto& a = static_cast<const ArcProxy&>(p);
+            return {a.start_point(), a.end_point()};
+        }
+        case ProxyKind::linesegment: {
+            const auto& l = static_cast<const LineSegmentProxy&>(p);
+            return {l.p0, l.p1};
+        }
+        default: {
+            const auto& b = static_cast<const BezierProxy&>(p);
+            return {b.c[0], b.c[3]};
+        }
+    }
+}
+
+double chain_length(const std::vector<const Proxy*>& chain) {
+    double length = 0;
+    for (const Proxy* p : chain) {
+        Rect b = p->bounds();
+        length += std::max(distance(curve_ends(*p).first, curve_ends(*p).second),
+                           0.5 * std::hypot(b.width(), b.height()));
+    }
+    return length;
+}
+
+// Curve proxies in placement order, joined into chains where one ends where the next starts.
+void draw_stroke_chains(Canvas& canvas, const std::vector<const Element*>& elements,
+                        const SkeletalStroke& stroke, double line_width, double join_tolerance) {
+    std::vector<std::vector<const Proxy*>> chains;
+    for (const Element* e : elements) {
+        for (std::size_t k = 0; k < e->proxy_count(); ++k) {
+            const Proxy& p = e->proxy(k);
+            if (!is_curve(p) || !p.finite()) continue;
+            if (!chains.empty() && distance(curve_ends(*chains.back().back()).second,
+                                            curve_ends(p).first) <= join_tolerance)
+                chains.back().push_back(&p);
+            else
+                chains.push_back({&p});
+        }
+    }
+    canvas.set_color(Color{0.10, 0.10, 0.10, 1});
+    for (const auto& chain : chains) {
+        double width = std::clamp(chain_length(chain) / 12, line_width, 8 * line_width);
+        stroke.draw(canvas, chain, width);
+    }
+}
+
 void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const Element*>& elements,
                    RenderStyle style, const detail::PageLayout& page,
                    const detail::CurveStroke& curves) {
@@ -78,7 +134,7 @@ void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const 
     for (long index = 0; index < count; ++index) {
         const Element& element = *elements[static_cast<std::size_t>(index)];
         const ElementType& type = element.type();
-        bool custom = type.draw != nullptr && style != RenderStyle::order;
+        bool custom = type.draw != nullptr && style != RenderStyle::order && !curves.stroke;
         if (!custom && pattern.seed != nullptr && &type == pattern.seed) continue;
 
         cairo_save(cr);
@@ -100,13 +156,19 @@ void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const 
         } else {
             long rank = element.id >= 0 ? element.id : index;
             Color color = hue(detail::order_hue(rank, count));
-            detail::draw_default(canvas, element, style, color, curves);
+            detail::draw_default(canvas, element, style, color, {}, curves.stroke != nullptr);
         }
         cairo_restore(cr);
         if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
             throw draw_failure(
                 pattern, type,
                 std::string("drawing failed: ") + cairo_status_to_string(cairo_status(cr)));
+    }
+    if (curves.stroke) {
+        cairo_save(cr);
+        draw_stroke_chains(canvas, elements, *curves.stroke, page.line_width,
+                           1e-6 * std::max(page.width, page.height) / page.scale);
+        cairo_restore(cr);
     }
 }
 

@@ -2,11 +2,9 @@
 
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
-
+#include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
-
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -34,7 +32,8 @@ int crossing_direction(Point a, Point b, Point p) {
 
 int ring_winding(const std::vector<Point>& ring, Point p) {
     int w = 0;
-    for (std::size_t i = 0, n = ring.size(); i < n; ++i) w += crossing_direction(ring[i], ring[(i + 1) % n], p);
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i)
+        w += crossing_direction(ring[i], ring[(i + 1) % n], p);
     return w;
 }
 
@@ -67,14 +66,16 @@ void shape_pixels(const GridFrame& grid, const PlacedShape& shape, std::vector<i
         int j1 = clamp_i(std::ceil((b.y1 - grid.y0) / grid.pixel - 0.5), grid.height);
         for (int j = j0; j <= j1; ++j)
             for (int i = i0; i <= i1; ++i)
-                if (point_in_triangle(tris[k], grid.center_of(i, j))) out.push_back(j * grid.width + i);
+                if (point_in_triangle(tris[k], grid.center_of(i, j)))
+                    out.push_back(j * grid.width + i);
     }
     if (!tris.empty()) {
         const Triangle& t = tris.front();
         Point c{(t[0].x + t[1].x + t[2].x) / 3, (t[0].y + t[1].y + t[2].y) / 3};
         int i = static_cast<int>(std::floor((c.x - grid.x0) / grid.pixel));
         int j = static_cast<int>(std::floor((c.y - grid.y0) / grid.pixel));
-        if (i >= 0 && j >= 0 && i < grid.width && j < grid.height) out.push_back(j * grid.width + i);
+        if (i >= 0 && j >= 0 && i < grid.width && j < grid.height)
+            out.push_back(j * grid.width + i);
     }
 }
 
@@ -93,7 +94,8 @@ RingContainer::RingContainer(std::vector<std::vector<Point>> rings, bool evenodd
             bounds_ = {std::min(bounds_.x0, a.x), std::min(bounds_.y0, a.y),
                        std::max(bounds_.x1, a.x), std::max(bounds_.y1, a.y)};
             if (a == b) continue;
-            Rect box{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+            Rect box{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                     std::max(a.y, b.y)};
             index_->tree.insert({to_box(box), edges_.size()});
             edges_.push_back({a, b});
         }
@@ -177,7 +179,8 @@ std::vector<std::uint8_t> RingContainer::rasterize(const GridFrame& grid) const 
             if (!in) continue;
             // Pixels whose centres lie in [x_k, x_k+1).
             int i0 = static_cast<int>(std::ceil((crossings[k].first - grid.x0) / grid.pixel - 0.5));
-            int i1 = static_cast<int>(std::ceil((crossings[k + 1].first - grid.x0) / grid.pixel - 0.5));
+            int i1 =
+                static_cast<int>(std::ceil((crossings[k + 1].first - grid.x0) / grid.pixel - 0.5));
             for (int i = std::max(i0, 0); i < std::min(i1, grid.width); ++i)
                 occupancy[static_cast<std::size_t>(j) * grid.width + i] = 0;
         }

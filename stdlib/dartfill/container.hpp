@@ -2,14 +2,13 @@
 // leaves (through the Environment). Answers exact admission tests and rasterizes itself.
 #pragma once
 
-#include "placed_shape.hpp"
-
 #include <acanthus/growth.hpp>
-
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "placed_shape.hpp"
 
 namespace acanthus {
 class Environment;
@@ -24,7 +23,7 @@ GridFrame make_grid(Rect bounds, int resolution);
 void shape_pixels(const GridFrame& grid, const PlacedShape& shape, std::vector<int>& out);
 
 class Container {
-public:
+  public:
     virtual ~Container() = default;
     virtual Rect bounds() const = 0;
     virtual double area() const = 0;
@@ -37,7 +36,7 @@ public:
 
 // A panel given by closed rings (flattened region boundary) and its fill rule.
 class RingContainer : public Container {
-public:
+  public:
     RingContainer(std::vector<std::vector<Point>> rings, bool evenodd);
     ~RingContainer() override;
     static std::unique_ptr<RingContainer> from_region(const Region& region);
@@ -48,7 +47,7 @@ public:
     std::vector<std::uint8_t> rasterize(const GridFrame& grid) const override;
     bool contains(Point p) const;
 
-private:
+  private:
     struct Edge {
         Point a, b;
     };
@@ -63,7 +62,7 @@ private:
 // The space left in the panel of the running growth engine: admission asks the Environment
 // (region and placed elements); the extent is found by flood-filling from `start`.
 class EnvironmentContainer : public Container {
-public:
+  public:
     EnvironmentContainer(Environment& env, Point start, double cell);
 
     Rect bounds() const override { return bounds_; }
@@ -71,7 +70,7 @@ public:
     bool admits(const PlacedShape& shape, double tolerance) const override;
     std::vector<std::uint8_t> rasterize(const GridFrame& grid) const override;
 
-private:
+  private:
     Environment& env_;
     Rect bounds_;
     mutable double area_ = -1;  // measured when the first raster is made

@@ -1,15 +1,13 @@
 // The public API: shape sets, method names, and fill() over a region or the running ornament.
 #include <acanthus/dartfill.hpp>
-
-#include "methods.hpp"
-#include "shape_list.hpp"
-
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
-
 #include <chrono>
 #include <filesystem>
 #include <stdexcept>
+
+#include "methods.hpp"
+#include "shape_list.hpp"
 
 namespace acanthus::dartfill {
 
@@ -23,9 +21,12 @@ Method parse_method(std::string_view text) {
 
 std::string_view to_string(Method method) {
     switch (method) {
-        case Method::naive: return "naive";
-        case Method::fill_gap: return "fillgap";
-        case Method::medial: return "medial";
+        case Method::naive:
+            return "naive";
+        case Method::fill_gap:
+            return "fillgap";
+        case Method::medial:
+            return "medial";
     }
     return "?";
 }
@@ -125,9 +126,15 @@ FillResult run(const ShapeSet& shapes, const Container& container, const Options
     FillResult result;
     result.method = options.method;
     switch (options.method) {
-        case Method::naive: naive_dart_throwing(context, layout); break;
-        case Method::fill_gap: fill_gap(context, layout, result.stats.rounds); break;
-        case Method::medial: medial_fill(context, layout, result.stats.rounds); break;
+        case Method::naive:
+            naive_dart_throwing(context, layout);
+            break;
+        case Method::fill_gap:
+            fill_gap(context, layout, result.stats.rounds);
+            break;
+        case Method::medial:
+            medial_fill(context, layout, result.stats.rounds);
+            break;
     }
     double placed_area = 0;
     for (const PlacedShape& s : layout.shapes()) {

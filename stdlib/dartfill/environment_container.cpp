@@ -1,14 +1,13 @@
 // The room a growing ornament leaves, seen through the public Environment of the running body.
-#include "container.hpp"
-
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <deque>
 #include <set>
 #include <utility>
+
+#include "container.hpp"
 
 namespace acanthus::dartfill {
 namespace {
@@ -50,8 +49,7 @@ bool discover(const Environment& env, Point start, double cell, std::size_t limi
 
 }  // namespace
 
-EnvironmentContainer::EnvironmentContainer(Environment& env, Point start, double cell)
-    : env_(env) {
+EnvironmentContainer::EnvironmentContainer(Environment& env, Point start, double cell) : env_(env) {
     if (!(cell > 0) || !start.finite())
         throw InputError("dartfill: cannot find the panel around a non-finite start point");
     while (!discover(env, start, cell, 1u << 20, bounds_)) cell *= 2;

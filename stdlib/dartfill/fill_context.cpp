@@ -1,8 +1,8 @@
-#include "methods.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "methods.hpp"
 
 namespace acanthus::dartfill {
 
@@ -10,7 +10,8 @@ FillContext::FillContext(const std::vector<Shape>& shapes, const Container& cont
                          const Options& options, Random& random)
     : shapes_(shapes), container_(container), options_(options), random_(random) {
     Rect b = container.bounds();
-    tolerance_ = options.tolerance >= 0 ? options.tolerance : 1e-6 * std::max(b.width(), b.height());
+    tolerance_ =
+        options.tolerance >= 0 ? options.tolerance : 1e-6 * std::max(b.width(), b.height());
 }
 
 int FillContext::resolution() const {
@@ -43,7 +44,8 @@ const PlacedShape* FillContext::try_place(Layout& layout, const Pose& pose) {
 bool FillContext::fits(const Layout& layout, const Pose& pose) {
     ++trials_;
     PlacedShape candidate(shapes_[cycle_], cycle_, pose);
-    return container_.admits(candidate, tolerance_) && !layout.collides(candidate);
+    // The layout test is cheap; the container's may ask the growth engine (exact curve tests).
+    return !layout.collides(candidate) && container_.admits(candidate, tolerance_);
 }
 
 const PlacedShape* FillContext::place(Layout& layout, const Pose& pose) {

@@ -1,11 +1,11 @@
 // Sakurai & Miyata section 4: sparse Poisson-disk placement with bounding circles (4.2), then
 // rounds of |P| candidates drawn from Q, where a pixel joins Q with probability d^n of the
 // normalized distance field (4.3).
-#include "gap_field.hpp"
-#include "methods.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "gap_field.hpp"
+#include "methods.hpp"
 
 namespace acanthus::dartfill {
 namespace {
@@ -74,11 +74,11 @@ void fill_gap(FillContext& context, Layout& layout, long& rounds) {
         if (q.empty()) break;
         ++rounds;
         // P: |P| members of Q chosen uniformly without replacement.
-        auto count = std::min<std::size_t>(static_cast<std::size_t>(std::max(options.candidates, 1)),
-                                           q.size());
+        auto count = std::min<std::size_t>(
+            static_cast<std::size_t>(std::max(options.candidates, 1)), q.size());
         for (std::size_t k = 0; k < count; ++k) {
-            auto j = static_cast<std::size_t>(
-                random.uniform_int(static_cast<long long>(k), static_cast<long long>(q.size()) - 1));
+            auto j = static_cast<std::size_t>(random.uniform_int(
+                static_cast<long long>(k), static_cast<long long>(q.size()) - 1));
             std::swap(q[k], q[j]);
         }
         std::vector<std::int64_t> drawn(count);

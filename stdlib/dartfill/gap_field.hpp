@@ -2,18 +2,17 @@
 // runtime's exact EDT (DistanceField), updated incrementally as shapes are placed.
 #pragma once
 
-#include "container.hpp"
-#include "layout.hpp"
-
-#include "distance_field.hpp"
-
 #include <cstdint>
 #include <vector>
+
+#include "container.hpp"
+#include "distance_field.hpp"
+#include "layout.hpp"
 
 namespace acanthus::dartfill {
 
 class GapField {
-public:
+  public:
     // Rasterizes the space (blocked pixels are boundary sites) and every shape in `layout`.
     GapField(const Container& container, const Layout& layout, int resolution);
 
@@ -29,7 +28,7 @@ public:
     // A uniformly jittered point inside pixel `index`.
     Point point_in(int index, double u, double v) const;
 
-private:
+  private:
     GridFrame grid_;
     DistanceField field_;
     std::vector<int> pixels_;

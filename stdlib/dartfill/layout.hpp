@@ -2,15 +2,15 @@
 // broad phase of overlap queries.
 #pragma once
 
-#include "placed_shape.hpp"
-
 #include <memory>
 #include <vector>
+
+#include "placed_shape.hpp"
 
 namespace acanthus::dartfill {
 
 class Layout {
-public:
+  public:
     explicit Layout(double tolerance);
     ~Layout();
     Layout(Layout&&) noexcept;
@@ -24,7 +24,7 @@ public:
     const std::vector<PlacedShape>& shapes() const { return shapes_; }
     double tolerance() const { return tolerance_; }
 
-private:
+  private:
     struct Index;
     double tolerance_;
     std::vector<PlacedShape> shapes_;

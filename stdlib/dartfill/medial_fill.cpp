@@ -1,11 +1,11 @@
 // Our variant: no random candidates. The ridge maxima of the same distance field are the centres
 // of the largest empty circles; each is tried largest first, with the shape's pole (its most
 // interior point) on the maximum and several rotations, before a cancellation is counted.
-#include "gap_field.hpp"
-#include "methods.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "gap_field.hpp"
+#include "methods.hpp"
 
 namespace acanthus::dartfill {
 namespace {
@@ -104,7 +104,8 @@ void medial_fill(FillContext& context, Layout& layout, long& rounds) {
                                           span > 0 ? span : 1.0);
                 pose.position = target - context.pole_offset(pose);
                 if (context.fits(layout, pose))
-                    placed = context.place(layout, slide_to_contact(context, layout, gaps, c, pose));
+                    placed =
+                        context.place(layout, slide_to_contact(context, layout, gaps, c, pose));
             }
             if (placed) {
                 gaps.add(*placed);

@@ -2,18 +2,17 @@
 // the space and the shapes placed so far, keep it or cancel it.
 #pragma once
 
-#include "container.hpp"
-#include "layout.hpp"
-
 #include <acanthus/dartfill.hpp>
 #include <acanthus/random.hpp>
-
 #include <vector>
+
+#include "container.hpp"
+#include "layout.hpp"
 
 namespace acanthus::dartfill {
 
 class FillContext {
-public:
+  public:
     FillContext(const std::vector<Shape>& shapes, const Container& container,
                 const Options& options, Random& random);
 
@@ -45,7 +44,7 @@ public:
     bool full(const Layout& layout) const;
     long trials() const { return trials_; }
 
-private:
+  private:
     const std::vector<Shape>& shapes_;
     const Container& container_;
     const Options& options_;

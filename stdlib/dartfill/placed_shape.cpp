@@ -97,7 +97,8 @@ bool shapes_overlap(const PlacedShape& a, const PlacedShape& b, double tolerance
         const Rect& ba = a.triangle_bounds()[i];
         if (!boxes_meet(ba, b.bounds())) continue;
         for (std::size_t j = 0; j < tb.size(); ++j)
-            if (boxes_meet(ba, b.triangle_bounds()[j]) && triangles_overlap(ta[i], tb[j], tolerance))
+            if (boxes_meet(ba, b.triangle_bounds()[j]) &&
+                triangles_overlap(ta[i], tb[j], tolerance))
                 return true;
     }
     return false;

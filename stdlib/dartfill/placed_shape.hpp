@@ -2,9 +2,9 @@
 // centre), and exact overlap tests between two of them.
 #pragma once
 
-#include "shape.hpp"
-
 #include <vector>
+
+#include "shape.hpp"
 
 namespace acanthus::dartfill {
 
@@ -15,7 +15,7 @@ struct Pose {
 };
 
 class PlacedShape {
-public:
+  public:
     PlacedShape(const Shape& shape, int shape_index, Pose pose);
 
     int shape_index() const { return shape_index_; }
@@ -29,7 +29,7 @@ public:
     // True when p lies inside (or on) one of the triangles.
     bool contains(Point p) const;
 
-private:
+  private:
     int shape_index_;
     Pose pose_;
     std::vector<Point> outline_;

@@ -1,16 +1,15 @@
 #include "shape.hpp"
 
-#include "triangulation.hpp"
-
-#include <acanthus/error.hpp>
-
 #include <2geom/exception.h>
 #include <2geom/pathvector.h>
 #include <2geom/svg-path-parser.h>
 
+#include <acanthus/error.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "triangulation.hpp"
 
 namespace acanthus::dartfill {
 namespace {
@@ -136,8 +135,8 @@ double signed_area(const std::vector<Point>& ring) {
     return twice / 2;
 }
 
-std::vector<std::vector<Point>> flatten_path_data(const std::string& name, std::string_view path_data,
-                                                  double tolerance) {
+std::vector<std::vector<Point>> flatten_path_data(const std::string& name,
+                                                  std::string_view path_data, double tolerance) {
     Geom::PathVector paths;
     try {
         paths = Geom::parse_svg_path(std::string(path_data).c_str());

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <acanthus/point.hpp>
-
 #include <array>
 #include <string>
 #include <string_view>
@@ -14,7 +13,7 @@ namespace acanthus::dartfill {
 using Triangle = std::array<Point, 3>;
 
 class Shape {
-public:
+  public:
     // Validates the outline (finite, at least three distinct points, non-zero area, no
     // self-intersection) and triangulates it. Throws InputError naming `name`.
     static Shape from_points(std::string name, std::vector<Point> outline);
@@ -37,7 +36,7 @@ public:
     // the anchor the medial method puts at the centre of a gap.
     Point pole() const { return pole_; }
 
-private:
+  private:
     Shape() = default;
     std::string name_;
     std::vector<Point> outline_;
@@ -51,7 +50,7 @@ private:
 // Signed area of a closed polygon (shoelace); positive when counter-clockwise in y-up terms.
 double signed_area(const std::vector<Point>& ring);
 // Flattens every closed subpath of SVG path data into rings; throws InputError naming `name`.
-std::vector<std::vector<Point>> flatten_path_data(const std::string& name, std::string_view path_data,
-                                                  double tolerance);
+std::vector<std::vector<Point>> flatten_path_data(const std::string& name,
+                                                  std::string_view path_data, double tolerance);
 
 }  // namespace acanthus::dartfill

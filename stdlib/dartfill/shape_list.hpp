@@ -1,11 +1,10 @@
 // The shapes behind a ShapeSet, for the library's internals and tests.
 #pragma once
 
-#include "shape.hpp"
-
 #include <acanthus/dartfill.hpp>
-
 #include <vector>
+
+#include "shape.hpp"
 
 namespace acanthus::dartfill::detail {
 

@@ -1,9 +1,9 @@
 // Constrained Delaunay triangulation of a simple polygon (CGAL), keeping the inside triangles.
 #pragma once
 
-#include "shape.hpp"
-
 #include <vector>
+
+#include "shape.hpp"
 
 namespace acanthus::dartfill {
 

@@ -1,20 +1,19 @@
 // dartfill placement methods: no overlaps, inside the panel, deterministic, and the fill-gap
 // candidate distribution.
+#include <gtest/gtest.h>
+
+#include <acanthus/dartfill.hpp>
+#include <acanthus/error.hpp>
+#include <acanthus/region.hpp>
+#include <algorithm>
+#include <cmath>
+
 #include "container.hpp"
 #include "dartfill_oracle.hpp"
 #include "gap_field.hpp"
 #include "layout.hpp"
 #include "methods.hpp"
 #include "shape_list.hpp"
-
-#include <acanthus/dartfill.hpp>
-#include <acanthus/error.hpp>
-#include <acanthus/region.hpp>
-
-#include <gtest/gtest.h>
-
-#include <algorithm>
-#include <cmath>
 
 using namespace acanthus;
 using namespace acanthus::dartfill;
@@ -96,7 +95,8 @@ TEST_P(DartfillMethod, PlacesWithoutOverlapInsideAHoledPanel) {
     // Shapes are cycled: counts differ by at most one.
     int count[3] = {0, 0, 0};
     for (const auto& p : r.placements) count[p.shape]++;
-    EXPECT_LE(std::max({count[0], count[1], count[2]}) - std::min({count[0], count[1], count[2]}), 1);
+    EXPECT_LE(std::max({count[0], count[1], count[2]}) - std::min({count[0], count[1], count[2]}),
+              1);
     EXPECT_GT(r.stats.coverage, 0.2);
     EXPECT_LT(r.stats.coverage, 1.0);
     EXPECT_NEAR(r.stats.space_area, 160 * 120 - 0.5 * std::abs(60 * 60 - 10 * 20), 1e-6);

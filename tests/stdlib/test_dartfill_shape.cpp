@@ -1,19 +1,18 @@
 // dartfill exclusive regions: validation, triangulation, transformation and exact overlap.
-#include "dartfill_oracle.hpp"
-#include "placed_shape.hpp"
-#include "shape.hpp"
+#include <gtest/gtest.h>
 
 #include <acanthus/dartfill.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/random.hpp>
-
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
 #include <string>
+
+#include "dartfill_oracle.hpp"
+#include "placed_shape.hpp"
+#include "shape.hpp"
 
 using namespace acanthus;
 using namespace acanthus::dartfill;
@@ -93,7 +92,9 @@ TEST(DartfillShape, ClockwiseInputIsNormalized) {
 }
 
 TEST(DartfillShape, BadShapesAreRefusedNamingThem) {
-    std::string m = message_of([] { Shape::from_points("bowtie", {{0, 0}, {10, 10}, {10, 0}, {0, 10}}); });
+    std::string m = message_of([] {
+        Shape::from_points("bowtie", {{0, 0}, {10, 10}, {10, 0}, {0, 10}});
+    });
     EXPECT_NE(m.find("'bowtie'"), std::string::npos) << m;
     EXPECT_NE(m.find("intersects itself"), std::string::npos) << m;
 
@@ -175,8 +176,10 @@ TEST(DartfillOverlap, AgreesWithPointSamplingOnTransformedConcaveShapes) {
         const Shape& a = *shapes[trial % 3];
         const Shape& b = *shapes[(trial / 3) % 3];
         PlacedShape pa(a, 0, {{0, 0}, rng.uniform(0, 2 * M_PI), rng.uniform(0.5, 1.5)});
-        PlacedShape pb(b, 1, {{rng.uniform(-14, 14), rng.uniform(-14, 14)}, rng.uniform(0, 2 * M_PI),
-                              rng.uniform(0.5, 1.5)});
+        PlacedShape pb(b, 1,
+                       {{rng.uniform(-14, 14), rng.uniform(-14, 14)},
+                        rng.uniform(0, 2 * M_PI),
+                        rng.uniform(0.5, 1.5)});
         bool exact = shapes_overlap(pa, pb, 1e-9);
         bool sampled = dartfill_oracle::sampled_overlap(pa.outline(), pb.outline(), 120, 1e-7);
         double shared = dartfill_oracle::intersection_area(pa.outline(), pb.outline());

@@ -3,6 +3,7 @@
 
 #include <acanthus/element.hpp>
 #include <acanthus/random.hpp>
+#include <acanthus/region.hpp>
 
 namespace acanthus {
 
@@ -21,6 +22,9 @@ public:
     virtual Element* nearest_element(Point p) const = 0;
     virtual void clear_exclude_list() = 0;
     virtual Random& random() = 0;
+    // The region being filled, or null when the environment has none (libraries such as
+    // dartfill use it for their own exact containment tests).
+    virtual const Region* region() const { return nullptr; }
 
     // The environment installed for the running body, or null.
     static Environment* current();

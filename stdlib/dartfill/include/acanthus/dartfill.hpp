@@ -7,7 +7,6 @@
 #include <acanthus/body.hpp>
 #include <acanthus/point.hpp>
 #include <acanthus/region.hpp>
-
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -56,11 +55,11 @@ struct Placement {
 };
 
 struct FillStats {
-    long trials = 0;         // placement attempts, successful or cancelled
-    long rounds = 0;         // fill-gap / medial candidate rounds
-    double seconds = 0;      // wall time of the fill (reported only, never used)
-    double coverage = 0;     // placed area / area of the space filled
-    double space_area = 0;   // area of the space filled
+    long trials = 0;        // placement attempts, successful or cancelled
+    long rounds = 0;        // fill-gap / medial candidate rounds
+    double seconds = 0;     // wall time of the fill (reported only, never used)
+    double coverage = 0;    // placed area / area of the space filled
+    double space_area = 0;  // area of the space filled
 };
 
 struct FillResult {
@@ -76,7 +75,7 @@ struct ShapeList;
 // The exclusive regions to place, cycled in the order added. Each is validated and triangulated
 // when added; bad shapes throw InputError naming the shape (or file).
 class ShapeSet {
-public:
+  public:
     ShapeSet();
     ~ShapeSet();
     ShapeSet(const ShapeSet&);
@@ -102,7 +101,7 @@ public:
     double radius(std::size_t i) const;
     const detail::ShapeList& list() const { return *shapes_; }
 
-private:
+  private:
     std::shared_ptr<detail::ShapeList> shapes_;
 };
 

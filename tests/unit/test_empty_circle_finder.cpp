@@ -1,0 +1,203 @@
+// EmptyCircleFinder: medial-axis candidates, boundary-stopped and excluded circles, minimum
+// radius, and the incremental search against the full scan.
+#include "empty_circle_finder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <acanthus/random.hpp>
+
+#include <cmath>
+#include <vector>
+
+using acanthus::Circle;
+using acanthus::DistanceField;
+using acanthus::EmptyCircle;
+using acanthus::EmptyCircleFinder;
+using acanthus::ExcludeList;
+using acanthus::GridFrame;
+using acanthus::ObstacleKind;
+
+namespace {
+
+GridFrame grid(int w, int h, double pixel = 1.0) {
+    GridFrame g;
+    g.width = w;
+    g.height = h;
+    g.pixel = pixel;
+    return g;
+}
+
+// A w x h occupancy grid with a boundary frame all round.
+std::vector<std::uint8_t> framed(int w, int h) {
+    std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 0);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            if (i == 0 || j == 0 || i == w - 1 || j == h - 1) occ[j * w + i] = 1;
+    return occ;
+}
+
+bool same(const std::optional<EmptyCircle>& a, const std::optional<EmptyCircle>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    return !a || (a->pixel == b->pixel && a->d2 == b->d2);
+}
+
+}  // namespace
+
+TEST(EmptyCircleFinder, CircleIsConservative) {
+    const int w = 20, h = 10;
+    auto occ = framed(w, h);
+    occ[5 * w + 5] = 2;
+    DistanceField f(w, h);
+    f.compute(occ);
+    EmptyCircleFinder finder(f, grid(w, h, 0.5), 0);
+    const int p = 5 * w + 9;
+    const Circle c = finder.circle_of(p);
+    EXPECT_DOUBLE_EQ(c.center.x, 9.5 * 0.5);
+    EXPECT_DOUBLE_EQ(c.center.y, 5.5 * 0.5);
+    EXPECT_DOUBLE_EQ(c.radius, (4 - EmptyCircleFinder::kMargin) * 0.5);
+}
+
+TEST(EmptyCircleFinder, MedialAxisIsTheCrestBetweenObstacles) {
+    const int w = 21, h = 11;
+    std::vector<std::uint8_t> occ(w * h, 0);
+    for (int j = 0; j < h; ++j) {
+        occ[j * w + 0] = 2;
+        occ[j * w + 20] = 2;
+    }
+    DistanceField f(w, h);
+    f.compute(occ);
+    EmptyCircleFinder finder(f, grid(w, h), 0);
+    for (int j = 0; j < h; ++j) {
+        EXPECT_TRUE(finder.on_medial_axis(j * w + 10)) << j;  // midway between the walls
+        EXPECT_FALSE(finder.on_medial_axis(j * w + 4)) << j;  // on a slope
+        EXPECT_FALSE(finder.on_medial_axis(j * w + 0));       // an obstacle
+    }
+}
+
+TEST(EmptyCircleFinder, DiscardsCirclesStoppedByTheBoundary) {
+    // A long box with one element pixel at the left: the largest free circles on the right are
+    // stopped by the boundary and must not be chosen.
+    const int w = 60, h = 15;
+    auto occ = framed(w, h);
+    occ[7 * w + 3] = 2;
+    DistanceField f(w, h);
+    f.compute(occ);
+    EmptyCircleFinder finder(f, grid(w, h), 0);
+    finder.rebuild();
+    ExcludeList exclude;
+    const auto found = finder.find(exclude);
+    ASSERT_TRUE(found.has_value());
+    EXPECT_EQ(f.nearest_kind(found->pixel), ObstacleKind::element);
+    EXPECT_LT(found->pixel % w, 12);
+    std::int64_t global = 0;
+    for (int p = 0; p < w * h; ++p) global = std::max(global, f.squared_distance(p));
+    EXPECT_LT(found->d2, global);
+    EXPECT_TRUE(same(found, finder.find_by_scan(exclude)));
+
+    // Only the boundary: nothing is eligible.
+    DistanceField empty(w, h);
+    empty.compute(framed(w, h));
+    EmptyCircleFinder none(empty, grid(w, h), 0);
+    none.rebuild();
+    EXPECT_FALSE(none.find(exclude).has_value());
+    EXPECT_FALSE(none.find_by_scan(exclude).has_value());
+}
+
+TEST(EmptyCircleFinder, ExcludedCirclesWaitUntilTheirPointIsRemoved) {
+    const int w = 40, h = 40;
+    auto occ = framed(w, h);
+    occ[20 * w + 20] = 2;
+    DistanceField f(w, h);
+    f.compute(occ);
+    EmptyCircleFinder finder(f, grid(w, h), 0);
+    finder.rebuild();
+    ExcludeList exclude;
+    const auto first = finder.find(exclude);
+    ASSERT_TRUE(first.has_value());
+    // The same circle again while nothing changes.
+    EXPECT_TRUE(same(finder.find(exclude), first));
+    const int id = exclude.add(first->circle.center);
+    const auto second = finder.find(exclude);
+    ASSERT_TRUE(second.has_value());
+    EXPECT_NE(second->pixel, first->pixel);
+    EXPECT_FALSE(exclude.any_inside(second->circle));
+    EXPECT_LE(second->d2, first->d2);
+    EXPECT_TRUE(same(second, finder.find_by_scan(exclude)));
+    std::vector<int> removed;
+    exclude.remove_within(first->circle.center, 0.1, &removed);
+    ASSERT_EQ(removed, std::vector<int>{id});
+    finder.release(removed);
+    EXPECT_TRUE(same(finder.find(exclude), first));
+}
+
+TEST(EmptyCircleFinder, RespectsTheMinimumRadius) {
+    const int w = 30, h = 30;
+    auto occ = framed(w, h);
+    for (int j = 1; j < h - 1; j += 4)
+        for (int i = 1; i < w - 1; i += 4) occ[j * w + i] = 2;  // small gaps everywhere
+    DistanceField f(w, h);
+    f.compute(occ);
+    EmptyCircleFinder big(f, grid(w, h), 5.0);
+    big.rebuild();
+    ExcludeList exclude;
+    EXPECT_FALSE(big.find(exclude).has_value());
+    EmptyCircleFinder small(f, grid(w, h), 0.5);
+    small.rebuild();
+    const auto c = small.find(exclude);
+    ASSERT_TRUE(c.has_value());
+    EXPECT_GE(c->circle.radius, 0.5);
+}
+
+// The incremental search gives exactly the full scan's answer after every change of the field,
+// the exclude list and the discarded set.
+TEST(EmptyCircleFinder, IncrementalFindMatchesScan) {
+    acanthus::Random rng(99);
+    for (int scene = 0; scene < 6; ++scene) {
+        const int w = static_cast<int>(rng.uniform_int(20, 70));
+        const int h = static_cast<int>(rng.uniform_int(20, 70));
+        auto occ = framed(w, h);
+        occ[(h / 2) * w + w / 2] = 2;
+        DistanceField f(w, h);
+        f.compute(occ);
+        EmptyCircleFinder finder(f, grid(w, h, 0.7), rng.uniform(0, 1.5));
+        finder.rebuild();
+        ExcludeList exclude;
+        for (int step = 0; step < 150; ++step) {
+            const auto inc = finder.find(exclude);
+            const auto ref = finder.find_by_scan(exclude);
+            ASSERT_TRUE(same(inc, ref)) << "scene " << scene << " step " << step;
+            if (!inc) {
+                exclude.clear();
+                finder.release_all();
+                if (!finder.find(exclude)) break;
+                continue;
+            }
+            const double action = rng.uniform();
+            if (action < 0.5) {
+                // "Success": a blob near the circle, exclude points near its centre go.
+                const int ci = inc->pixel % w, cj = inc->pixel / w;
+                std::vector<int> blob;
+                const int r = static_cast<int>(rng.uniform_int(0, 2));
+                const int oi = static_cast<int>(rng.uniform_int(-3, 3)), oj = static_cast<int>(rng.uniform_int(-3, 3));
+                for (int dj = -r; dj <= r; ++dj)
+                    for (int di = -r; di <= r; ++di) {
+                        const int i = ci + oi + di, j = cj + oj + dj;
+                        if (i > 0 && j > 0 && i < w - 1 && j < h - 1) blob.push_back(j * w + i);
+                    }
+                std::vector<int> changed;
+                f.add_sites(blob, ObstacleKind::element, &changed);
+                finder.update(changed);
+                std::vector<int> removed;
+                exclude.remove_within(inc->circle.center, rng.uniform(0, 4), &removed);
+                finder.release(removed);
+            } else if (action < 0.9) {
+                exclude.add(inc->circle.center);  // "failure"
+            } else if (action < 0.95) {
+                finder.discard(*inc);
+            } else {
+                exclude.clear();
+                finder.release_all();
+            }
+        }
+    }
+}
