@@ -1,8 +1,10 @@
 // dartfill: the fill-gap method against naive dart throwing (Sakurai & Miyata, Table 1), and our
 // medial variant, on the same shapes, panel and seed in one run.
-//   bench_dartfill [--panel SPEC] [--naive-cancellations N] [--seed S] [--runs K] [--resolution PX]
-// Each method runs with seeds S .. S+K-1; elements and seconds are summed over the runs, and
-// seconds are CPU time of the fill call, so a loaded machine does not skew the ratio.
+//   bench_dartfill [--panel SPEC] [--runs K] [--seed S] [--naive-cancellations N]
+//                  [--gap-cancellations N] [--exponent n] [--resolution PX]
+// Each method runs with seeds S .. S+K-1 (default 1..10); the JSON gives means per run. Seconds
+// are CPU time of the fill call (one clock for all methods), so other processes on a loaded
+// machine do not skew the ratio; speedup = naive seconds / fill-gap seconds.
 // Last line: {"benchmark":"dartfill", ...}.
 #include <acanthus/dartfill.hpp>
 #include <acanthus/error.hpp>
@@ -33,11 +35,14 @@ dartfill::ShapeSet pebbles() {
     return set;
 }
 
-struct Run {
-    std::size_t elements = 0;
+struct Totals {
+    double elements = 0;
     double seconds = 0;
     double coverage = 0;
-    long trials = 0;
+    double trials = 0;
+    int runs = 0;
+    // Means over the runs.
+    double mean(double Totals::*field) const { return runs ? this->*field / runs : 0; }
 };
 
 double cpu_seconds() {
@@ -46,25 +51,22 @@ double cpu_seconds() {
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-Run measure(const dartfill::ShapeSet& shapes, const Region& region, dartfill::Options options,
-            dartfill::Method method, std::uint64_t seed, int runs) {
+// One timed fill; CPU time of the call, the same clock for every method.
+void measure(const dartfill::ShapeSet& shapes, const Region& region, dartfill::Options options,
+             dartfill::Method method, std::uint64_t seed, Totals& total) {
     options.method = method;
-    Run total;
-    for (int k = 0; k < runs; ++k) {
-        double start = cpu_seconds();
-        dartfill::FillResult r = dartfill::fill(shapes, region, options, seed + k);
-        double seconds = cpu_seconds() - start;
-        total.elements += r.placements.size();
-        total.seconds += seconds;
-        total.coverage += r.stats.coverage / runs;
-        total.trials += r.stats.trials;
-        std::printf(
-            "%-8s seed %3llu  elements %5zu  cpu seconds %8.4f  coverage %.3f  trials %ld\n",
-            std::string(dartfill::to_string(method)).c_str(),
-            static_cast<unsigned long long>(seed + k), r.placements.size(), seconds,
-            r.stats.coverage, r.stats.trials);
-    }
-    return total;
+    double start = cpu_seconds();
+    dartfill::FillResult r = dartfill::fill(shapes, region, options, seed);
+    double seconds = cpu_seconds() - start;
+    total.elements += static_cast<double>(r.placements.size());
+    total.seconds += seconds;
+    total.coverage += r.stats.coverage;
+    total.trials += static_cast<double>(r.stats.trials);
+    ++total.runs;
+    std::printf("%-8s seed %3llu  elements %5zu  cpu seconds %8.4f  coverage %.3f  trials %ld\n",
+                std::string(dartfill::to_string(method)).c_str(),
+                static_cast<unsigned long long>(seed), r.placements.size(), seconds,
+                r.stats.coverage, r.stats.trials);
 }
 
 }  // namespace
@@ -73,7 +75,7 @@ int main(int argc, char** argv) {
     std::string panel = "rect:300,300";
     dartfill::Options options;
     std::uint64_t seed = 1;
-    int runs = 5;
+    int runs = 10;
     for (int i = 1; i + 1 < argc; i += 2) {
         std::string flag = argv[i];
         const char* value = argv[i + 1];
@@ -81,6 +83,10 @@ int main(int argc, char** argv) {
             panel = value;
         else if (flag == "--naive-cancellations")
             options.naive_cancellations = std::atol(value);
+        else if (flag == "--gap-cancellations")
+            options.gap_cancellations = std::atol(value);
+        else if (flag == "--exponent")
+            options.exponent = std::atof(value);
         else if (flag == "--seed")
             seed = std::strtoull(value, nullptr, 10);
         else if (flag == "--resolution")
@@ -99,19 +105,37 @@ int main(int argc, char** argv) {
             "panel %s, %zu shapes, naive stops after %ld consecutive cancellations, "
             "%d runs\n",
             panel.c_str(), shapes.size(), options.naive_cancellations, runs);
-        Run naive = measure(shapes, region, options, dartfill::Method::naive, seed, runs);
-        Run gap = measure(shapes, region, options, dartfill::Method::fill_gap, seed, runs);
-        Run third = measure(shapes, region, options, dartfill::Method::medial, seed, runs);
+        const dartfill::Method methods[] = {dartfill::Method::naive, dartfill::Method::fill_gap,
+                                            dartfill::Method::medial};
+        // One untimed fill per method first (page faults, caches), then the methods in turn on
+        // each seed, so a change in the machine's load touches all of them alike.
+        for (dartfill::Method m : methods) {
+            dartfill::Options warm = options;
+            warm.method = m;
+            dartfill::fill(shapes, region, warm, seed + runs);
+        }
+        Totals totals[3];
+        for (int k = 0; k < runs; ++k)
+            for (int m = 0; m < 3; ++m)
+                measure(shapes, region, options, methods[m], seed + k, totals[m]);
+        const Totals &naive = totals[0], &gap = totals[1], &third = totals[2];
         std::printf(
-            "{\"benchmark\":\"dartfill\",\"panel\":\"%s\",\"runs\":%d,\"naive_elements\":%zu,"
-            "\"naive_seconds\":%.4f,\"naive_coverage\":%.4f,\"fillgap_elements\":%zu,"
-            "\"fillgap_seconds\":%.4f,\"fillgap_coverage\":%.4f,\"speedup\":%.2f,"
-            "\"fillgap_element_ratio\":%.3f,\"third_method\":\"medial\",\"third_elements\":%zu,"
-            "\"third_seconds\":%.4f,\"third_coverage\":%.4f,\"third_speedup\":%.2f}\n",
-            panel.c_str(), runs, naive.elements, naive.seconds, naive.coverage, gap.elements,
-            gap.seconds, gap.coverage, naive.seconds / gap.seconds,
-            static_cast<double>(gap.elements) / static_cast<double>(naive.elements), third.elements,
-            third.seconds, third.coverage, naive.seconds / third.seconds);
+            "{\"benchmark\":\"dartfill\",\"panel\":\"%s\",\"runs\":%d,\"first_seed\":%llu,"
+            "\"naive_cancellations\":%ld,\"gap_cancellations\":%ld,\"candidates\":%d,"
+            "\"exponent\":%g,\"naive_elements\":%.1f,\"naive_seconds\":%.5f,"
+            "\"naive_trials\":%.0f,\"naive_coverage\":%.4f,\"fillgap_elements\":%.1f,"
+            "\"fillgap_seconds\":%.5f,\"fillgap_trials\":%.0f,\"fillgap_coverage\":%.4f,"
+            "\"speedup\":%.2f,\"fillgap_element_ratio\":%.3f,\"third_method\":\"medial\","
+            "\"third_elements\":%.1f,\"third_seconds\":%.5f,\"third_coverage\":%.4f,"
+            "\"third_speedup\":%.2f}\n",
+            panel.c_str(), runs, static_cast<unsigned long long>(seed), options.naive_cancellations,
+            options.gap_cancellations, options.candidates, options.exponent,
+            naive.mean(&Totals::elements), naive.mean(&Totals::seconds),
+            naive.mean(&Totals::trials), naive.mean(&Totals::coverage), gap.mean(&Totals::elements),
+            gap.mean(&Totals::seconds), gap.mean(&Totals::trials), gap.mean(&Totals::coverage),
+            naive.seconds / gap.seconds, gap.elements / naive.elements,
+            third.mean(&Totals::elements), third.mean(&Totals::seconds),
+            third.mean(&Totals::coverage), naive.seconds / third.seconds);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_dartfill: %s\n", e.what());
         return 1;

@@ -5,12 +5,12 @@
 // both placed the same elements. Last line: one JSON object.
 //
 //   bench_growth_loop [--reference-elements N] [--resolution PX] [--png OUT.png]
+// ACANTHUS_BENCH_TRACE=1 prints the time at every 1000th iteration on stderr.
+#include <sys/resource.h>
+
 #include <acanthus/growth.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/render.hpp>
-
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
         } else if (arg == "--png" && k + 1 < argc) {
             png = argv[++k];
         } else {
-            std::fprintf(stderr, "usage: %s [--reference-elements N] [--resolution PX] [--png OUT.png]\n",
+            std::fprintf(stderr,
+                         "usage: %s [--reference-elements N] [--resolution PX] [--png OUT.png]\n",
                          argv[0]);
             return 2;
         }
@@ -100,12 +101,15 @@ int main(int argc, char** argv) {
     const double eps = static_cast<double>(elements) / stats.seconds;
     const double cost_2k = cost_between(samples, 1000, 3000);
     const double cost_20k = cost_between(samples, 19000, 21000);
-    std::fprintf(stderr, "incremental: %ld elements, %ld iterations in %.3f s (%s), %.0f elements/s\n",
+    std::fprintf(stderr,
+                 "incremental: %ld elements, %ld iterations in %.3f s (%s), %.0f elements/s\n",
                  elements, stats.iterations, stats.seconds, stats.stop_reason.c_str(), eps);
-    std::fprintf(stderr, "  seconds per element around 2k: %.3g, around 20k: %.3g\n", cost_2k, cost_20k);
+    std::fprintf(stderr, "  seconds per element around 2k: %.3g, around 20k: %.3g\n", cost_2k,
+                 cost_20k);
     const double incremental_rss = peak_rss_mb();
     if (std::getenv("ACANTHUS_BENCH_TRACE"))
-        for (const Sample& s : samples) std::fprintf(stderr, "  %ld elements at %.3f s\n", s.elements, s.seconds);
+        for (const Sample& s : samples)
+            std::fprintf(stderr, "  %ld elements at %.3f s\n", s.elements, s.seconds);
 
     // Reference engine over the first elements of the same growth.
     options.reference_engine = true;
@@ -137,9 +141,11 @@ int main(int argc, char** argv) {
 
     std::printf(
         "{\"benchmark\":\"growth-loop\",\"elements\":%ld,\"iterations\":%ld,\"resolution\":%d,"
-        "\"elements_per_second\":%.1f,\"reference_elements\":%zu,\"reference_elements_per_second\":%.3f,"
+        "\"elements_per_second\":%.1f,\"reference_elements\":%zu,\"reference_elements_per_second\":"
+        "%.3f,"
         "\"speedup\":%.1f,\"incremental_elements_per_second_same_elements\":%.1f,"
-        "\"identical_to_reference\":%s,\"seconds_per_element_2k\":%.4g,\"seconds_per_element_20k\":%.4g,"
+        "\"identical_to_reference\":%s,\"seconds_per_element_2k\":%.4g,\"seconds_per_element_20k\":"
+        "%.4g,"
         "\"peak_rss_mb\":%.1f,\"incremental_peak_rss_mb\":%.1f}\n",
         elements, stats.iterations, resolution, eps, ref_placed.size(), ref_eps, eps / ref_eps,
         inc_first, identical ? "true" : "false", cost_2k, cost_20k, peak_rss_mb(), incremental_rss);

@@ -186,7 +186,9 @@ bool DistanceField::wavefront(const std::vector<int>& sites, const std::vector<s
     stamp_ += 3;
     improved_.clear();
     stack_.clear();
-    auto pack = [](int i, int j) { return (static_cast<std::uint32_t>(i) << 16) | static_cast<std::uint32_t>(j); };
+    auto pack = [](int i, int j) {
+        return (static_cast<std::uint32_t>(i) << 16) | static_cast<std::uint32_t>(j);
+    };
     for (int p : sites) {
         const int i = p % w, j = p / w;
         visit_[p] = base + 1;
@@ -207,7 +209,8 @@ bool DistanceField::wavefront(const std::vector<int>& sites, const std::vector<s
         const std::int64_t old = d2[r];
         bool in = false;
         if (old != 0) {  // an obstacle is never nearer to a new site
-            int si = static_cast<int>(hint_[from] >> 16), sj = static_cast<int>(hint_[from] & 0xffff);
+            int si = static_cast<int>(hint_[from] >> 16),
+                sj = static_cast<int>(hint_[from] & 0xffff);
             const std::int64_t m = measure(i, j, si, sj);
             if (m < old) improved_.push_back({r, static_cast<std::int32_t>(m), sj * w + si});
             const std::int64_t t = m - old - 1;  // sqrt(m) < sqrt(old) + 1
@@ -258,9 +261,8 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
     // Runs of site rows per column: m(i, j) = min over columns c of (i - c)^2 + g_c(j)^2 where
     // g_c(j) is the distance from row j to the nearest site row of column c.
     sorted_sites_.assign(sites.begin(), sites.end());
-    std::sort(sorted_sites_.begin(), sorted_sites_.end(), [w](int a, int b) {
-        return a % w != b % w ? a % w < b % w : a < b;
-    });
+    std::sort(sorted_sites_.begin(), sorted_sites_.end(),
+              [w](int a, int b) { return a % w != b % w ? a % w < b % w : a < b; });
     run_columns_.clear();
     run_start_.clear();
     runs_.clear();
@@ -333,7 +335,9 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
             sj = ls / ww + wy0;
             return static_cast<std::int64_t>(window_d2_[local]);
         };
-        auto measurable = [&](int i, int j) { return i >= wx0 && i <= wx1 && j >= wy0 && j <= wy1; };
+        auto measurable = [&](int i, int j) {
+            return i >= wx0 && i <= wx1 && j >= wy0 && j <= wy1;
+        };
         done = wavefront(sites, d2, measure, measurable);
     }
 

@@ -29,7 +29,7 @@ namespace acanthus {
 enum class ObstacleKind : std::uint8_t { none = 0, boundary = 1, element = 2 };
 
 class DistanceField {
-public:
+  public:
     // Squared distance of a pixel when there is no site at all.
     static constexpr std::int32_t infinite = std::numeric_limits<std::int32_t>::max();
 
@@ -57,14 +57,15 @@ public:
 
     // Buffers reused by the separable transform (exposed for the implementation only).
     struct Scratch {
-        std::vector<std::int32_t> column_distance;  // phase 1: distance to the nearest site in the column
+        std::vector<std::int32_t>
+            column_distance;  // phase 1: distance to the nearest site in the column
         std::vector<std::int32_t> column_site_row;  // phase 1: row of that site
         std::vector<int> last;                      // per column, last site row seen
         std::vector<int> hull_column;               // phase 2: lower envelope of parabolas
         std::vector<std::int64_t> hull_f, hull_num, hull_den;
     };
 
-private:
+  private:
     // Updates `d2` (and `site` when not null) for the new sites; returns changed pixels in `out`.
     void propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
                    std::vector<std::int32_t>* site, std::vector<int>* out);
@@ -85,7 +86,7 @@ private:
     std::vector<std::uint32_t> hint_;   // nearest new site (i << 16 | j) of inside pixels
     std::vector<std::uint32_t> stack_;  // fill seeds (i << 16 | j)
     std::vector<int> sorted_sites_;
-    std::vector<int> run_columns_, run_start_;        // new sites as runs of rows per column
+    std::vector<int> run_columns_, run_start_;  // new sites as runs of rows per column
     std::vector<std::pair<int, int>> runs_;
     std::vector<std::uint8_t> window_sites_;
     std::vector<std::int32_t> window_d2_, window_site_;

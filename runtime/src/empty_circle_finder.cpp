@@ -48,32 +48,35 @@ bool EmptyCircleFinder::crest(std::int64_t d, std::int64_t a, std::int64_t b) {
 }
 
 bool EmptyCircleFinder::on_medial_axis(int pixel) const {
-    if (field_.occupancy(pixel) != ObstacleKind::none) return false;
     const std::int64_t d = field_.squared_distance(pixel);
+    if (d == 0) return false;  // an obstacle
     const int w = grid_.width, h = grid_.height;
     const int j = row_of(pixel), i = pixel - j * w;
     static constexpr int kLine[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
     if (i > 0 && j > 0 && i < w - 1 && j < h - 1) {
         for (const auto& e : kLine) {
             const int off = e[1] * w + e[0];
-            if (crest(d, field_.squared_distance(pixel + off), field_.squared_distance(pixel - off)))
+            if (crest(d, field_.squared_distance(pixel + off),
+                      field_.squared_distance(pixel - off)))
                 return true;
         }
         return false;
     }
-    // At the edge of the grid a missing neighbour tells nothing: it counts as level.
-    auto at = [&](int ni, int nj) -> std::int64_t {
-        return ni < 0 || nj < 0 || ni >= w || nj >= h ? d : field_.squared_distance(nj * w + ni);
-    };
-    for (const auto& e : kLine)
-        if (crest(d, at(i + e[0], j + e[1]), at(i - e[0], j - e[1]))) return true;
+    // At the edge of the grid only the lines with both neighbours inside are tested.
+    for (const auto& e : kLine) {
+        const int ai = i + e[0], aj = j + e[1], bi = i - e[0], bj = j - e[1];
+        if (ai < 0 || aj < 0 || ai >= w || aj >= h || bi < 0 || bj < 0 || bi >= w || bj >= h)
+            continue;
+        if (crest(d, field_.squared_distance(aj * w + ai), field_.squared_distance(bj * w + bi)))
+            return true;
+    }
     return false;
 }
 
 bool EmptyCircleFinder::shape_eligible(int pixel) const {
     const std::int64_t d2 = field_.squared_distance(pixel);
     if (d2 < min_d2_ || d2 == DistanceField::infinite) return false;
-    return field_.nearest_kind(pixel) == ObstacleKind::element && on_medial_axis(pixel);
+    return on_medial_axis(pixel) && field_.nearest_kind(pixel) == ObstacleKind::element;
 }
 
 int EmptyCircleFinder::tile_of(int pixel) const {
@@ -104,6 +107,7 @@ void EmptyCircleFinder::rescan(int tile) {
 // Re-decides the state of a pixel whose distance, or a neighbour's, may have changed.
 void EmptyCircleFinder::consider(int pixel) {
     const std::int32_t d2 = static_cast<std::int32_t>(field_.squared_distance(pixel));
+    if (d2 < min_d2_ && state_[pixel] == none) return;  // too small to matter, already none
     // Same distance: a candidate stays one (neighbours only get lower), a blocked one stays
     // blocked; a non-candidate may have become one.
     if (state_[pixel] != none && state_d2_[pixel] == d2) return;

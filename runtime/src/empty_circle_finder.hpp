@@ -26,15 +26,14 @@
 // records (pixel, d2) pairs that both searches skip, so the two stay identical.
 #pragma once
 
-#include "distance_field.hpp"
-#include "exclude_list.hpp"
-#include "max_tree.hpp"
-
 #include <acanthus/growth.hpp>
-
 #include <cstdint>
 #include <optional>
 #include <vector>
+
+#include "distance_field.hpp"
+#include "exclude_list.hpp"
+#include "max_tree.hpp"
 
 namespace acanthus {
 
@@ -45,7 +44,7 @@ struct EmptyCircle {
 };
 
 class EmptyCircleFinder {
-public:
+  public:
     static constexpr double kMargin = 0.75;  // pixels, >= sqrt(1/2) + PixelCover::kFlatten
     static constexpr double kBend = 0.5;     // pixels: smallest bend of a medial-axis crest
 
@@ -75,12 +74,14 @@ public:
     // The `limit` best shape-eligible candidates in choice order (for debug frames), by scan.
     std::vector<int> best_candidates(std::size_t limit) const;
 
-private:
+  private:
     using Key = std::uint64_t;  // d2 in the high word, ~pixel in the low word: max is best
     static Key key_of(int pixel, std::int64_t d2) {
         return (static_cast<Key>(d2) << 32) | (0xffffffffu - static_cast<std::uint32_t>(pixel));
     }
-    static int pixel_of(Key k) { return static_cast<int>(0xffffffffu - static_cast<std::uint32_t>(k)); }
+    static int pixel_of(Key k) {
+        return static_cast<int>(0xffffffffu - static_cast<std::uint32_t>(k));
+    }
     static std::int64_t d2_of(Key k) { return static_cast<std::int64_t>(k >> 32); }
     enum State : std::uint8_t { none = 0, candidate = 1, blocked = 2 };
     static constexpr int kTileShift = 3;  // 8 x 8 pixel tiles
@@ -96,8 +97,10 @@ private:
     // Row of a pixel index without a division (a multiply and a correction).
     int row_of(int pixel) const {
         int j = static_cast<int>(pixel * inv_width_);
-        if (j * grid_.width > pixel) --j;
-        else if ((j + 1) * grid_.width <= pixel) ++j;
+        if (j * grid_.width > pixel)
+            --j;
+        else if ((j + 1) * grid_.width <= pixel)
+            ++j;
         return j;
     }
 
@@ -108,9 +111,9 @@ private:
     std::int64_t min_d2_ = 1;  // smallest d2 whose radius is at least min_radius_
     int tiles_w_ = 0, tiles_h_ = 0;
 
-    std::vector<std::uint8_t> state_;       // State per pixel, valid for state_d2_
-    std::vector<std::int32_t> state_d2_;    // d2 at which state_ was decided
-    std::vector<std::int32_t> discarded_;   // d2 at which the pixel was discarded, 0 none
+    std::vector<std::uint8_t> state_;      // State per pixel, valid for state_d2_
+    std::vector<std::int32_t> state_d2_;   // d2 at which state_ was decided
+    std::vector<std::int32_t> discarded_;  // d2 at which the pixel was discarded, 0 none
     std::vector<std::vector<std::pair<int, std::int32_t>>> blocked_;  // by exclude id: (pixel, d2)
     MaxTree tiles_;
     std::vector<std::uint8_t> dirty_;

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <acanthus/point.hpp>
-
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -12,7 +11,7 @@
 namespace acanthus {
 
 class ExcludeList {
-public:
+  public:
     ExcludeList();
     ~ExcludeList();
     ExcludeList(const ExcludeList&) = delete;
@@ -35,7 +34,7 @@ public:
     // The points in the list, in the order they were added.
     std::vector<Point> points() const;
 
-private:
+  private:
     struct Index;
     std::unique_ptr<Index> index_;
     long clears_ = 0;

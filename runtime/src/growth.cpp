@@ -10,14 +10,6 @@
 #include <acanthus/error.hpp>
 #include <acanthus/growth.hpp>
 #include <acanthus/rule_call.hpp>
-
-#include "distance_field.hpp"
-#include "empty_circle_finder.hpp"
-#include "exclude_list.hpp"
-#include "growth_environment.hpp"
-#include "ornament.hpp"
-#include "raster_buffer.hpp"
-
 #include <algorithm>
 #include <charconv>
 #include <chrono>
@@ -26,6 +18,13 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+
+#include "distance_field.hpp"
+#include "empty_circle_finder.hpp"
+#include "exclude_list.hpp"
+#include "growth_environment.hpp"
+#include "ornament.hpp"
+#include "raster_buffer.hpp"
 
 namespace acanthus {
 namespace {
@@ -87,8 +86,8 @@ struct GrowthEngine::Impl {
     std::map<const ElementType*, std::vector<int>> rules_by_parent;
     GrowthStats stats;
 
-    bool field_live = false;   // the field reflects the buffer (incremental engine)
-    bool field_stale = true;   // the buffer changed since the last compute() (reference engine)
+    bool field_live = false;  // the field reflects the buffer (incremental engine)
+    bool field_stale = true;  // the buffer changed since the last compute() (reference engine)
     long seen_clears = 0;
     bool ran = false;
     std::vector<int> fresh, changed;

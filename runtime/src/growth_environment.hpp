@@ -2,17 +2,17 @@
 // queries of the support library, answered by the ornament, the region and the exclude list.
 #pragma once
 
-#include "exclude_list.hpp"
-#include "ornament.hpp"
-
 #include <acanthus/environment.hpp>
 #include <acanthus/random.hpp>
 #include <acanthus/region.hpp>
 
+#include "exclude_list.hpp"
+#include "ornament.hpp"
+
 namespace acanthus {
 
 class GrowthEnvironment : public Environment {
-public:
+  public:
     GrowthEnvironment(const Region& region, const Ornament& ornament, ExcludeList& exclude,
                       std::uint64_t rng_seed)
         : region_(region), ornament_(ornament), exclude_(exclude), random_(rng_seed) {}
@@ -28,7 +28,7 @@ public:
     void clear_exclude_list() override { exclude_.clear(); }
     Random& random() override { return random_; }
 
-private:
+  private:
     const Region& region_;
     const Ornament& ornament_;
     ExcludeList& exclude_;

@@ -9,7 +9,7 @@
 namespace acanthus {
 
 class MaxTree {
-public:
+  public:
     explicit MaxTree(std::size_t slots = 0) { reset(slots); }
 
     void reset(std::size_t slots) {
@@ -23,14 +23,15 @@ public:
         if (node_[n] == key) return;
         node_[n] = key;
         for (n /= 2; n >= 1; n /= 2) {
-            const std::uint64_t m = node_[2 * n] > node_[2 * n + 1] ? node_[2 * n] : node_[2 * n + 1];
+            const std::uint64_t m =
+                node_[2 * n] > node_[2 * n + 1] ? node_[2 * n] : node_[2 * n + 1];
             if (node_[n] == m) break;
             node_[n] = m;
         }
     }
     std::uint64_t max() const { return node_[1]; }
 
-private:
+  private:
     std::size_t leaves_ = 1;
     std::vector<std::uint64_t> node_;
 };

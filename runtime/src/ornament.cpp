@@ -1,11 +1,11 @@
 #include "ornament.hpp"
 
-#include "overlap.hpp"
-
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "overlap.hpp"
 
 namespace acanthus {
 
@@ -30,7 +30,8 @@ std::vector<const Element*> Ornament::view() const {
 
 double Ornament::distance(const Element& e, Point p) {
     double best = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < e.proxy_count(); ++k) best = std::min(best, distance_to(e.proxy(k), p));
+    for (std::size_t k = 0; k < e.proxy_count(); ++k)
+        best = std::min(best, distance_to(e.proxy(k), p));
     return best;
 }
 
@@ -41,7 +42,8 @@ std::pair<Element*, double> Ornament::nearest(Point p, double hint) const {
     // more per call on large trees than these box queries.)
     const Rect b = region_.bounds();
     const double size = std::max(b.width(), b.height());
-    const double reach = size + acanthus::distance(p, b.center()) + 1;  // beyond this, every bound is in
+    const double reach =
+        size + acanthus::distance(p, b.center()) + 1;  // beyond this, every bound is in
     double r = hint > 0 ? hint : size / 256;
     for (;;) {
         const auto hits = within(p, r);
@@ -78,7 +80,8 @@ std::vector<std::pair<Element*, double>> Ornament::within(Point p, double radius
 
 bool Ornament::intersects(const Proxy& p) const {
     if (!p.is_set() || !p.finite())
-        throw std::invalid_argument(std::string("intersection(): a ") + std::string(to_string(p.kind())) +
+        throw std::invalid_argument(std::string("intersection(): a ") +
+                                    std::string(to_string(p.kind())) +
                                     " proxy that is not set or not finite");
     if (leaves_region(p, region_, tolerance_)) return true;
     for (const auto& en : index_.query(p.bounds())) {

@@ -3,19 +3,18 @@
 // index of proxy bounds (broad phase) and the exact tests of overlap.hpp.
 #pragma once
 
-#include "spatial_index.hpp"
-
 #include <acanthus/element.hpp>
 #include <acanthus/region.hpp>
-
 #include <memory>
 #include <utility>
 #include <vector>
 
+#include "spatial_index.hpp"
+
 namespace acanthus {
 
 class Ornament {
-public:
+  public:
     // `tolerance` (user units): touching closer than this is not overlap.
     Ornament(const Region& region, double tolerance);
     Ornament(const Ornament&) = delete;
@@ -41,7 +40,7 @@ public:
     bool intersects(const Proxy& p) const;
     bool intersects(const Element& e) const;
 
-private:
+  private:
     const Region& region_;
     double tolerance_;
     std::vector<std::unique_ptr<Element>> elements_;

@@ -1,9 +1,9 @@
 #include "pixel_cover.hpp"
 
-#include "proxy_path.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "proxy_path.hpp"
 
 namespace acanthus {
 namespace {
@@ -25,8 +25,8 @@ double segment_distance(Point p, Point a, Point b) {
 
 void subdivide(Point c0, Point c1, Point c2, Point c3, double tolerance, int depth,
                std::vector<Point>& out) {
-    const bool flat = segment_distance(c1, c0, c3) <= tolerance &&
-                      segment_distance(c2, c0, c3) <= tolerance;
+    const bool flat =
+        segment_distance(c1, c0, c3) <= tolerance && segment_distance(c2, c0, c3) <= tolerance;
     if (flat || depth >= 24) {
         out.push_back(c3);
         return;
@@ -128,7 +128,8 @@ void PixelCover::centers_inside(const std::vector<std::vector<Point>>& rings, bo
             if (!inside || k + 1 >= crossings.size() || crossings[k + 1].row != row) continue;
             // Centres i + 0.5 in [u_k, u_k+1).
             const int i0 = clamp_index(std::ceil(crossings[k].u - 0.5), 0, grid_.width);
-            const int i1 = clamp_index(std::ceil(crossings[k + 1].u - 0.5) - 1, -1, grid_.width - 1);
+            const int i1 =
+                clamp_index(std::ceil(crossings[k + 1].u - 0.5) - 1, -1, grid_.width - 1);
             for (int i = i0; i <= i1; ++i) out.push_back(row * grid_.width + i);
         }
     }

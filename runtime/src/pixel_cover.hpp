@@ -7,13 +7,12 @@
 
 #include <acanthus/growth.hpp>
 #include <acanthus/proxy.hpp>
-
 #include <vector>
 
 namespace acanthus {
 
 class PixelCover {
-public:
+  public:
     // Largest distance, in pixels, between a flattened curve and its chords.
     static constexpr double kFlatten = 0.02;
 
@@ -36,7 +35,7 @@ public:
     std::vector<Point> flatten_arc(const ArcProxy& a) const;
     std::vector<Point> flatten_bezier(const BezierProxy& b) const;
 
-private:
+  private:
     // Pixel coordinates: u = (x - x0) / pixel.
     double u(double x) const { return (x - grid_.x0) / grid_.pixel; }
     double v(double y) const { return (y - grid_.y0) / grid_.pixel; }

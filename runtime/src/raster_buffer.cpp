@@ -1,7 +1,6 @@
 #include "raster_buffer.hpp"
 
 #include <acanthus/error.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <string>

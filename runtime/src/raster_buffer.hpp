@@ -5,20 +5,19 @@
 // obstacles.
 #pragma once
 
-#include "distance_field.hpp"
-#include "pixel_cover.hpp"
-
 #include <acanthus/element.hpp>
 #include <acanthus/growth.hpp>
 #include <acanthus/region.hpp>
-
 #include <cstdint>
 #include <vector>
+
+#include "distance_field.hpp"
+#include "pixel_cover.hpp"
 
 namespace acanthus {
 
 class RasterBuffer {
-public:
+  public:
     // Throws UsageError when `resolution` is out of range.
     RasterBuffer(const Region& region, int resolution);
 
@@ -37,7 +36,7 @@ public:
     void add_element(const Element& e, std::vector<int>& fresh);
     void add_proxy(const Proxy& p, ObstacleKind kind, std::vector<int>& fresh);
 
-private:
+  private:
     void occupy(const std::vector<int>& pixels, ObstacleKind kind, std::vector<int>& fresh);
 
     GridFrame grid_;

@@ -55,20 +55,40 @@ GridFrame make_grid(Rect bounds, int resolution) {
 }
 
 void shape_pixels(const GridFrame& grid, const PlacedShape& shape, std::vector<int>& out) {
-    auto clamp_i = [&](double v, int n) { return std::clamp(static_cast<int>(v), 0, n - 1); };
-    const auto& tris = shape.triangles();
-    for (std::size_t k = 0; k < tris.size(); ++k) {
-        const Rect& b = shape.triangle_bounds()[k];
-        if (b.x1 < grid.x0 || b.y1 < grid.y0) continue;
-        int i0 = clamp_i(std::floor((b.x0 - grid.x0) / grid.pixel - 0.5), grid.width);
-        int i1 = clamp_i(std::ceil((b.x1 - grid.x0) / grid.pixel - 0.5), grid.width);
-        int j0 = clamp_i(std::floor((b.y0 - grid.y0) / grid.pixel - 0.5), grid.height);
-        int j1 = clamp_i(std::ceil((b.y1 - grid.y0) / grid.pixel - 0.5), grid.height);
-        for (int j = j0; j <= j1; ++j)
-            for (int i = i0; i <= i1; ++i)
-                if (point_in_triangle(tris[k], grid.center_of(i, j)))
-                    out.push_back(j * grid.width + i);
+    // Scanline over the outline: each edge adds its crossings with the rows of pixel centres
+    // (half-open in y, so a vertex on a row is counted once), then each row fills between pairs.
+    thread_local std::vector<std::pair<int, double>> crossings;
+    crossings.clear();
+    const std::vector<Point>& ring = shape.outline();
+    for (std::size_t k = 0, n = ring.size(); k < n; ++k) {
+        Point a = ring[k], b = ring[(k + 1) % n];
+        if (a.y == b.y) continue;
+        double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
+        // Rows j with lo <= y0 + (j + 0.5) pixel < hi.
+        int j0 = std::max(0, static_cast<int>(std::ceil((lo - grid.y0) / grid.pixel - 0.5)));
+        int j1 = std::min(grid.height - 1,
+                          static_cast<int>(std::ceil((hi - grid.y0) / grid.pixel - 0.5)) - 1);
+        double slope = (b.x - a.x) / (b.y - a.y);
+        for (int j = j0; j <= j1; ++j) {
+            double y = grid.y0 + (j + 0.5) * grid.pixel;
+            crossings.emplace_back(j, a.x + (y - a.y) * slope);
+        }
     }
+    std::sort(crossings.begin(), crossings.end());
+    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
+        int j = crossings[k].first;
+        if (crossings[k + 1].first != j) {  // a lone crossing (rounding at a vertex): resync
+            --k;
+            continue;
+        }
+        // Pixels whose centres lie in [x_k, x_k+1).
+        int i0 = static_cast<int>(std::ceil((crossings[k].second - grid.x0) / grid.pixel - 0.5));
+        int i1 =
+            static_cast<int>(std::ceil((crossings[k + 1].second - grid.x0) / grid.pixel - 0.5));
+        for (int i = std::max(i0, 0); i < std::min(i1, grid.width); ++i)
+            out.push_back(j * grid.width + i);
+    }
+    const auto& tris = shape.triangles();
     if (!tris.empty()) {
         const Triangle& t = tris.front();
         Point c{(t[0].x + t[1].x + t[2].x) / 3, (t[0].y + t[1].y + t[2].y) / 3};

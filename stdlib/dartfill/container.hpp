@@ -59,19 +59,29 @@ class RingContainer : public Container {
     std::unique_ptr<Index> index_;
 };
 
-// The space left in the panel of the running growth engine: admission asks the Environment
-// (region and placed elements); the extent is found by flood-filling from `start`.
+// The space left in the panel of the running growth engine. When the Environment exposes its
+// region, the panel is dartfill's own RingContainer (fast screening and scanline raster) and the
+// engine is asked only for the exact final test of a candidate and for element distances while
+// rasterizing; without it, every test goes through the Environment and the extent is found by
+// flood-filling from `start`.
 class EnvironmentContainer : public Container {
   public:
     EnvironmentContainer(Environment& env, Point start, double cell);
+    ~EnvironmentContainer() override;
 
     Rect bounds() const override { return bounds_; }
     double area() const override;
     bool admits(const PlacedShape& shape, double tolerance) const override;
     std::vector<std::uint8_t> rasterize(const GridFrame& grid) const override;
+    // True when the region's own rings screen candidates (Environment::region() was set).
+    bool screens_with_region() const { return panel_ != nullptr; }
 
   private:
+    // Pixels (of a free `occupancy`) within half a pixel of a placed element become blocked.
+    long block_elements(const GridFrame& grid, std::vector<std::uint8_t>& occupancy) const;
+
     Environment& env_;
+    std::unique_ptr<RingContainer> panel_;
     Rect bounds_;
     mutable double area_ = -1;  // measured when the first raster is made
 };

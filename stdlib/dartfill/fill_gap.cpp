@@ -4,25 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "candidate_sampler.hpp"
 #include "gap_field.hpp"
 #include "methods.hpp"
 
 namespace acanthus::dartfill {
 namespace {
-
-// d^n from q = d^2 (q in [0, 1]): q^(n/2), by squaring when n/2 is a small integer.
-double power_of_distance(double q, double exponent) {
-    double half = exponent / 2;
-    if (half == std::floor(half) && half >= 0 && half <= 64) {
-        double result = 1, base = q;
-        for (auto e = static_cast<unsigned>(half); e; e >>= 1) {
-            if (e & 1u) result *= base;
-            base *= base;
-        }
-        return result;
-    }
-    return std::pow(q, half);
-}
 
 void sparse_placement(FillContext& context, Layout& layout) {
     Rect b = context.container().bounds();
@@ -44,61 +31,39 @@ void sparse_placement(FillContext& context, Layout& layout) {
 
 }  // namespace
 
-std::vector<int> draw_candidates(const GapField& gaps, double exponent, Random& random) {
-    std::vector<int> q;
-    std::int64_t max = gaps.max_squared_distance();
-    if (max == 0) return q;
-    double inv = 1.0 / static_cast<double>(max);
-    // Squared distances are integers up to max: tabulate alpha once per round. Pixels with
-    // alpha below 1e-12 are skipped without drawing: over a million pixels they would add a
-    // candidate once in a million rounds.
-    std::vector<double> alpha(static_cast<std::size_t>(max) + 1);
-    for (std::int64_t d2 = 0; d2 <= max; ++d2)
-        alpha[d2] = d2 == 0 ? 0.0 : power_of_distance(static_cast<double>(d2) * inv, exponent);
-    for (int i = 0, n = gaps.size(); i < n; ++i) {
-        std::int64_t d2 = std::min(gaps.squared_distance(i), max);
-        double a = alpha[d2];
-        if (a >= 1e-12 && random.uniform() < a) q.push_back(i);
-    }
-    return q;
-}
-
 void fill_gap(FillContext& context, Layout& layout, long& rounds) {
     sparse_placement(context, layout);
     const Options& options = context.options();
     GapField gaps(context.container(), layout, context.resolution());
+    CandidateSampler sampler(gaps);
     Random& random = context.random();
+    std::vector<int> changed;
     long cancellations = 0;
+    // One round per exclusive region placed: "we prepared the set of candidate points P where the
+    // exclusive region could be placed ... our method specified the number of P to 100, thereby
+    // limiting the number of consecutive cancellations to 100" (section 4). A round ends at the
+    // first candidate that fits; the field is updated and the next region gets a fresh P. A round
+    // whose every candidate fails is followed by a fresh draw from the same field, until
+    // `gap_cancellations` consecutive cancellations (200, section 4) end the fill.
     while (cancellations < options.gap_cancellations && !context.full(layout)) {
-        std::vector<int> q = draw_candidates(gaps, options.exponent, random);
-        if (q.empty()) break;
+        std::vector<int> candidates = sampler.draw(options.exponent, options.candidates, random);
+        if (candidates.empty()) break;
         ++rounds;
-        // P: |P| members of Q chosen uniformly without replacement.
-        auto count = std::min<std::size_t>(
-            static_cast<std::size_t>(std::max(options.candidates, 1)), q.size());
-        for (std::size_t k = 0; k < count; ++k) {
-            auto j = static_cast<std::size_t>(random.uniform_int(
-                static_cast<long long>(k), static_cast<long long>(q.size()) - 1));
-            std::swap(q[k], q[j]);
-        }
-        std::vector<std::int64_t> drawn(count);
-        for (std::size_t k = 0; k < count; ++k) drawn[k] = gaps.squared_distance(q[k]);
-        for (std::size_t k = 0; k < count; ++k) {
-            // A placement earlier in this round covered the candidate or narrowed its gap: it no
-            // longer stands for the gap it was drawn from, and the next round redraws there.
-            if (gaps.squared_distance(q[k]) != drawn[k]) continue;
-            // The candidate point receives the shape's pole (its most interior point); for a
-            // concave shape the bounding-box centre may lie in a notch, outside the shape.
-            Point point = gaps.point_in(q[k], random.uniform(), random.uniform());
+        for (int pixel : candidates) {
+            // The candidate point receives the centre of transformation, as every placement
+            // does: "The center of transformation is the center of the bounding box of an
+            // exclusive region" (3.1); "The value of T is determined by the position of a
+            // placed point" (4.2). The point is jittered within its pixel.
+            Point point = gaps.point_in(pixel, random.uniform(), random.uniform());
             Pose pose = context.random_pose(point);
-            pose.position = point - context.pole_offset(pose);
             if (const PlacedShape* placed = context.try_place(layout, pose)) {
-                gaps.add(*placed);
+                changed.clear();
+                gaps.add(*placed, &changed);
+                sampler.update(changed);
                 cancellations = 0;
-                if (context.full(layout)) break;
-            } else if (++cancellations >= options.gap_cancellations) {
                 break;
             }
+            if (++cancellations >= options.gap_cancellations) break;
         }
     }
 }

@@ -30,7 +30,7 @@ std::int64_t GapField::max_squared_distance() const {
     return best;
 }
 
-void GapField::add(const PlacedShape& shape) {
+void GapField::add(const PlacedShape& shape, std::vector<int>* changed) {
     pixels_.clear();
     shape_pixels(grid_, shape, pixels_);
     // add_sites wants each free pixel once.
@@ -42,7 +42,9 @@ void GapField::add(const PlacedShape& shape) {
         stamp_[p] = generation_;
         sites.push_back(p);
     }
-    if (!sites.empty()) field_.add_sites(sites, ObstacleKind::element, nullptr);
+    if (sites.empty()) return;
+    field_.add_sites(sites, ObstacleKind::element, changed);
+    if (changed) changed->insert(changed->end(), sites.begin(), sites.end());
 }
 
 Point GapField::point_in(int index, double u, double v) const {

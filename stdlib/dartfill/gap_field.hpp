@@ -23,8 +23,9 @@ class GapField {
     std::int64_t squared_distance(int index) const { return field_.squared_distance(index); }
     // Largest squared distance over the grid (0 when nothing is free).
     std::int64_t max_squared_distance() const;
-    // Marks the shape's pixels as element sites and updates the field.
-    void add(const PlacedShape& shape);
+    // Marks the shape's pixels as element sites and updates the field incrementally; appends the
+    // new sites and every pixel whose distance changed to `changed` when it is not null.
+    void add(const PlacedShape& shape, std::vector<int>* changed = nullptr);
     // A uniformly jittered point inside pixel `index`.
     Point point_in(int index, double u, double v) const;
 

@@ -56,11 +56,9 @@ class FillContext {
 
 // Section 3.2: darts at uniform positions until `naive_cancellations` consecutive cancellations.
 void naive_dart_throwing(FillContext& context, Layout& layout);
-// Section 4: Poisson-disk sparse placement, then candidates drawn by d^n from the distance field.
+// Section 4: Poisson-disk sparse placement, then one round of |P| candidates drawn by d^n from
+// the distance field per placed shape.
 void fill_gap(FillContext& context, Layout& layout, long& rounds);
-class GapField;
-// Q of section 4.3: every pixel joins with probability d^n, d the normalized distance.
-std::vector<int> draw_candidates(const GapField& gaps, double exponent, Random& random);
 // Candidates at ridge maxima of the distance field, largest gap first, several rotations each.
 void medial_fill(FillContext& context, Layout& layout, long& rounds);
 

@@ -73,8 +73,10 @@ inline Pattern pattern() {
     p.file = "dots.acr";
     p.types = {&seed_type, &dot_type};
     p.seed = &seed_type;
-    p.rules.push_back(RuleInfo{"seed --> dot", 18, "dots.acr", &seed_type, {&dot_type}, &rule_seed_dot});
-    p.rules.push_back(RuleInfo{"dot --> dot", 29, "dots.acr", &dot_type, {&dot_type}, &rule_dot_dot});
+    p.rules.push_back(
+        RuleInfo{"seed --> dot", 18, "dots.acr", &seed_type, {&dot_type}, &rule_seed_dot});
+    p.rules.push_back(
+        RuleInfo{"dot --> dot", 29, "dots.acr", &dot_type, {&dot_type}, &rule_dot_dot});
     return p;
 }
 

@@ -1,14 +1,13 @@
 // DistanceField: exact EDT against brute force; incremental add_sites against full compute.
-#include "distance_field.hpp"
-
 #include <gtest/gtest.h>
 
 #include <acanthus/random.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
+
+#include "distance_field.hpp"
 
 using acanthus::DistanceField;
 using acanthus::ObstacleKind;
@@ -76,9 +75,10 @@ std::vector<std::uint8_t> random_scene(Random& rng, int w, int h, double density
 
 void compare_fields(const DistanceField& a, const DistanceField& b, const char* what, int step) {
     for (int p = 0; p < a.width() * a.height(); ++p) {
-        ASSERT_EQ(a.squared_distance(p), b.squared_distance(p)) << what << " step " << step
-                                                                << " pixel " << p;
-        ASSERT_EQ(a.nearest_kind(p), b.nearest_kind(p)) << what << " step " << step << " pixel " << p;
+        ASSERT_EQ(a.squared_distance(p), b.squared_distance(p))
+            << what << " step " << step << " pixel " << p;
+        ASSERT_EQ(a.nearest_kind(p), b.nearest_kind(p))
+            << what << " step " << step << " pixel " << p;
         ASSERT_EQ(a.occupancy(p), b.occupancy(p));
         if (a.nearest_site(p) >= 0) {
             ASSERT_EQ(site_distance(a, p), a.squared_distance(p)) << what << " step " << step;
@@ -167,10 +167,12 @@ TEST(DistanceField, IncrementalMatchesFullComputeAfterEveryStep) {
                     blob.push_back(j * w + i);
                 }
             }
-            const ObstacleKind kind = rng.chance(0.15) ? ObstacleKind::boundary : ObstacleKind::element;
+            const ObstacleKind kind =
+                rng.chance(0.15) ? ObstacleKind::boundary : ObstacleKind::element;
             const std::vector<std::int64_t> before = [&] {
                 std::vector<std::int64_t> v(occ.size());
-                for (std::size_t p = 0; p < occ.size(); ++p) v[p] = inc.squared_distance(static_cast<int>(p));
+                for (std::size_t p = 0; p < occ.size(); ++p)
+                    v[p] = inc.squared_distance(static_cast<int>(p));
                 return v;
             }();
             std::vector<int> changed;
@@ -184,7 +186,8 @@ TEST(DistanceField, IncrementalMatchesFullComputeAfterEveryStep) {
             // `changed` is exactly the set of pixels whose distance changed.
             std::vector<int> expected;
             for (std::size_t p = 0; p < occ.size(); ++p)
-                if (before[p] != inc.squared_distance(static_cast<int>(p))) expected.push_back(static_cast<int>(p));
+                if (before[p] != inc.squared_distance(static_cast<int>(p)))
+                    expected.push_back(static_cast<int>(p));
             std::sort(changed.begin(), changed.end());
             changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
             // Element sites report exactly the changed pixels; boundary sites may also report
@@ -192,7 +195,8 @@ TEST(DistanceField, IncrementalMatchesFullComputeAfterEveryStep) {
             if (kind == ObstacleKind::element) {
                 ASSERT_EQ(changed, expected) << "step " << step;
             } else {
-                ASSERT_TRUE(std::includes(changed.begin(), changed.end(), expected.begin(), expected.end()));
+                ASSERT_TRUE(std::includes(changed.begin(), changed.end(), expected.begin(),
+                                          expected.end()));
             }
         }
         expect_matches(inc, occ, w, h, "incremental final");

@@ -1,13 +1,12 @@
 // EmptyCircleFinder: medial-axis candidates, boundary-stopped and excluded circles, minimum
 // radius, and the incremental search against the full scan.
-#include "empty_circle_finder.hpp"
-
 #include <gtest/gtest.h>
 
 #include <acanthus/random.hpp>
-
 #include <cmath>
 #include <vector>
+
+#include "empty_circle_finder.hpp"
 
 using acanthus::Circle;
 using acanthus::DistanceField;
@@ -178,7 +177,8 @@ TEST(EmptyCircleFinder, IncrementalFindMatchesScan) {
                 const int ci = inc->pixel % w, cj = inc->pixel / w;
                 std::vector<int> blob;
                 const int r = static_cast<int>(rng.uniform_int(0, 2));
-                const int oi = static_cast<int>(rng.uniform_int(-3, 3)), oj = static_cast<int>(rng.uniform_int(-3, 3));
+                const int oi = static_cast<int>(rng.uniform_int(-3, 3)),
+                          oj = static_cast<int>(rng.uniform_int(-3, 3));
                 for (int dj = -r; dj <= r; ++dj)
                     for (int di = -r; di <= r; ++di) {
                         const int i = ci + oi + di, j = cj + oj + dj;

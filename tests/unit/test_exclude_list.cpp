@@ -1,12 +1,11 @@
 // ExcludeList: circle queries, removal near a point, clear.
-#include "exclude_list.hpp"
-
 #include <gtest/gtest.h>
 
 #include <acanthus/random.hpp>
-
 #include <algorithm>
 #include <vector>
+
+#include "exclude_list.hpp"
 
 using acanthus::Circle;
 using acanthus::ExcludeList;
@@ -72,7 +71,8 @@ TEST(ExcludeList, MatchesBruteForceOnRandomPoints) {
             std::vector<int> expected;
             for (const auto& [id, q] : alive)
                 if (acanthus::distance(p, q) <= eps) expected.push_back(id);
-            std::erase_if(alive, [&](const auto& x) { return acanthus::distance(p, x.second) <= eps; });
+            std::erase_if(alive,
+                          [&](const auto& x) { return acanthus::distance(p, x.second) <= eps; });
             std::sort(removed.begin(), removed.end());
             ASSERT_EQ(removed, expected);
         }
@@ -83,7 +83,8 @@ TEST(ExcludeList, MatchesBruteForceOnRandomPoints) {
         const int id = list.find_inside(c);
         ASSERT_EQ(id >= 0, expected);
         if (id >= 0) {
-            const auto it = std::find_if(alive.begin(), alive.end(), [&](const auto& x) { return x.first == id; });
+            const auto it = std::find_if(alive.begin(), alive.end(),
+                                         [&](const auto& x) { return x.first == id; });
             ASSERT_NE(it, alive.end());
             ASSERT_LT(acanthus::distance(it->second, c.center), c.radius);
         }

@@ -6,7 +6,6 @@
 #include <acanthus/error.hpp>
 #include <acanthus/growth.hpp>
 #include <acanthus/region.hpp>
-
 #include <cmath>
 #include <string>
 #include <vector>
@@ -112,7 +111,8 @@ void expect_dots_fit(const std::vector<Node>& tree, const Region& region) {
         ASSERT_TRUE(region.contains(dots[a].center)) << "dot " << a;
         ASSERT_GE(region.distance_to_boundary(dots[a].center), dots[a].radius - tol) << "dot " << a;
         for (std::size_t b = a + 1; b < dots.size(); ++b)
-            ASSERT_GE(distance(dots[a].center, dots[b].center), dots[a].radius + dots[b].radius - tol)
+            ASSERT_GE(distance(dots[a].center, dots[b].center),
+                      dots[a].radius + dots[b].radius - tol)
                 << "dots " << a << " and " << b << " overlap";
     }
 }

@@ -1,0 +1,26 @@
+# Grows PROGRAM over PANEL with the incremental and the reference engine; the element trees
+# (--json) must be byte-identical. A coarse buffer keeps the reference engine quick.
+file(MAKE_DIRECTORY "${WORK}")
+set(common --region "${PANEL}" --rng-seed 3 --resolution 160 --max-iterations 4000 --quiet)
+foreach(engine incremental reference)
+  set(flag "")
+  if(engine STREQUAL "reference")
+    set(flag --reference-engine)
+  endif()
+  execute_process(COMMAND "${PROGRAM}" ${common} ${flag} --json "${WORK}/${engine}.json"
+    -o "${WORK}/${engine}.svg" RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${engine} engine failed (${rc}):\n${err}")
+  endif()
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK}/incremental.json"
+  "${WORK}/reference.json" RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "the engines grew different trees: ${WORK}/incremental.json vs reference.json")
+endif()
+file(READ "${WORK}/incremental.json" tree)
+string(JSON n LENGTH "${tree}" elements)
+if(n LESS 10)
+  message(FATAL_ERROR "only ${n} elements grew; the comparison would prove little")
+endif()
+message("both engines grew the same ${n} elements")
