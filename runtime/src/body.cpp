@@ -1,6 +1,5 @@
 // Support functions for rule bodies: forward to the environment the engine installed.
 #include <acanthus/body.hpp>
-
 #include <stdexcept>
 
 namespace acanthus::body {

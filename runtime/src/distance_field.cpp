@@ -112,7 +112,6 @@ DistanceField::DistanceField(int width, int height) : width_(width), height_(hei
     boundary2_.assign(n, kInfinite);
     site_.assign(n, -1);
     visit_.assign(n, 0);
-    hint_.assign(n, 0);
 }
 
 double DistanceField::distance(int i, int j) const {
@@ -162,20 +161,41 @@ void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
 namespace {
 
 // Blobs spanning at most this many columns are measured directly from their runs of sites.
-constexpr std::size_t kDirectColumns = 24;
+constexpr std::size_t kDirectColumns = 32;
+
+// Distances to the new sites from their EDT over a window (pixels inside the window only).
+struct WindowMeasure {
+    const std::int32_t* d2;
+    const std::int32_t* site;
+    int width, window_width, x0, y0;
+
+    struct Row {
+        const WindowMeasure& m;
+        std::size_t offset;  // of pixel (0, j) in the window arrays, shifted by x0
+        std::int64_t at(int i, int& nearest) const {
+            const std::size_t local = offset + static_cast<std::size_t>(i - m.x0);
+            const int ls = m.site[local];
+            nearest = (ls / m.window_width + m.y0) * m.width + ls % m.window_width + m.x0;
+            return m.d2[local];
+        }
+    };
+    Row row(int j) const {
+        return {*this, static_cast<std::size_t>(j - y0) * static_cast<std::size_t>(window_width)};
+    }
+};
 
 }  // namespace
 
 // The wavefront of the header comment, as an 8-connected scanline fill: a pixel is "inside"
 // when it is a new site or sqrt(m) < sqrt(D) + 1; the fill evaluates every inside pixel
-// reachable from the new sites and all their 8-neighbours, once each. `measure(i, j, si, sj)`
-// returns m exactly for pixels in the measurable area and sets the nearest new site (on entry
-// (si, sj) is the nearest new site of an adjacent inside pixel, a good first guess);
-// `measurable(i, j)` says whether it can. Returns false (nothing changed) when the fill reached
-// an unmeasurable pixel.
-template <class Measure, class Measurable>
-bool DistanceField::wavefront(const std::vector<int>& sites, const std::vector<std::int32_t>& d2,
-                              Measure measure, Measurable measurable) {
+// reachable from the new sites and all their 8-neighbours, once each. `measure.row(j)` gives
+// an object whose `at(i, nearest)` returns m exactly for pixels of row j in the measurable
+// area and sets the nearest new site (a pixel index); `measurable(i, j)` says whether it can.
+// Returns false (nothing changed) when the fill reached an unmeasurable pixel.
+template <bool kCommit, class Measure, class Measurable>
+bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::int32_t>& d2v,
+                              std::int32_t* site, std::vector<int>* out, Measure& measure,
+                              Measurable measurable) {
     const int w = width_, h = height_;
     // visit_ == base: evaluated, outside; base + 1: inside; base + 2: inside, its row span filled.
     if (stamp_ > std::numeric_limits<std::uint32_t>::max() - 4) {
@@ -184,24 +204,28 @@ bool DistanceField::wavefront(const std::vector<int>& sites, const std::vector<s
     }
     const std::uint32_t base = stamp_ + 1;
     stamp_ += 3;
+    std::uint32_t* visit = visit_.data();
+    std::int32_t* d2 = d2v.data();
     improved_.clear();
     stack_.clear();
     auto pack = [](int i, int j) {
         return (static_cast<std::uint32_t>(i) << 16) | static_cast<std::uint32_t>(j);
     };
     for (int p : sites) {
-        const int i = p % w, j = p / w;
-        visit_[p] = base + 1;
-        hint_[p] = pack(i, j);
-        improved_.push_back({p, 0, p});
-        stack_.push_back(pack(i, j));
+        visit[p] = base + 1;
+        if constexpr (kCommit) {
+            d2[p] = 0;
+            if (site) site[p] = p;
+            if (out) out->push_back(p);
+        } else {
+            improved_.push_back({p, 0, p});
+        }
+        stack_.push_back(pack(p % w, p / w));
     }
     bool escaped = false;
-    // Evaluates pixel (i, j) once; `from` is an adjacent inside pixel. Returns whether inside.
-    auto inside = [&](int i, int j, int from) {
-        const int r = j * w + i;
-        const std::uint32_t v = visit_[r];
-        if (v >= base) return v > base;
+    // Evaluates pixel (i, j), r = j*w+i, not yet visited, of `line` (row j). Returns whether
+    // it is inside.
+    auto evaluate = [&](auto& line, int i, int j, int r) {
         if (!measurable(i, j)) {
             escaped = true;
             return false;
@@ -209,36 +233,59 @@ bool DistanceField::wavefront(const std::vector<int>& sites, const std::vector<s
         const std::int64_t old = d2[r];
         bool in = false;
         if (old != 0) {  // an obstacle is never nearer to a new site
-            int si = static_cast<int>(hint_[from] >> 16),
-                sj = static_cast<int>(hint_[from] & 0xffff);
-            const std::int64_t m = measure(i, j, si, sj);
-            if (m < old) improved_.push_back({r, static_cast<std::int32_t>(m), sj * w + si});
+            int nearest;
+            const std::int64_t m = line.at(i, nearest);
+            if (m < old) {
+                if constexpr (kCommit) {
+                    d2[r] = static_cast<std::int32_t>(m);
+                    if (site) site[r] = nearest;
+                    if (out) out->push_back(r);
+                } else {
+                    improved_.push_back({r, static_cast<std::int32_t>(m), nearest});
+                }
+            }
             const std::int64_t t = m - old - 1;  // sqrt(m) < sqrt(old) + 1
             in = t < 0 || t * t < 4 * old;
-            if (in) hint_[r] = pack(si, sj);
         }
-        visit_[r] = base + (in ? 1 : 0);
+        visit[r] = base + (in ? 1 : 0);
         return in;
+    };
+    auto inside = [&](auto& line, int i, int j, int r) {
+        const std::uint32_t v = visit[r];
+        if (v >= base) return v > base;
+        return evaluate(line, i, j, r);
     };
     while (!stack_.empty() && !escaped) {
         const std::uint32_t top = stack_.back();
         stack_.pop_back();
         const int i = static_cast<int>(top >> 16), j = static_cast<int>(top & 0xffff);
         const int row = j * w;
-        if (visit_[row + i] == base + 2) continue;
+        if (visit[row + i] == base + 2) continue;
         int xl = i, xr = i;
-        while (xl > 0 && inside(xl - 1, j, row + xl)) --xl;
-        while (xr < w - 1 && inside(xr + 1, j, row + xr)) ++xr;
+        {
+            auto line = measure.row(j);
+            while (xl > 0 && inside(line, xl - 1, j, row + xl - 1)) --xl;
+            while (xr < w - 1 && inside(line, xr + 1, j, row + xr + 1)) ++xr;
+        }
         if (escaped) break;
-        for (int x = xl; x <= xr; ++x) visit_[row + x] = base + 2;
+        for (int x = xl; x <= xr; ++x) visit[row + x] = base + 2;
         for (int nj = j - 1; nj <= j + 1 && !escaped; nj += 2) {
             if (nj < 0 || nj >= h) continue;
             const int x0 = std::max(0, xl - 1), x1 = std::min(w - 1, xr + 1);
+            const int nrow = nj * w;
+            auto line = measure.row(nj);
             bool run = false;
-            for (int x = x0; x <= x1 && !escaped; ++x) {
-                const int from = row + std::clamp(x, xl, xr);
-                const bool in = inside(x, nj, from);
-                if (in && !run && visit_[nj * w + x] == base + 1) stack_.push_back(pack(x, nj));
+            for (int x = x0; x <= x1; ++x) {
+                const std::uint32_t v = visit[nrow + x];
+                bool in;
+                if (v >= base) {
+                    in = v > base;
+                    if (in && !run && v == base + 1) stack_.push_back(pack(x, nj));
+                } else {
+                    in = evaluate(line, x, nj, nrow + x);
+                    if (escaped) break;
+                    if (in && !run) stack_.push_back(pack(x, nj));
+                }
                 run = in;
             }
         }
@@ -249,70 +296,27 @@ bool DistanceField::wavefront(const std::vector<int>& sites, const std::vector<s
 void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
                               std::vector<std::int32_t>* site, std::vector<int>* out) {
     const int w = width_, h = height_;
+    std::int32_t* site_data = site ? site->data() : nullptr;
+    blob_.reset(sites, w, h);
+    if (blob_.columns() <= kDirectColumns) {
+        wavefront<true>(sites, d2, site_data, out, blob_, [](int, int) { return true; });
+        return;
+    }
+
+    // Wide blobs: an EDT of the new sites over a window around them, doubled until the
+    // wavefront stays inside. It starts at twice the old distance of the new sites (the empty
+    // space they were put in).
     int bx0 = w, by0 = h, bx1 = -1, by1 = -1;
+    std::int64_t room = 0;
     for (int p : sites) {
         const int i = p % w, j = p / w;
         bx0 = std::min(bx0, i);
         bx1 = std::max(bx1, i);
         by0 = std::min(by0, j);
         by1 = std::max(by1, j);
+        room = std::max<std::int64_t>(room, d2[p] == infinite ? 0 : d2[p]);
     }
-
-    // Runs of site rows per column: m(i, j) = min over columns c of (i - c)^2 + g_c(j)^2 where
-    // g_c(j) is the distance from row j to the nearest site row of column c.
-    sorted_sites_.assign(sites.begin(), sites.end());
-    std::sort(sorted_sites_.begin(), sorted_sites_.end(),
-              [w](int a, int b) { return a % w != b % w ? a % w < b % w : a < b; });
-    run_columns_.clear();
-    run_start_.clear();
-    runs_.clear();
-    for (int p : sorted_sites_) {
-        const int c = p % w, row = p / w;
-        if (run_columns_.empty() || run_columns_.back() != c) {
-            run_columns_.push_back(c);
-            run_start_.push_back(static_cast<int>(runs_.size()));
-            runs_.push_back({row, row});
-        } else if (runs_.back().second + 1 == row) {
-            runs_.back().second = row;
-        } else if (runs_.back().second != row) {
-            runs_.push_back({row, row});
-        }
-    }
-    run_start_.push_back(static_cast<int>(runs_.size()));
-
     bool done = false;
-    if (run_columns_.size() <= kDirectColumns) {
-        const std::size_t ncol = run_columns_.size();
-        auto measure = [&](int i, int j, int& si, int& sj) {
-            // The guess bounds the search: columns at least that far away cannot win.
-            const std::int64_t gx = i - si, gy = j - sj;
-            std::int64_t best = gx * gx + gy * gy;
-            for (std::size_t k = 0; k < ncol; ++k) {
-                const std::int64_t dx = i - run_columns_[k];
-                const std::int64_t dx2 = dx * dx;
-                if (dx2 >= best) continue;
-                for (int r = run_start_[k]; r < run_start_[k + 1]; ++r) {
-                    const auto [lo, hi] = runs_[static_cast<std::size_t>(r)];
-                    const int row = j < lo ? lo : (j > hi ? hi : j);
-                    const std::int64_t dy = j - row;
-                    const std::int64_t d = dx2 + dy * dy;
-                    if (d < best) {
-                        best = d;
-                        si = run_columns_[k];
-                        sj = row;
-                    }
-                }
-            }
-            return best;
-        };
-        done = wavefront(sites, d2, measure, [](int, int) { return true; });
-    }
-
-    // Wide blobs: an EDT of the new sites over a window around them, doubled until the
-    // wavefront stays inside. It starts at twice the old distance of the new sites (the empty
-    // space they were put in).
-    std::int64_t room = 0;
-    for (int p : sites) room = std::max<std::int64_t>(room, d2[p] == infinite ? 0 : d2[p]);
     int rho = std::max(8, 2 * static_cast<int>(std::sqrt(static_cast<double>(room))) + 2);
     for (; !done; rho *= 2) {
         const int wx0 = std::max(0, bx0 - rho), wx1 = std::min(w - 1, bx1 + rho);
@@ -328,22 +332,16 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
         separable_edt(
             ww, wh, [&](int i, int j) { return mask[static_cast<std::size_t>(j) * ww + i] != 0; },
             window_d2_.data(), window_site_.data(), window_scratch_);
-        auto measure = [&](int i, int j, int& si, int& sj) {
-            const std::size_t local = static_cast<std::size_t>(j - wy0) * ww + (i - wx0);
-            const int ls = window_site_[local];
-            si = ls % ww + wx0;
-            sj = ls / ww + wy0;
-            return static_cast<std::int64_t>(window_d2_[local]);
-        };
+        WindowMeasure measure{window_d2_.data(), window_site_.data(), w, ww, wx0, wy0};
         auto measurable = [&](int i, int j) {
             return i >= wx0 && i <= wx1 && j >= wy0 && j <= wy1;
         };
-        done = wavefront(sites, d2, measure, measurable);
+        done = wavefront<false>(sites, d2, site_data, out, measure, measurable);
     }
 
     for (const Improvement& im : improved_) {
         d2[im.pixel] = im.d2;
-        if (site) (*site)[im.pixel] = im.site;
+        if (site_data) site_data[im.pixel] = im.site;
         if (out) out->push_back(im.pixel);
     }
 }

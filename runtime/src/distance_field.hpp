@@ -24,6 +24,8 @@
 #include <utility>
 #include <vector>
 
+#include "site_blob.hpp"
+
 namespace acanthus {
 
 enum class ObstacleKind : std::uint8_t { none = 0, boundary = 1, element = 2 };
@@ -46,6 +48,7 @@ class DistanceField {
 
     // Squared distance in pixels from pixel index to its nearest site (0 on a site).
     std::int64_t squared_distance(int index) const { return dist2_[index]; }
+    const std::int32_t* squared_distances() const { return dist2_.data(); }
     double distance(int i, int j) const;
     // Squared distance from pixel index to its nearest boundary site.
     std::int64_t boundary_squared_distance(int index) const { return boundary2_[index]; }
@@ -69,9 +72,12 @@ class DistanceField {
     // Updates `d2` (and `site` when not null) for the new sites; returns changed pixels in `out`.
     void propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
                    std::vector<std::int32_t>* site, std::vector<int>* out);
-    template <class Measure, class Measurable>
-    bool wavefront(const std::vector<int>& sites, const std::vector<std::int32_t>& d2,
-                   Measure measure, Measurable measurable);
+    // kCommit: write improvements as they are found (the measure covers the whole grid);
+    // otherwise collect them in improved_, to be applied only when the fill did not escape.
+    template <bool kCommit, class Measure, class Measurable>
+    bool wavefront(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
+                   std::int32_t* site, std::vector<int>* out, Measure& measure,
+                   Measurable measurable);
 
     int width_;
     int height_;
@@ -83,11 +89,8 @@ class DistanceField {
     // Incremental update state.
     std::vector<std::uint32_t> visit_;  // fill state per pixel, relative to stamp_
     std::uint32_t stamp_ = 0;
-    std::vector<std::uint32_t> hint_;   // nearest new site (i << 16 | j) of inside pixels
     std::vector<std::uint32_t> stack_;  // fill seeds (i << 16 | j)
-    std::vector<int> sorted_sites_;
-    std::vector<int> run_columns_, run_start_;  // new sites as runs of rows per column
-    std::vector<std::pair<int, int>> runs_;
+    SiteBlob blob_;
     std::vector<std::uint8_t> window_sites_;
     std::vector<std::int32_t> window_d2_, window_site_;
     Scratch scratch_, window_scratch_;

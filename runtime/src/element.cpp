@@ -2,7 +2,6 @@
 // does not add is freed when the call ends.
 #include <acanthus/element.hpp>
 #include <acanthus/rule_call.hpp>
-
 #include <new>
 
 namespace acanthus {

@@ -1,6 +1,7 @@
 #include "empty_circle_finder.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -16,6 +17,13 @@ EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame
     tiles_h_ = ((grid.height - 1) >> kTileShift) + 1;
     tiles_.reset(static_cast<std::size_t>(tiles_w_) * tiles_h_);
     dirty_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    candidates_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    changed_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    const int w = grid.width;
+    offsets_[0] = 1;
+    offsets_[1] = w;
+    offsets_[2] = w + 1;
+    offsets_[3] = 1 - w;
     // radius_ok() is monotone in d2: find its threshold once, for a cheap integer test.
     if (std::isnan(min_radius_)) min_radius_ = 0;
     const double want = std::max(0.0, min_radius_ / grid.pixel) + kMargin;
@@ -40,29 +48,17 @@ bool EmptyCircleFinder::radius_ok(std::int64_t d2) const {
     return r > 0 && r >= min_radius_;
 }
 
-bool EmptyCircleFinder::crest(std::int64_t d, std::int64_t a, std::int64_t b) {
-    if (a > d || b > d) return false;
+bool EmptyCircleFinder::bends(std::int64_t d, std::int64_t a, std::int64_t b) {
     const double bend = 2 * std::sqrt(static_cast<double>(d)) - std::sqrt(static_cast<double>(a)) -
                         std::sqrt(static_cast<double>(b));
     return bend >= kBend;
 }
 
-bool EmptyCircleFinder::on_medial_axis(int pixel) const {
-    const std::int64_t d = field_.squared_distance(pixel);
-    if (d == 0) return false;  // an obstacle
+bool EmptyCircleFinder::crest_at(int pixel, int i, int j, std::int64_t d) const {
     const int w = grid_.width, h = grid_.height;
-    const int j = row_of(pixel), i = pixel - j * w;
-    static constexpr int kLine[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
-    if (i > 0 && j > 0 && i < w - 1 && j < h - 1) {
-        for (const auto& e : kLine) {
-            const int off = e[1] * w + e[0];
-            if (crest(d, field_.squared_distance(pixel + off),
-                      field_.squared_distance(pixel - off)))
-                return true;
-        }
-        return false;
-    }
+    if (i > 0 && j > 0 && i < w - 1 && j < h - 1) return crest_inside(pixel, d);
     // At the edge of the grid only the lines with both neighbours inside are tested.
+    static constexpr int kLine[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
     for (const auto& e : kLine) {
         const int ai = i + e[0], aj = j + e[1], bi = i - e[0], bj = j - e[1];
         if (ai < 0 || aj < 0 || ai >= w || aj >= h || bi < 0 || bj < 0 || bi >= w || bj >= h)
@@ -71,6 +67,13 @@ bool EmptyCircleFinder::on_medial_axis(int pixel) const {
             return true;
     }
     return false;
+}
+
+bool EmptyCircleFinder::on_medial_axis(int pixel) const {
+    const std::int64_t d = field_.squared_distance(pixel);
+    if (d == 0) return false;  // an obstacle
+    const int j = row_of(pixel);
+    return crest_at(pixel, pixel - j * grid_.width, j, d);
 }
 
 bool EmptyCircleFinder::shape_eligible(int pixel) const {
@@ -84,6 +87,12 @@ int EmptyCircleFinder::tile_of(int pixel) const {
     return (j >> kTileShift) * tiles_w_ + (i >> kTileShift);
 }
 
+int EmptyCircleFinder::bit_of(int pixel) const {
+    constexpr int kMask = (1 << kTileShift) - 1;
+    const int j = row_of(pixel), i = pixel - j * grid_.width;
+    return ((j & kMask) << kTileShift) | (i & kMask);
+}
+
 void EmptyCircleFinder::mark_dirty(int tile) {
     if (dirty_[tile]) return;
     dirty_[tile] = 1;
@@ -93,63 +102,130 @@ void EmptyCircleFinder::mark_dirty(int tile) {
 void EmptyCircleFinder::rescan(int tile) {
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
     const int i0 = ti << kTileShift, j0 = tj << kTileShift;
-    const int i1 = std::min(grid_.width, i0 + (1 << kTileShift));
-    const int j1 = std::min(grid_.height, j0 + (1 << kTileShift));
     Key best = 0;
-    for (int j = j0; j < j1; ++j)
-        for (int i = i0; i < i1; ++i) {
-            const int p = j * grid_.width + i;
-            if (state_[p] == candidate) best = std::max(best, key_of(p, state_d2_[p]));
-        }
+    for (std::uint64_t bits = candidates_[tile]; bits; bits &= bits - 1) {
+        const int b = std::countr_zero(bits);
+        const int p = (j0 + (b >> kTileShift)) * grid_.width + i0 + (b & 7);
+        best = std::max(best, key_of(p, state_d2_[p]));
+    }
     tiles_.set(static_cast<std::size_t>(tile), best);
 }
 
-// Re-decides the state of a pixel whose distance, or a neighbour's, may have changed.
-void EmptyCircleFinder::consider(int pixel) {
-    const std::int32_t d2 = static_cast<std::int32_t>(field_.squared_distance(pixel));
-    if (d2 < min_d2_ && state_[pixel] == none) return;  // too small to matter, already none
+template <bool kInside>
+void EmptyCircleFinder::consider(int pixel, int i, int j, int tile, int bit) {
+    const std::int32_t d2 = field_.squared_distances()[pixel];
+    const std::uint8_t old = state_[pixel];
+    if (d2 < min_d2_ && old == none) return;  // too small to matter, already none
     // Same distance: a candidate stays one (neighbours only get lower), a blocked one stays
     // blocked; a non-candidate may have become one.
-    if (state_[pixel] != none && state_d2_[pixel] == d2) return;
-    state_[pixel] = shape_eligible(pixel) && discarded_[pixel] != d2 ? candidate : none;
+    if (old != none && state_d2_[pixel] == d2) return;
+    bool eligible = d2 >= min_d2_ && d2 != DistanceField::infinite;
+    if constexpr (kInside)
+        eligible = eligible && crest_inside(pixel, d2);
+    else
+        eligible = eligible && crest_at(pixel, i, j, d2);
+    eligible = eligible && field_.nearest_kind(pixel) == ObstacleKind::element &&
+               discarded_[pixel] != d2;
+    state_[pixel] = eligible ? candidate : none;
     state_d2_[pixel] = d2;
+    const std::uint64_t mask = std::uint64_t{1} << bit;
+    candidates_[tile] = eligible ? candidates_[tile] | mask : candidates_[tile] & ~mask;
 }
 
-void EmptyCircleFinder::refresh(int tile) {
+template <bool kInside>
+void EmptyCircleFinder::refresh_bits(int tile, std::uint64_t bits) {
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
     const int i0 = ti << kTileShift, j0 = tj << kTileShift;
-    const int i1 = std::min(grid_.width, i0 + (1 << kTileShift));
-    const int j1 = std::min(grid_.height, j0 + (1 << kTileShift));
-    for (int j = j0; j < j1; ++j)
-        for (int i = i0; i < i1; ++i) consider(j * grid_.width + i);
+    const int w = grid_.width, h = grid_.height;
+    for (; bits; bits &= bits - 1) {
+        const int b = std::countr_zero(bits);
+        const int i = i0 + (b & 7), j = j0 + (b >> kTileShift);
+        if (!kInside && (i >= w || j >= h)) continue;  // beyond the grid in an edge tile
+        consider<kInside>(j * w + i, i, j, tile, b);
+    }
+}
+
+void EmptyCircleFinder::refresh(int tile, std::uint64_t bits) {
+    // A tile away from the grid's edge has every pixel's 8 neighbours inside the grid.
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    if (ti > 0 && tj > 0 && ti < tiles_w_ - 1 && tj < tiles_h_ - 1)
+        refresh_bits<true>(tile, bits);
+    else
+        refresh_bits<false>(tile, bits);
     rescan(tile);
 }
 
 void EmptyCircleFinder::rebuild() {
     blocked_.clear();
     std::fill(state_.begin(), state_.end(), none);
-    for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t);
+    std::fill(candidates_.begin(), candidates_.end(), 0);
+    for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t, ~std::uint64_t{0});
+}
+
+namespace {
+
+constexpr std::uint64_t kColumn0 = 0x0101010101010101ull;
+constexpr std::uint64_t kColumn7 = 0x8080808080808080ull;
+constexpr std::uint64_t kRow0 = 0xffull;
+constexpr std::uint64_t kRow7 = 0xffull << 56;
+
+// A row of 8 bits dilated by one column, with the corner pixels of the diagonal neighbours.
+std::uint64_t dilate_row(std::uint64_t row, bool left_corner, bool right_corner) {
+    return (row | ((row << 1) & 0xfe) | (row >> 1) | (left_corner ? 1u : 0u) |
+            (right_corner ? 0x80u : 0u)) &
+           0xff;
+}
+
+}  // namespace
+
+std::uint64_t EmptyCircleFinder::near_changes(int tile) const {
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    auto at = [&](int di, int dj) -> std::uint64_t {
+        const int a = ti + di, b = tj + dj;
+        if (a < 0 || b < 0 || a >= tiles_w_ || b >= tiles_h_) return 0;
+        return changed_[static_cast<std::size_t>(b * tiles_w_ + a)];
+    };
+    const std::uint64_t m = changed_[tile];
+    // Within the tile's rows: left and right neighbours, then up and down.
+    std::uint64_t near = m | ((m << 1) & ~kColumn0) | ((m >> 1) & ~kColumn7) |
+                         ((at(-1, 0) & kColumn7) >> 7) | ((at(1, 0) & kColumn0) << 7);
+    near |= (near << 8) | (near >> 8);
+    // The last row of the tile above and the first row of the tile below, with the corners.
+    near |= dilate_row(at(0, -1) >> 56, (at(-1, -1) >> 63) & 1, (at(1, -1) >> 56) & 1);
+    near |= dilate_row(at(0, 1) & kRow0, (at(-1, 1) >> 7) & 1, at(1, 1) & 1) << 56;
+    return near;
 }
 
 void EmptyCircleFinder::update(const std::vector<int>& changed) {
-    // A changed pixel can change its own state and its 8 neighbours': refresh every tile that
-    // holds one of them.
     constexpr int kMask = (1 << kTileShift) - 1;
     for (int p : changed) {
         const int j = row_of(p), i = p - j * grid_.width;
-        const int ti = i >> kTileShift, tj = j >> kTileShift;
-        const int di0 = (i & kMask) == 0 && ti > 0 ? -1 : 0;
-        const int di1 = (i & kMask) == kMask && ti < tiles_w_ - 1 ? 1 : 0;
-        const int dj0 = (j & kMask) == 0 && tj > 0 ? -1 : 0;
-        const int dj1 = (j & kMask) == kMask && tj < tiles_h_ - 1 ? 1 : 0;
-        for (int dj = dj0; dj <= dj1; ++dj)
-            for (int di = di0; di <= di1; ++di) mark_dirty((tj + dj) * tiles_w_ + ti + di);
+        const int t = (j >> kTileShift) * tiles_w_ + (i >> kTileShift);
+        if (changed_[t] == 0) changed_tiles_.push_back(t);
+        changed_[t] |= std::uint64_t{1} << (((j & kMask) << kTileShift) | (i & kMask));
+    }
+    // A changed pixel can change its own state and its 8 neighbours': the tiles holding them.
+    for (int t : changed_tiles_) {
+        const std::uint64_t m = changed_[t];
+        const int ti = t % tiles_w_, tj = t / tiles_w_;
+        const bool left = ti > 0, right = ti < tiles_w_ - 1, up = tj > 0, down = tj < tiles_h_ - 1;
+        mark_dirty(t);
+        if (left && (m & kColumn0)) mark_dirty(t - 1);
+        if (right && (m & kColumn7)) mark_dirty(t + 1);
+        if (up && (m & kRow0)) mark_dirty(t - tiles_w_);
+        if (down && (m & kRow7)) mark_dirty(t + tiles_w_);
+        if (left && up && (m & 1)) mark_dirty(t - tiles_w_ - 1);
+        if (right && up && (m & 0x80)) mark_dirty(t - tiles_w_ + 1);
+        if (left && down && (m & (std::uint64_t{1} << 56))) mark_dirty(t + tiles_w_ - 1);
+        if (right && down && (m >> 63)) mark_dirty(t + tiles_w_ + 1);
     }
     for (int t : dirty_list_) {
         dirty_[t] = 0;
-        refresh(t);
+        refresh(t, near_changes(t));
     }
     dirty_list_.clear();
+    for (int t : changed_tiles_) changed_[t] = 0;
+    changed_tiles_.clear();
 }
 
 void EmptyCircleFinder::release(const std::vector<int>& removed_ids) {
@@ -159,6 +235,7 @@ void EmptyCircleFinder::release(const std::vector<int>& removed_ids) {
             if (state_[p] != blocked || state_d2_[p] != d2) continue;  // changed since
             state_[p] = candidate;
             const int t = tile_of(p);
+            candidates_[t] |= std::uint64_t{1} << bit_of(p);
             tiles_.set(static_cast<std::size_t>(t),
                        std::max(tiles_.get(static_cast<std::size_t>(t)), key_of(p, d2)));
         }
@@ -183,6 +260,7 @@ std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
         const int id = exclude.find_inside(c);
         if (id < 0) return EmptyCircle{p, d2, c};
         state_[p] = blocked;
+        candidates_[tile_of(p)] &= ~(std::uint64_t{1} << bit_of(p));
         if (static_cast<std::size_t>(id) >= blocked_.size()) blocked_.resize(id + 1);
         blocked_[id].emplace_back(p, static_cast<std::int32_t>(d2));
         rescan(tile_of(p));
@@ -194,6 +272,7 @@ void EmptyCircleFinder::discard(const EmptyCircle& c) {
     if (state_[c.pixel] == candidate) {
         state_[c.pixel] = none;
         state_d2_[c.pixel] = static_cast<std::int32_t>(c.d2);
+        candidates_[tile_of(c.pixel)] &= ~(std::uint64_t{1} << bit_of(c.pixel));
         rescan(tile_of(c.pixel));
     }
 }

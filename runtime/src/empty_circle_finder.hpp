@@ -20,7 +20,9 @@
 // find() keeps the eligible candidates as per-pixel states with the best of each 8 x 8 tile in a
 // MaxTree. Distances only decrease as obstacles are added, so a pixel leaves the medial axis only
 // when its own distance changes (lower neighbours never spoil a crest) and joins it only when it
-// or a neighbour changes: update() re-evaluates the tiles holding those pixels.
+// or a neighbour changes: update() re-decides exactly the changed pixels and their neighbours
+// (64-bit masks per tile: changed pixels, dilated by one pixel across tile edges) and rescans
+// the candidate bits of the tiles holding them.
 // Candidates blocked by an exclude point wait under that point's id until it is removed.
 // find_by_scan() is the reference: a scan of the whole grid with the same rules. discard()
 // records (pixel, d2) pairs that both searches skip, so the two stay identical.
@@ -88,12 +90,32 @@ class EmptyCircleFinder {
 
     bool radius_ok(std::int64_t d2) const;
     // d2 of a pixel between neighbours of d2 a and b on a line: a crest that bends enough.
-    static bool crest(std::int64_t d, std::int64_t a, std::int64_t b);
-    void consider(int pixel);
+    static bool crest(std::int64_t d, std::int64_t a, std::int64_t b) {
+        return a <= d && b <= d && bends(d, a, b);
+    }
+    static bool bends(std::int64_t d, std::int64_t a, std::int64_t b);
+    // on_medial_axis() of pixel (i, j) of squared distance d > 0.
+    bool crest_at(int pixel, int i, int j, std::int64_t d) const;
+    // The same for a pixel with all 8 neighbours inside the grid.
+    bool crest_inside(int pixel, std::int64_t d) const {
+        const std::int32_t* d2 = field_.squared_distances() + pixel;
+        for (const int off : offsets_)
+            if (crest(d, d2[off], d2[-off])) return true;
+        return false;
+    }
+    // Re-decides the state of pixel (i, j); keeps the tile's candidate bit in step. kInside:
+    // the tile does not touch the edge of the grid.
+    template <bool kInside>
+    void consider(int pixel, int i, int j, int tile, int bit);
+    template <bool kInside>
+    void refresh_bits(int tile, std::uint64_t bits);
     int tile_of(int pixel) const;
+    int bit_of(int pixel) const;
     void mark_dirty(int tile);
-    void rescan(int tile);   // tile maximum from the pixel states
-    void refresh(int tile);  // re-decides every pixel of the tile, then rescans it
+    // Bits of the pixels of a tile whose 3 x 3 neighbourhood holds a changed pixel.
+    std::uint64_t near_changes(int tile) const;
+    void rescan(int tile);                      // tile maximum from the candidate bits
+    void refresh(int tile, std::uint64_t bits);  // re-decides those pixels, then rescans
     // Row of a pixel index without a division (a multiply and a correction).
     int row_of(int pixel) const {
         int j = static_cast<int>(pixel * inv_width_);
@@ -110,12 +132,17 @@ class EmptyCircleFinder {
     double inv_width_;
     std::int64_t min_d2_ = 1;  // smallest d2 whose radius is at least min_radius_
     int tiles_w_ = 0, tiles_h_ = 0;
+    int offsets_[4] = {};  // pixel index steps along the four lines of the crest test
 
     std::vector<std::uint8_t> state_;      // State per pixel, valid for state_d2_
     std::vector<std::int32_t> state_d2_;   // d2 at which state_ was decided
     std::vector<std::int32_t> discarded_;  // d2 at which the pixel was discarded, 0 none
     std::vector<std::vector<std::pair<int, std::int32_t>>> blocked_;  // by exclude id: (pixel, d2)
     MaxTree tiles_;
+    // Per 8 x 8 tile, one bit per pixel (bit 8 * row + column within the tile).
+    std::vector<std::uint64_t> candidates_;  // pixels in state candidate
+    std::vector<std::uint64_t> changed_;     // pixels changed since the last update()
+    std::vector<int> changed_tiles_;
     std::vector<std::uint8_t> dirty_;
     std::vector<int> dirty_list_;
 };

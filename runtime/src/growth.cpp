@@ -62,6 +62,7 @@ struct GrowthEngine::Impl {
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
     }
 
+    std::vector<Point> default_seeds() const;
     void place_seeds();
     void grow();
     std::optional<EmptyCircle> find();
@@ -70,7 +71,7 @@ struct GrowthEngine::Impl {
     void iterate(const Circle& goal);
     void commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
     void sync_exclude_clears();
-    Flow call_exhausted() const;
+    Flow call_exhausted();
 
     const Pattern& pattern;
     Region region;
@@ -118,11 +119,35 @@ void GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     }
 }
 
+// One seed per part of the region (an outer loop with its holes) at the centre of the part's
+// largest inscribed circle, largest circle first (ties by y, then x); parts too small for a
+// circle of the minimum radius get none, unless no part is large enough (then the largest).
+std::vector<Point> GrowthEngine::Impl::default_seeds() const {
+    const double tolerance = raster.grid().pixel / 4;
+    const std::vector<Region> parts = region.parts();
+    if (parts.size() <= 1) return {region.largest_inscribed_circle(tolerance).center};
+    std::vector<Circle> circles;
+    for (const Region& part : parts) {
+        const Circle c = part.largest_inscribed_circle(tolerance);
+        if (region.contains(c.center)) circles.push_back(c);
+    }
+    std::sort(circles.begin(), circles.end(), [](const Circle& a, const Circle& b) {
+        if (a.radius != b.radius) return a.radius > b.radius;
+        if (a.center.y != b.center.y) return a.center.y < b.center.y;
+        return a.center.x < b.center.x;
+    });
+    std::vector<Point> seeds;
+    for (const Circle& c : circles)
+        if (c.radius >= min_radius) seeds.push_back(c.center);
+    if (seeds.empty() && !circles.empty()) seeds.push_back(circles.front().center);
+    if (seeds.empty()) seeds.push_back(region.largest_inscribed_circle(tolerance).center);
+    return seeds;
+}
+
 void GrowthEngine::Impl::place_seeds() {
     if (!pattern.seed) throw InputError(pattern.file + ": the pattern declares no seed type");
     std::vector<Point> seeds = options.seeds;
-    if (seeds.empty())
-        seeds.push_back(region.largest_inscribed_circle(raster.grid().pixel / 4).center);
+    if (seeds.empty()) seeds = default_seeds();
     for (Point s : seeds)
         if (!s.finite() || !region.contains(s))
             throw InputError("seed " + format_number(s.x) + "," + format_number(s.y) +
@@ -184,10 +209,18 @@ std::optional<Circle> GrowthEngine::Impl::find_goal() {
     }
 }
 
-Flow GrowthEngine::Impl::call_exhausted() const {
+// %exhausted runs with the environment installed, like a rule body: it may clear the exclude
+// list or draw random numbers.
+Flow GrowthEngine::Impl::call_exhausted() {
     if (!pattern.exhausted) return STOP;
     try {
-        return pattern.exhausted() == CONTINUE ? CONTINUE : STOP;
+        Flow flow = STOP;
+        {
+            Environment::Scope scope(&env);
+            flow = pattern.exhausted() == CONTINUE ? CONTINUE : STOP;
+        }
+        sync_exclude_clears();
+        return flow;
     } catch (const RuleFailure&) {
         throw;
     } catch (const std::exception& e) {

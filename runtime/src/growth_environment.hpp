@@ -27,6 +27,7 @@ class GrowthEnvironment : public Environment {
     Element* nearest_element(Point p) const override { return ornament_.nearest(p).first; }
     void clear_exclude_list() override { exclude_.clear(); }
     Random& random() override { return random_; }
+    const Region* region() const override { return &region_; }
 
   private:
     const Region& region_;

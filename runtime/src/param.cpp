@@ -1,6 +1,5 @@
 // %param values from the command line, checked against the declared type.
 #include <acanthus/pattern.hpp>
-
 #include <charconv>
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,5 @@
 // xoshiro256** seeded through splitmix64: the same sequence on every platform.
 #include <acanthus/random.hpp>
-
 #include <cmath>
 
 namespace acanthus {

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "region_build.hpp"
 #include "region_curves.hpp"
 #include "region_data.hpp"
 
@@ -95,6 +97,49 @@ std::vector<std::vector<Point>> Region::rings(double tolerance) const {
         // The closing point repeats the first; rings are implicitly closed.
         if (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
         if (ring.size() >= 3) out.push_back(std::move(ring));
+    }
+    return out;
+}
+
+// Subpaths are oriented (region_build.hpp): outer loops have positive signed area, holes
+// negative. A hole belongs to the smallest outer loop around it; an island inside a hole is an
+// outer loop of its own, so it is a part of its own.
+std::vector<Region> Region::parts() const {
+    const Geom::PathVector& paths = data_->paths;
+    std::vector<std::size_t> outers;
+    std::vector<double> areas(paths.size());
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+        areas[k] = detail::signed_area(paths[k]);
+        if (areas[k] > 0) outers.push_back(k);
+    }
+    if (outers.size() <= 1) return {*this};
+    std::vector<Geom::PathVector> pieces(outers.size()), loops(outers.size());
+    for (std::size_t o = 0; o < outers.size(); ++o) {
+        pieces[o].push_back(paths[outers[o]]);
+        loops[o].push_back(paths[outers[o]]);
+    }
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+        if (areas[k] > 0 || paths[k].empty()) continue;
+        // Subpaths do not cross, so any point of the hole's boundary tells which loops hold it.
+        const Geom::Point probe = paths[k][0].pointAt(0.5);
+        std::size_t owner = outers.size();
+        for (std::size_t o = 0; o < outers.size(); ++o) {
+            if (detail::winding_number(loops[o], probe) == 0) continue;
+            if (owner == outers.size() || areas[outers[o]] < areas[outers[owner]]) owner = o;
+        }
+        if (owner < outers.size()) pieces[owner].push_back(paths[k]);
+    }
+    std::vector<Region> out;
+    for (std::size_t o = 0; o < outers.size(); ++o) {
+        auto data = std::make_unique<detail::RegionData>();
+        data->name = data_->name + " (part " + std::to_string(o + 1) + ")";
+        data->paths = std::move(pieces[o]);
+        data->evenodd = data_->evenodd;
+        const Geom::OptRect b = data->paths.boundsExact();
+        if (!b) continue;
+        data->bounds = Rect{b->left(), b->top(), b->right(), b->bottom()};
+        data->area = detail::signed_area(data->paths);
+        out.push_back(Region(std::move(data)));
     }
     return out;
 }

@@ -1,6 +1,5 @@
 #include <acanthus/error.hpp>
 #include <acanthus/rule_call.hpp>
-
 #include <algorithm>
 #include <exception>
 #include <string>
@@ -85,15 +84,16 @@ std::vector<std::unique_ptr<Element>> RuleCall::take_children() {
     all.insert(all.end(), dynamics_.begin(), dynamics_.end());
     for (std::size_t i = 0; i < all.size(); ++i) {
         const Element& e = *all[i];
-        const std::string which = i < statics_.size() ? "static child " + std::to_string(i)
-                                                       : "dynamic child";
+        const std::string which =
+            i < statics_.size() ? "static child " + std::to_string(i) : "dynamic child";
         for (std::size_t k = 0; k < e.proxy_count(); ++k) {
             if (!e.proxy(k).is_set())
                 throw RuleFailure(rule_.file, rule_.line, rule_.name,
                                   which + " " + describe(e, k) + " was never set");
             if (!e.proxy(k).finite())
-                throw RuleFailure(rule_.file, rule_.line, rule_.name,
-                                  which + " " + describe(e, k) + " has NaN or infinite coordinates");
+                throw RuleFailure(
+                    rule_.file, rule_.line, rule_.name,
+                    which + " " + describe(e, k) + " has NaN or infinite coordinates");
         }
     }
     std::vector<std::unique_ptr<Element>> out;

@@ -73,7 +73,8 @@ int main(int argc, char** argv) {
     int rc = 0;
     if (fraction > max_bad) {
         cairo_surface_write_to_png(d, argv[3]);
-        std::fprintf(stderr, "png_diff: %ld pixels (%.4f%%) differ by more than %d (worst %d); diff: %s\n",
+        std::fprintf(stderr,
+                     "png_diff: %ld pixels (%.4f%%) differ by more than %d (worst %d); diff: %s\n",
                      bad, fraction * 100, tolerance, worst, argv[3]);
         rc = 1;
     }

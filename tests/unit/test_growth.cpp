@@ -3,6 +3,7 @@
 // list, %exhausted, stop conditions, seeds, rule failures, debug frames.
 #include <gtest/gtest.h>
 
+#include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/growth.hpp>
 #include <acanthus/region.hpp>
@@ -212,6 +213,94 @@ TEST(Growth, SameInputsGiveTheSameTree) {
               grow(dots::pattern(), region, small_options()));
 }
 
+TEST(RegionParts, TwoSeparatePartsAndASquareWithAHole) {
+    const Region two = Region::from_svg_file(ACANTHUS_SOURCE_DIR "/examples/panels/two-parts.svg");
+    const auto parts = two.parts();
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_NEAR(parts[0].area() + parts[1].area(), two.area(), 1e-6 * two.area());
+    // The rounded square on the left, the disc on the right.
+    EXPECT_LT(parts[0].bounds().x1, parts[1].bounds().x0);
+    EXPECT_TRUE(parts[0].contains({55, 55}));
+    EXPECT_FALSE(parts[0].contains({205, 55}));
+    EXPECT_TRUE(parts[1].contains({205, 55}));
+    EXPECT_NEAR(parts[1].area(), M_PI * 55 * 55, 0.01 * 55 * 55);
+
+    const Region hole = region_named("hole");
+    const auto one = hole.parts();
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_DOUBLE_EQ(one[0].area(), hole.area());
+    EXPECT_FALSE(one[0].contains({50, 40}));
+    EXPECT_TRUE(one[0].contains({10, 10}));
+}
+
+TEST(RegionParts, IslandInAHoleIsAPartOfItsOwn) {
+    const Region r = Region::from_svg_string(
+        R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">)"
+        R"(<path fill-rule="evenodd" d="M0,0 H100 V100 H0 Z M20,20 H80 V80 H20 Z )"
+        R"(M40,40 H60 V60 H40 Z"/></svg>)",
+        "island.svg");
+    const auto parts = r.parts();
+    ASSERT_EQ(parts.size(), 2u);
+    EXPECT_NEAR(parts[0].area(), 100 * 100 - 60 * 60, 1e-6);
+    EXPECT_NEAR(parts[1].area(), 20 * 20, 1e-6);
+    EXPECT_FALSE(parts[0].contains({50, 50}));
+    EXPECT_FALSE(parts[0].contains({30, 30}));
+    EXPECT_TRUE(parts[1].contains({50, 50}));
+}
+
+TEST(Growth, DefaultSeedsOnePerPartLargestFirst) {
+    const Region region =
+        Region::from_svg_file(ACANTHUS_SOURCE_DIR "/examples/panels/two-parts.svg");
+    GrowthOptions o = small_options();
+    o.max_elements = 200;
+    const auto tree = grow(dots::pattern(), region, o);
+    ASSERT_GE(tree.size(), 2u);
+    ASSERT_EQ(tree[0].type, "seed");
+    ASSERT_EQ(tree[1].type, "seed");
+    const auto parts = region.parts();
+    const Circle a = parts[0].largest_inscribed_circle(0.01);
+    const Circle b = parts[1].largest_inscribed_circle(0.01);
+    // Each part has its seed near the centre of its inscribed circle.
+    const Point s0{tree[0].coords[0], tree[0].coords[1]}, s1{tree[1].coords[0], tree[1].coords[1]};
+    const bool first_left = s0.x < s1.x;
+    const Point left = first_left ? s0 : s1, right = first_left ? s1 : s0;
+    EXPECT_LT(distance(left, a.center), 1.0);
+    EXPECT_LT(distance(right, b.center), 1.0);
+    // Both parts grow dots.
+    int in_left = 0, in_right = 0;
+    for (const Circle& c : dots_of(tree)) (c.center.x < 130 ? in_left : in_right)++;
+    EXPECT_GT(in_left, 10);
+    EXPECT_GT(in_right, 10);
+    // The engines agree, and a second run gives the same tree.
+    EXPECT_EQ(grow(dots::pattern(), region, o), tree);
+    o.reference_engine = true;
+    EXPECT_EQ(grow(dots::pattern(), region, o), tree);
+}
+
+TEST(Growth, DefaultSeedsSkipPartsBelowTheMinimumRadius) {
+    // A large square and a small one: with a minimum radius above the small one's inscribed
+    // radius only the large one is seeded.
+    const Region region = Region::from_svg_string(
+        R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="60">)"
+        R"(<rect x="0" y="0" width="60" height="60"/><rect x="80" y="40" width="10" height="10"/>)"
+        R"(</svg>)",
+        "small-part.svg");
+    GrowthOptions o = small_options();
+    o.max_elements = 5;
+    auto tree = grow(dots::pattern(), region, o);
+    int seeds = 0;
+    for (const Node& n : tree) seeds += n.type == "seed";
+    EXPECT_EQ(seeds, 2);
+    EXPECT_NEAR(tree[0].coords[0], 30, 0.5);  // largest first
+    EXPECT_NEAR(tree[1].coords[0], 85, 0.5);
+    o.min_radius = 6;
+    tree = grow(dots::pattern(), region, o);
+    seeds = 0;
+    for (const Node& n : tree) seeds += n.type == "seed";
+    EXPECT_EQ(seeds, 1);
+    EXPECT_NEAR(tree[0].coords[0], 30, 0.5);
+}
+
 TEST(Growth, SeedOutsideTheRegionIsRefused) {
     const Region region = Region::from_spec("rect:100,60");
     GrowthOptions o = small_options();
@@ -334,6 +423,49 @@ TEST(Growth, ExhaustedContinueClearsTheExcludeList) {
     for (const Circle& c : dots_of(tree)) left = left || c.center.x < 20;
     EXPECT_TRUE(left) << "after CONTINUE the left half grows";
     expect_dots_fit(tree, Region::from_spec("rect:100,60"));
+}
+
+namespace variant {
+
+double drawn = -1;
+int regions_seen = 0;
+
+// %exhausted using the support library: random numbers and clearing the exclude list.
+acanthus::Flow exhausted_with_library() {
+    ++exhausted_calls;
+    drawn = acanthus::body::rng.uniform(0, 1);
+    if (acanthus::Environment::current() && acanthus::Environment::current()->region())
+        ++regions_seen;
+    if (phase != 0) return acanthus::STOP;
+    phase = 1;
+    acanthus::body::clear_exclude_list();
+    return acanthus::CONTINUE;
+}
+
+}  // namespace variant
+
+TEST(Growth, ExhaustedRunsWithTheEnvironmentInstalled) {
+    Pattern p = variant::shy_pattern();
+    p.exhausted = &variant::exhausted_with_library;
+    GrowthOptions o = small_options();
+    o.seeds = {{75, 30}};
+    variant::phase = 0;
+    variant::exhausted_calls = 0;
+    variant::regions_seen = 0;
+    variant::drawn = -1;
+    acanthus::GrowthStats stats;
+    const auto tree = grow(p, Region::from_spec("rect:100,60"), o, &stats);
+    EXPECT_EQ(variant::exhausted_calls, 2);
+    EXPECT_EQ(variant::regions_seen, 2);
+    EXPECT_GE(variant::drawn, 0.0);
+    EXPECT_LT(variant::drawn, 1.0);
+    bool left = false;
+    for (const Circle& c : dots_of(tree)) left = left || c.center.x < 20;
+    EXPECT_TRUE(left) << "after CONTINUE the left half grows";
+    // The reference engine agrees.
+    o.reference_engine = true;
+    variant::phase = 0;
+    EXPECT_EQ(grow(p, Region::from_spec("rect:100,60"), o), tree);
 }
 
 TEST(Growth, ExhaustedThatAlwaysContinuesStillStops) {

@@ -1,10 +1,9 @@
 // RuleCall: static and dynamic children, commit checks, and freeing what a body abandons.
+#include <gtest/gtest.h>
+
 #include <acanthus/body.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/rule_call.hpp>
-
-#include <gtest/gtest.h>
-
 #include <stdexcept>
 
 namespace {
@@ -102,7 +101,8 @@ TEST(RuleCall, UnsetProxyNamesTheRuleAndLine) {
         FAIL() << "expected RuleFailure";
     } catch (const RuleFailure& e) {
         EXPECT_EQ(e.line(), 7);
-        EXPECT_NE(std::string(e.what()).find("test.acr:7: rule 'blob --> blob'"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("test.acr:7: rule 'blob --> blob'"),
+                  std::string::npos);
         EXPECT_NE(std::string(e.what()).find("never set"), std::string::npos);
     }
 }

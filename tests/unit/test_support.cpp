@@ -1,9 +1,9 @@
 // Support library values: Point/Vector/Direction arithmetic, Random determinism, %param parsing.
+#include <gtest/gtest.h>
+
 #include <acanthus/body.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/random.hpp>
-
-#include <gtest/gtest.h>
 
 namespace {
 using namespace acanthus;

@@ -6,7 +6,6 @@
 #include <acanthus/environment.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/rule_call.hpp>
-
 #include <cmath>
 #include <type_traits>
 
@@ -18,26 +17,26 @@ using acanthus::Canvas;
 using acanthus::Circle;
 using acanthus::CircleProxy;
 using acanthus::Color;
+using acanthus::CONTINUE;
 using acanthus::Direction;
+using acanthus::distance;
 using acanthus::Element;
+using acanthus::FAILURE;
+using acanthus::Flow;
+using acanthus::hue;
+using acanthus::lerp;
 using acanthus::LineSegmentProxy;
+using acanthus::midpoint;
+using acanthus::parse_color;
 using acanthus::Point;
 using acanthus::PointProxy;
 using acanthus::PolygonProxy;
 using acanthus::Proxy;
 using acanthus::Rect;
-using acanthus::Vector;
-using acanthus::distance;
-using acanthus::hue;
-using acanthus::parse_color;
-using acanthus::lerp;
-using acanthus::midpoint;
 using acanthus::Result;
-using acanthus::Flow;
-using acanthus::SUCCESS;
-using acanthus::FAILURE;
-using acanthus::CONTINUE;
 using acanthus::STOP;
+using acanthus::SUCCESS;
+using acanthus::Vector;
 
 // The empty circle C ($goal).
 Circle goal();

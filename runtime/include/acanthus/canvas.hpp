@@ -18,7 +18,7 @@ Color hue(double t, double saturation = 0.85, double value = 0.9);
 Color parse_color(const std::string& text);
 
 class Canvas {
-public:
+  public:
     // Draws into `cr` (not owned). Coordinates are the region's user units.
     explicit Canvas(cairo_t* cr);
 
@@ -48,7 +48,7 @@ public:
     // The escape hatch: the underlying Cairo context.
     cairo_t* cairo() { return cr_; }
 
-private:
+  private:
     cairo_t* cr_;
 };
 

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <acanthus/proxy.hpp>
-
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -15,7 +14,7 @@ class Element;
 
 // Receives user fields of simple types for the JSON element tree.
 class FieldWriter {
-public:
+  public:
     virtual ~FieldWriter() = default;
     virtual void field(std::string_view name, long long value) = 0;
     virtual void field(std::string_view name, double value) = 0;
@@ -23,7 +22,9 @@ public:
     virtual void field(std::string_view name, const std::string& value) = 0;
     void field(std::string_view name, int value) { field(name, static_cast<long long>(value)); }
     void field(std::string_view name, long value) { field(name, static_cast<long long>(value)); }
-    void field(std::string_view name, unsigned value) { field(name, static_cast<long long>(value)); }
+    void field(std::string_view name, unsigned value) {
+        field(name, static_cast<long long>(value));
+    }
     void field(std::string_view name, float value) { field(name, static_cast<double>(value)); }
 };
 
@@ -31,19 +32,19 @@ public:
 struct ElementType {
     std::string name;
     std::vector<ProxyKind> proxies;
-    Element* (*create)() = nullptr;                          // `new T`
-    void (*draw)(Canvas&, const Element&) = nullptr;         // %draw body, or null for outlines
-    int line = 0;                                            // %element line in the rule file
+    Element* (*create)() = nullptr;                   // `new T`
+    void (*draw)(Canvas&, const Element&) = nullptr;  // %draw body, or null for outlines
+    int line = 0;                                     // %element line in the rule file
 };
 
 // Base of every generated element class. Standard fields are public, as rule bodies use them.
 class Element {
-public:
-    bool sterile = false;      // rules are never invoked on a sterile parent
-    int children = 0;          // number of committed children
-    Element* parent = nullptr; // null for seeds
-    int id = -1;               // placement order, assigned on commit
-    int depth = 0;             // generation: seeds are 0
+  public:
+    bool sterile = false;       // rules are never invoked on a sterile parent
+    int children = 0;           // number of committed children
+    Element* parent = nullptr;  // null for seeds
+    int id = -1;                // placement order, assigned on commit
+    int depth = 0;              // generation: seeds are 0
 
     virtual ~Element() = default;
     virtual const ElementType& type() const = 0;
@@ -58,7 +59,7 @@ public:
     static void* operator new(std::size_t size);
     static void operator delete(void* p) noexcept;
 
-protected:
+  protected:
     Element() = default;
     Element(const Element&) = delete;
     Element& operator=(const Element&) = delete;

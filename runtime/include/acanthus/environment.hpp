@@ -8,7 +8,7 @@
 namespace acanthus {
 
 class Environment {
-public:
+  public:
     virtual ~Environment() = default;
     // The empty circle C of the current iteration.
     virtual Circle goal() const = 0;
@@ -31,13 +31,13 @@ public:
 
     // Installs `env` for the lifetime of the scope.
     class Scope {
-    public:
+      public:
         explicit Scope(Environment* env);
         ~Scope();
         Scope(const Scope&) = delete;
         Scope& operator=(const Scope&) = delete;
 
-    private:
+      private:
         Environment* previous_;
     };
 };

@@ -3,7 +3,6 @@
 
 #include <acanthus/pattern.hpp>
 #include <acanthus/region.hpp>
-
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -13,14 +12,14 @@
 namespace acanthus {
 
 struct GrowthOptions {
-    int resolution = 512;          // render buffer pixels on the longer side of R's bounds
-    double epsilon = -1;           // candidate-parent distance; < 0 means 2 pixels
-    double min_radius = -1;        // smallest empty circle; < 0 means 1 pixel
+    int resolution = 512;    // render buffer pixels on the longer side of R's bounds
+    double epsilon = -1;     // candidate-parent distance; < 0 means 2 pixels
+    double min_radius = -1;  // smallest empty circle; < 0 means 1 pixel
     long max_elements = 1000000;
     long max_iterations = 10000000;
-    double time_limit = 0;         // seconds of growth; 0 means none
-    bool reference_engine = false; // recompute the whole distance field every iteration
-    std::vector<Point> seeds;      // empty: centre of the largest inscribed circle
+    double time_limit = 0;          // seconds of growth; 0 means none
+    bool reference_engine = false;  // recompute the whole distance field every iteration
+    std::vector<Point> seeds;       // empty: centre of the largest inscribed circle
     std::uint64_t rng_seed = 1;
 };
 
@@ -35,10 +34,10 @@ struct GridFrame {
 struct DebugFrame {
     long iteration = 0;
     GridFrame grid;
-    std::vector<std::uint8_t> occupancy;  // width*height; 0 free, 1 boundary, 2 element
-    std::vector<Circle> eligible;         // candidate circles that could be chosen
-    std::vector<Circle> excluded;         // candidates rejected by the exclude list
-    std::optional<Circle> chosen;         // C
+    std::vector<std::uint8_t> occupancy;     // width*height; 0 free, 1 boundary, 2 element
+    std::vector<Circle> eligible;            // candidate circles that could be chosen
+    std::vector<Circle> excluded;            // candidates rejected by the exclude list
+    std::optional<Circle> chosen;            // C
     std::vector<const Element*> candidates;  // elements within epsilon of C, tried in order
     std::vector<const Element*> placed;      // elements before this iteration
     std::vector<const Element*> added;       // children committed in this iteration
@@ -58,7 +57,7 @@ struct GrowthStats {
 };
 
 class GrowthEngine {
-public:
+  public:
     GrowthEngine(const Pattern& pattern, const Region& region, GrowthOptions options);
     ~GrowthEngine();
     GrowthEngine(const GrowthEngine&) = delete;
@@ -70,7 +69,8 @@ public:
     // Called with the Figure 8 picture of iteration `debug_iteration` (1-based).
     void on_debug_frame(long debug_iteration, std::function<void(const DebugFrame&)> callback);
     // Called after every `every`-th iteration with the placed elements (growth frames).
-    void on_frame(long every, std::function<void(long iteration, const std::vector<const Element*>&)> callback);
+    void on_frame(long every,
+                  std::function<void(long iteration, const std::vector<const Element*>&)> callback);
     // Called about every `every` iterations for progress lines.
     void on_progress(std::function<void(long iteration, long elements)> callback);
 
@@ -79,7 +79,7 @@ public:
     const GrowthStats& stats() const;
     const GridFrame& grid() const;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <acanthus/element.hpp>
-
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,9 +14,9 @@ enum Result { FAILURE = 0, SUCCESS = 1 };
 enum Flow { STOP = 0, CONTINUE = 1 };
 
 struct RuleInfo {
-    std::string name;                // "flower --> stem flower"
-    int line = 0;                    // line of %rule in `file`
-    std::string file;                // rule file the rule came from (imports keep their own)
+    std::string name;  // "flower --> stem flower"
+    int line = 0;      // line of %rule in `file`
+    std::string file;  // rule file the rule came from (imports keep their own)
     const ElementType* parent = nullptr;
     std::vector<const ElementType*> children;  // static children, in order
     Result (*body)(RuleCall&) = nullptr;
@@ -34,13 +33,13 @@ struct ParamInfo {
 };
 
 struct Pattern {
-    std::string name;          // rule file stem, e.g. "flowers"
-    std::string file;          // rule file path as given to the compiler
+    std::string name;  // rule file stem, e.g. "flowers"
+    std::string file;  // rule file path as given to the compiler
     std::vector<const ElementType*> types;
     const ElementType* seed = nullptr;
-    std::vector<RuleInfo> rules;          // file order, imports where %import stands
+    std::vector<RuleInfo> rules;  // file order, imports where %import stands
     std::vector<ParamInfo> params;
-    Flow (*exhausted)() = nullptr;        // null means STOP
+    Flow (*exhausted)() = nullptr;  // null means STOP
     int exhausted_line = 0;
 };
 

@@ -54,8 +54,14 @@ struct Direction {
     constexpr operator double() const { return angle; }  // NOLINT: usable where radians are
     constexpr Direction operator+(double radians) const { return {angle + radians}; }
     constexpr Direction operator-(double radians) const { return {angle - radians}; }
-    Direction& operator+=(double radians) { angle += radians; return *this; }
-    Direction& operator-=(double radians) { angle -= radians; return *this; }
+    Direction& operator+=(double radians) {
+        angle += radians;
+        return *this;
+    }
+    Direction& operator-=(double radians) {
+        angle -= radians;
+        return *this;
+    }
     constexpr Direction opposite() const { return {angle + M_PI}; }
 };
 
@@ -83,7 +89,9 @@ struct Point {
 
 inline double distance(Point a, Point b) { return (b - a).length(); }
 constexpr Point midpoint(Point a, Point b) { return {(a.x + b.x) / 2, (a.y + b.y) / 2}; }
-constexpr Point lerp(Point a, Point b, double t) { return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; }
+constexpr Point lerp(Point a, Point b, double t) {
+    return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+}
 
 // A circle as a value (the empty circle C is one): center and radius.
 struct Circle {
@@ -97,7 +105,9 @@ struct Rect {
     constexpr double width() const { return x1 - x0; }
     constexpr double height() const { return y1 - y0; }
     constexpr Point center() const { return {(x0 + x1) / 2, (y0 + y1) / 2}; }
-    constexpr bool contains(Point p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
+    constexpr bool contains(Point p) const {
+        return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1;
+    }
 };
 
 }  // namespace acanthus

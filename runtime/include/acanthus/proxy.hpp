@@ -2,7 +2,6 @@
 #pragma once
 
 #include <acanthus/point.hpp>
-
 #include <array>
 #include <initializer_list>
 #include <limits>
@@ -15,7 +14,9 @@ enum class ProxyKind { point, circle, arc, linesegment, bezier, polygon };
 
 std::string_view to_string(ProxyKind kind);
 // True for kinds that cover an area (circle, polygon); curves and points have none.
-constexpr bool is_area(ProxyKind kind) { return kind == ProxyKind::circle || kind == ProxyKind::polygon; }
+constexpr bool is_area(ProxyKind kind) {
+    return kind == ProxyKind::circle || kind == ProxyKind::polygon;
+}
 
 namespace detail {
 constexpr double unset = std::numeric_limits<double>::quiet_NaN();
@@ -23,7 +24,7 @@ constexpr double unset = std::numeric_limits<double>::quiet_NaN();
 
 // Base of every proxy. Fields start as NaN; set() marks the proxy as set.
 class Proxy {
-public:
+  public:
     ProxyKind kind() const { return kind_; }
     // True once set() was called or every coordinate was assigned a finite value.
     bool is_set() const;
@@ -32,64 +33,83 @@ public:
     // Tight axis-aligned bounds (curves exact, arcs by extreme angles).
     Rect bounds() const;
 
-protected:
+  protected:
     explicit Proxy(ProxyKind kind) : kind_(kind) {}
     Proxy(const Proxy&) = default;
     Proxy& operator=(const Proxy&) = default;
     ~Proxy() = default;
     void mark_set() { set_ = true; }
 
-private:
+  private:
     ProxyKind kind_;
     bool set_ = false;
 };
 
 // A point proxy is a Point: `$0.set( $, 3.0 )` passes it where a Point is expected.
 class PointProxy : public Proxy, public Point {
-public:
+  public:
     PointProxy() : Proxy(ProxyKind::point), Point(detail::unset, detail::unset) {}
-    void set(Point p) { x = p.x; y = p.y; mark_set(); }
+    void set(Point p) {
+        x = p.x;
+        y = p.y;
+        mark_set();
+    }
     Point point() const { return {x, y}; }
 };
 
 class CircleProxy : public Proxy {
-public:
+  public:
     CircleProxy() : Proxy(ProxyKind::circle) {}
     Point center{detail::unset, detail::unset};
     double radius = detail::unset;
-    void set(Point c, double r) { center = c; radius = r; mark_set(); }
+    void set(Point c, double r) {
+        center = c;
+        radius = r;
+        mark_set();
+    }
     void set(Circle c) { set(c.center, c.radius); }
 };
 
 // Counter-clockwise arc from angle `start` to angle `end` (radians).
 class ArcProxy : public Proxy {
-public:
+  public:
     ArcProxy() : Proxy(ProxyKind::arc) {}
     Point center{detail::unset, detail::unset};
     double radius = detail::unset;
     double start = detail::unset;
     double end = detail::unset;
-    void set(Point c, double r, double s, double e) { center = c; radius = r; start = s; end = e; mark_set(); }
+    void set(Point c, double r, double s, double e) {
+        center = c;
+        radius = r;
+        start = s;
+        end = e;
+        mark_set();
+    }
     Point start_point() const { return center.offset(Direction(start), radius); }
     Point end_point() const { return center.offset(Direction(end), radius); }
 };
 
 class LineSegmentProxy : public Proxy {
-public:
+  public:
     LineSegmentProxy() : Proxy(ProxyKind::linesegment) {}
     Point p0{detail::unset, detail::unset};
     Point p1{detail::unset, detail::unset};
-    void set(Point a, Point b) { p0 = a; p1 = b; mark_set(); }
+    void set(Point a, Point b) {
+        p0 = a;
+        p1 = b;
+        mark_set();
+    }
 };
 
 // Cubic Bézier with control points c[0..3].
 class BezierProxy : public Proxy {
-public:
-    BezierProxy() : Proxy(ProxyKind::bezier) {
-        c.fill(Point{detail::unset, detail::unset});
-    }
+  public:
+    BezierProxy() : Proxy(ProxyKind::bezier) { c.fill(Point{detail::unset, detail::unset}); }
     std::array<Point, 4> c;
-    void set(Point c0, Point c1, Point c2, Point c3) { c = {c0, c1, c2, c3}; mark_set(); }
+    void set(Point c0, Point c1, Point c2, Point c3) {
+        c = {c0, c1, c2, c3};
+        mark_set();
+    }
     // Leaves p0 along dir0 and arrives at p1 along dir1; handle lengths are mag x chord length.
     void set(Point p0, Direction dir0, double mag0, Point p1, Direction dir1, double mag1) {
         double chord = distance(p0, p1);
@@ -105,11 +125,17 @@ public:
 
 // Closed polygon, possibly concave.
 class PolygonProxy : public Proxy {
-public:
+  public:
     PolygonProxy() : Proxy(ProxyKind::polygon) {}
     std::vector<Point> points;
-    void set(std::initializer_list<Point> pts) { points.assign(pts); mark_set(); }
-    void set(std::vector<Point> pts) { points = std::move(pts); mark_set(); }
+    void set(std::initializer_list<Point> pts) {
+        points.assign(pts);
+        mark_set();
+    }
+    void set(std::vector<Point> pts) {
+        points = std::move(pts);
+        mark_set();
+    }
 };
 
 }  // namespace acanthus

@@ -6,7 +6,7 @@
 namespace acanthus {
 
 class Random {
-public:
+  public:
     explicit Random(std::uint64_t seed = 1) { reseed(seed); }
     void reseed(std::uint64_t seed);
     std::uint64_t next_u64();
@@ -19,7 +19,7 @@ public:
     double normal(double mean = 0.0, double stddev = 1.0);
     bool chance(double probability) { return uniform() < probability; }
 
-private:
+  private:
     std::uint64_t s_[4]{};
     bool has_spare_ = false;
     double spare_ = 0.0;

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <acanthus/point.hpp>
-
 #include <memory>
 #include <string>
 #include <string_view>
@@ -16,7 +15,7 @@ struct RegionData;
 }
 
 class Region {
-public:
+  public:
     // Loads every filled shape of an SVG file (path, polygon, polyline, rect, circle, ellipse,
     // nested g with transform, fill-rule). Throws InputError naming the file (and element).
     static Region from_svg_file(const std::string& path);
@@ -48,10 +47,13 @@ public:
     std::string path_data() const;
     // Centre and radius of the largest circle inside the region (within `tolerance`).
     Circle largest_inscribed_circle(double tolerance) const;
+    // The connected pieces of the region, each an outer boundary loop with the holes directly
+    // inside it, in the order of their outer loops. A region in one piece gives one part.
+    std::vector<Region> parts() const;
 
     const detail::RegionData& data() const { return *data_; }
 
-private:
+  private:
     explicit Region(std::unique_ptr<detail::RegionData> data);
     std::unique_ptr<detail::RegionData> data_;
 };

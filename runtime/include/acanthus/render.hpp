@@ -5,7 +5,6 @@
 #include <acanthus/growth.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/region.hpp>
-
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,11 +17,11 @@ enum class OutputFormat { svg, pdf, ps, eps, png };
 OutputFormat format_for_path(const std::string& path);
 
 struct RenderOptions {
-    double width = 800;                 // output width in pixels (PNG) or points (vector formats)
-    std::string style = "outline";      // outline | filled | order
-    std::optional<Color> background;    // none: transparent (PNG) / no background rectangle
-    bool draw_region = true;            // the region's outline
-    std::string stroke;                 // skeletal stroke name applied to curves, or empty
+    double width = 800;               // output width in pixels (PNG) or points (vector formats)
+    std::string style = "outline";    // outline | filled | order
+    std::optional<Color> background;  // none: transparent (PNG) / no background rectangle
+    bool draw_region = true;          // the region's outline
+    std::string stroke;               // skeletal stroke name applied to curves, or empty
 };
 
 // Draws the elements (their %draw, or the default for the style). Writes `path` through a

@@ -2,14 +2,13 @@
 #pragma once
 
 #include <acanthus/pattern.hpp>
-
 #include <memory>
 #include <vector>
 
 namespace acanthus {
 
 class RuleCall {
-public:
+  public:
     RuleCall(const RuleInfo& rule, Element& parent);
     // Frees every element created during the call that was not taken by commit.
     ~RuleCall();
@@ -18,7 +17,9 @@ public:
 
     const RuleInfo& rule() const { return rule_; }
     template <class T>
-    T& parent() { return static_cast<T&>(parent_); }
+    T& parent() {
+        return static_cast<T&>(parent_);
+    }
     Element& parent_element() { return parent_; }
 
     // Static children are constructed before the body runs.
@@ -45,7 +46,7 @@ public:
     void track(Element* e);
     void untrack(Element* e);
 
-private:
+  private:
     const RuleInfo& rule_;
     Element& parent_;
     RuleCall* previous_;

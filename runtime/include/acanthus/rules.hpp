@@ -9,7 +9,6 @@
 #include <acanthus/program.hpp>
 #include <acanthus/proxy.hpp>
 #include <acanthus/rule_call.hpp>
-
 #include <cmath>
 #include <string>
 #include <vector>

@@ -4,7 +4,6 @@
 
 #include <acanthus/canvas.hpp>
 #include <acanthus/proxy.hpp>
-
 #include <memory>
 #include <string>
 #include <string_view>
@@ -13,7 +12,7 @@
 namespace acanthus {
 
 class SkeletalStroke {
-public:
+  public:
     // Built-in strokes: "tapered", "calligraphic", "leafy", "beaded" (at least).
     static const SkeletalStroke& builtin(std::string_view name);  // throws UsageError if unknown
     static std::vector<std::string> builtin_names();
@@ -45,7 +44,7 @@ public:
     struct Data;  // defined in runtime/src/skeletal_stroke_data.hpp
     explicit SkeletalStroke(Data data);
 
-private:
+  private:
     std::unique_ptr<Data> data_;
 };
 
