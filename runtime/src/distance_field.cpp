@@ -179,7 +179,7 @@ struct WindowMeasure {
             return m.d2[local];
         }
     };
-    Row row(int j) const {
+    Row row(int j, int) const {
         return {*this, static_cast<std::size_t>(j - y0) * static_cast<std::size_t>(window_width)};
     }
 };
@@ -188,7 +188,7 @@ struct WindowMeasure {
 
 // The wavefront of the header comment, as an 8-connected scanline fill: a pixel is "inside"
 // when it is a new site or sqrt(m) < sqrt(D) + 1; the fill evaluates every inside pixel
-// reachable from the new sites and all their 8-neighbours, once each. `measure.row(j)` gives
+// reachable from the new sites and all their 8-neighbours, once each. `measure.row(j, x)` gives
 // an object whose `at(i, nearest)` returns m exactly for pixels of row j in the measurable
 // area and sets the nearest new site (a pixel index); `measurable(i, j)` says whether it can.
 // Returns false (nothing changed) when the fill reached an unmeasurable pixel.
@@ -208,9 +208,6 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
     std::int32_t* d2 = d2v.data();
     improved_.clear();
     stack_.clear();
-    auto pack = [](int i, int j) {
-        return (static_cast<std::uint32_t>(i) << 16) | static_cast<std::uint32_t>(j);
-    };
     for (int p : sites) {
         visit[p] = base + 1;
         if constexpr (kCommit) {
@@ -220,7 +217,7 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
         } else {
             improved_.push_back({p, 0, p});
         }
-        stack_.push_back(pack(p % w, p / w));
+        stack_.push_back({p % w, p / w, 0, 0, 0});
     }
     bool escaped = false;
     // Evaluates pixel (i, j), r = j*w+i, not yet visited, of `line` (row j). Returns whether
@@ -255,39 +252,52 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
         if (v >= base) return v > base;
         return evaluate(line, i, j, r);
     };
+    // Scans row nj over [x0, x1], evaluating new pixels and pushing one seed per run of inside
+    // pixels not yet filled; (j, xl, xr) is the span being filled, the seeds' parent.
+    auto scan = [&](int nj, int x0, int x1, int j, int xl, int xr) {
+        x0 = std::max(0, x0);
+        x1 = std::min(w - 1, x1);
+        if (nj < 0 || nj >= h || x0 > x1) return;
+        const int nrow = nj * w;
+        auto line = measure.row(nj, x0);
+        bool run = false;
+        for (int x = x0; x <= x1; ++x) {
+            const std::uint32_t v = visit[nrow + x];
+            bool in;
+            if (v >= base) {
+                in = v > base;
+                if (in && !run && v == base + 1) stack_.push_back({x, nj, nj - j, xl, xr});
+            } else {
+                in = evaluate(line, x, nj, nrow + x);
+                if (escaped) return;
+                if (in && !run) stack_.push_back({x, nj, nj - j, xl, xr});
+            }
+            run = in;
+        }
+    };
     while (!stack_.empty() && !escaped) {
-        const std::uint32_t top = stack_.back();
+        const Seed seed = stack_.back();
         stack_.pop_back();
-        const int i = static_cast<int>(top >> 16), j = static_cast<int>(top & 0xffff);
+        const int i = seed.x, j = seed.y;
         const int row = j * w;
         if (visit[row + i] == base + 2) continue;
         int xl = i, xr = i;
         {
-            auto line = measure.row(j);
+            auto line = measure.row(j, i);
             while (xl > 0 && inside(line, xl - 1, j, row + xl - 1)) --xl;
             while (xr < w - 1 && inside(line, xr + 1, j, row + xr + 1)) ++xr;
         }
         if (escaped) break;
         for (int x = xl; x <= xr; ++x) visit[row + x] = base + 2;
-        for (int nj = j - 1; nj <= j + 1 && !escaped; nj += 2) {
-            if (nj < 0 || nj >= h) continue;
-            const int x0 = std::max(0, xl - 1), x1 = std::min(w - 1, xr + 1);
-            const int nrow = nj * w;
-            auto line = measure.row(nj);
-            bool run = false;
-            for (int x = x0; x <= x1; ++x) {
-                const std::uint32_t v = visit[nrow + x];
-                bool in;
-                if (v >= base) {
-                    in = v > base;
-                    if (in && !run && v == base + 1) stack_.push_back(pack(x, nj));
-                } else {
-                    in = evaluate(line, x, nj, nrow + x);
-                    if (escaped) break;
-                    if (in && !run) stack_.push_back(pack(x, nj));
-                }
-                run = in;
-            }
+        if (seed.dir == 0) {
+            scan(j - 1, xl - 1, xr + 1, j, xl, xr);
+            scan(j + 1, xl - 1, xr + 1, j, xl, xr);
+        } else {
+            scan(j + seed.dir, xl - 1, xr + 1, j, xl, xr);
+            // The parent span's row was evaluated over [pl - 1, pr + 1] when it was filled, and
+            // holds no unfilled inside pixel there: only the parts beyond it are new.
+            scan(j - seed.dir, xl - 1, std::min(xr + 1, seed.pl - 2), j, xl, xr);
+            scan(j - seed.dir, std::max(xl - 1, seed.pr + 2), xr + 1, j, xl, xr);
         }
     }
     return !escaped;

@@ -5,10 +5,11 @@
 //
 // Exactness of add_sites(): the squared distance of a pixel q changes exactly when
 // m(q) = min over new sites s of |q - s|^2 is below its old value D(q). m is computed exactly:
-// for blobs spanning few columns (a placed element, usually) directly from the runs of new sites
-// in each column, else by an EDT of the new sites alone over a window around them (all new sites
-// lie in the window, so the window EDT is exact). The wavefront visits every pixel with
-// sqrt(m) < sqrt(D) + 1.
+// for blobs spanning few columns (a placed element, usually) from the lower envelope, per row,
+// of the parabolas of the new sites' columns (SiteBlob), else by an EDT of the new sites alone
+// over a window around them (all new sites lie in the window, so the window EDT is exact). The
+// wavefront visits every pixel with sqrt(m) < sqrt(D) + 1, as a scanline fill that writes
+// each improvement as it evaluates the pixel.
 // Along the straight segment from a changed pixel to its nearest new site, sqrt(m) - sqrt(D)
 // only decreases, and the 8-connected (Bresenham) path of that segment stays within half a
 // pixel of it, which raises sqrt(m) - sqrt(D) by less than 1; so every changed pixel is reached.
@@ -75,9 +76,8 @@ class DistanceField {
     // kCommit: write improvements as they are found (the measure covers the whole grid);
     // otherwise collect them in improved_, to be applied only when the fill did not escape.
     template <bool kCommit, class Measure, class Measurable>
-    bool wavefront(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
-                   std::int32_t* site, std::vector<int>* out, Measure& measure,
-                   Measurable measurable);
+    bool wavefront(const std::vector<int>& sites, std::vector<std::int32_t>& d2, std::int32_t* site,
+                   std::vector<int>* out, Measure& measure, Measurable measurable);
 
     int width_;
     int height_;
@@ -89,7 +89,11 @@ class DistanceField {
     // Incremental update state.
     std::vector<std::uint32_t> visit_;  // fill state per pixel, relative to stamp_
     std::uint32_t stamp_ = 0;
-    std::vector<std::uint32_t> stack_;  // fill seeds (i << 16 | j)
+    // A fill seed: pixel (x, y) reached from the span [pl, pr] of row y - dir (dir 0: a site).
+    struct Seed {
+        int x, y, dir, pl, pr;
+    };
+    std::vector<Seed> stack_;
     SiteBlob blob_;
     std::vector<std::uint8_t> window_sites_;
     std::vector<std::int32_t> window_d2_, window_site_;

@@ -5,7 +5,12 @@
 #include <cmath>
 #include <limits>
 
+#include "tile_masks.hpp"
+
 namespace acanthus {
+
+using namespace tile_masks;
+
 EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame& grid,
                                      double min_radius)
     : field_(field), grid_(grid), min_radius_(min_radius), inv_width_(1.0 / grid.width) {
@@ -124,8 +129,8 @@ void EmptyCircleFinder::consider(int pixel, int i, int j, int tile, int bit) {
         eligible = eligible && crest_inside(pixel, d2);
     else
         eligible = eligible && crest_at(pixel, i, j, d2);
-    eligible = eligible && field_.nearest_kind(pixel) == ObstacleKind::element &&
-               discarded_[pixel] != d2;
+    eligible =
+        eligible && field_.nearest_kind(pixel) == ObstacleKind::element && discarded_[pixel] != d2;
     state_[pixel] = eligible ? candidate : none;
     state_d2_[pixel] = d2;
     const std::uint64_t mask = std::uint64_t{1} << bit;
@@ -145,11 +150,33 @@ void EmptyCircleFinder::refresh_bits(int tile, std::uint64_t bits) {
     }
 }
 
+std::uint64_t EmptyCircleFinder::maybe_crests(int tile, std::uint64_t bits) const {
+    static_assert(kTileShift == 3, "rows of 8 pixels");
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    const int w = grid_.width;
+    const std::int32_t* d2 = field_.squared_distances();
+    const std::int32_t min_d2 =
+        static_cast<std::int32_t>(std::min<std::int64_t>(min_d2_, DistanceField::infinite));
+    std::uint64_t out = 0;
+    for (int r = 0; r < 8; ++r) {
+        if (((bits >> (8 * r)) & 0xff) == 0) continue;
+        const int p0 = ((tj << kTileShift) + r) * w + (ti << kTileShift);
+        const std::int32_t* mid = d2 + p0;
+        const std::uint32_t row = crest_lanes(mid - w, mid, mid + w, min_d2) |
+                                  (crest_lanes(mid - w + 4, mid + 4, mid + w + 4, min_d2) << 4) |
+                                  nonzero_bytes(state_.data() + p0);
+        out |= static_cast<std::uint64_t>(row) << (8 * r);
+    }
+    return out & bits;
+}
+
 void EmptyCircleFinder::refresh(int tile, std::uint64_t bits) {
-    // A tile away from the grid's edge has every pixel's 8 neighbours inside the grid.
+    // A tile away from the grid's edge has every pixel's 8 neighbours inside the grid. There,
+    // a pixel in state none that has no line with both neighbours at most as far as itself
+    // (or is too near an obstacle) stays none: only the others are re-decided.
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
     if (ti > 0 && tj > 0 && ti < tiles_w_ - 1 && tj < tiles_h_ - 1)
-        refresh_bits<true>(tile, bits);
+        refresh_bits<true>(tile, maybe_crests(tile, bits));
     else
         refresh_bits<false>(tile, bits);
     rescan(tile);
@@ -161,22 +188,6 @@ void EmptyCircleFinder::rebuild() {
     std::fill(candidates_.begin(), candidates_.end(), 0);
     for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t, ~std::uint64_t{0});
 }
-
-namespace {
-
-constexpr std::uint64_t kColumn0 = 0x0101010101010101ull;
-constexpr std::uint64_t kColumn7 = 0x8080808080808080ull;
-constexpr std::uint64_t kRow0 = 0xffull;
-constexpr std::uint64_t kRow7 = 0xffull << 56;
-
-// A row of 8 bits dilated by one column, with the corner pixels of the diagonal neighbours.
-std::uint64_t dilate_row(std::uint64_t row, bool left_corner, bool right_corner) {
-    return (row | ((row << 1) & 0xfe) | (row >> 1) | (left_corner ? 1u : 0u) |
-            (right_corner ? 0x80u : 0u)) &
-           0xff;
-}
-
-}  // namespace
 
 std::uint64_t EmptyCircleFinder::near_changes(int tile) const {
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
@@ -198,17 +209,27 @@ std::uint64_t EmptyCircleFinder::near_changes(int tile) const {
 
 void EmptyCircleFinder::update(const std::vector<int>& changed) {
     constexpr int kMask = (1 << kTileShift) - 1;
-    for (int p : changed) {
+    // Changed pixels come mostly in runs along rows: marked a tile row segment at a time.
+    const std::size_t n = changed.size();
+    const int* c = changed.data();
+    for (std::size_t k = 0; k < n;) {
+        const int p = c[k];
         const int j = row_of(p), i = p - j * grid_.width;
+        const std::size_t room = static_cast<std::size_t>(std::min((i | kMask) + 1, grid_.width) -
+                                                          i);  // pixels left in this tile row
+        std::size_t len = 1;
+        while (len < room && k + len < n && c[k + len] == p + static_cast<int>(len)) ++len;
         const int t = (j >> kTileShift) * tiles_w_ + (i >> kTileShift);
         if (changed_[t] == 0) changed_tiles_.push_back(t);
-        changed_[t] |= std::uint64_t{1} << (((j & kMask) << kTileShift) | (i & kMask));
+        changed_[t] |= ((std::uint64_t{1} << len) - 1)
+                       << (((j & kMask) << kTileShift) | (i & kMask));
+        k += len;
     }
     // A changed pixel can change its own state and its 8 neighbours': the tiles holding them.
     for (int t : changed_tiles_) {
         const std::uint64_t m = changed_[t];
         const int ti = t % tiles_w_, tj = t / tiles_w_;
-        const bool left = ti > 0, right = ti < tiles_w_ - 1, up = tj > 0, down = tj < tiles_h_ - 1;
+        const bool left = ti > 0, right = ti<tiles_w_ - 1, up = tj> 0, down = tj < tiles_h_ - 1;
         mark_dirty(t);
         if (left && (m & kColumn0)) mark_dirty(t - 1);
         if (right && (m & kColumn7)) mark_dirty(t + 1);

@@ -109,12 +109,14 @@ class EmptyCircleFinder {
     void consider(int pixel, int i, int j, int tile, int bit);
     template <bool kInside>
     void refresh_bits(int tile, std::uint64_t bits);
+    // The `bits` of an inner tile's pixels that could be candidates or are not in state none.
+    std::uint64_t maybe_crests(int tile, std::uint64_t bits) const;
     int tile_of(int pixel) const;
     int bit_of(int pixel) const;
     void mark_dirty(int tile);
     // Bits of the pixels of a tile whose 3 x 3 neighbourhood holds a changed pixel.
     std::uint64_t near_changes(int tile) const;
-    void rescan(int tile);                      // tile maximum from the candidate bits
+    void rescan(int tile);                       // tile maximum from the candidate bits
     void refresh(int tile, std::uint64_t bits);  // re-decides those pixels, then rescans
     // Row of a pixel index without a division (a multiply and a correction).
     int row_of(int pixel) const {

@@ -47,29 +47,38 @@ class SiteBlob {
         int k_ = 0;
     };
 
-    // Row j's lower envelope, built on first use; a Row starts at the piece its row used last.
-    Row row(int j) {
+    // Row j's lower envelope (built on first use), positioned at pixel column x.
+    Row row(int j, int x) {
         const std::size_t slot = static_cast<std::size_t>(j);
         if (row_stamp_[slot] != stamp_) build_row(j);
         Row r;
         r.piece_ = pieces_.data() + slot * stride_;
         r.top_ = count_[slot] - 1;
-        r.k_ = 0;
+        // The last piece starting at or before x.
+        int lo = 0, hi = r.top_;
+        while (lo < hi) {
+            const int mid = (lo + hi + 1) / 2;
+            if (r.piece_[mid].start <= x)
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        r.k_ = lo;
         return r;
     }
 
   private:
     void build_row(int j);
 
-    std::vector<int> columns_;                // distinct site columns, increasing
-    std::vector<int> run_start_;              // runs of column k: run_start_[k] .. [k+1]
-    std::vector<std::pair<int, int>> runs_;   // (first row, last row), increasing
+    std::vector<int> columns_;               // distinct site columns, increasing
+    std::vector<int> run_start_;             // runs of column k: run_start_[k] .. [k+1]
+    std::vector<std::pair<int, int>> runs_;  // (first row, last row), increasing
     std::vector<int> sorted_;
     int width_ = 0;
-    std::size_t stride_ = 0;                  // pieces per row slot (= columns)
-    std::vector<Piece> pieces_;               // row j's envelope at j * stride_
-    std::vector<int> count_;                  // per row: pieces
-    std::vector<std::uint32_t> row_stamp_;    // per row: stamp_ when its envelope was built
+    std::size_t stride_ = 0;                // pieces per row slot (= columns)
+    std::vector<Piece> pieces_;             // row j's envelope at j * stride_
+    std::vector<int> count_;                // per row: pieces
+    std::vector<std::uint32_t> row_stamp_;  // per row: stamp_ when its envelope was built
     std::uint32_t stamp_ = 0;
     std::vector<std::int64_t> num_, den_, f_;  // envelope construction scratch
 };
