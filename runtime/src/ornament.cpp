@@ -28,13 +28,6 @@ std::vector<const Element*> Ornament::view() const {
     return out;
 }
 
-double Ornament::distance(const Element& e, Point p) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < e.proxy_count(); ++k)
-        best = std::min(best, distance_to(e.proxy(k), p));
-    return best;
-}
-
 std::pair<Element*, double> Ornament::nearest(Point p, double hint) const {
     if (elements_.empty() || !p.finite()) return {nullptr, std::numeric_limits<double>::infinity()};
     // Any proxy nearer than the best one found within r has bounds within r too, so the first

@@ -27,8 +27,6 @@ class Ornament {
     std::vector<const Element*> view() const;
     double tolerance() const { return tolerance_; }
 
-    // Smallest distance from p to a proxy of e (0 inside an area proxy).
-    static double distance(const Element& e, Point p);
     // Placed element nearest to p and its distance (ties to the smallest id), or null. The
     // search looks within `hint` first and widens fourfold until it finds one.
     std::pair<Element*, double> nearest(Point p, double hint = 0) const;

@@ -6,6 +6,7 @@
 #include <acanthus/environment.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/rule_call.hpp>
+#include <acanthus/skeletal_stroke.hpp>
 #include <cmath>
 #include <type_traits>
 
@@ -33,6 +34,7 @@ using acanthus::PointProxy;
 using acanthus::PolygonProxy;
 using acanthus::Proxy;
 using acanthus::Rect;
+using acanthus::SkeletalStroke;
 using acanthus::Result;
 using acanthus::STOP;
 using acanthus::SUCCESS;

@@ -9,6 +9,7 @@
 #include <acanthus/program.hpp>
 #include <acanthus/proxy.hpp>
 #include <acanthus/rule_call.hpp>
+#include <acanthus/skeletal_stroke.hpp>
 #include <cmath>
 #include <string>
 #include <vector>
