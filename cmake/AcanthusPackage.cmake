@@ -30,7 +30,7 @@ install(FILES ${ACANTHUS_STDLIB_RULE_FILES} DESTINATION "${ACANTHUS_INSTALL_STDL
 
 set(ACANTHUS_CONFIG_DEPENDENCIES "")
 set(ACANTHUS_PC_LIBS "-lacanthus")
-set(ACANTHUS_PC_REQUIRES "cairo pugixml 2geom")
+set(ACANTHUS_PC_REQUIRES "cairo pugixml 2geom polyclipping")
 if(TARGET acanthus_stdlib)
   install(TARGETS acanthus_stdlib EXPORT Acanthus ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
   # Each library's public header: stdlib/<name>/include/acanthus/<name>.hpp.

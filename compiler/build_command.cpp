@@ -61,6 +61,7 @@ std::vector<std::string> compile_command(const Toolchain& toolchain, const Build
                                          const std::string& source, const std::string& executable) {
     std::vector<std::string> cmd{compiler(toolchain, options), "-std=c++20",
                                  "-O" + options.optimization};
+    cmd.insert(cmd.end(), toolchain.sanitize_flags.begin(), toolchain.sanitize_flags.end());
     for (const std::string& dir : toolchain.include_dirs) cmd.push_back("-I" + dir);
     cmd.insert(cmd.end(), {source, "-o", executable, "-Wl,--start-group"});
     if (!toolchain.stdlib_library.empty()) cmd.push_back(toolchain.stdlib_library);

@@ -9,7 +9,7 @@
 namespace acanthus {
 
 bool compile_rule_file(const CompileRequest& request, bool generate_code, std::string& cpp,
-                       std::ostream& diagnostics_out) {
+                       std::ostream& diagnostics_out, std::vector<std::string>* read_files) {
     SourceFiles files;
     Diagnostics diagnostics(files);
     ImportLoader loader(files, diagnostics, request.include_dirs, request.stdlib_dirs);
@@ -19,6 +19,8 @@ bool compile_rule_file(const CompileRequest& request, bool generate_code, std::s
                         << '\n';
         return false;
     }
+    if (read_files)
+        for (std::uint32_t i = 0; i < files.size(); ++i) read_files->push_back(files[i].path());
     PatternModel model = check_program(loader.program(), files, diagnostics);
     if (diagnostics.error_count() > 0) {
         diagnostics.print(diagnostics_out);

@@ -18,7 +18,9 @@ struct CompileRequest {
 };
 
 // True with `cpp` set when the rule file has no errors. `generate_code` false only checks.
+// `read_files`, when given, receives the path of every rule file read (the input, its imports).
 bool compile_rule_file(const CompileRequest& request, bool generate_code, std::string& cpp,
-                       std::ostream& diagnostics_out);
+                       std::ostream& diagnostics_out,
+                       std::vector<std::string>* read_files = nullptr);
 
 }  // namespace acanthus

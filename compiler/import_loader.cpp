@@ -1,5 +1,6 @@
 #include "import_loader.hpp"
 
+#include <acanthus/input_file.hpp>
 #include <filesystem>
 
 #include "parse_driver.hpp"
@@ -19,9 +20,10 @@ std::string canonical_path(const std::string& path) {
     return ec ? path : p.string();
 }
 
-bool is_regular(const fs::path& p) {
+// Any file but a directory: a FIFO or a device is found, then refused by the reader.
+bool is_candidate(const fs::path& p) {
     std::error_code ec;
-    return fs::is_regular_file(p, ec);
+    return fs::exists(p, ec) && !fs::is_directory(p, ec);
 }
 
 }  // namespace
@@ -49,7 +51,7 @@ std::string ImportLoader::resolve(const std::string& name, const std::string& fr
     for (const std::string& dir : dirs) {
         for (const std::string& c : candidates) {
             fs::path p = dir.empty() ? fs::path(c) : fs::path(dir) / c;
-            if (is_regular(p)) return p.lexically_normal().string();
+            if (is_candidate(p)) return p.lexically_normal().string();
         }
     }
     return {};
@@ -57,7 +59,8 @@ std::string ImportLoader::resolve(const std::string& name, const std::string& fr
 
 bool ImportLoader::load(const std::string& path, std::string& error) {
     std::string text;
-    if (!read_file(path, text, error)) return false;
+    error = read_input_file(path, text);
+    if (!error.empty()) return false;
     main_file_ = files_.add(path, std::move(text));
     load_file(main_file_, canonical_path(path));
     return true;
@@ -95,8 +98,8 @@ const ast::RuleFile* ImportLoader::load_file(std::uint32_t index, const std::str
             diagnostics_.error(import->target.where, "imports nested too deeply");
             continue;
         }
-        std::string text, error;
-        if (!read_file(found, text, error)) {
+        std::string text;
+        if (std::string error = read_input_file(found, text); !error.empty()) {
             diagnostics_.error(import->target.where, "cannot read '" + found + "': " + error);
             continue;
         }

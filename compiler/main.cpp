@@ -43,6 +43,48 @@ int fail(const std::string& message) {
     return kBadInput;
 }
 
+constexpr const char* kCommands[] = {"compile", "check", "build", "run"};
+
+// CLI11 would say "A subcommand is required"; name the word and list the commands instead.
+bool report_unknown_command(int argc, char** argv) {
+    std::string word = argc > 1 ? argv[1] : "";
+    if (!word.empty() && word[0] == '-') return false;  // options are CLI11's business
+    for (const char* c : kCommands)
+        if (word == c) return false;
+    if (word.empty())
+        std::cerr << "acanthus: error: a command is required";
+    else
+        std::cerr << "acanthus: error: unknown command '" << word << "'";
+    std::cerr << "; the commands are:\n"
+              << "  compile  compile a rule file to one C++ file\n"
+              << "  check    check a rule file and report every error\n"
+              << "  build    build a rule file into an executable program\n"
+              << "  run      build a rule file (cached) and run it\n"
+              << "Run 'acanthus --help' for the options.\n";
+    return true;
+}
+
+std::string canonical_or_same(const std::string& path) {
+    std::error_code ec;
+    fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    return ec ? path : p.string();
+}
+
+// An output that would replace a rule file the compilation read (the file or an import).
+std::string overwritten_input(const std::string& output, const std::vector<std::string>& inputs) {
+    if (output.empty() || output == "-") return {};
+    const std::string out = canonical_or_same(output);
+    for (const std::string& in : inputs)
+        if (canonical_or_same(in) == out) return in;
+    return {};
+}
+
+int refuse_overwrite(const std::string& output, const std::string& input) {
+    std::cerr << "acanthus: error: the output '" << output << "' would overwrite the input '"
+              << input << "'; choose another -o\n";
+    return kBadUsage;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -51,6 +93,7 @@ int main(int argc, char** argv) {
         "Compiles a rule file (.acr) to C++, checks it, builds it into a program or runs it."};
     app.set_version_flag("--version", std::string("acanthus ") + ACANTHUS_VERSION_STRING);
     app.require_subcommand(1);
+    if (report_unknown_command(argc, argv)) return kBadUsage;
 
     std::string input, output;
     std::vector<std::string> includes;
@@ -129,7 +172,10 @@ int main(int argc, char** argv) {
     if (compile->parsed()) {
         if (output.empty()) output = stem_of(input) + ".cpp";
         request.generate.output_name = output == "-" ? "<stdout>" : output;
-        if (!acanthus::compile_rule_file(request, true, cpp, std::cerr)) return kBadInput;
+        std::vector<std::string> inputs;
+        if (!acanthus::compile_rule_file(request, true, cpp, std::cerr, &inputs)) return kBadInput;
+        if (std::string in = overwritten_input(output, inputs); !in.empty())
+            return refuse_overwrite(output, in);
         if (output == "-") {
             std::cout << cpp << std::flush;
             return std::cout ? 0 : kBadInput;
@@ -141,11 +187,14 @@ int main(int argc, char** argv) {
 
     std::string stem = stem_of(input);
     request.generate.output_name = stem + ".cpp";
-    if (!acanthus::compile_rule_file(request, true, cpp, std::cerr)) return kBadInput;
+    std::vector<std::string> inputs;
+    if (!acanthus::compile_rule_file(request, true, cpp, std::cerr, &inputs)) return kBadInput;
     std::string error;
 
     if (build->parsed()) {
         if (output.empty()) output = stem;
+        if (std::string in = overwritten_input(output, inputs); !in.empty())
+            return refuse_overwrite(output, in);
         if (!acanthus::build_executable(toolchain, build_options, stem, cpp, output, error)) {
             return fail(error);
         }

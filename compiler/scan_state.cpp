@@ -104,11 +104,13 @@ void ScanState::open_section(SectionKind kind) {
 }
 
 void ScanState::begin_body_here() {
+    braces.reset();
     body_ = ast::CodeBlock{};
     body_.begin = token_.begin;
 }
 
 void ScanState::begin_body_after() {
+    braces.reset();
     body_ = ast::CodeBlock{};
     body_.begin = token_.end;
 }
@@ -182,7 +184,34 @@ void ScanState::add_dollar(std::string_view text) {
     body_.dollars.push_back(std::move(d));
 }
 
+std::uint32_t ScanState::current_line_indent() {
+    if (token_.begin.line != indent_line_) {
+        std::size_t start = token_.begin.offset - (token_.begin.column - 1);
+        std::uint32_t indent = 0;
+        for (std::size_t i = start; i < text_.size() && (text_[i] == ' ' || text_[i] == '\t'); ++i)
+            indent += text_[i] == '\t' ? 8 - indent % 8 : 1;
+        indent_line_ = token_.begin.line;
+        indent_ = indent;
+    }
+    return indent_;
+}
+
+void ScanState::open_brace() {
+    if (!braces.in_directive) braces.open(token_, current_line_indent());
+}
+
+void ScanState::close_brace() {
+    if (!braces.in_directive)
+        braces.close(token_, current_line_indent(), diagnostics,
+                     "'%" + std::string(section_keyword(section_)) + "'");
+}
+
 ast::CodeBlock ScanState::finish_body(bool terminated) {
+    if (terminated)
+        braces.finish(token_, diagnostics, "'%" + std::string(section_keyword(section_)) + "'",
+                      "'%" + std::string(end_keyword(section_)) + "'");
+    else
+        braces.reset();
     body_.end = token_.begin;
     body_.terminated = terminated;
     ast::CodeBlock out = std::move(body_);

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "ast/code_block.hpp"
+#include "brace_balance.hpp"
 #include "diagnostics.hpp"
 #include "source_range.hpp"
 
@@ -55,6 +56,10 @@ class ScanState {
     // Block comments: where the open one started, and the state to go back to.
     SourceRange comment_start;
     int comment_return = 0;
+    // Braces of the body being collected.
+    BraceBalance braces;
+    void open_brace();
+    void close_brace();
     // Raw string literal delimiter.
     std::string raw_delimiter;
     SourceRange raw_start;
@@ -67,7 +72,13 @@ class ScanState {
     Diagnostics& diagnostics;
 
   private:
+    // Indentation (columns of leading blanks) of the current token's line; cached per line so
+    // a long line costs one scan.
+    std::uint32_t current_line_indent();
+
     const std::string& text_;
+    std::uint32_t indent_line_ = 0;
+    std::uint32_t indent_ = 0;
     SourcePosition pos_;
     SourceRange token_;
     SectionKind section_ = SectionKind::element;

@@ -1,11 +1,5 @@
 #include "source_files.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
 namespace acanthus {
 
 SourceFile::SourceFile(std::string path, std::string text)
@@ -28,28 +22,6 @@ std::string_view SourceFile::line_text(std::uint32_t line) const {
 std::uint32_t SourceFiles::add(std::string path, std::string text) {
     files_.push_back(std::make_unique<SourceFile>(std::move(path), std::move(text)));
     return static_cast<std::uint32_t>(files_.size() - 1);
-}
-
-bool read_file(const std::string& path, std::string& text, std::string& error) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        error = "is a directory";
-        return false;
-    }
-    errno = 0;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = errno ? std::strerror(errno) : "cannot open";
-        return false;
-    }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) {
-        error = "read error";
-        return false;
-    }
-    text = std::move(buffer).str();
-    return true;
 }
 
 }  // namespace acanthus

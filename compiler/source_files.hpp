@@ -35,7 +35,4 @@ class SourceFiles {
     std::vector<std::unique_ptr<SourceFile>> files_;
 };
 
-// Reads a whole file; false with `error` set (strerror text) on failure.
-bool read_file(const std::string& path, std::string& text, std::string& error);
-
 }  // namespace acanthus

@@ -27,6 +27,7 @@ fs::path own_directory() {
 Toolchain find_toolchain() {
     Toolchain t;
     t.link_flags = {ACANTHUS_LINK_FLAGS};
+    t.sanitize_flags = {ACANTHUS_SANITIZE_FLAGS};
     t.default_cxx = ACANTHUS_DEFAULT_CXX;
     fs::path dir = own_directory();
     if (!dir.empty()) {

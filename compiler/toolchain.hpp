@@ -13,7 +13,10 @@ struct Toolchain {
     std::string runtime_library;            // libacanthus.a
     std::string stdlib_library;             // libacanthus_stdlib.a, or empty
     std::vector<std::string> link_flags;    // -lcairo ...
-    std::vector<std::string> stdlib_dirs;   // where %import looks after -I
+    // The runtime's sanitizer flags (-DACANTHUS_SANITIZE=ON): a generated program compiled and
+    // linked without them cannot link against a sanitized libacanthus.a.
+    std::vector<std::string> sanitize_flags;
+    std::vector<std::string> stdlib_dirs;  // where %import looks after -I
     std::string default_cxx;
 };
 

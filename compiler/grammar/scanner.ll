@@ -3,7 +3,8 @@
  * Outside sections only comments and blank lines are allowed. Section headers are tokenized;
  * C++ bodies are collected as one CODE token per section (a byte range of the file) while the
  * scanner notes every dollar token in them, skipping string, character and raw string literals
- * and comments. A line holding only an end marker (%endrule, ...) ends the body.
+ * and comments. A line holding only an end marker (%endrule, ...) ends the body. Braces are
+ * counted outside literals, comments and preprocessor lines: an unclosed '{' is reported.
  */
 %option reentrant noyywrap nounput noinput batch
 %option bison-bridge bison-locations
@@ -280,8 +281,12 @@ BADRUN      [^A-Za-z0-9_ \t\r\f\v\n\0{*/;="]+
 "."?[0-9]([0-9A-Za-z_.]|'[0-9A-Za-z_]|[eEpP][+-])* { }
 "//"[^\n\0]*              { }
 "/*"                    { yyextra->comment_start = yyextra->token(); yyextra->in_block_comment = true; BEGIN(BODY_COMMENT); }
+"{"                     { yyextra->open_brace(); }
+"}"                     { yyextra->close_brace(); }
+^{WS}*"#"               { yyextra->braces.in_directive = true; }
+"\\"{WS}*\n             { }
 {WS}+                   { }
-\n                      { }
+\n                      { yyextra->braces.in_directive = false; }
 .                       { }
 }
 

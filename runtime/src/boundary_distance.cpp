@@ -14,10 +14,46 @@ BoundaryDistance::BoundaryDistance(std::vector<const Geom::Curve*> curves, Side 
     : curves_(std::move(curves)), side_(std::move(positive_side)) {
     bounds_.reserve(curves_.size());
     for (const Geom::Curve* c : curves_) bounds_.push_back(c->boundsFast());
+    if (curves_.size() >= kIndexedFrom) {
+        std::vector<std::pair<SpatialIndex::Entry, Rect>> entries;
+        entries.reserve(bounds_.size());
+        for (std::size_t i = 0; i < bounds_.size(); ++i) {
+            const Geom::Rect& b = bounds_[i];
+            entries.push_back(
+                {{static_cast<int>(i), 0}, Rect{b.left(), b.top(), b.right(), b.bottom()}});
+        }
+        index_ = std::make_shared<const SpatialIndex>(entries);
+    }
+}
+
+std::vector<std::size_t> BoundaryDistance::curves_meeting(const Geom::Rect& box) const {
+    std::vector<std::size_t> out;
+    if (!index_) {  // few curves: all of them, as the exact tests reject far ones anyway
+        out.resize(curves_.size());
+        for (std::size_t i = 0; i < out.size(); ++i) out[i] = i;
+        return out;
+    }
+    for (const SpatialIndex::Entry& e :
+         index_->query(Rect{box.left(), box.top(), box.right(), box.bottom()}))
+        out.push_back(static_cast<std::size_t>(e.element));
+    return out;
 }
 
 BoundaryDistance::Nearest BoundaryDistance::nearest(Geom::Point p) const {
     Nearest best;
+    if (index_) {
+        // Bounds nearest first; ties go to the lowest index, as in the scan below.
+        auto hit = index_->nearest_entry(Point{p[Geom::X], p[Geom::Y]}, [&](SpatialIndex::Entry e) {
+            const Geom::Curve& c = *curves_[static_cast<std::size_t>(e.element)];
+            return Geom::distance(p, c.pointAt(c.nearestTime(p)));
+        });
+        if (hit) {
+            const Geom::Curve& c = *curves_[static_cast<std::size_t>(hit->entry.element)];
+            best = {hit->distance, static_cast<std::size_t>(hit->entry.element),
+                    c.pointAt(c.nearestTime(p))};
+        }
+        return best;
+    }
     for (std::size_t i = 0; i < curves_.size(); ++i) {
         // A curve lies inside its fast bounds, so a box farther than the best cannot win.
         if (Geom::distance(p, bounds_[i]) >= best.distance) continue;
@@ -248,8 +284,8 @@ std::optional<double> search(const Geom::Curve& curve, double from, double to,
     if (!(from <= to)) return std::nullopt;
     std::vector<double> cuts{from, to};
     if (options.split_at_crossings) {
-        for (const Geom::Curve* e : target.curves()) {
-            for (const Geom::CurveIntersection& x : intersect_curves(curve, *e)) {
+        for (std::size_t i : target.curves_meeting(curve.boundsFast())) {
+            for (const Geom::CurveIntersection& x : intersect_curves(curve, *target.curves()[i])) {
                 if (x.first > from && x.first < to) cuts.push_back(x.first);
             }
         }

@@ -17,8 +17,11 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
+
+#include "spatial_index.hpp"
 
 namespace acanthus::detail {
 
@@ -42,10 +45,17 @@ class BoundaryDistance {
         return positive(p) ? d : -d;
     }
     const std::vector<const Geom::Curve*>& curves() const { return curves_; }
+    // Indices of the curves whose fast bounds may meet `box`, ascending (with few curves,
+    // all of them).
+    std::vector<std::size_t> curves_meeting(const Geom::Rect& box) const;
 
   private:
+    // Past this many curves, queries go through an R-tree of their bounds instead of a scan.
+    static constexpr std::size_t kIndexedFrom = 64;
+
     std::vector<const Geom::Curve*> curves_;
     std::vector<Geom::Rect> bounds_;
+    std::shared_ptr<const SpatialIndex> index_;
     Side side_;
 };
 

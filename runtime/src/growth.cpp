@@ -25,6 +25,7 @@
 #include "growth_environment.hpp"
 #include "ornament.hpp"
 #include "raster_buffer.hpp"
+#include "running_body.hpp"
 
 namespace acanthus {
 namespace {
@@ -217,6 +218,8 @@ Flow GrowthEngine::Impl::call_exhausted() {
         Flow flow = STOP;
         {
             Environment::Scope scope(&env);
+            const detail::RunningBody running(detail::body_label(
+                &pattern.exhausted, pattern.file, pattern.exhausted_line, "%exhausted"));
             flow = pattern.exhausted() == CONTINUE ? CONTINUE : STOP;
         }
         sync_exclude_clears();

@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "output_transaction.hpp"
+
 namespace acanthus::detail {
 
 namespace {
@@ -56,8 +58,21 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
     if (!write_all(fd, bytes)) error = errno;
     if (!error && ::fchmod(fd, created_file_mode()) != 0) error = errno;
     if (::close(fd) != 0 && !error) error = errno;
-    if (!error && std::rename(temp.data(), path.c_str()) != 0) error = errno;
     if (error) {
+        ::unlink(temp.data());
+        fail(path, error);
+    }
+    if (OutputTransaction* transaction = OutputTransaction::active()) {
+        try {
+            transaction->add_file(temp.data(), path);
+        } catch (...) {
+            ::unlink(temp.data());
+            throw;
+        }
+        return;  // renamed with the run's other outputs
+    }
+    if (std::rename(temp.data(), path.c_str()) != 0) {
+        error = errno;
         ::unlink(temp.data());
         fail(path, error);
     }

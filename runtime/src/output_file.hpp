@@ -6,7 +6,8 @@
 
 namespace acanthus::detail {
 
-// Writes `bytes` to a temporary file next to `path` and renames it over `path` once complete.
+// Writes `bytes` to a temporary file next to `path` and renames it over `path` once complete
+// (while an OutputTransaction is open, it renames the file with the run's other outputs).
 // On any failure the temporary file is removed, `path` is left as it was, and InputError is thrown.
 void write_file_atomically(const std::string& path, std::string_view bytes);
 

@@ -36,6 +36,7 @@
 #include "boundary_distance.hpp"
 #include "curve_intersection.hpp"
 #include "proxy_path.hpp"
+#include "region_boundary.hpp"
 #include "region_data.hpp"
 
 namespace acanthus {
@@ -267,18 +268,6 @@ bool curves_overlap(const Shape& a, const Shape& b, double tol) {
 
 // --- region ------------------------------------------------------------------------------
 
-// Region subpaths are closed whether or not their flag says so.
-Geom::PathVector closed_paths(const detail::RegionData& region) {
-    Geom::PathVector out = region.paths;
-    for (Geom::Path& path : out) path.close(true);
-    return out;
-}
-
-bool contains(const Geom::PathVector& paths, bool evenodd, Geom::Point p) {
-    int w = paths.winding(p);
-    return evenodd ? (w % 2 != 0) : (w != 0);
-}
-
 }  // namespace
 
 bool overlaps(const Proxy& a, const Proxy& b, double tolerance) {
@@ -298,22 +287,26 @@ bool overlaps(const Proxy& a, const Proxy& b, double tolerance) {
 }
 
 bool leaves_region(const Proxy& p, const detail::RegionData& region, double tolerance) {
-    const Geom::PathVector boundary = closed_paths(region);
-    std::vector<const Geom::Curve*> curves;
-    for (const Geom::Path& path : boundary) {
-        for (const Geom::Curve* c : detail::path_curves(path)) curves.push_back(c);
-    }
-    BoundaryDistance outside(std::move(curves), [&boundary, &region](Geom::Point q) {
-        return !contains(boundary, region.evenodd, q);
-    });
+    const BoundaryDistance& outside = region.boundary->outside();
     Shape shape(p);
     if (shape.category() == Category::point) {
         return outside.signed_distance(to_geom(shape.point())) > tolerance;
     }
     if (detail::find_excursion(shape.path(), outside, tolerance)) return true;
     if (shape.category() == Category::area) {
-        for (const Geom::Path& path : boundary) {
-            if (enters(path, shape, tolerance)) return true;
+        // Only boundary curves that meet the area's bounds can enter it.
+        Geom::OptRect box = shape.path().boundsFast();
+        if (!box) return false;
+        for (std::size_t i : outside.curves_meeting(*box)) {
+            const Geom::Curve& c = *outside.curves()[i];
+            if (shape.kind() == ProxyKind::circle) {
+                const Geom::Point centre = to_geom(shape.point());
+                if (Geom::distance(centre, c.pointAt(c.nearestTime(centre))) <
+                    shape.radius() - tolerance)
+                    return true;
+            } else if (detail::find_excursion(c, 0, 1, shape.boundary(), tolerance)) {
+                return true;
+            }
         }
     }
     return false;

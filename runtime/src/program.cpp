@@ -14,10 +14,15 @@
 #include <new>
 #include <sstream>
 
+#include "body_watchdog.hpp"
+#include "crash_handler.hpp"
 #include "metrics_json.hpp"
+#include "output_paths.hpp"
+#include "output_transaction.hpp"
 #include "page_layout.hpp"
 #include "program_options.hpp"
 #include "progress_line.hpp"
+#include "running_body.hpp"
 #include "tree_json.hpp"
 
 namespace acanthus {
@@ -107,7 +112,8 @@ void check_stroke(const std::string& stroke) {
 }
 
 // Everything that can be refused without growing.
-void validate(const detail::ProgramOptions& o, const Region& region) {
+void validate(const detail::ProgramOptions& o, const Region& region,
+              detail::OutputTransaction& outputs) {
     if (o.output != "-") {
         format_for_path(o.output);  // UsageError on an unknown extension
         check_writable_location(o.output, "the output");
@@ -126,6 +132,15 @@ void validate(const detail::ProgramOptions& o, const Region& region) {
     }
     if (!o.frames_dir.empty()) {
         std::error_code ec;
+        // A directory made for this run goes again if the run fails (while still empty).
+        std::vector<fs::path> made;
+        for (fs::path p = fs::path(o.frames_dir).lexically_normal();
+             !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+            made.push_back(p);
+            if (p == p.parent_path()) break;
+        }
+        for (auto it = made.rbegin(); it != made.rend(); ++it)
+            outputs.add_created_directory(it->string());
         fs::create_directories(o.frames_dir, ec);
         if (!fs::is_directory(o.frames_dir))
             throw InputError("cannot write frames into '" + o.frames_dir +
@@ -152,9 +167,12 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         return 0;
     }
 
+    detail::check_output_paths(o);
     const Region region =
         o.region.empty() ? Region::default_panel() : Region::from_argument(o.region);
-    validate(o, region);
+    // Every file of the run is renamed into place at the end, all or none.
+    detail::OutputTransaction outputs;
+    validate(o, region, outputs);
 
     GrowthEngine engine(pattern, region, o.growth);
     detail::ProgressLine progress(program, o.progress);
@@ -163,7 +181,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
 
     bool debug_written = false;
     if (o.debug_iteration > 0) {
-        // Drawn as soon as iteration N happens, so a run that later fails still shows it.
+        // Drawn when iteration N happens; published with the run's other outputs at the end.
         engine.on_debug_frame(o.debug_iteration, [&](const DebugFrame& frame) {
             render_debug_frame(o.debug_path, region, frame, o.render);
             debug_written = true;
@@ -180,8 +198,14 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
                         });
     }
 
-    engine.run();
+    detail::install_crash_handler();
+    {
+        const detail::BodyWatchdog watchdog(o.body_time_limit, o.growth.time_limit);
+        engine.run();
+    }
     progress.finish();
+    // %draw bodies: the per-call limit only (--time-limit bounds growth, not rendering).
+    const detail::BodyWatchdog watchdog(o.body_time_limit, 0);
     const GrowthStats& stats = engine.stats();
     const std::vector<const Element*> elements = engine.elements();
 
@@ -207,6 +231,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
                   << std::endl;
         if (!std::cout) throw InputError("cannot write the metrics to stdout");
     }
+    outputs.commit();
     return 0;
 }
 
@@ -220,6 +245,7 @@ void report(const std::string& program, const char* kind, const std::string& mes
 int run_program(const Pattern& pattern, int argc, char** argv) {
     const Clock::time_point start = Clock::now();
     const std::string program = program_name(pattern, argc, argv);
+    detail::set_program_name_for_fatal_exit(program);
     try {
         return run(pattern, program, argc, argv, start);
     } catch (const UsageError& e) {

@@ -67,6 +67,12 @@ std::string check_seed(const std::string& s) {
     return {};
 }
 
+std::string check_rng_seed(const std::string& s) {
+    if (!parse_rng_seed(s))
+        return "expects an integer from 0 to 18446744073709551615, not '" + s + "'";
+    return {};
+}
+
 std::string check_param(const std::string& s) {
     auto eq = s.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -129,6 +135,15 @@ std::string footer(const Pattern& pattern, const std::string& program) {
 
 }  // namespace
 
+std::optional<std::uint64_t> parse_rng_seed(const std::string& text) {
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+        return std::nullopt;
+    std::uint64_t v = 0;
+    auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || ptr != text.data() + text.size()) return std::nullopt;
+    return v;
+}
+
 std::optional<Point> parse_seed(const std::string& text) {
     auto comma = text.find(',');
     if (comma == std::string::npos) return std::nullopt;
@@ -155,6 +170,7 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
                          "Print the version and exit");
 
     std::vector<std::string> seeds;
+    std::string rng_seed;
     std::string background;
     std::pair<long, std::string> debug_frame{0, ""};
 
@@ -169,10 +185,10 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->allow_extra_args(false)
         ->check(check_seed)
         ->group(region_group);
-    app.add_option("--rng-seed", o.growth.rng_seed,
-                   "Random seed for rule bodies (same seed, same ornament)")
+    app.add_option("--rng-seed", rng_seed,
+                   "Random seed for rule bodies (same seed, same ornament; default 1)")
         ->type_name("N")
-        ->capture_default_str()
+        ->check(check_rng_seed)
         ->group(region_group);
 
     const char* param_group = "Pattern parameters";
@@ -216,6 +232,12 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
                    "Stop growing after S seconds (result then depends on machine speed)")
         ->type_name("S")
         ->check(positive("--time-limit"))
+        ->group(growth_group);
+    app.add_option("--body-time-limit", o.body_time_limit,
+                   "Stop with an error (exit 3) when one rule body runs longer (0: no limit)")
+        ->type_name("S")
+        ->capture_default_str()
+        ->check(at_least("--body-time-limit", 0, 1e9))
         ->group(growth_group);
     app.add_flag("--reference-engine", o.growth.reference_engine,
                  "Recompute the whole distance field each iteration (slow, same result)")
@@ -291,6 +313,7 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
     }
 
     for (const std::string& s : seeds) o.growth.seeds.push_back(*parse_seed(s));
+    if (!rng_seed.empty()) o.growth.rng_seed = *parse_rng_seed(rng_seed);
     if (!background.empty()) o.render.background = parse_color(background);
     o.render.draw_region = !no_outline;
     o.progress =

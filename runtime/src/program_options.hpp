@@ -4,6 +4,7 @@
 #include <acanthus/growth.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/render.hpp>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,7 +23,8 @@ struct ProgramOptions {
     std::string json;  // --json; empty: none
     bool metrics = false;
     ProgressMode progress = ProgressMode::automatic;
-    long debug_iteration = 0;  // --debug-frame N (0: none)
+    double body_time_limit = 10;  // --body-time-limit: seconds one body may run (0: no limit)
+    long debug_iteration = 0;     // --debug-frame N (0: none)
     std::string debug_path;
     std::string frames_dir;  // --frames; empty: none
     long frames_every = 1;
@@ -34,6 +36,10 @@ struct ProgramOptions {
 std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
                                                     const std::string& program, int argc,
                                                     char** argv);
+
+// A decimal unsigned 64-bit integer, digits only; nullopt otherwise (no sign, no exponent, no
+// clamping).
+std::optional<std::uint64_t> parse_rng_seed(const std::string& text);
 
 // "X,Y" with two finite numbers; nullopt otherwise.
 std::optional<Point> parse_seed(const std::string& text);

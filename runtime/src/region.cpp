@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "region_boundary.hpp"
 #include "region_build.hpp"
 #include "region_curves.hpp"
 #include "region_data.hpp"
@@ -60,23 +61,11 @@ bool Region::evenodd() const { return data_->evenodd; }
 
 bool Region::contains(Point p) const {
     if (!p.finite() || !data_->bounds.contains(p)) return false;
-    int w = detail::winding_number(data_->paths, Geom::Point(p.x, p.y));
-    return data_->evenodd ? (w % 2) != 0 : w != 0;
+    return data_->boundary->contains(Geom::Point(p.x, p.y));
 }
 
 double Region::distance_to_boundary(Point p) const {
-    Geom::Point q(p.x, p.y);
-    double best = std::numeric_limits<double>::infinity();
-    for (const Geom::Path& path : data_->paths) {
-        for (std::size_t i = 0; i < path.size_closed(); ++i) {
-            const Geom::Curve& c = path[i];
-            // Cheap box distance first: most curves are far from the best one found so far.
-            if (Geom::distance(q, c.boundsFast()) >= best) continue;
-            double t = c.nearestTime(q);
-            best = std::min(best, Geom::distance(q, c.pointAt(t)));
-        }
-    }
-    return best;
+    return data_->boundary->outside().nearest(Geom::Point(p.x, p.y)).distance;
 }
 
 std::vector<std::vector<Point>> Region::rings(double tolerance) const {
@@ -139,6 +128,7 @@ std::vector<Region> Region::parts() const {
         if (!b) continue;
         data->bounds = Rect{b->left(), b->top(), b->right(), b->bottom()};
         data->area = detail::signed_area(data->paths);
+        detail::set_boundary(*data);
         out.push_back(Region(std::move(data)));
     }
     return out;

@@ -2,17 +2,16 @@
 
 #include <2geom/bezier-curve.h>
 #include <2geom/elliptical-arc.h>
-#include <2geom/intersection-graph.h>
 #include <2geom/path.h>
 
 #include <acanthus/error.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
+#include <string>
 
 #include "region_curves.hpp"
-#include "region_uncross.hpp"
+#include "region_fill.hpp"
 
 namespace acanthus::detail {
 namespace {
@@ -67,66 +66,33 @@ double cross_integral(const Geom::Curve& c) {
     return polyline_cross_integral(c);
 }
 
-using FillTest = std::function<bool(Geom::Point)>;
+// Coordinates beyond this are refused: far past any panel, and squaring them for areas and
+// distances must stay finite with room to spare.
+constexpr double kCoordinateLimit = 1e9;
 
-FillTest fill_test(const Geom::PathVector& paths, bool evenodd) {
-    return [&paths, evenodd](Geom::Point p) {
-        int w = winding_number(paths, p);
-        return evenodd ? (w % 2) != 0 : w != 0;
-    };
+bool in_range(Geom::Point p) {
+    return std::abs(p[Geom::X]) <= kCoordinateLimit && std::abs(p[Geom::Y]) <= kCoordinateLimit;
 }
 
-// Which side of the subpath is filled: +1 left, -1 right, 0 neither (a redundant subpath,
-// e.g. nested inside another with the same orientation under nonzero, or a degenerate one).
-int filled_side(const Geom::Path& path, const FillTest& filled, double step) {
-    std::vector<std::pair<double, std::size_t>> by_size;
-    for (std::size_t i = 0; i < path.size_closed(); ++i) {
-        const Geom::Curve& c = path[i];
-        if (c.isDegenerate()) continue;
-        Geom::Rect b = c.boundsFast();
-        double size = std::max(b.diameter(), Geom::distance(c.initialPoint(), c.finalPoint()));
-        by_size.emplace_back(-size, i);
-    }
-    std::stable_sort(by_size.begin(), by_size.end());
-    if (by_size.size() > 6) by_size.resize(6);
-    for (auto [neg_size, i] : by_size) {
-        for (double t : {0.5, 0.3, 0.7, 0.1, 0.9}) {
-            Geom::Point p = path[i].pointAt(t);
-            Geom::Point tangent = path[i].unitTangentAt(t);
-            if (!(Geom::L2(tangent) > 0.5)) continue;
-            Geom::Point left(-tangent[Geom::Y], tangent[Geom::X]);
-            bool l = filled(p + left * step);
-            bool r = filled(p - left * step);
-            if (l != r) return l ? 1 : -1;
+std::string where(const std::string& name, const std::string& label) {
+    return label.empty() || label == name ? name : name + ": " + label;
+}
+
+void require_in_range(const FilledShape& shape, const std::string& name) {
+    for (const Geom::Path& p : shape.paths) {
+        for (std::size_t i = 0; i < p.size_closed(); ++i) {
+            const Geom::Curve& c = p[i];
+            bool ok = in_range(c.initialPoint()) && in_range(c.finalPoint());
+            if (auto arc = dynamic_cast<const Geom::EllipticalArc*>(&c))
+                ok = ok && arc->ray(Geom::X) <= kCoordinateLimit &&
+                     arc->ray(Geom::Y) <= kCoordinateLimit;
+            else if (auto bez = dynamic_cast<const Geom::BezierCurve*>(&c))
+                for (unsigned k = 0; k <= bez->order(); ++k) ok = ok && in_range((*bez)[k]);
+            if (!ok)
+                throw InputError(where(name, shape.label) +
+                                 ": coordinates out of range (the limit is ±1e9 user units)");
         }
     }
-    return 0;
-}
-
-double scale_of(const Geom::PathVector& paths) {
-    Geom::OptRect b = paths.boundsFast();
-    return b ? std::max({b->width(), b->height(), 1e-300}) : 1.0;
-}
-
-// Keeps the subpaths that separate filled from empty, each with the filled side on its left.
-// Slivers below 1e-6 of the bounding square are dropped: they are numerical debris of
-// boolean operations (a curve piece run out and back), not a panel's shape.
-Geom::PathVector orient(const Geom::PathVector& paths, const FillTest& filled) {
-    Geom::PathVector out;
-    const double scale = scale_of(paths);
-    const double step = scale * 1e-7;
-    for (const Geom::Path& p : paths) {
-        if (p.empty() || std::abs(signed_area(p)) < 1e-6 * scale * scale) continue;
-        int side = filled_side(p, filled, step);
-        if (side > 0) out.push_back(p);
-        if (side < 0) out.push_back(p.reversed());
-    }
-    return out;
-}
-
-bool bounds_meet(const Geom::PathVector& a, const Geom::PathVector& b) {
-    Geom::OptRect ra = a.boundsFast(), rb = b.boundsFast();
-    return ra && rb && ra->intersects(*rb);
 }
 
 }  // namespace
@@ -161,51 +127,25 @@ std::unique_ptr<RegionData> build_region_data(const std::string& name,
     std::erase_if(shapes, [](const FilledShape& s) { return s.paths.empty(); });
     auto data = std::make_unique<RegionData>();
     data->name = name;
-
-    std::vector<Geom::PathVector> oriented;
+    std::size_t curves = 0;
     for (FilledShape& s : shapes) {
-        for (Geom::Path& p : s.paths) p.close(true);
-        s.paths = uncross(arcs_to_cubics(s.paths));
-        oriented.push_back(orient(s.paths, fill_test(s.paths, s.evenodd)));
-    }
-    if (oriented.size() == 1) {
-        data->paths = std::move(oriented.front());
-        data->evenodd = shapes.front().evenodd;
-    } else {
-        // Oriented shapes read the same under both fill rules, which is what the
-        // intersection graph (parity based) needs; their union is then a nonzero region.
-        Geom::PathVector acc;
-        bool merged = false;
-        for (const Geom::PathVector& s : oriented) {
-            if (s.empty()) continue;
-            if (acc.empty() || !bounds_meet(acc, s)) {
-                acc.insert(acc.end(), s.begin(), s.end());
-                continue;
-            }
-            try {
-                Geom::PathIntersectionGraph graph(acc, s);
-                if (graph.valid()) {
-                    acc = graph.getUnion();
-                    merged = true;
-                    continue;
-                }
-            } catch (const std::exception&) {
-            }
-            // Degenerate contact lib2geom cannot resolve: keep both; nonzero winding still
-            // gives the right inside test, the overlap just stays inside the boundary.
-            acc.insert(acc.end(), s.begin(), s.end());
+        require_in_range(s, name);
+        try {
+            for (Geom::Path& p : s.paths) p.close(true);  // fill closes open subpaths
+            s.paths = arcs_to_cubics(s.paths);
+        } catch (const std::exception& e) {
+            throw InputError(where(name, s.label) + ": cannot use this shape: " + e.what());
         }
-        if (merged) {
-            auto inside_any = [&oriented](Geom::Point p) {
-                return std::any_of(
-                    oriented.begin(), oriented.end(),
-                    [p](const Geom::PathVector& s) { return winding_number(s, p) != 0; });
-            };
-            acc = orient(acc, inside_any);
-        }
-        data->paths = std::move(acc);
-        data->evenodd = false;
+        // Counted as cubics: an arc becomes up to 24 of them.
+        for (const Geom::Path& p : s.paths) curves += p.size_closed();
+        if (curves > kMaxRegionCurves)
+            throw InputError(where(name, s.label) + ": the region has more than " +
+                             std::to_string(kMaxRegionCurves) +
+                             " curves once arcs become cubic Béziers");
     }
+    data->paths = filled_area(shapes);
+    // One shape keeps its rule for Region::evenodd(); the loops read the same under both.
+    data->evenodd = shapes.size() == 1 && shapes.front().evenodd;
 
     Geom::OptRect b = data->paths.boundsExact();
     double area = signed_area(data->paths);
@@ -213,6 +153,7 @@ std::unique_ptr<RegionData> build_region_data(const std::string& name,
         throw InputError(name + ": region has no area");
     data->bounds = Rect{b->left(), b->top(), b->right(), b->bottom()};
     data->area = area;
+    set_boundary(*data);
     return data;
 }
 

@@ -1,24 +1,22 @@
 // Turns the filled shapes of an input (SVG elements or a built-in shape) into one RegionData:
-// validated, with every boundary subpath oriented so the filled side lies on its left
-// (outer rings have positive signed area, holes negative) and overlapping shapes merged.
+// validated, filled as a renderer fills them (region_fill.hpp), every boundary loop with the
+// filled side on its left (outer loops have positive signed area, holes negative).
 #pragma once
 
 #include <2geom/pathvector.h>
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "region_data.hpp"
+#include "region_filled_shape.hpp"
 
 namespace acanthus::detail {
 
-// One filled shape as the input declares it: closed subpaths read with their own fill rule.
-struct FilledShape {
-    Geom::PathVector paths;
-    bool evenodd = false;
-    std::string label;  // "<path id="x"> (line 12)" for messages
-};
+// The most curves a region may hold, all shapes together, counted after arcs become cubics.
+inline constexpr std::size_t kMaxRegionCurves = 1000000;
 
 // Exact signed area, (1/2)∮(x dy - y dx) summed over subpaths: positive for paths whose
 // interior lies on their left (counter-clockwise with y up, clockwise on screen with y down).
@@ -30,8 +28,8 @@ void require_finite(const Geom::PathVector& paths, const std::string& name,
                     const std::string& label);
 
 // Combines the shapes into one region (their union). A single shape keeps its fill rule;
-// several shapes give a nonzero region. Throws InputError naming `name` when nothing is left
-// or the union has no area.
+// several shapes give a nonzero region. Throws InputError naming `name` (and the shape) for
+// coordinates beyond ±1e9, and when the union has no area.
 std::unique_ptr<RegionData> build_region_data(const std::string& name,
                                               std::vector<FilledShape> shapes);
 

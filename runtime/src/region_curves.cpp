@@ -82,33 +82,35 @@ Geom::PathVector arcs_to_cubics(const Geom::PathVector& paths) {
     return out;
 }
 
-int winding_number(const Geom::PathVector& paths, Geom::Point p) {
+int winding_number(const Geom::Curve& c, Geom::Point p) {
     const double py = p[Geom::Y];
+    const Geom::Rect box = c.boundsFast();
+    if (py < box.top() || py > box.bottom() || p[Geom::X] > box.right()) return 0;
     int winding = 0;
-    for (const Geom::Path& path : paths) {
-        for (std::size_t i = 0; i < path.size_closed(); ++i) {
-            const Geom::Curve& c = path[i];
-            Geom::Rect box = c.boundsFast();
-            if (py < box.top() || py > box.bottom() || p[Geom::X] > box.right()) continue;
-            std::vector<double> cuts = y_turns(c);
-            cuts.insert(cuts.begin(), 0.0);
-            cuts.push_back(1.0);
-            for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-                double t0 = cuts[k], t1 = cuts[k + 1];
-                double y0 = y_at(c, t0), y1 = y_at(c, t1);
-                // Half-open in y, so a ray through a shared vertex counts once.
-                int dir = (y0 <= py && py < y1) ? 1 : (y1 <= py && py < y0) ? -1 : 0;
-                if (dir == 0) continue;
-                double lo = t0, hi = t1;  // y(lo) on the y0 side of py, y(hi) on the other
-                for (int it = 0; it < 80 && hi - lo > 1e-15; ++it) {
-                    double mid = (lo + hi) / 2;
-                    bool below = dir > 0 ? y_at(c, mid) <= py : y_at(c, mid) > py;
-                    (below ? lo : hi) = mid;
-                }
-                if (point_at(c, (lo + hi) / 2)[Geom::X] > p[Geom::X]) winding += dir;
-            }
+    std::vector<double> cuts = y_turns(c);
+    cuts.insert(cuts.begin(), 0.0);
+    cuts.push_back(1.0);
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+        double t0 = cuts[k], t1 = cuts[k + 1];
+        double y0 = y_at(c, t0), y1 = y_at(c, t1);
+        // Half-open in y, so a ray through a shared vertex counts once.
+        int dir = (y0 <= py && py < y1) ? 1 : (y1 <= py && py < y0) ? -1 : 0;
+        if (dir == 0) continue;
+        double lo = t0, hi = t1;  // y(lo) on the y0 side of py, y(hi) on the other
+        for (int it = 0; it < 80 && hi - lo > 1e-15; ++it) {
+            double mid = (lo + hi) / 2;
+            bool below = dir > 0 ? y_at(c, mid) <= py : y_at(c, mid) > py;
+            (below ? lo : hi) = mid;
         }
+        if (point_at(c, (lo + hi) / 2)[Geom::X] > p[Geom::X]) winding += dir;
     }
+    return winding;
+}
+
+int winding_number(const Geom::PathVector& paths, Geom::Point p) {
+    int winding = 0;
+    for (const Geom::Path& path : paths)
+        for (std::size_t i = 0; i < path.size_closed(); ++i) winding += winding_number(path[i], p);
     return winding;
 }
 

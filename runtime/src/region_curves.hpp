@@ -14,5 +14,7 @@ Geom::PathVector arcs_to_cubics(const Geom::PathVector& paths);
 // Winding number of closed paths of Bézier curves around p: a ray to +x, each y-monotone
 // piece counted half-open, crossings found by bisection.
 int winding_number(const Geom::PathVector& paths, Geom::Point p);
+// One curve's share of that count.
+int winding_number(const Geom::Curve& curve, Geom::Point p);
 
 }  // namespace acanthus::detail

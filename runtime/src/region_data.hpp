@@ -4,9 +4,12 @@
 #include <2geom/pathvector.h>
 
 #include <acanthus/point.hpp>
+#include <memory>
 #include <string>
 
 namespace acanthus::detail {
+
+class RegionBoundary;
 
 struct RegionData {
     std::string name;        // file name or built-in spec, for messages
@@ -14,6 +17,11 @@ struct RegionData {
     bool evenodd = false;    // fill rule; nonzero otherwise
     Rect bounds;
     double area = 0;
+    // Built once from `paths` (set_boundary) and shared by copies: it owns its own loops.
+    std::shared_ptr<const RegionBoundary> boundary;
 };
+
+// Builds data.boundary from data.paths and data.evenodd.
+void set_boundary(RegionData& data);
 
 }  // namespace acanthus::detail

@@ -24,6 +24,7 @@
 #include "output_document.hpp"
 #include "output_file.hpp"
 #include "page_layout.hpp"
+#include "running_body.hpp"
 
 namespace acanthus {
 
@@ -145,6 +146,8 @@ void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const 
         cairo_set_source_rgb(cr, 0, 0, 0);
         if (custom) {
             try {
+                const detail::RunningBody running(
+                    detail::body_label(&type, pattern.file, type.line, "%draw " + type.name));
                 type.draw(canvas, element);
             } catch (const RuleFailure&) {
                 throw;

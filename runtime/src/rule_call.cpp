@@ -4,6 +4,9 @@
 #include <exception>
 #include <string>
 
+#include "proxy_range.hpp"
+#include "running_body.hpp"
+
 namespace acanthus {
 namespace {
 thread_local RuleCall* current_call = nullptr;
@@ -63,6 +66,8 @@ Result RuleCall::fell_off_end() {
 Result RuleCall::run() {
     Result r;
     try {
+        const detail::RunningBody running(
+            detail::body_label(&rule_, rule_.file, rule_.line, rule_.name));
         r = rule_.body(*this);
     } catch (const RuleFailure&) {
         throw;
@@ -94,6 +99,10 @@ std::vector<std::unique_ptr<Element>> RuleCall::take_children() {
                 throw RuleFailure(
                     rule_.file, rule_.line, rule_.name,
                     which + " " + describe(e, k) + " has NaN or infinite coordinates");
+            if (const std::string problem = detail::proxy_range_problem(e.proxy(k));
+                !problem.empty())
+                throw RuleFailure(rule_.file, rule_.line, rule_.name,
+                                  which + " " + describe(e, k) + " has " + problem);
         }
     }
     std::vector<std::unique_ptr<Element>> out;

@@ -5,11 +5,11 @@
 #include <2geom/transforms.h>
 
 #include <acanthus/error.hpp>
+#include <acanthus/input_file.hpp>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <pugixml.hpp>
 
 #include "region_svg_attributes.hpp"
@@ -80,9 +80,7 @@ SkeletalStroke SkeletalStroke::from_svg_path(std::string_view path_data, const s
 }
 
 SkeletalStroke SkeletalStroke::from_svg_file(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw InputError(path + ": cannot open stroke file");
-    std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::string text = read_input_file_or_throw(path, "stroke file");
     auto line_of = [&](std::ptrdiff_t offset) {
         offset = std::clamp<std::ptrdiff_t>(offset, 0, static_cast<std::ptrdiff_t>(text.size()));
         return 1 + std::count(text.begin(), text.begin() + offset, '\n');

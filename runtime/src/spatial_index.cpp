@@ -28,6 +28,15 @@ std::vector<SpatialIndex::Entry> sorted_entries(const std::vector<Value>& values
     std::sort(out.begin(), out.end());
     return out;
 }
+void check_bounds(SpatialIndex::Entry e, Rect bounds) {
+    bool finite = std::isfinite(bounds.x0) && std::isfinite(bounds.y0) &&
+                  std::isfinite(bounds.x1) && std::isfinite(bounds.y1);
+    if (!finite || bounds.x0 > bounds.x1 || bounds.y0 > bounds.y1) {
+        throw std::invalid_argument("spatial index: bad bounds for element " +
+                                    std::to_string(e.element) + " proxy " +
+                                    std::to_string(e.proxy));
+    }
+}
 }  // namespace
 
 struct SpatialIndex::Tree {
@@ -35,17 +44,22 @@ struct SpatialIndex::Tree {
 };
 
 SpatialIndex::SpatialIndex() : tree_(std::make_unique<Tree>()) {}
+
+SpatialIndex::SpatialIndex(const std::vector<std::pair<Entry, Rect>>& entries) {
+    std::vector<Value> values;
+    values.reserve(entries.size());
+    for (const auto& [entry, bounds] : entries) {
+        check_bounds(entry, bounds);
+        values.emplace_back(to_box(bounds), entry);
+    }
+    tree_ = std::make_unique<Tree>(Tree{bgi::rtree<Value, bgi::rstar<16>>(values)});
+}
 SpatialIndex::SpatialIndex(SpatialIndex&&) noexcept = default;
 SpatialIndex& SpatialIndex::operator=(SpatialIndex&&) noexcept = default;
 SpatialIndex::~SpatialIndex() = default;
 
 void SpatialIndex::insert(int element, int proxy, Rect bounds) {
-    bool finite = std::isfinite(bounds.x0) && std::isfinite(bounds.y0) &&
-                  std::isfinite(bounds.x1) && std::isfinite(bounds.y1);
-    if (!finite || bounds.x0 > bounds.x1 || bounds.y0 > bounds.y1) {
-        throw std::invalid_argument("spatial index: bad bounds for element " +
-                                    std::to_string(element) + " proxy " + std::to_string(proxy));
-    }
+    check_bounds(Entry{element, proxy}, bounds);
     tree_->rtree.insert(Value(to_box(bounds), Entry{element, proxy}));
 }
 
@@ -92,14 +106,30 @@ std::optional<SpatialIndex::Hit> SpatialIndex::nearest_entry(
     std::optional<Hit> best;
     if (size() == 0) return best;
     BPoint q(p.x, p.y);
-    for (auto it = tree_->rtree.qbegin(bgi::nearest(q, static_cast<unsigned>(size())));
-         it != tree_->rtree.qend(); ++it) {
-        if (best && bg::distance(q, it->first) > best->distance) break;
-        double d = distance(it->second);
-        if (!std::isfinite(d)) continue;
-        if (!best || d < best->distance || (d == best->distance && it->second < best->entry)) {
-            best = Hit{it->second, d};
+    // Batches of the k nearest bounds, k growing fourfold, until one reaches past the best
+    // exact distance: Boost's incremental query with k = size() costs O(size) per call. Each
+    // batch is evaluated whole, so ties never depend on Boost's order.
+    std::vector<Value> batch;
+    for (std::size_t k = 16;; k *= 4) {
+        batch.clear();
+        tree_->rtree.query(bgi::nearest(q, static_cast<unsigned>(std::min(k, size()))),
+                           std::back_inserter(batch));
+        std::sort(batch.begin(), batch.end(), [&q](const Value& a, const Value& b) {
+            const double da = bg::distance(q, a.first), db = bg::distance(q, b.first);
+            return da < db || (da == db && a.second < b.second);
+        });
+        bool done = batch.size() < k;
+        for (const Value& v : batch) {
+            if (best && bg::distance(q, v.first) > best->distance) {
+                done = true;
+                break;
+            }
+            double d = distance(v.second);
+            if (!std::isfinite(d)) continue;
+            if (!best || d < best->distance || (d == best->distance && v.second < best->entry))
+                best = Hit{v.second, d};
         }
+        if (done || batch.size() >= size()) break;
     }
     return best;
 }

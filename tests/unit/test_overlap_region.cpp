@@ -28,6 +28,7 @@ detail::RegionData make_region(Geom::PathVector paths, bool evenodd) {
     r.evenodd = evenodd;
     Geom::OptRect box = r.paths.boundsExact();
     r.bounds = {box->left(), box->top(), box->right(), box->bottom()};
+    detail::set_boundary(r);
     return r;
 }
 

@@ -142,7 +142,10 @@ TEST(region_errors, NegativeSizes) {
 }
 
 TEST(region_errors, BadAttributes) {
-    EXPECT_NE(svg_error("<rect id=\"u\" width=\"10%\" height=\"10\"/>").find("unsupported length"),
+    EXPECT_NE(svg_error("<rect id=\"u\" width=\"10em\" height=\"10\"/>").find("unsupported length"),
+              std::string::npos);
+    // A percentage needs a viewport: this root has neither viewBox nor width and height.
+    EXPECT_NE(svg_error("<rect width=\"10%\" height=\"10\"/>").find("percentage of a viewport"),
               std::string::npos);
     EXPECT_NE(svg_error("<rect width=\"ten\" height=\"10\"/>").find("not a length"),
               std::string::npos);
