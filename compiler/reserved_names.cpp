@@ -58,6 +58,8 @@ constexpr std::string_view kSupportNames[] = {
     "Proxy",
     "Canvas",
     "Color",
+    "SkeletalStroke",
+    "parse_color",
     "PointProxy",
     "CircleProxy",
     "ArcProxy",

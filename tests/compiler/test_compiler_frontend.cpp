@@ -2,6 +2,9 @@
 // defaults, reserved names, import resolution order.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <regex>
+#include <set>
 #include <sstream>
 
 #include "body_rewriter.hpp"
@@ -161,6 +164,30 @@ TEST(ReservedNames, KeywordsSupportNamesAndGeneratedNames) {
     EXPECT_TRUE(reserved_name_problem("c0_"));
     EXPECT_FALSE(reserved_name_problem("flower"));
     EXPECT_EQ(edit_distance("leef", "leaf"), 1u);
+}
+
+// Every name body.hpp brings into rule bodies is one a rule file may not declare again.
+TEST(ReservedNames, EveryNameBodyHppBringsIn) {
+    std::ifstream in(ACANTHUS_SOURCE_DIR "/runtime/include/acanthus/body.hpp");
+    ASSERT_TRUE(in) << "cannot read body.hpp";
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string header = text.str();
+    std::set<std::string> names;
+    const std::regex patterns[] = {
+        std::regex(R"(using acanthus::(\w+);)"),          // re-exported names
+        std::regex(R"(\n\w[\w:<>*&, ]*\s[*&]?(\w+)\()"),  // free functions (unindented)
+        std::regex(R"(\b(?:struct|class) (\w+))"),        // types
+        std::regex(R"(inline constexpr \w+ (\w+))"),      // objects (rng)
+    };
+    for (const std::regex& re : patterns)
+        for (std::sregex_iterator it(header.begin(), header.end(), re), end; it != end; ++it)
+            names.insert((*it)[1]);
+    EXPECT_GT(names.size(), 30u);
+    for (const std::string& name : names) {
+        if (name == "A" || name == "B") continue;  // template parameters of min/max
+        EXPECT_TRUE(acanthus::reserved_name_problem(name).has_value()) << name;
+    }
 }
 
 TEST(Diagnostics, SortedWithSourceLineAndCaret) {
