@@ -284,11 +284,11 @@ std::optional<double> search(const Geom::Curve& curve, double from, double to,
     if (!(from <= to)) return std::nullopt;
     std::vector<double> cuts{from, to};
     if (options.split_at_crossings) {
-        for (std::size_t i : target.curves_meeting(curve.boundsFast())) {
+        target.for_each_curve_meeting(curve.boundsFast(), [&](std::size_t i) {
             for (const Geom::CurveIntersection& x : intersect_curves(curve, *target.curves()[i])) {
                 if (x.first > from && x.first < to) cuts.push_back(x.first);
             }
-        }
+        });
         std::sort(cuts.begin(), cuts.end());
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     }

@@ -48,6 +48,15 @@ class BoundaryDistance {
     // Indices of the curves whose fast bounds may meet `box`, ascending (with few curves,
     // all of them).
     std::vector<std::size_t> curves_meeting(const Geom::Rect& box) const;
+    // Calls f(index) for those curves; with few curves, no list is built (hot in growth).
+    template <class F>
+    void for_each_curve_meeting(const Geom::Rect& box, F&& f) const {
+        if (!index_) {
+            for (std::size_t i = 0; i < curves_.size(); ++i) f(i);
+            return;
+        }
+        for (std::size_t i : curves_meeting(box)) f(i);
+    }
 
   private:
     // Past this many curves, queries go through an R-tree of their bounds instead of a scan.

@@ -19,8 +19,8 @@ RegionBoundary::RegionBoundary(const Geom::PathVector& paths, bool evenodd)
 int RegionBoundary::winding(Geom::Point p) const {
     const Geom::Rect ray(p, Geom::Point(std::max(right_, p[Geom::X]), p[Geom::Y]));
     int w = 0;
-    for (std::size_t i : outside_->curves_meeting(ray))
-        w += winding_number(*outside_->curves()[i], p);
+    outside_->for_each_curve_meeting(
+        ray, [&](std::size_t i) { w += winding_number(*outside_->curves()[i], p); });
     return w;
 }
 
