@@ -46,7 +46,7 @@ CandidateSampler::CandidateSampler(const GapField& gaps)
 
 void CandidateSampler::file(int pixel) {
     std::int64_t d2 = gaps_.squared_distance(pixel);
-    if (!gaps_.free(pixel) || d2 <= 0 || d2 == DistanceField::infinite) return;
+    if (!gaps_.free(pixel) || d2 <= 0 || d2 == acanthus::detail::DistanceField::infinite) return;
     int g = group_of(d2);
     group_[pixel] = g;
     slot_[pixel] = static_cast<int>(groups_[g].size());
@@ -69,7 +69,7 @@ void CandidateSampler::unfile(int pixel) {
 void CandidateSampler::update(const std::vector<int>& pixels) {
     for (int p : pixels) {
         std::int64_t d2 = gaps_.squared_distance(p);
-        bool fileable = gaps_.free(p) && d2 > 0 && d2 != DistanceField::infinite;
+        bool fileable = gaps_.free(p) && d2 > 0 && d2 != acanthus::detail::DistanceField::infinite;
         int g = fileable ? group_of(d2) : -1;
         if (g == group_[p]) continue;
         unfile(p);

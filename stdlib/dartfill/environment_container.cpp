@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "container.hpp"
-#include "overlap.hpp"
+#include "proxy/overlap.hpp"
 
 namespace acanthus::dartfill {
 namespace {
@@ -92,7 +92,8 @@ long EnvironmentContainer::block_elements(const GridFrame& grid,
             double d = std::numeric_limits<double>::infinity();
             if (const Element* e = env_.nearest_element(c))
                 for (std::size_t k = 0; k < e->proxy_count(); ++k)
-                    if (e->proxy(k).is_set()) d = std::min(d, distance_to(e->proxy(k), c));
+                    if (e->proxy(k).is_set())
+                        d = std::min(d, acanthus::detail::distance_to(e->proxy(k), c));
             if (d < half) {  // a disc as wide as the pixel meets an element
                 occupancy[index] = 1;
                 continue;

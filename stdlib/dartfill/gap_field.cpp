@@ -10,13 +10,14 @@ GapField::GapField(const Container& container, const Layout& layout, int resolut
       stamp_(static_cast<std::size_t>(grid_.width) * grid_.height, 0) {
     std::vector<std::uint8_t> occupancy = container.rasterize(grid_);
     for (auto& o : occupancy)
-        o = static_cast<std::uint8_t>(o ? ObstacleKind::boundary : ObstacleKind::none);
+        o = static_cast<std::uint8_t>(o ? acanthus::detail::ObstacleKind::boundary
+                                        : acanthus::detail::ObstacleKind::none);
     for (const PlacedShape& s : layout.shapes()) {
         pixels_.clear();
         shape_pixels(grid_, s, pixels_);
         for (int p : pixels_)
-            if (occupancy[p] == static_cast<std::uint8_t>(ObstacleKind::none))
-                occupancy[p] = static_cast<std::uint8_t>(ObstacleKind::element);
+            if (occupancy[p] == static_cast<std::uint8_t>(acanthus::detail::ObstacleKind::none))
+                occupancy[p] = static_cast<std::uint8_t>(acanthus::detail::ObstacleKind::element);
     }
     field_.compute(occupancy);
 }
@@ -25,7 +26,7 @@ std::int64_t GapField::max_squared_distance() const {
     std::int64_t best = 0;
     for (int i = 0, n = size(); i < n; ++i) {
         std::int64_t d2 = field_.squared_distance(i);
-        if (d2 != DistanceField::infinite) best = std::max(best, d2);
+        if (d2 != acanthus::detail::DistanceField::infinite) best = std::max(best, d2);
     }
     return best;
 }
@@ -43,7 +44,7 @@ void GapField::add(const PlacedShape& shape, std::vector<int>* changed) {
         sites.push_back(p);
     }
     if (sites.empty()) return;
-    field_.add_sites(sites, ObstacleKind::element, changed);
+    field_.add_sites(sites, acanthus::detail::ObstacleKind::element, changed);
     if (changed) changed->insert(changed->end(), sites.begin(), sites.end());
 }
 

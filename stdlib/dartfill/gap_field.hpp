@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "container.hpp"
-#include "distance_field.hpp"
+#include "growth/distance_field.hpp"
 #include "layout.hpp"
 
 namespace acanthus::dartfill {
@@ -17,9 +17,11 @@ class GapField {
     GapField(const Container& container, const Layout& layout, int resolution);
 
     const GridFrame& grid() const { return grid_; }
-    const DistanceField& field() const { return field_; }
+    const acanthus::detail::DistanceField& field() const { return field_; }
     int size() const { return grid_.width * grid_.height; }
-    bool free(int index) const { return field_.occupancy(index) == ObstacleKind::none; }
+    bool free(int index) const {
+        return field_.occupancy(index) == acanthus::detail::ObstacleKind::none;
+    }
     std::int64_t squared_distance(int index) const { return field_.squared_distance(index); }
     // Largest squared distance over the grid (0 when nothing is free).
     std::int64_t max_squared_distance() const;
@@ -31,7 +33,7 @@ class GapField {
 
   private:
     GridFrame grid_;
-    DistanceField field_;
+    acanthus::detail::DistanceField field_;
     std::vector<int> pixels_;
     std::vector<std::uint32_t> stamp_;
     std::uint32_t generation_ = 0;

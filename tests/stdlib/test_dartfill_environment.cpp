@@ -13,10 +13,13 @@
 
 #include "container.hpp"
 #include "dartfill_oracle.hpp"
-#include "overlap.hpp"
+#include "proxy/overlap.hpp"
 
 using namespace acanthus;
 using namespace acanthus::dartfill;
+using acanthus::detail::distance_to;
+using acanthus::detail::leaves_region;
+using acanthus::detail::overlaps;
 
 namespace {
 

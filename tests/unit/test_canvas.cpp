@@ -7,9 +7,10 @@
 #include <cmath>
 #include <cstdint>
 
-#include "default_style.hpp"
+#include "draw/default_style.hpp"
 
 using namespace acanthus;
+using namespace acanthus::detail;
 
 namespace {
 

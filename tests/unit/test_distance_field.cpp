@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "distance_field.hpp"
+#include "growth/distance_field.hpp"
 
-using acanthus::DistanceField;
-using acanthus::ObstacleKind;
 using acanthus::Random;
+using acanthus::detail::DistanceField;
+using acanthus::detail::ObstacleKind;
 
 namespace {
 

@@ -6,15 +6,15 @@
 #include <cmath>
 #include <vector>
 
-#include "empty_circle_finder.hpp"
+#include "growth/empty_circle_finder.hpp"
 
 using acanthus::Circle;
-using acanthus::DistanceField;
-using acanthus::EmptyCircle;
-using acanthus::EmptyCircleFinder;
-using acanthus::ExcludeList;
 using acanthus::GridFrame;
-using acanthus::ObstacleKind;
+using acanthus::detail::DistanceField;
+using acanthus::detail::EmptyCircle;
+using acanthus::detail::EmptyCircleFinder;
+using acanthus::detail::ExcludeList;
+using acanthus::detail::ObstacleKind;
 
 namespace {
 

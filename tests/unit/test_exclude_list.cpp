@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <vector>
 
-#include "exclude_list.hpp"
+#include "growth/exclude_list.hpp"
 
 using acanthus::Circle;
-using acanthus::ExcludeList;
 using acanthus::Point;
+using acanthus::detail::ExcludeList;
 
 TEST(ExcludeList, EmptyListContainsNothing) {
     ExcludeList list;

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "output_file.hpp"
-#include "output_transaction.hpp"
+#include "output/atomic_file.hpp"
+#include "output/transaction.hpp"
 
 namespace {
 

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdint>
 
-#include "overlap.hpp"
+#include "proxy/overlap.hpp"
 #include "proxy_factory.hpp"
 
 namespace acanthus {
 namespace {
+
+using namespace detail;
 
 using namespace test;
 

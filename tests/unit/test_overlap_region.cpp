@@ -10,12 +10,14 @@
 #include <cmath>
 #include <cstdint>
 
-#include "overlap.hpp"
+#include "proxy/overlap.hpp"
 #include "proxy_factory.hpp"
-#include "region_data.hpp"
+#include "region/region_data.hpp"
 
 namespace acanthus {
 namespace {
+
+using namespace detail;
 
 using namespace test;
 

@@ -1,6 +1,7 @@
 // --param values: out of the type's range is an error, never inf, 0 or a clamped value.
 #include <gtest/gtest.h>
 
+#include <acanthus/param.hpp>
 #include <acanthus/pattern.hpp>
 #include <string>
 

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <acanthus/body.hpp>
+#include <acanthus/param.hpp>
 #include <acanthus/program.hpp>
 #include <acanthus/rule_call.hpp>
 #include <filesystem>
@@ -14,12 +15,13 @@
 #include <string>
 #include <vector>
 
-#include "program_options.hpp"
+#include "program/options.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace acanthus;
+using namespace acanthus::detail;
 
 // %param double dot_radius = 3.0;  %param bool explode = false;  %param int limit = 1000;
 double dot_radius = 3.0;

@@ -4,11 +4,13 @@
 #include <acanthus/proxy.hpp>
 #include <cmath>
 
+#include "proxy/proxy_path.hpp"
 #include "proxy_factory.hpp"
-#include "proxy_path.hpp"
 
 namespace acanthus {
 namespace {
+
+using namespace detail;
 
 using namespace test;
 

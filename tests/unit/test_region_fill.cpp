@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "region_build.hpp"
-#include "region_data.hpp"
+#include "region/build.hpp"
+#include "region/region_data.hpp"
 
 using acanthus::Point;
 using acanthus::Region;

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "region_svg_attributes.hpp"
+#include "region/svg/attributes.hpp"
 
 using acanthus::InputError;
 using acanthus::Region;

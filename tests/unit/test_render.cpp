@@ -15,10 +15,11 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "output_document.hpp"
+#include "output/document.hpp"
 #include "sample_elements.hpp"
 
 using namespace acanthus;
+using namespace acanthus::detail;
 namespace fs = std::filesystem;
 
 namespace {

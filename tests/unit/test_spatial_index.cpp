@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "spatial_index.hpp"
+#include "geometry/spatial_index.hpp"
 
 namespace acanthus::detail {
 namespace {

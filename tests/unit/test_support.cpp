@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <acanthus/body.hpp>
+#include <acanthus/param.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/random.hpp>
 

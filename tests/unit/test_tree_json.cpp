@@ -10,11 +10,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "metrics_json.hpp"
+#include "output/coverage.hpp"
+#include "program/metrics_json.hpp"
+#include "program/tree_json.hpp"
 #include "sample_elements.hpp"
-#include "tree_json.hpp"
 
 using namespace acanthus;
+using namespace acanthus::detail;
 using json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 

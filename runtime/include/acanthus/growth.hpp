@@ -1,6 +1,7 @@
 // The growth engine of Wong et al. section 4.1: largest empty circle, candidate parents, rules.
 #pragma once
 
+#include <acanthus/grid_frame.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/region.hpp>
 #include <cstdint>
@@ -21,13 +22,6 @@ struct GrowthOptions {
     bool reference_engine = false;  // recompute the whole distance field every iteration
     std::vector<Point> seeds;       // empty: centre of the largest inscribed circle
     std::uint64_t rng_seed = 1;
-};
-
-// Pixel grid over the region: pixel (i, j) covers [x0 + i*size, x0 + (i+1)*size) horizontally.
-struct GridFrame {
-    double x0 = 0, y0 = 0, pixel = 1;
-    int width = 0, height = 0;
-    Point center_of(int i, int j) const { return {x0 + (i + 0.5) * pixel, y0 + (j + 0.5) * pixel}; }
 };
 
 // One iteration as Figure 8 shows it (built only for the iteration asked for).

@@ -43,18 +43,4 @@ struct Pattern {
     int exhausted_line = 0;
 };
 
-// Parameter parsing used by generated assign functions.
-bool parse_param(std::string_view text, int& out, std::string& error);
-bool parse_param(std::string_view text, long& out, std::string& error);
-bool parse_param(std::string_view text, double& out, std::string& error);
-bool parse_param(std::string_view text, float& out, std::string& error);
-bool parse_param(std::string_view text, bool& out, std::string& error);
-bool parse_param(std::string_view text, std::string& out, std::string& error);
-std::string format_param(int v);
-std::string format_param(long v);
-std::string format_param(double v);
-std::string format_param(float v);
-std::string format_param(bool v);
-std::string format_param(const std::string& v);
-
 }  // namespace acanthus

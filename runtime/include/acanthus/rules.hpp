@@ -4,6 +4,7 @@
 #include <acanthus/body.hpp>
 #include <acanthus/canvas.hpp>
 #include <acanthus/element.hpp>
+#include <acanthus/param.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/point.hpp>
 #include <acanthus/program.hpp>

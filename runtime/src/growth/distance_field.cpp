@@ -1,0 +1,359 @@
+#include "growth/distance_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace acanthus::detail {
+namespace {
+
+constexpr std::int32_t kInfinite = DistanceField::infinite;
+
+// Felzenszwalb & Huttenlocher's separable squared EDT over a w x h grid, with a feature
+// transform when `site` is not null (site index j*w+i in the same grid). Parabola
+// intersections are compared as exact integer fractions, so the result is exact.
+template <class IsSite>
+void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t* site,
+                   DistanceField::Scratch& s) {
+    const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+    s.column_distance.resize(n);
+    s.column_site_row.resize(n);
+    std::int32_t* g = s.column_distance.data();
+    std::int32_t* row = s.column_site_row.data();
+
+    // Phase 1, row by row for cache friendliness: nearest site above, then below.
+    s.last.assign(w, -1);
+    for (int j = 0; j < h; ++j) {
+        std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
+        std::int32_t* rj = row + static_cast<std::size_t>(j) * w;
+        for (int i = 0; i < w; ++i) {
+            if (is_site(i, j)) s.last[i] = j;
+            const int l = s.last[i];
+            gj[i] = l >= 0 ? j - l : kInfinite;
+            rj[i] = l;
+        }
+    }
+    s.last.assign(w, -1);
+    for (int j = h - 1; j >= 0; --j) {
+        std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
+        std::int32_t* rj = row + static_cast<std::size_t>(j) * w;
+        for (int i = 0; i < w; ++i) {
+            if (gj[i] == 0) {
+                s.last[i] = j;
+            } else if (s.last[i] >= 0 && s.last[i] - j < gj[i]) {
+                gj[i] = s.last[i] - j;
+                rj[i] = s.last[i];
+            }
+        }
+    }
+
+    // Phase 2: per row, the lower envelope of parabolas (x - q)^2 + g(q)^2 over columns q
+    // that have a site. The envelope piece k starts at num[k] / den[k].
+    s.hull_column.resize(w);
+    s.hull_f.resize(w);
+    s.hull_num.resize(w);
+    s.hull_den.resize(w);
+    int* v = s.hull_column.data();
+    std::int64_t* f = s.hull_f.data();
+    std::int64_t* num = s.hull_num.data();
+    std::int64_t* den = s.hull_den.data();
+    for (int j = 0; j < h; ++j) {
+        const std::size_t base = static_cast<std::size_t>(j) * w;
+        const std::int32_t* gj = g + base;
+        int k = -1;
+        for (int q = 0; q < w; ++q) {
+            if (gj[q] == kInfinite) continue;
+            const std::int64_t fq =
+                static_cast<std::int64_t>(gj[q]) * gj[q] + static_cast<std::int64_t>(q) * q;
+            std::int64_t sn = 0, sd = 1;
+            while (k >= 0) {
+                sn = fq - f[k];
+                sd = 2 * static_cast<std::int64_t>(q - v[k]);
+                // Drop piece k when the new parabola already wins where piece k starts.
+                if (k > 0 && sn * den[k] <= num[k] * sd) {
+                    --k;
+                    continue;
+                }
+                break;
+            }
+            ++k;
+            v[k] = q;
+            f[k] = fq;
+            num[k] = sn;
+            den[k] = sd;
+        }
+        if (k < 0) {
+            std::fill(d2 + base, d2 + base + w, kInfinite);
+            if (site) std::fill(site + base, site + base + w, -1);
+            continue;
+        }
+        const int top = k;
+        k = 0;
+        for (int x = 0; x < w; ++x) {
+            while (k < top && num[k + 1] <= static_cast<std::int64_t>(x) * den[k + 1]) ++k;
+            const int c = v[k];
+            const std::int64_t dx = x - c;
+            const std::int64_t gc = gj[c];
+            d2[base + x] = static_cast<std::int32_t>(dx * dx + gc * gc);
+            if (site) site[base + x] = row[base + c] * w + c;
+        }
+    }
+}
+
+}  // namespace
+
+DistanceField::DistanceField(int width, int height) : width_(width), height_(height) {
+    // Squared distances must fit in 32 bits.
+    if (width <= 0 || height <= 0 || width > 30000 || height > 30000)  // also packs in 16 bits
+        throw std::invalid_argument("DistanceField: grid size out of range");
+    const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    occ_.assign(n, 0);
+    dist2_.assign(n, kInfinite);
+    boundary2_.assign(n, kInfinite);
+    site_.assign(n, -1);
+    visit_.assign(n, 0);
+}
+
+double DistanceField::distance(int i, int j) const {
+    const std::int32_t d = dist2_[static_cast<std::size_t>(j) * width_ + i];
+    return d == kInfinite ? HUGE_VAL : std::sqrt(static_cast<double>(d));
+}
+
+ObstacleKind DistanceField::nearest_kind(int index) const {
+    const std::int32_t d = dist2_[index];
+    if (d == kInfinite) return ObstacleKind::none;
+    return boundary2_[index] == d ? ObstacleKind::boundary : ObstacleKind::element;
+}
+
+void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
+    if (occupancy.size() != occ_.size())
+        throw std::invalid_argument("DistanceField::compute: occupancy size mismatch");
+    occ_ = occupancy;
+    const int w = width_;
+    const std::uint8_t* occ = occ_.data();
+    separable_edt(
+        w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
+        dist2_.data(), site_.data(), scratch_);
+    separable_edt(
+        w, height_,
+        [&](int i, int j) {
+            return occ[static_cast<std::size_t>(j) * w + i] ==
+                   static_cast<std::uint8_t>(ObstacleKind::boundary);
+        },
+        boundary2_.data(), nullptr, scratch_);
+}
+
+void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
+                              std::vector<int>* changed) {
+    if (kind == ObstacleKind::none) return;
+    std::vector<int> fresh;
+    fresh.reserve(pixels.size());
+    for (int p : pixels) {
+        if (p < 0 || static_cast<std::size_t>(p) >= occ_.size() || occ_[p] != 0) continue;
+        occ_[p] = static_cast<std::uint8_t>(kind);  // also drops duplicates
+        fresh.push_back(p);
+    }
+    if (fresh.empty()) return;
+    propagate(fresh, dist2_, &site_, changed);
+    if (kind == ObstacleKind::boundary) propagate(fresh, boundary2_, nullptr, changed);
+}
+
+namespace {
+
+// Blobs spanning at most this many columns are measured directly from their runs of sites.
+constexpr std::size_t kDirectColumns = 32;
+
+// Distances to the new sites from their EDT over a window (pixels inside the window only).
+struct WindowMeasure {
+    const std::int32_t* d2;
+    const std::int32_t* site;
+    int width, window_width, x0, y0;
+
+    struct Row {
+        const WindowMeasure& m;
+        std::size_t offset;  // of pixel (0, j) in the window arrays, shifted by x0
+        std::int64_t at(int i, int& nearest) const {
+            const std::size_t local = offset + static_cast<std::size_t>(i - m.x0);
+            const int ls = m.site[local];
+            nearest = (ls / m.window_width + m.y0) * m.width + ls % m.window_width + m.x0;
+            return m.d2[local];
+        }
+    };
+    Row row(int j, int) const {
+        return {*this, static_cast<std::size_t>(j - y0) * static_cast<std::size_t>(window_width)};
+    }
+};
+
+}  // namespace
+
+// The wavefront of the header comment, as an 8-connected scanline fill: a pixel is "inside"
+// when it is a new site or sqrt(m) < sqrt(D) + 1; the fill evaluates every inside pixel
+// reachable from the new sites and all their 8-neighbours, once each. `measure.row(j, x)` gives
+// an object whose `at(i, nearest)` returns m exactly for pixels of row j in the measurable
+// area and sets the nearest new site (a pixel index); `measurable(i, j)` says whether it can.
+// Returns false (nothing changed) when the fill reached an unmeasurable pixel.
+template <bool kCommit, class Measure, class Measurable>
+bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::int32_t>& d2v,
+                              std::int32_t* site, std::vector<int>* out, Measure& measure,
+                              Measurable measurable) {
+    const int w = width_, h = height_;
+    // visit_ == base: evaluated, outside; base + 1: inside; base + 2: inside, its row span filled.
+    if (stamp_ > std::numeric_limits<std::uint32_t>::max() - 4) {
+        std::fill(visit_.begin(), visit_.end(), 0);
+        stamp_ = 0;
+    }
+    const std::uint32_t base = stamp_ + 1;
+    stamp_ += 3;
+    std::uint32_t* visit = visit_.data();
+    std::int32_t* d2 = d2v.data();
+    improved_.clear();
+    stack_.clear();
+    for (int p : sites) {
+        visit[p] = base + 1;
+        if constexpr (kCommit) {
+            d2[p] = 0;
+            if (site) site[p] = p;
+            if (out) out->push_back(p);
+        } else {
+            improved_.push_back({p, 0, p});
+        }
+        stack_.push_back({p % w, p / w, 0, 0, 0});
+    }
+    bool escaped = false;
+    // Evaluates pixel (i, j), r = j*w+i, not yet visited, of `line` (row j). Returns whether
+    // it is inside.
+    auto evaluate = [&](auto& line, int i, int j, int r) {
+        if (!measurable(i, j)) {
+            escaped = true;
+            return false;
+        }
+        const std::int64_t old = d2[r];
+        bool in = false;
+        if (old != 0) {  // an obstacle is never nearer to a new site
+            int nearest;
+            const std::int64_t m = line.at(i, nearest);
+            if (m < old) {
+                if constexpr (kCommit) {
+                    d2[r] = static_cast<std::int32_t>(m);
+                    if (site) site[r] = nearest;
+                    if (out) out->push_back(r);
+                } else {
+                    improved_.push_back({r, static_cast<std::int32_t>(m), nearest});
+                }
+            }
+            const std::int64_t t = m - old - 1;  // sqrt(m) < sqrt(old) + 1
+            in = t < 0 || t * t < 4 * old;
+        }
+        visit[r] = base + (in ? 1 : 0);
+        return in;
+    };
+    auto inside = [&](auto& line, int i, int j, int r) {
+        const std::uint32_t v = visit[r];
+        if (v >= base) return v > base;
+        return evaluate(line, i, j, r);
+    };
+    // Scans row nj over [x0, x1], evaluating new pixels and pushing one seed per run of inside
+    // pixels not yet filled; (j, xl, xr) is the span being filled, the seeds' parent.
+    auto scan = [&](int nj, int x0, int x1, int j, int xl, int xr) {
+        x0 = std::max(0, x0);
+        x1 = std::min(w - 1, x1);
+        if (nj < 0 || nj >= h || x0 > x1) return;
+        const int nrow = nj * w;
+        auto line = measure.row(nj, x0);
+        bool run = false;
+        for (int x = x0; x <= x1; ++x) {
+            const std::uint32_t v = visit[nrow + x];
+            bool in;
+            if (v >= base) {
+                in = v > base;
+                if (in && !run && v == base + 1) stack_.push_back({x, nj, nj - j, xl, xr});
+            } else {
+                in = evaluate(line, x, nj, nrow + x);
+                if (escaped) return;
+                if (in && !run) stack_.push_back({x, nj, nj - j, xl, xr});
+            }
+            run = in;
+        }
+    };
+    while (!stack_.empty() && !escaped) {
+        const Seed seed = stack_.back();
+        stack_.pop_back();
+        const int i = seed.x, j = seed.y;
+        const int row = j * w;
+        if (visit[row + i] == base + 2) continue;
+        int xl = i, xr = i;
+        {
+            auto line = measure.row(j, i);
+            while (xl > 0 && inside(line, xl - 1, j, row + xl - 1)) --xl;
+            while (xr < w - 1 && inside(line, xr + 1, j, row + xr + 1)) ++xr;
+        }
+        if (escaped) break;
+        for (int x = xl; x <= xr; ++x) visit[row + x] = base + 2;
+        if (seed.dir == 0) {
+            scan(j - 1, xl - 1, xr + 1, j, xl, xr);
+            scan(j + 1, xl - 1, xr + 1, j, xl, xr);
+        } else {
+            scan(j + seed.dir, xl - 1, xr + 1, j, xl, xr);
+            // The parent span's row was evaluated over [pl - 1, pr + 1] when it was filled, and
+            // holds no unfilled inside pixel there: only the parts beyond it are new.
+            scan(j - seed.dir, xl - 1, std::min(xr + 1, seed.pl - 2), j, xl, xr);
+            scan(j - seed.dir, std::max(xl - 1, seed.pr + 2), xr + 1, j, xl, xr);
+        }
+    }
+    return !escaped;
+}
+
+void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
+                              std::vector<std::int32_t>* site, std::vector<int>* out) {
+    const int w = width_, h = height_;
+    std::int32_t* site_data = site ? site->data() : nullptr;
+    blob_.reset(sites, w, h);
+    if (blob_.columns() <= kDirectColumns) {
+        wavefront<true>(sites, d2, site_data, out, blob_, [](int, int) { return true; });
+        return;
+    }
+
+    // Wide blobs: an EDT of the new sites over a window around them, doubled until the
+    // wavefront stays inside. It starts at twice the old distance of the new sites (the empty
+    // space they were put in).
+    int bx0 = w, by0 = h, bx1 = -1, by1 = -1;
+    std::int64_t room = 0;
+    for (int p : sites) {
+        const int i = p % w, j = p / w;
+        bx0 = std::min(bx0, i);
+        bx1 = std::max(bx1, i);
+        by0 = std::min(by0, j);
+        by1 = std::max(by1, j);
+        room = std::max<std::int64_t>(room, d2[p] == infinite ? 0 : d2[p]);
+    }
+    bool done = false;
+    int rho = std::max(8, 2 * static_cast<int>(std::sqrt(static_cast<double>(room))) + 2);
+    for (; !done; rho *= 2) {
+        const int wx0 = std::max(0, bx0 - rho), wx1 = std::min(w - 1, bx1 + rho);
+        const int wy0 = std::max(0, by0 - rho), wy1 = std::min(h - 1, by1 + rho);
+        const int ww = wx1 - wx0 + 1, wh = wy1 - wy0 + 1;
+        const std::size_t wn = static_cast<std::size_t>(ww) * static_cast<std::size_t>(wh);
+        window_sites_.assign(wn, 0);
+        for (int p : sites)
+            window_sites_[static_cast<std::size_t>(p / w - wy0) * ww + (p % w - wx0)] = 1;
+        window_d2_.resize(wn);
+        window_site_.resize(wn);
+        const std::uint8_t* mask = window_sites_.data();
+        separable_edt(
+            ww, wh, [&](int i, int j) { return mask[static_cast<std::size_t>(j) * ww + i] != 0; },
+            window_d2_.data(), window_site_.data(), window_scratch_);
+        WindowMeasure measure{window_d2_.data(), window_site_.data(), w, ww, wx0, wy0};
+        auto measurable = [&](int i, int j) {
+            return i >= wx0 && i <= wx1 && j >= wy0 && j <= wy1;
+        };
+        done = wavefront<false>(sites, d2, site_data, out, measure, measurable);
+    }
+
+    for (const Improvement& im : improved_) {
+        d2[im.pixel] = im.d2;
+        if (site_data) site_data[im.pixel] = im.site;
+        if (out) out->push_back(im.pixel);
+    }
+}
+
+}  // namespace acanthus::detail

@@ -1,0 +1,333 @@
+#include "growth/empty_circle_finder.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+#include "growth/tile_masks.hpp"
+
+namespace acanthus::detail {
+
+using namespace tile_masks;
+
+EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame& grid,
+                                     double min_radius)
+    : field_(field), grid_(grid), min_radius_(min_radius), inv_width_(1.0 / grid.width) {
+    const std::size_t n = static_cast<std::size_t>(grid.width) * grid.height;
+    state_.assign(n, none);
+    state_d2_.assign(n, 0);
+    discarded_.assign(n, 0);
+    tiles_w_ = ((grid.width - 1) >> kTileShift) + 1;
+    tiles_h_ = ((grid.height - 1) >> kTileShift) + 1;
+    tiles_.reset(static_cast<std::size_t>(tiles_w_) * tiles_h_);
+    dirty_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    candidates_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    changed_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    const int w = grid.width;
+    offsets_[0] = 1;
+    offsets_[1] = w;
+    offsets_[2] = w + 1;
+    offsets_[3] = 1 - w;
+    // radius_ok() is monotone in d2: find its threshold once, for a cheap integer test.
+    if (std::isnan(min_radius_)) min_radius_ = 0;
+    const double want = std::max(0.0, min_radius_ / grid.pixel) + kMargin;
+    if (want > 1e5) {  // beyond any squared distance of a grid
+        min_d2_ = std::numeric_limits<std::int64_t>::max();
+    } else {
+        std::int64_t t = std::max<std::int64_t>(1, static_cast<std::int64_t>(want * want) - 2);
+        while (!radius_ok(t)) ++t;
+        while (t > 1 && radius_ok(t - 1)) --t;
+        min_d2_ = t;
+    }
+}
+
+Circle EmptyCircleFinder::circle_of(int pixel) const {
+    const double d = std::sqrt(static_cast<double>(field_.squared_distance(pixel)));
+    const int j = row_of(pixel);
+    return {grid_.center_of(pixel - j * grid_.width, j), (d - kMargin) * grid_.pixel};
+}
+
+bool EmptyCircleFinder::radius_ok(std::int64_t d2) const {
+    const double r = (std::sqrt(static_cast<double>(d2)) - kMargin) * grid_.pixel;
+    return r > 0 && r >= min_radius_;
+}
+
+bool EmptyCircleFinder::bends(std::int64_t d, std::int64_t a, std::int64_t b) {
+    const double bend = 2 * std::sqrt(static_cast<double>(d)) - std::sqrt(static_cast<double>(a)) -
+                        std::sqrt(static_cast<double>(b));
+    return bend >= kBend;
+}
+
+bool EmptyCircleFinder::crest_at(int pixel, int i, int j, std::int64_t d) const {
+    const int w = grid_.width, h = grid_.height;
+    if (i > 0 && j > 0 && i < w - 1 && j < h - 1) return crest_inside(pixel, d);
+    // At the edge of the grid only the lines with both neighbours inside are tested.
+    static constexpr int kLine[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+    for (const auto& e : kLine) {
+        const int ai = i + e[0], aj = j + e[1], bi = i - e[0], bj = j - e[1];
+        if (ai < 0 || aj < 0 || ai >= w || aj >= h || bi < 0 || bj < 0 || bi >= w || bj >= h)
+            continue;
+        if (crest(d, field_.squared_distance(aj * w + ai), field_.squared_distance(bj * w + bi)))
+            return true;
+    }
+    return false;
+}
+
+bool EmptyCircleFinder::on_medial_axis(int pixel) const {
+    const std::int64_t d = field_.squared_distance(pixel);
+    if (d == 0) return false;  // an obstacle
+    const int j = row_of(pixel);
+    return crest_at(pixel, pixel - j * grid_.width, j, d);
+}
+
+bool EmptyCircleFinder::shape_eligible(int pixel) const {
+    const std::int64_t d2 = field_.squared_distance(pixel);
+    if (d2 < min_d2_ || d2 == DistanceField::infinite) return false;
+    return on_medial_axis(pixel) && field_.nearest_kind(pixel) == ObstacleKind::element;
+}
+
+int EmptyCircleFinder::tile_of(int pixel) const {
+    const int j = row_of(pixel), i = pixel - j * grid_.width;
+    return (j >> kTileShift) * tiles_w_ + (i >> kTileShift);
+}
+
+int EmptyCircleFinder::bit_of(int pixel) const {
+    constexpr int kMask = (1 << kTileShift) - 1;
+    const int j = row_of(pixel), i = pixel - j * grid_.width;
+    return ((j & kMask) << kTileShift) | (i & kMask);
+}
+
+void EmptyCircleFinder::mark_dirty(int tile) {
+    if (dirty_[tile]) return;
+    dirty_[tile] = 1;
+    dirty_list_.push_back(tile);
+}
+
+void EmptyCircleFinder::rescan(int tile) {
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    const int i0 = ti << kTileShift, j0 = tj << kTileShift;
+    Key best = 0;
+    for (std::uint64_t bits = candidates_[tile]; bits; bits &= bits - 1) {
+        const int b = std::countr_zero(bits);
+        const int p = (j0 + (b >> kTileShift)) * grid_.width + i0 + (b & 7);
+        best = std::max(best, key_of(p, state_d2_[p]));
+    }
+    tiles_.set(static_cast<std::size_t>(tile), best);
+}
+
+template <bool kInside>
+void EmptyCircleFinder::consider(int pixel, int i, int j, int tile, int bit) {
+    const std::int32_t d2 = field_.squared_distances()[pixel];
+    const std::uint8_t old = state_[pixel];
+    if (d2 < min_d2_ && old == none) return;  // too small to matter, already none
+    // Same distance: a candidate stays one (neighbours only get lower), a blocked one stays
+    // blocked; a non-candidate may have become one.
+    if (old != none && state_d2_[pixel] == d2) return;
+    bool eligible = d2 >= min_d2_ && d2 != DistanceField::infinite;
+    if constexpr (kInside)
+        eligible = eligible && crest_inside(pixel, d2);
+    else
+        eligible = eligible && crest_at(pixel, i, j, d2);
+    eligible =
+        eligible && field_.nearest_kind(pixel) == ObstacleKind::element && discarded_[pixel] != d2;
+    state_[pixel] = eligible ? candidate : none;
+    state_d2_[pixel] = d2;
+    const std::uint64_t mask = std::uint64_t{1} << bit;
+    candidates_[tile] = eligible ? candidates_[tile] | mask : candidates_[tile] & ~mask;
+}
+
+template <bool kInside>
+void EmptyCircleFinder::refresh_bits(int tile, std::uint64_t bits) {
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    const int i0 = ti << kTileShift, j0 = tj << kTileShift;
+    const int w = grid_.width, h = grid_.height;
+    for (; bits; bits &= bits - 1) {
+        const int b = std::countr_zero(bits);
+        const int i = i0 + (b & 7), j = j0 + (b >> kTileShift);
+        if (!kInside && (i >= w || j >= h)) continue;  // beyond the grid in an edge tile
+        consider<kInside>(j * w + i, i, j, tile, b);
+    }
+}
+
+std::uint64_t EmptyCircleFinder::maybe_crests(int tile, std::uint64_t bits) const {
+    static_assert(kTileShift == 3, "rows of 8 pixels");
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    const int w = grid_.width;
+    const std::int32_t* d2 = field_.squared_distances();
+    const std::int32_t min_d2 =
+        static_cast<std::int32_t>(std::min<std::int64_t>(min_d2_, DistanceField::infinite));
+    std::uint64_t out = 0;
+    for (int r = 0; r < 8; ++r) {
+        if (((bits >> (8 * r)) & 0xff) == 0) continue;
+        const int p0 = ((tj << kTileShift) + r) * w + (ti << kTileShift);
+        const std::int32_t* mid = d2 + p0;
+        const std::uint32_t row = crest_lanes(mid - w, mid, mid + w, min_d2) |
+                                  (crest_lanes(mid - w + 4, mid + 4, mid + w + 4, min_d2) << 4) |
+                                  nonzero_bytes(state_.data() + p0);
+        out |= static_cast<std::uint64_t>(row) << (8 * r);
+    }
+    return out & bits;
+}
+
+void EmptyCircleFinder::refresh(int tile, std::uint64_t bits) {
+    // A tile away from the grid's edge has every pixel's 8 neighbours inside the grid. There,
+    // a pixel in state none that has no line with both neighbours at most as far as itself
+    // (or is too near an obstacle) stays none: only the others are re-decided.
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    if (ti > 0 && tj > 0 && ti < tiles_w_ - 1 && tj < tiles_h_ - 1)
+        refresh_bits<true>(tile, maybe_crests(tile, bits));
+    else
+        refresh_bits<false>(tile, bits);
+    rescan(tile);
+}
+
+void EmptyCircleFinder::rebuild() {
+    blocked_.clear();
+    std::fill(state_.begin(), state_.end(), none);
+    std::fill(candidates_.begin(), candidates_.end(), 0);
+    for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t, ~std::uint64_t{0});
+}
+
+std::uint64_t EmptyCircleFinder::near_changes(int tile) const {
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    auto at = [&](int di, int dj) -> std::uint64_t {
+        const int a = ti + di, b = tj + dj;
+        if (a < 0 || b < 0 || a >= tiles_w_ || b >= tiles_h_) return 0;
+        return changed_[static_cast<std::size_t>(b * tiles_w_ + a)];
+    };
+    const std::uint64_t m = changed_[tile];
+    // Within the tile's rows: left and right neighbours, then up and down.
+    std::uint64_t near = m | ((m << 1) & ~kColumn0) | ((m >> 1) & ~kColumn7) |
+                         ((at(-1, 0) & kColumn7) >> 7) | ((at(1, 0) & kColumn0) << 7);
+    near |= (near << 8) | (near >> 8);
+    // The last row of the tile above and the first row of the tile below, with the corners.
+    near |= dilate_row(at(0, -1) >> 56, (at(-1, -1) >> 63) & 1, (at(1, -1) >> 56) & 1);
+    near |= dilate_row(at(0, 1) & kRow0, (at(-1, 1) >> 7) & 1, at(1, 1) & 1) << 56;
+    return near;
+}
+
+void EmptyCircleFinder::update(const std::vector<int>& changed) {
+    constexpr int kMask = (1 << kTileShift) - 1;
+    // Changed pixels come mostly in runs along rows: marked a tile row segment at a time.
+    const std::size_t n = changed.size();
+    const int* c = changed.data();
+    for (std::size_t k = 0; k < n;) {
+        const int p = c[k];
+        const int j = row_of(p), i = p - j * grid_.width;
+        const std::size_t room = static_cast<std::size_t>(std::min((i | kMask) + 1, grid_.width) -
+                                                          i);  // pixels left in this tile row
+        std::size_t len = 1;
+        while (len < room && k + len < n && c[k + len] == p + static_cast<int>(len)) ++len;
+        const int t = (j >> kTileShift) * tiles_w_ + (i >> kTileShift);
+        if (changed_[t] == 0) changed_tiles_.push_back(t);
+        changed_[t] |= ((std::uint64_t{1} << len) - 1)
+                       << (((j & kMask) << kTileShift) | (i & kMask));
+        k += len;
+    }
+    // A changed pixel can change its own state and its 8 neighbours': the tiles holding them.
+    for (int t : changed_tiles_) {
+        const std::uint64_t m = changed_[t];
+        const int ti = t % tiles_w_, tj = t / tiles_w_;
+        const bool left = ti > 0, right = ti<tiles_w_ - 1, up = tj> 0, down = tj < tiles_h_ - 1;
+        mark_dirty(t);
+        if (left && (m & kColumn0)) mark_dirty(t - 1);
+        if (right && (m & kColumn7)) mark_dirty(t + 1);
+        if (up && (m & kRow0)) mark_dirty(t - tiles_w_);
+        if (down && (m & kRow7)) mark_dirty(t + tiles_w_);
+        if (left && up && (m & 1)) mark_dirty(t - tiles_w_ - 1);
+        if (right && up && (m & 0x80)) mark_dirty(t - tiles_w_ + 1);
+        if (left && down && (m & (std::uint64_t{1} << 56))) mark_dirty(t + tiles_w_ - 1);
+        if (right && down && (m >> 63)) mark_dirty(t + tiles_w_ + 1);
+    }
+    for (int t : dirty_list_) {
+        dirty_[t] = 0;
+        refresh(t, near_changes(t));
+    }
+    dirty_list_.clear();
+    for (int t : changed_tiles_) changed_[t] = 0;
+    changed_tiles_.clear();
+}
+
+void EmptyCircleFinder::release(const std::vector<int>& removed_ids) {
+    for (int id : removed_ids) {
+        if (id < 0 || static_cast<std::size_t>(id) >= blocked_.size()) continue;
+        for (const auto& [p, d2] : blocked_[id]) {
+            if (state_[p] != blocked || state_d2_[p] != d2) continue;  // changed since
+            state_[p] = candidate;
+            const int t = tile_of(p);
+            candidates_[t] |= std::uint64_t{1} << bit_of(p);
+            tiles_.set(static_cast<std::size_t>(t),
+                       std::max(tiles_.get(static_cast<std::size_t>(t)), key_of(p, d2)));
+        }
+        blocked_[id].clear();
+        blocked_[id].shrink_to_fit();
+    }
+}
+
+void EmptyCircleFinder::release_all() {
+    std::vector<int> ids(blocked_.size());
+    for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = static_cast<int>(k);
+    release(ids);
+}
+
+std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
+    for (;;) {
+        const Key k = tiles_.max();
+        if (k == 0) return std::nullopt;
+        const int p = pixel_of(k);
+        const std::int64_t d2 = d2_of(k);
+        const Circle c = circle_of(p);
+        const int id = exclude.find_inside(c);
+        if (id < 0) return EmptyCircle{p, d2, c};
+        state_[p] = blocked;
+        candidates_[tile_of(p)] &= ~(std::uint64_t{1} << bit_of(p));
+        if (static_cast<std::size_t>(id) >= blocked_.size()) blocked_.resize(id + 1);
+        blocked_[id].emplace_back(p, static_cast<std::int32_t>(d2));
+        rescan(tile_of(p));
+    }
+}
+
+void EmptyCircleFinder::discard(const EmptyCircle& c) {
+    discarded_[c.pixel] = static_cast<std::int32_t>(c.d2);
+    if (state_[c.pixel] == candidate) {
+        state_[c.pixel] = none;
+        state_d2_[c.pixel] = static_cast<std::int32_t>(c.d2);
+        candidates_[tile_of(c.pixel)] &= ~(std::uint64_t{1} << bit_of(c.pixel));
+        rescan(tile_of(c.pixel));
+    }
+}
+
+std::optional<EmptyCircle> EmptyCircleFinder::find_by_scan(const ExcludeList& exclude) const {
+    const int n = grid_.width * grid_.height;
+    Key best = 0;
+    bool found = false;
+    for (int p = 0; p < n; ++p) {
+        const std::int64_t d2 = field_.squared_distance(p);
+        if (d2 == DistanceField::infinite || field_.occupancy(p) != ObstacleKind::none) continue;
+        const Key k = key_of(p, d2);
+        if (found && k < best) continue;
+        if (discarded_[p] == d2 || !shape_eligible(p) || exclude.any_inside(circle_of(p))) continue;
+        best = k;
+        found = true;
+    }
+    if (!found) return std::nullopt;
+    const int p = pixel_of(best);
+    return EmptyCircle{p, d2_of(best), circle_of(p)};
+}
+
+std::vector<int> EmptyCircleFinder::best_candidates(std::size_t limit) const {
+    std::vector<Key> keys;
+    const int n = grid_.width * grid_.height;
+    for (int p = 0; p < n; ++p)
+        if (shape_eligible(p)) keys.push_back(key_of(p, field_.squared_distance(p)));
+    const std::size_t m = std::min(limit, keys.size());
+    std::partial_sort(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(m), keys.end(),
+                      [](Key a, Key b) { return a > b; });
+    std::vector<int> out;
+    out.reserve(m);
+    for (std::size_t k = 0; k < m; ++k) out.push_back(pixel_of(keys[k]));
+    return out;
+}
+
+}  // namespace acanthus::detail

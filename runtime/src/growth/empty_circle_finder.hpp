@@ -1,0 +1,152 @@
+// FindEmptyCircle of Wong et al. section 4.1 over the distance field.
+//
+// Candidate centres are the medial axis: free pixels on a crest of the distance field along one
+// of the four lines through the pixel (horizontal, vertical, two diagonals): neither neighbour on
+// the line is farther from the obstacles, and the distance bends there by at least kBend pixels
+// (2 d(p) - d(a) - d(b) >= kBend). The paper's Manhattan-distance MAT takes pixels at least as
+// large as their neighbours; city-block distances have plateaus along ridges, so that yields the
+// whole ridge. Exact Euclidean distances rise along a ridge, so the crest is tested across it,
+// and the bend threshold drops the faint crests between neighbouring pixels of one rasterized
+// shape (a theta-medial axis).
+//
+// The candidate circle of a pixel is centred on the pixel centre with radius (sqrt(d2) - kMargin)
+// pixels: every rasterized shape lies in the closed squares of its obstacle pixels, which reach
+// at most sqrt(1/2) pixel beyond their centres, and curves are flattened within
+// PixelCover::kFlatten, so the circle errs on the small side and is empty. A candidate is eligible
+// when its nearest obstacle is an element (a circle stopped by the boundary is discarded; ties go
+// to the boundary), its radius is at least the minimum, and it contains no exclude-list point.
+// The largest eligible candidate wins; ties go to the smaller pixel index.
+//
+// find() keeps the eligible candidates as per-pixel states with the best of each 8 x 8 tile in a
+// MaxTree. Distances only decrease as obstacles are added, so a pixel leaves the medial axis only
+// when its own distance changes (lower neighbours never spoil a crest) and joins it only when it
+// or a neighbour changes: update() re-decides exactly the changed pixels and their neighbours
+// (64-bit masks per tile: changed pixels, dilated by one pixel across tile edges) and rescans
+// the candidate bits of the tiles holding them.
+// Candidates blocked by an exclude point wait under that point's id until it is removed.
+// find_by_scan() is the reference: a scan of the whole grid with the same rules. discard()
+// records (pixel, d2) pairs that both searches skip, so the two stay identical.
+#pragma once
+
+#include <acanthus/grid_frame.hpp>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "growth/distance_field.hpp"
+#include "growth/exclude_list.hpp"
+#include "growth/max_tree.hpp"
+
+namespace acanthus::detail {
+
+struct EmptyCircle {
+    int pixel = -1;
+    std::int64_t d2 = 0;  // squared distance of the centre pixel to its nearest obstacle pixel
+    Circle circle;        // conservative circle (see EmptyCircleFinder)
+};
+
+class EmptyCircleFinder {
+  public:
+    static constexpr double kMargin = 0.75;  // pixels, >= sqrt(1/2) + PixelCover::kFlatten
+    static constexpr double kBend = 0.5;     // pixels: smallest bend of a medial-axis crest
+
+    // `min_radius` in user units.
+    EmptyCircleFinder(const DistanceField& field, const GridFrame& grid, double min_radius);
+
+    Circle circle_of(int pixel) const;
+    bool on_medial_axis(int pixel) const;
+    // On the medial axis, nearest obstacle an element, radius at least the minimum.
+    bool shape_eligible(int pixel) const;
+
+    // Incremental search. rebuild() scans the whole grid once; update() takes the pixels whose
+    // distance changed; release() returns candidates blocked by removed exclude points.
+    void rebuild();
+    void update(const std::vector<int>& changed);
+    void release(const std::vector<int>& removed_ids);
+    void release_all();
+    std::optional<EmptyCircle> find(const ExcludeList& exclude);
+    // Drops a candidate found by find() or find_by_scan() (the engine found the boundary nearer
+    // than every element when measured exactly). It stays dropped, in both searches, until its
+    // distance changes.
+    void discard(const EmptyCircle& c);
+
+    // Reference search: a full scan.
+    std::optional<EmptyCircle> find_by_scan(const ExcludeList& exclude) const;
+
+    // The `limit` best shape-eligible candidates in choice order (for debug frames), by scan.
+    std::vector<int> best_candidates(std::size_t limit) const;
+
+  private:
+    using Key = std::uint64_t;  // d2 in the high word, ~pixel in the low word: max is best
+    static Key key_of(int pixel, std::int64_t d2) {
+        return (static_cast<Key>(d2) << 32) | (0xffffffffu - static_cast<std::uint32_t>(pixel));
+    }
+    static int pixel_of(Key k) {
+        return static_cast<int>(0xffffffffu - static_cast<std::uint32_t>(k));
+    }
+    static std::int64_t d2_of(Key k) { return static_cast<std::int64_t>(k >> 32); }
+    enum State : std::uint8_t { none = 0, candidate = 1, blocked = 2 };
+    static constexpr int kTileShift = 3;  // 8 x 8 pixel tiles
+
+    bool radius_ok(std::int64_t d2) const;
+    // d2 of a pixel between neighbours of d2 a and b on a line: a crest that bends enough.
+    static bool crest(std::int64_t d, std::int64_t a, std::int64_t b) {
+        return a <= d && b <= d && bends(d, a, b);
+    }
+    static bool bends(std::int64_t d, std::int64_t a, std::int64_t b);
+    // on_medial_axis() of pixel (i, j) of squared distance d > 0.
+    bool crest_at(int pixel, int i, int j, std::int64_t d) const;
+    // The same for a pixel with all 8 neighbours inside the grid.
+    bool crest_inside(int pixel, std::int64_t d) const {
+        const std::int32_t* d2 = field_.squared_distances() + pixel;
+        for (const int off : offsets_)
+            if (crest(d, d2[off], d2[-off])) return true;
+        return false;
+    }
+    // Re-decides the state of pixel (i, j); keeps the tile's candidate bit in step. kInside:
+    // the tile does not touch the edge of the grid.
+    template <bool kInside>
+    void consider(int pixel, int i, int j, int tile, int bit);
+    template <bool kInside>
+    void refresh_bits(int tile, std::uint64_t bits);
+    // The `bits` of an inner tile's pixels that could be candidates or are not in state none.
+    std::uint64_t maybe_crests(int tile, std::uint64_t bits) const;
+    int tile_of(int pixel) const;
+    int bit_of(int pixel) const;
+    void mark_dirty(int tile);
+    // Bits of the pixels of a tile whose 3 x 3 neighbourhood holds a changed pixel.
+    std::uint64_t near_changes(int tile) const;
+    void rescan(int tile);                       // tile maximum from the candidate bits
+    void refresh(int tile, std::uint64_t bits);  // re-decides those pixels, then rescans
+    // Row of a pixel index without a division (a multiply and a correction).
+    int row_of(int pixel) const {
+        int j = static_cast<int>(pixel * inv_width_);
+        if (j * grid_.width > pixel)
+            --j;
+        else if ((j + 1) * grid_.width <= pixel)
+            ++j;
+        return j;
+    }
+
+    const DistanceField& field_;
+    GridFrame grid_;
+    double min_radius_;
+    double inv_width_;
+    std::int64_t min_d2_ = 1;  // smallest d2 whose radius is at least min_radius_
+    int tiles_w_ = 0, tiles_h_ = 0;
+    int offsets_[4] = {};  // pixel index steps along the four lines of the crest test
+
+    std::vector<std::uint8_t> state_;      // State per pixel, valid for state_d2_
+    std::vector<std::int32_t> state_d2_;   // d2 at which state_ was decided
+    std::vector<std::int32_t> discarded_;  // d2 at which the pixel was discarded, 0 none
+    std::vector<std::vector<std::pair<int, std::int32_t>>> blocked_;  // by exclude id: (pixel, d2)
+    MaxTree tiles_;
+    // Per 8 x 8 tile, one bit per pixel (bit 8 * row + column within the tile).
+    std::vector<std::uint64_t> candidates_;  // pixels in state candidate
+    std::vector<std::uint64_t> changed_;     // pixels changed since the last update()
+    std::vector<int> changed_tiles_;
+    std::vector<std::uint8_t> dirty_;
+    std::vector<int> dirty_list_;
+};
+
+}  // namespace acanthus::detail

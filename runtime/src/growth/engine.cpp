@@ -1,0 +1,384 @@
+// The main loop of Wong et al. section 4.1 (see docs/engine.md):
+//
+//   place seeds; render the boundary and the seeds; compute the distance field
+//   repeat
+//     C = FindEmptyCircle()                       (largest eligible medial-axis circle)
+//     try non-sterile elements within epsilon of C, nearest first, and their rules in file order
+//     first SUCCESS: commit children, render them, update the field, drop exclude points near C
+//     no SUCCESS: C's centre joins the exclude list
+//   until no circle (and %exhausted says STOP), or a limit is reached.
+#include <acanthus/error.hpp>
+#include <acanthus/growth.hpp>
+#include <acanthus/rule_call.hpp>
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "growth/distance_field.hpp"
+#include "growth/empty_circle_finder.hpp"
+#include "growth/engine_environment.hpp"
+#include "growth/exclude_list.hpp"
+#include "growth/ornament.hpp"
+#include "growth/raster_buffer.hpp"
+#include "pattern/running_body.hpp"
+
+namespace acanthus {
+
+// This file builds public types from private (detail) parts.
+using namespace detail;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Consecutive %exhausted CONTINUE rounds that place nothing before the engine gives up.
+constexpr int kMaxFruitlessRounds = 16;
+// Candidates reported in a debug frame.
+constexpr std::size_t kDebugCandidates = 400;
+constexpr long kProgressEvery = 1000;
+
+std::string format_number(double v) {
+    char buf[64];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+    return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
+}
+
+}  // namespace
+
+struct GrowthEngine::Impl {
+    Impl(const Pattern& p, const Region& r, GrowthOptions o)
+        : pattern(p),
+          region(r),
+          options(std::move(o)),
+          raster(region, options.resolution),
+          field(raster.grid().width, raster.grid().height),
+          epsilon(options.epsilon < 0 ? 2 * raster.grid().pixel : options.epsilon),
+          min_radius(options.min_radius < 0 ? raster.grid().pixel : options.min_radius),
+          finder(field, raster.grid(), min_radius),
+          ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
+          env(region, ornament, exclude, options.rng_seed) {
+        stats.rules.resize(pattern.rules.size());
+        for (std::size_t k = 0; k < pattern.rules.size(); ++k)
+            rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
+    }
+
+    std::vector<Point> default_seeds() const;
+    void place_seeds();
+    void grow();
+    std::optional<EmptyCircle> find();
+    std::optional<Circle> refine(const EmptyCircle& found) const;
+    std::optional<Circle> find_goal();
+    void iterate(const Circle& goal);
+    void commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
+    void sync_exclude_clears();
+    Flow call_exhausted();
+
+    const Pattern& pattern;
+    Region region;
+    GrowthOptions options;
+    RasterBuffer raster;
+    DistanceField field;
+    double epsilon;
+    double min_radius;
+    EmptyCircleFinder finder;
+    ExcludeList exclude;
+    Ornament ornament;
+    GrowthEnvironment env;
+    std::map<const ElementType*, std::vector<int>> rules_by_parent;
+    GrowthStats stats;
+
+    bool field_live = false;  // the field reflects the buffer (incremental engine)
+    bool field_stale = true;  // the buffer changed since the last compute() (reference engine)
+    long seen_clears = 0;
+    bool ran = false;
+    std::vector<int> fresh, changed;
+
+    long debug_iteration = 0;
+    std::function<void(const DebugFrame&)> debug_callback;
+    long frame_every = 0;
+    std::function<void(long, const std::vector<const Element*>&)> frame_callback;
+    std::function<void(long, long)> progress_callback;
+};
+
+void GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, Element* parent) {
+    fresh.clear();
+    for (auto& child : children) {
+        child->parent = parent;
+        child->depth = parent ? parent->depth + 1 : 0;
+        child->children = 0;
+        Element& e = ornament.add(std::move(child));
+        raster.add_element(e, fresh);
+    }
+    if (parent) parent->children += static_cast<int>(children.size());
+    if (field_live && !options.reference_engine) {
+        changed.clear();
+        field.add_sites(fresh, ObstacleKind::element, &changed);
+        finder.update(changed);
+    } else if (!fresh.empty()) {
+        field_stale = true;
+    }
+}
+
+// One seed per part of the region (an outer loop with its holes) at the centre of the part's
+// largest inscribed circle, largest circle first (ties by y, then x); parts too small for a
+// circle of the minimum radius get none, unless no part is large enough (then the largest).
+std::vector<Point> GrowthEngine::Impl::default_seeds() const {
+    const double tolerance = raster.grid().pixel / 4;
+    const std::vector<Region> parts = region.parts();
+    if (parts.size() <= 1) return {region.largest_inscribed_circle(tolerance).center};
+    std::vector<Circle> circles;
+    for (const Region& part : parts) {
+        const Circle c = part.largest_inscribed_circle(tolerance);
+        if (region.contains(c.center)) circles.push_back(c);
+    }
+    std::sort(circles.begin(), circles.end(), [](const Circle& a, const Circle& b) {
+        if (a.radius != b.radius) return a.radius > b.radius;
+        if (a.center.y != b.center.y) return a.center.y < b.center.y;
+        return a.center.x < b.center.x;
+    });
+    std::vector<Point> seeds;
+    for (const Circle& c : circles)
+        if (c.radius >= min_radius) seeds.push_back(c.center);
+    if (seeds.empty() && !circles.empty()) seeds.push_back(circles.front().center);
+    if (seeds.empty()) seeds.push_back(region.largest_inscribed_circle(tolerance).center);
+    return seeds;
+}
+
+void GrowthEngine::Impl::place_seeds() {
+    if (!pattern.seed) throw InputError(pattern.file + ": the pattern declares no seed type");
+    std::vector<Point> seeds = options.seeds;
+    if (seeds.empty()) seeds = default_seeds();
+    for (Point s : seeds)
+        if (!s.finite() || !region.contains(s))
+            throw InputError("seed " + format_number(s.x) + "," + format_number(s.y) +
+                             " is outside the region " + region.name());
+    for (Point s : seeds) {
+        std::unique_ptr<Element> e(pattern.seed->create());
+        if (!e || e->proxy_count() != 1 || e->proxy(0).kind() != ProxyKind::point)
+            throw InputError(pattern.file + ": the seed type must have exactly one point proxy");
+        static_cast<PointProxy&>(e->proxy(0)).set(s);
+        std::vector<std::unique_ptr<Element>> one;
+        one.push_back(std::move(e));
+        commit(std::move(one), nullptr);
+    }
+    field.compute(raster.occupancy());
+    field_stale = false;
+    field_live = true;
+    if (!options.reference_engine) finder.rebuild();
+}
+
+void GrowthEngine::Impl::sync_exclude_clears() {
+    if (exclude.clear_count() == seen_clears) return;
+    seen_clears = exclude.clear_count();
+    if (!options.reference_engine) finder.release_all();
+}
+
+std::optional<EmptyCircle> GrowthEngine::Impl::find() {
+    sync_exclude_clears();
+    if (!options.reference_engine) return finder.find(exclude);
+    if (field_stale) {
+        field.compute(raster.occupancy());
+        field_stale = false;
+    }
+    return finder.find_by_scan(exclude);
+}
+
+// The chosen circle, grown to the exact distance from its centre to the nearest element (the
+// raster circle is a lower bound of it, within about a pixel). Nothing when, measured exactly,
+// the boundary is at least as near: the paper discards circles stopped by the boundary.
+std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) const {
+    Circle c = found.circle;
+    // The raster radius is within about 1.5 pixels below the exact one.
+    const double r = ornament.nearest(c.center, c.radius + 2 * raster.grid().pixel).second;
+    if (!std::isfinite(r)) return std::nullopt;
+    const double boundary_floor =
+        (std::sqrt(static_cast<double>(field.boundary_squared_distance(found.pixel))) -
+         EmptyCircleFinder::kMargin) *
+        raster.grid().pixel;
+    if (boundary_floor < r && region.distance_to_boundary(c.center) <= r) return std::nullopt;
+    c.radius = r;
+    return c;
+}
+
+std::optional<Circle> GrowthEngine::Impl::find_goal() {
+    for (;;) {
+        const std::optional<EmptyCircle> found = find();
+        if (!found) return std::nullopt;
+        if (const std::optional<Circle> goal = refine(*found)) return goal;
+        finder.discard(*found);
+    }
+}
+
+// %exhausted runs with the environment installed, like a rule body: it may clear the exclude
+// list or draw random numbers.
+Flow GrowthEngine::Impl::call_exhausted() {
+    if (!pattern.exhausted) return STOP;
+    try {
+        Flow flow = STOP;
+        {
+            Environment::Scope scope(&env);
+            const detail::RunningBody running(detail::body_label(
+                &pattern.exhausted, pattern.file, pattern.exhausted_line, "%exhausted"));
+            flow = pattern.exhausted() == CONTINUE ? CONTINUE : STOP;
+        }
+        sync_exclude_clears();
+        return flow;
+    } catch (const RuleFailure&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw RuleFailure(pattern.file, pattern.exhausted_line, "%exhausted",
+                          std::string("exception thrown: ") + e.what());
+    } catch (...) {
+        throw RuleFailure(pattern.file, pattern.exhausted_line, "%exhausted",
+                          "unknown exception thrown");
+    }
+}
+
+void GrowthEngine::Impl::iterate(const Circle& goal) {
+    env.set_goal(goal);
+    std::vector<Element*> parents;
+    for (const auto& [e, d] : ornament.within(goal.center, goal.radius + epsilon))
+        if (!e->sterile) parents.push_back(e);
+
+    const bool debugging = debug_callback && stats.iterations == debug_iteration;
+    DebugFrame frame;
+    if (debugging) {
+        frame.iteration = stats.iterations;
+        frame.grid = raster.grid();
+        frame.occupancy = raster.occupancy();
+        for (int p : finder.best_candidates(kDebugCandidates)) {
+            const Circle c = finder.circle_of(p);
+            (exclude.any_inside(c) ? frame.excluded : frame.eligible).push_back(c);
+        }
+        frame.chosen = goal;
+        frame.candidates.assign(parents.begin(), parents.end());
+        frame.placed = ornament.view();
+    }
+
+    const std::size_t before = ornament.size();
+    bool success = false;
+    for (Element* parent : parents) {
+        const auto rules = rules_by_parent.find(&parent->type());
+        if (rules == rules_by_parent.end()) continue;
+        for (int r : rules->second) {
+            if (parent->sterile) break;  // a failed rule may have made it sterile
+            const RuleInfo& rule = pattern.rules[static_cast<std::size_t>(r)];
+            Result result = FAILURE;
+            std::vector<std::unique_ptr<Element>> children;
+            {
+                Environment::Scope scope(&env);
+                RuleCall call(rule, *parent);
+                result = call.run();
+                if (result == SUCCESS) children = call.take_children();
+            }
+            sync_exclude_clears();
+            if (result == SUCCESS) {
+                ++stats.rules[static_cast<std::size_t>(r)].successes;
+                commit(std::move(children), parent);
+                success = true;
+                break;
+            }
+            ++stats.rules[static_cast<std::size_t>(r)].failures;
+        }
+        if (success) break;
+    }
+
+    if (success) {
+        std::vector<int> removed;
+        exclude.remove_within(goal.center, epsilon, &removed);
+        if (!options.reference_engine) finder.release(removed);
+    } else {
+        exclude.add(goal.center);
+    }
+
+    if (debugging) {
+        const auto all = ornament.view();
+        frame.added.assign(all.begin() + static_cast<std::ptrdiff_t>(before), all.end());
+        debug_callback(frame);
+    }
+}
+
+void GrowthEngine::Impl::grow() {
+    const auto start = Clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    int fruitless_rounds = 0;
+    long size_at_continue = -1;
+    for (;;) {
+        if (static_cast<long>(ornament.size()) >= options.max_elements) {
+            stats.stop_reason = "max-elements";
+            break;
+        }
+        if (stats.iterations >= options.max_iterations) {
+            stats.stop_reason = "max-iterations";
+            break;
+        }
+        if (options.time_limit > 0 && elapsed() >= options.time_limit) {
+            stats.stop_reason = "time-limit";
+            break;
+        }
+        std::optional<Circle> goal = find_goal();
+        if (!goal) {
+            stats.stop_reason = "exhausted";
+            if (call_exhausted() != CONTINUE) break;
+            // A round between two CONTINUEs that placed nothing: the next one can only differ
+            // through the pattern's own state; give up after a few.
+            const long size = static_cast<long>(ornament.size());
+            fruitless_rounds = size == size_at_continue ? fruitless_rounds + 1 : 0;
+            size_at_continue = size;
+            if (fruitless_rounds >= kMaxFruitlessRounds) break;
+            exclude.clear();
+            // With an empty exclude list and no circle, nothing can ever make one.
+            goal = find_goal();
+            if (!goal) break;
+        }
+        ++stats.iterations;
+        iterate(*goal);
+        if (frame_callback && frame_every > 0 && stats.iterations % frame_every == 0)
+            frame_callback(stats.iterations, ornament.view());
+        if (progress_callback && stats.iterations % kProgressEvery == 0)
+            progress_callback(stats.iterations, static_cast<long>(ornament.size()));
+    }
+    stats.exclude_points = static_cast<long>(exclude.size());
+    stats.seconds = elapsed();
+    if (progress_callback) progress_callback(stats.iterations, static_cast<long>(ornament.size()));
+}
+
+GrowthEngine::GrowthEngine(const Pattern& pattern, const Region& region, GrowthOptions options)
+    : impl_(std::make_unique<Impl>(pattern, region, std::move(options))) {}
+
+GrowthEngine::~GrowthEngine() = default;
+
+void GrowthEngine::run() {
+    if (impl_->ran) throw std::logic_error("GrowthEngine::run() called twice");
+    impl_->ran = true;
+    const auto start = Clock::now();
+    impl_->place_seeds();
+    impl_->grow();
+    impl_->stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void GrowthEngine::on_debug_frame(long debug_iteration,
+                                  std::function<void(const DebugFrame&)> callback) {
+    impl_->debug_iteration = debug_iteration;
+    impl_->debug_callback = std::move(callback);
+}
+
+void GrowthEngine::on_frame(
+    long every, std::function<void(long iteration, const std::vector<const Element*>&)> callback) {
+    impl_->frame_every = every;
+    impl_->frame_callback = std::move(callback);
+}
+
+void GrowthEngine::on_progress(std::function<void(long iteration, long elements)> callback) {
+    impl_->progress_callback = std::move(callback);
+}
+
+std::vector<const Element*> GrowthEngine::elements() const { return impl_->ornament.view(); }
+const GrowthStats& GrowthEngine::stats() const { return impl_->stats; }
+const GridFrame& GrowthEngine::grid() const { return impl_->raster.grid(); }
+
+}  // namespace acanthus

@@ -1,0 +1,93 @@
+#include "growth/ornament.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "proxy/overlap.hpp"
+
+namespace acanthus::detail {
+
+Ornament::Ornament(const Region& region, double tolerance)
+    : region_(region), tolerance_(tolerance) {}
+
+Element& Ornament::add(std::unique_ptr<Element> e) {
+    const int id = static_cast<int>(elements_.size());
+    e->id = id;
+    for (std::size_t k = 0; k < e->proxy_count(); ++k)
+        index_.insert(id, static_cast<int>(k), e->proxy(k).bounds());
+    elements_.push_back(std::move(e));
+    return *elements_.back();
+}
+
+std::vector<const Element*> Ornament::view() const {
+    std::vector<const Element*> out;
+    out.reserve(elements_.size());
+    for (const auto& e : elements_) out.push_back(e.get());
+    return out;
+}
+
+std::pair<Element*, double> Ornament::nearest(Point p, double hint) const {
+    if (elements_.empty() || !p.finite()) return {nullptr, std::numeric_limits<double>::infinity()};
+    // Any proxy nearer than the best one found within r has bounds within r too, so the first
+    // radius that holds a proxy at most r away decides. (The index's k-nearest query costs far
+    // more per call on large trees than these box queries.)
+    const Rect b = region_.bounds();
+    const double size = std::max(b.width(), b.height());
+    const double reach =
+        size + acanthus::distance(p, b.center()) + 1;  // beyond this, every bound is in
+    double r = hint > 0 ? hint : size / 256;
+    for (;;) {
+        const auto hits = within(p, r);
+        if (!hits.empty()) return hits.front();
+        if (r > reach) break;
+        r *= 4;
+    }
+    // Elements far outside the region: the general search.
+    const auto hit = index_.nearest_entry(p, [&](detail::SpatialIndex::Entry en) {
+        return distance_to(at(en.element).proxy(static_cast<std::size_t>(en.proxy)), p);
+    });
+    if (!hit) return {nullptr, std::numeric_limits<double>::infinity()};
+    return {&at(hit->entry.element), hit->distance};
+}
+
+std::vector<std::pair<Element*, double>> Ornament::within(Point p, double radius) const {
+    std::vector<std::pair<Element*, double>> out;
+    // Entries come sorted by (element, proxy): one distance per element, over its near proxies
+    // (a proxy whose bounds are farther than `radius` cannot be nearer than that).
+    for (const auto& en : index_.within(p, radius)) {
+        const double d = distance_to(at(en.element).proxy(static_cast<std::size_t>(en.proxy)), p);
+        if (!out.empty() && out.back().first->id == en.element) {
+            out.back().second = std::min(out.back().second, d);
+        } else {
+            out.emplace_back(&at(en.element), d);
+        }
+    }
+    std::erase_if(out, [&](const auto& x) { return !(x.second <= radius); });
+    std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+        return a.second != b.second ? a.second < b.second : a.first->id < b.first->id;
+    });
+    return out;
+}
+
+bool Ornament::intersects(const Proxy& p) const {
+    if (!p.is_set() || !p.finite())
+        throw std::invalid_argument(std::string("intersection(): a ") +
+                                    std::string(to_string(p.kind())) +
+                                    " proxy that is not set or not finite");
+    if (leaves_region(p, region_, tolerance_)) return true;
+    for (const auto& en : index_.query(p.bounds())) {
+        if (overlaps(p, at(en.element).proxy(static_cast<std::size_t>(en.proxy)), tolerance_))
+            return true;
+    }
+    return false;
+}
+
+bool Ornament::intersects(const Element& e) const {
+    for (std::size_t k = 0; k < e.proxy_count(); ++k)
+        if (intersects(e.proxy(k))) return true;
+    return false;
+}
+
+}  // namespace acanthus::detail

@@ -1,0 +1,48 @@
+// The render buffer of Wong et al. section 4.1: an occupancy grid over the region's bounds
+// (plus a one-pixel frame, so that the region's edge always has boundary pixels beyond it).
+// Pixels whose centre is outside R, or whose square the boundary passes through, are boundary
+// obstacles; placed elements' proxies are rasterized conservatively (PixelCover) as element
+// obstacles.
+#pragma once
+
+#include <acanthus/element.hpp>
+#include <acanthus/grid_frame.hpp>
+#include <acanthus/region.hpp>
+#include <cstdint>
+#include <vector>
+
+#include "growth/distance_field.hpp"
+#include "growth/pixel_cover.hpp"
+
+namespace acanthus::detail {
+
+class RasterBuffer {
+  public:
+    // Throws UsageError when `resolution` is out of range.
+    RasterBuffer(const Region& region, int resolution);
+
+    // `resolution` pixels on the longer side of `bounds`, plus a one-pixel frame all round.
+    static GridFrame grid_for(Rect bounds, int resolution);
+    static constexpr int kMinResolution = 8;
+    static constexpr int kMaxResolution = 16384;
+
+    const GridFrame& grid() const { return grid_; }
+    const std::vector<std::uint8_t>& occupancy() const { return occ_; }
+    const PixelCover& cover() const { return cover_; }
+    int pixel_of(Point p) const;  // index of the pixel containing p, or -1 outside the grid
+
+    // Marks the pixels the proxies of `e` touch as element obstacles and appends those that
+    // were free to `fresh`.
+    void add_element(const Element& e, std::vector<int>& fresh);
+    void add_proxy(const Proxy& p, ObstacleKind kind, std::vector<int>& fresh);
+
+  private:
+    void occupy(const std::vector<int>& pixels, ObstacleKind kind, std::vector<int>& fresh);
+
+    GridFrame grid_;
+    PixelCover cover_;
+    std::vector<std::uint8_t> occ_;
+    std::vector<int> scratch_;
+};
+
+}  // namespace acanthus::detail

@@ -1,0 +1,207 @@
+// render_to_file: the grown ornament on one page, through the same Cairo drawing for every format.
+//
+// Styles: "outline" and "filled" call a type's %draw when it has one (the author's drawing wins),
+// else draw the proxies in that style. "order" ignores %draw and colours every element by its
+// placement order, oldest red to newest purple, as Figure 14 of the paper does: it is a diagnostic
+// view of the growth, and a %draw would hide exactly what it shows.
+// Seeds are not drawn (they are markers, not ornament) unless the seed type has a %draw.
+// RenderOptions::stroke (a built-in skeletal stroke name or an .svg stroke file) applies to every
+// curve of the pattern: %draw bodies are set aside, area proxies are drawn in the chosen style,
+// and curve proxies that join end to start in placement order (a spiral's segments, a vine's
+// pieces) are warped along as one skeleton, as wide as a twelfth of its length (between one and
+// eight outline widths), so larger curves get bolder strokes (Figure 17).
+#include <cairo.h>
+
+#include <acanthus/error.hpp>
+#include <acanthus/render.hpp>
+#include <acanthus/skeletal_stroke.hpp>
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <optional>
+
+#include "draw/default_style.hpp"
+#include "output/atomic_file.hpp"
+#include "output/document.hpp"
+#include "output/page_layout.hpp"
+#include "pattern/running_body.hpp"
+
+namespace acanthus {
+
+using detail::RenderStyle;
+
+OutputFormat format_for_path(const std::string& path) {
+    if (path == "-") return OutputFormat::svg;
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".svg") return OutputFormat::svg;
+    if (ext == ".pdf") return OutputFormat::pdf;
+    if (ext == ".ps") return OutputFormat::ps;
+    if (ext == ".eps") return OutputFormat::eps;
+    if (ext == ".png") return OutputFormat::png;
+    throw UsageError("cannot tell the output format of '" + path +
+                     "': use a .svg, .pdf, .ps, .eps or .png file name, or - for SVG on stdout");
+}
+
+namespace {
+
+constexpr Color region_color{0.6, 0.6, 0.6, 1};
+constexpr double skeletal_stroke_widths = 4;  // skeletal stroke width in outline widths
+
+std::optional<SkeletalStroke> resolve_stroke(const std::string& name) {
+    if (name.empty()) return std::nullopt;
+    std::string ext = std::filesystem::path(name).extension().string();
+    if (ext == ".svg" || ext == ".SVG") return SkeletalStroke::from_svg_file(name);
+    return SkeletalStroke::builtin(name);
+}
+
+void draw_region_outline(cairo_t* cr, const Region& region, const detail::PageLayout& page) {
+    // A quarter of a page unit of flattening error is invisible at any output size.
+    for (const auto& ring : region.rings(0.25 / page.scale)) {
+        if (ring.empty()) continue;
+        cairo_move_to(cr, ring[0].x, ring[0].y);
+        for (std::size_t i = 1; i < ring.size(); ++i) cairo_line_to(cr, ring[i].x, ring[i].y);
+        cairo_close_path(cr);
+    }
+    cairo_set_source_rgba(cr, region_color.r, region_color.g, region_color.b, region_color.a);
+    cairo_set_line_width(cr, 0.75 * page.line_width);
+    cairo_stroke(cr);
+}
+
+RuleFailure draw_failure(const Pattern& pattern, const ElementType& type, const std::string& why) {
+    return RuleFailure(pattern.file, type.line, "%draw " + type.name, why);
+}
+
+bool is_curve(const Proxy& p) {
+    return p.kind() == ProxyKind::arc || p.kind() == ProxyKind::linesegment ||
+           p.kind() == ProxyKind::bezier;
+}
+
+std::pair<Point, Point> curve_ends(const Proxy& p) {
+    switch (p.kind()) {
+        case ProxyKind::arc: {
+            const auto& a = static_cast<const ArcProxy&>(p);
+            return {a.start_point(), a.end_point()};
+        }
+        case ProxyKind::linesegment: {
+            const auto& l = static_cast<const LineSegmentProxy&>(p);
+            return {l.p0, l.p1};
+        }
+        default: {
+            const auto& b = static_cast<const BezierProxy&>(p);
+            return {b.c[0], b.c[3]};
+        }
+    }
+}
+
+double chain_length(const std::vector<const Proxy*>& chain) {
+    double length = 0;
+    for (const Proxy* p : chain) {
+        Rect b = p->bounds();
+        length += std::max(distance(curve_ends(*p).first, curve_ends(*p).second),
+                           0.5 * std::hypot(b.width(), b.height()));
+    }
+    return length;
+}
+
+// Curve proxies in placement order, joined into chains where one ends where the next starts.
+void draw_stroke_chains(Canvas& canvas, const std::vector<const Element*>& elements,
+                        const SkeletalStroke& stroke, double line_width, double join_tolerance) {
+    std::vector<std::vector<const Proxy*>> chains;
+    for (const Element* e : elements) {
+        for (std::size_t k = 0; k < e->proxy_count(); ++k) {
+            const Proxy& p = e->proxy(k);
+            if (!is_curve(p) || !p.finite()) continue;
+            if (!chains.empty() && distance(curve_ends(*chains.back().back()).second,
+                                            curve_ends(p).first) <= join_tolerance)
+                chains.back().push_back(&p);
+            else
+                chains.push_back({&p});
+        }
+    }
+    canvas.set_color(Color{0.10, 0.10, 0.10, 1});
+    for (const auto& chain : chains) {
+        double width = std::clamp(chain_length(chain) / 12, line_width, 8 * line_width);
+        stroke.draw(canvas, chain, width);
+    }
+}
+
+void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const Element*>& elements,
+                   RenderStyle style, const detail::PageLayout& page,
+                   const detail::CurveStroke& curves) {
+    Canvas canvas(cr);
+    long count = static_cast<long>(elements.size());
+    for (long index = 0; index < count; ++index) {
+        const Element& element = *elements[static_cast<std::size_t>(index)];
+        const ElementType& type = element.type();
+        bool custom = type.draw != nullptr && style != RenderStyle::order && !curves.stroke;
+        if (!custom && pattern.seed != nullptr && &type == pattern.seed) continue;
+
+        cairo_save(cr);
+        cairo_new_path(cr);
+        cairo_set_line_width(cr, page.line_width);
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        if (custom) {
+            try {
+                const detail::RunningBody running(
+                    detail::body_label(&type, pattern.file, type.line, "%draw " + type.name));
+                type.draw(canvas, element);
+            } catch (const RuleFailure&) {
+                throw;
+            } catch (const std::exception& e) {
+                throw draw_failure(pattern, type, e.what());
+            } catch (...) {
+                throw draw_failure(pattern, type, "unknown exception");
+            }
+        } else {
+            long rank = element.id >= 0 ? element.id : index;
+            Color color = hue(detail::order_hue(rank, count));
+            detail::draw_default(canvas, element, style, color, {}, curves.stroke != nullptr);
+        }
+        cairo_restore(cr);
+        if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
+            throw draw_failure(
+                pattern, type,
+                std::string("drawing failed: ") + cairo_status_to_string(cairo_status(cr)));
+    }
+    if (curves.stroke) {
+        cairo_save(cr);
+        draw_stroke_chains(canvas, elements, *curves.stroke, page.line_width,
+                           1e-6 * std::max(page.width, page.height) / page.scale);
+        cairo_restore(cr);
+    }
+}
+
+}  // namespace
+
+void render_to_file(const std::string& path, const Pattern& pattern, const Region& region,
+                    const std::vector<const Element*>& elements, const RenderOptions& options) {
+    OutputFormat format = format_for_path(path);
+    RenderStyle style = detail::parse_render_style(options.style);
+    detail::PageLayout page = detail::page_layout(region.bounds(), options.width);
+    std::optional<SkeletalStroke> stroke = resolve_stroke(options.stroke);
+    detail::CurveStroke curves;
+    if (stroke) curves = {&*stroke, skeletal_stroke_widths * page.line_width};
+
+    detail::OutputDocument document(format, page.width, page.height, pattern.name);
+    cairo_t* cr = document.context();
+    if (options.background) {
+        const Color& c = *options.background;
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
+        cairo_paint(cr);
+    }
+    page.apply(cr);
+    if (options.draw_region) draw_region_outline(cr, region, page);
+    draw_elements(cr, pattern, elements, style, page, curves);
+
+    std::string bytes = document.finish();
+    if (path == "-")
+        detail::write_stdout(bytes);
+    else
+        detail::write_file_atomically(path, bytes);
+}
+
+}  // namespace acanthus

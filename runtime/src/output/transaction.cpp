@@ -1,0 +1,100 @@
+// The run's output files, renamed together at the end (see output_transaction.hpp).
+#include "output/transaction.hpp"
+
+#include <unistd.h>
+
+#include <acanthus/error.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+namespace acanthus::detail {
+
+namespace {
+
+std::atomic<OutputTransaction*> g_active{nullptr};
+
+void remove_entry_files(const char* path, bool directory) noexcept {
+    if (!path) return;
+    if (directory)
+        ::rmdir(path);
+    else
+        ::unlink(path);
+}
+
+}  // namespace
+
+OutputTransaction::OutputTransaction() {
+    OutputTransaction* expected = nullptr;
+    if (!g_active.compare_exchange_strong(expected, this))
+        throw std::logic_error("an output transaction is already open");
+}
+
+OutputTransaction::~OutputTransaction() {
+    g_active.store(nullptr);
+    for (Entry* e = head_.load(); e; e = e->next)
+        remove_entry_files(e->temporary, e->target.empty());
+    clear();
+}
+
+OutputTransaction* OutputTransaction::active() { return g_active.load(); }
+
+void OutputTransaction::add_file(const std::string& temporary, const std::string& target) {
+    if (target.empty()) throw std::logic_error("OutputTransaction::add_file: no target");
+    Entry* e = new Entry;
+    e->temporary = ::strdup(temporary.c_str());
+    e->target = target;
+    e->next = head_.load();
+    head_.store(e);
+}
+
+void OutputTransaction::add_created_directory(const std::string& path) {
+    Entry* e = new Entry;
+    e->temporary = ::strdup(path.c_str());
+    e->next = head_.load();
+    head_.store(e);
+}
+
+void OutputTransaction::commit() {
+    std::vector<Entry*> files;  // oldest first
+    for (Entry* e = head_.load(); e; e = e->next)
+        if (!e->target.empty()) files.insert(files.begin(), e);
+    for (Entry* e : files) {
+        if (std::rename(e->temporary, e->target.c_str()) != 0) {
+            const int error = errno;
+            throw InputError("cannot write '" + e->target + "': " + std::strerror(error));
+        }
+        std::free(e->temporary);
+        e->temporary = nullptr;  // renamed: nothing to remove any more
+    }
+    // Created directories now hold the outputs: keep them.
+    for (Entry* e = head_.load(); e; e = e->next) {
+        std::free(e->temporary);
+        e->temporary = nullptr;
+    }
+}
+
+void OutputTransaction::abandon_from_signal() noexcept {
+    OutputTransaction* t = g_active.load();
+    if (!t) return;
+    // Files first (newest first), so that created directories are empty when their turn comes.
+    for (Entry* e = t->head_.load(); e; e = e->next)
+        if (!e->target.empty()) remove_entry_files(e->temporary, false);
+    for (Entry* e = t->head_.load(); e; e = e->next)
+        if (e->target.empty()) remove_entry_files(e->temporary, true);
+}
+
+void OutputTransaction::clear() noexcept {
+    Entry* e = head_.exchange(nullptr);
+    while (e) {
+        Entry* next = e->next;
+        std::free(e->temporary);
+        delete e;
+        e = next;
+    }
+}
+
+}  // namespace acanthus::detail

@@ -1,0 +1,277 @@
+// run_program: the generated program's main(). Everything the command line names is checked
+// before growth starts, so a bad argument never costs a long run and never leaves a file behind.
+#include <acanthus/error.hpp>
+#include <acanthus/growth.hpp>
+#include <acanthus/program.hpp>
+#include <acanthus/region.hpp>
+#include <acanthus/render.hpp>
+#include <acanthus/skeletal_stroke.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <new>
+#include <sstream>
+
+#include "output/coverage.hpp"
+#include "output/page_layout.hpp"
+#include "output/transaction.hpp"
+#include "pattern/body_watchdog.hpp"
+#include "pattern/crash_handler.hpp"
+#include "pattern/running_body.hpp"
+#include "program/metrics_json.hpp"
+#include "program/options.hpp"
+#include "program/output_paths.hpp"
+#include "program/progress_line.hpp"
+#include "program/tree_json.hpp"
+
+namespace acanthus {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+namespace fs = std::filesystem;
+
+double seconds_since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::string program_name(const Pattern& pattern, int argc, char** argv) {
+    if (!pattern.name.empty()) return pattern.name;
+    if (argc > 0 && argv[0] && *argv[0]) return fs::path(argv[0]).filename().string();
+    return "acanthus";
+}
+
+// Applies --param NAME=VALUE in order; a later value for the same name wins.
+void apply_params(const Pattern& pattern, const std::vector<std::string>& assignments) {
+    for (const std::string& a : assignments) {
+        const auto eq = a.find('=');
+        const std::string name = a.substr(0, eq);
+        const std::string value = a.substr(eq + 1);
+        const ParamInfo* param = nullptr;
+        for (const ParamInfo& p : pattern.params)
+            if (p.name == name) param = &p;
+        if (!param) {
+            std::string known;
+            for (const ParamInfo& p : pattern.params) known += (known.empty() ? "" : ", ") + p.name;
+            throw InputError("unknown parameter '" + name + "': " +
+                             (known.empty() ? "this pattern declares no parameters"
+                                            : "this pattern declares " + known));
+        }
+        std::string error;
+        if (!param->assign || !param->assign(value, error))
+            throw InputError("bad value for parameter '" + name + "' (" + param->type +
+                             "): " + (error.empty() ? "'" + value + "' does not parse" : error));
+    }
+}
+
+void list_params(const Pattern& pattern, std::ostream& out) {
+    if (pattern.params.empty()) {
+        out << "'" << pattern.name << "' declares no parameters\n";
+        return;
+    }
+    std::vector<std::vector<std::string>> rows{{"name", "type", "default", "current"}};
+    for (const ParamInfo& p : pattern.params)
+        rows.push_back({p.name, p.type, p.default_text, p.current ? p.current() : "?"});
+    std::vector<std::size_t> widths(4, 0);
+    for (const auto& row : rows)
+        for (std::size_t c = 0; c < 4; ++c) widths[c] = std::max(widths[c], row[c].size());
+    for (const auto& row : rows) {
+        for (std::size_t c = 0; c < 3; ++c) out << std::left << std::setw(widths[c] + 2) << row[c];
+        out << row[3] << "\n";
+    }
+}
+
+// The directory a file will be written into must exist before we spend time growing.
+void check_writable_location(const std::string& path, const char* what) {
+    const fs::path p(path);
+    std::error_code ec;
+    if (fs::is_directory(p, ec))
+        throw InputError("cannot write " + std::string(what) + " '" + path +
+                         "': it is a directory");
+    const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+    if (!fs::is_directory(dir, ec))
+        throw InputError("cannot write " + std::string(what) + " '" + path + "': no directory '" +
+                         dir.string() + "'");
+}
+
+std::string format_point(Point p) {
+    std::ostringstream s;
+    s << p.x << "," << p.y;
+    return s.str();
+}
+
+// render_to_file resolves the stroke only after growth; resolve it once here to refuse a bad
+// name (UsageError) or a bad stroke file (InputError) before spending time growing.
+void check_stroke(const std::string& stroke) {
+    const std::string ext = fs::path(stroke).extension().string();
+    if (ext == ".svg" || ext == ".SVG")
+        SkeletalStroke::from_svg_file(stroke);
+    else
+        SkeletalStroke::builtin(stroke);
+}
+
+// Everything that can be refused without growing.
+void validate(const detail::ProgramOptions& o, const Region& region,
+              detail::OutputTransaction& outputs) {
+    if (o.output != "-") {
+        format_for_path(o.output);  // UsageError on an unknown extension
+        check_writable_location(o.output, "the output");
+    }
+    if (!o.json.empty()) check_writable_location(o.json, "the element tree");
+    if (!o.debug_path.empty()) check_writable_location(o.debug_path, "the debug frame");
+    if (!o.render.stroke.empty()) check_stroke(o.render.stroke);
+    detail::page_layout(region.bounds(), o.render.width);  // UsageError on an impossible page
+    for (Point seed : o.growth.seeds) {
+        if (!region.contains(seed)) {
+            const Rect b = region.bounds();
+            throw InputError("seed " + format_point(seed) + " is outside the region '" +
+                             region.name() + "' (bounds " + format_point({b.x0, b.y0}) + " to " +
+                             format_point({b.x1, b.y1}) + ")");
+        }
+    }
+    if (!o.frames_dir.empty()) {
+        std::error_code ec;
+        // A directory made for this run goes again if the run fails (while still empty).
+        std::vector<fs::path> made;
+        for (fs::path p = fs::path(o.frames_dir).lexically_normal();
+             !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+            made.push_back(p);
+            if (p == p.parent_path()) break;
+        }
+        for (auto it = made.rbegin(); it != made.rend(); ++it)
+            outputs.add_created_directory(it->string());
+        fs::create_directories(o.frames_dir, ec);
+        if (!fs::is_directory(o.frames_dir))
+            throw InputError("cannot write frames into '" + o.frames_dir +
+                             "': " + (ec ? ec.message() : "not a directory"));
+    }
+}
+
+std::string frame_path(const std::string& dir, long number) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%06ld.png", number);
+    return (fs::path(dir) / name).string();
+}
+
+int run(const Pattern& pattern, const std::string& program, int argc, char** argv,
+        Clock::time_point start) {
+    std::optional<detail::ProgramOptions> parsed =
+        detail::parse_program_options(pattern, program, argc, argv);
+    if (!parsed) return 0;  // --help or --version
+    const detail::ProgramOptions& o = *parsed;
+
+    apply_params(pattern, o.params);
+    if (o.list_params) {
+        list_params(pattern, std::cout);
+        return 0;
+    }
+
+    detail::check_output_paths(o);
+    const Region region =
+        o.region.empty() ? Region::default_panel() : Region::from_argument(o.region);
+    // Every file of the run is renamed into place at the end, all or none.
+    detail::OutputTransaction outputs;
+    validate(o, region, outputs);
+
+    GrowthEngine engine(pattern, region, o.growth);
+    detail::ProgressLine progress(program, o.progress);
+    engine.on_progress(
+        [&](long iteration, long elements) { progress.update(iteration, elements); });
+
+    bool debug_written = false;
+    if (o.debug_iteration > 0) {
+        // Drawn when iteration N happens; published with the run's other outputs at the end.
+        engine.on_debug_frame(o.debug_iteration, [&](const DebugFrame& frame) {
+            render_debug_frame(o.debug_path, region, frame, o.render);
+            debug_written = true;
+        });
+    }
+    RenderOptions frame_options = o.render;
+    long frames_written = 0, last_frame_iteration = -1;
+    if (!o.frames_dir.empty()) {
+        engine.on_frame(o.frames_every,
+                        [&](long iteration, const std::vector<const Element*>& elements) {
+                            render_to_file(frame_path(o.frames_dir, ++frames_written), pattern,
+                                           region, elements, frame_options);
+                            last_frame_iteration = iteration;
+                        });
+    }
+
+    detail::install_crash_handler();
+    {
+        const detail::BodyWatchdog watchdog(o.body_time_limit, o.growth.time_limit);
+        engine.run();
+    }
+    progress.finish();
+    // %draw bodies: the per-call limit only (--time-limit bounds growth, not rendering).
+    const detail::BodyWatchdog watchdog(o.body_time_limit, 0);
+    const GrowthStats& stats = engine.stats();
+    const std::vector<const Element*> elements = engine.elements();
+
+    // The last state always ends an animation, even between two K-th iterations.
+    if (!o.frames_dir.empty() && last_frame_iteration != stats.iterations)
+        render_to_file(frame_path(o.frames_dir, ++frames_written), pattern, region, elements,
+                       frame_options);
+
+    const Clock::time_point render_start = Clock::now();
+    render_to_file(o.output, pattern, region, elements, o.render);
+    const double render_seconds = seconds_since(render_start);
+
+    if (!o.json.empty()) detail::write_tree_json(o.json, region, elements);
+    if (o.debug_iteration > 0 && !debug_written)
+        std::cerr << program << ": warning: no debug frame written: growth stopped after "
+                  << stats.iterations << " iterations, before iteration " << o.debug_iteration
+                  << "\n";
+    if (o.metrics) {
+        const double cover =
+            detail::coverage(region, elements, detail::rendered_line_width(region, o.render.width));
+        std::cout << detail::metrics_json(pattern, stats, static_cast<long>(elements.size()), cover,
+                                          seconds_since(start), render_seconds,
+                                          o.growth.reference_engine)
+                  << std::endl;
+        if (!std::cout) throw InputError("cannot write the metrics to stdout");
+    }
+    outputs.commit();
+    return 0;
+}
+
+void report(const std::string& program, const char* kind, const std::string& message) {
+    std::cout.flush();
+    std::cerr << program << ": " << kind << ": " << message << std::endl;
+}
+
+}  // namespace
+
+int run_program(const Pattern& pattern, int argc, char** argv) {
+    const Clock::time_point start = Clock::now();
+    const std::string program = program_name(pattern, argc, argv);
+    detail::set_program_name_for_fatal_exit(program);
+    detail::set_fatal_exit_cleanup(&detail::OutputTransaction::abandon_from_signal);
+    try {
+        return run(pattern, program, argc, argv, start);
+    } catch (const UsageError& e) {
+        report(program, "error", e.what());
+        std::cerr << "Run '" << program << " --help' for the options and examples." << std::endl;
+        return 2;
+    } catch (const InputError& e) {
+        report(program, "error", e.what());
+        return 1;
+    } catch (const RuleFailure& e) {
+        report(program, "error", e.what());
+        return 3;
+    } catch (const std::bad_alloc&) {
+        report(program, "error", "out of memory");
+        return 1;
+    } catch (const fs::filesystem_error& e) {
+        report(program, "error", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        // Anything else escaped user code (%exhausted, %draw, %source) or the engine.
+        report(program, "error", std::string("failed at run time: ") + e.what());
+        return 3;
+    }
+}
+
+}  // namespace acanthus
