@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "../tests/unit/dots_pattern.hpp"
+#include "fixtures/dots_pattern.hpp"
 
 namespace {
 

@@ -3,12 +3,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <acanthus/output_file.hpp>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
-#include "output_file.hpp"
 #include "process.hpp"
 
 namespace acanthus {
@@ -90,7 +90,7 @@ bool build_executable(const Toolchain& toolchain, const BuildOptions& options,
     bool ok = write_file_atomically(source, cpp, error);
     std::string temp;
     if (ok) {
-        temp = temporary_sibling(executable, error);
+        temp = create_temporary_sibling(executable, error);
         ok = !temp.empty();
     }
     if (ok) {

@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <acanthus/output_file.hpp>
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -10,7 +11,6 @@
 
 #include "build_command.hpp"
 #include "compilation.hpp"
-#include "output_file.hpp"
 #include "toolchain.hpp"
 #include "toolchain_config.hpp"
 

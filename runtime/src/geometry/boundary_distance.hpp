@@ -1,12 +1,5 @@
-// Signed distance to a set of boundary curves, and the search for the place where a curve
-// gets farther than a threshold from that boundary on its positive side ("excursion").
-//
-// The search is a certified branch and bound over the curve parameter: the signed distance
-// is 1-Lipschitz in arc length, so on [a, b] it is at most (f(a) + f(b) + L) / 2 where L
-// bounds the arc length; where the curve piece has a convex hull (Bezier control points, the
-// tangent triangle of an arc) the distance to one boundary curve bounds it too (exact for
-// straight boundary edges). Pieces are first split at the exact lib2geom intersections with
-// the boundary, and pieces on the negative side are skipped, so touching contacts cost little.
+// Signed distance to a set of boundary curves, and a certified search for where a curve gets
+// farther than a threshold from them (docs/regions.md, "Exact boundary tests").
 #pragma once
 
 #include <2geom/curve.h>

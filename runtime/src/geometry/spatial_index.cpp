@@ -73,6 +73,13 @@ std::vector<SpatialIndex::Entry> SpatialIndex::query(Rect box) const {
     return sorted_entries(found);
 }
 
+bool SpatialIndex::any_of(Rect box, const std::function<bool(Entry)>& test) const {
+    for (auto it = tree_->rtree.qbegin(bgi::intersects(to_box(box))); it != tree_->rtree.qend();
+         ++it)
+        if (test(it->second)) return true;
+    return false;
+}
+
 std::vector<SpatialIndex::Entry> SpatialIndex::within(Point p, double radius) const {
     std::vector<Value> found;
     BPoint q(p.x, p.y);

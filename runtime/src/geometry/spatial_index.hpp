@@ -40,6 +40,9 @@ class SpatialIndex {
 
     // Entries whose bounds intersect `box` (touching counts), sorted by (element, proxy).
     std::vector<Entry> query(Rect box) const;
+    // True when `test` holds for an entry whose bounds intersect `box` (touching counts). Stops
+    // at the first; entries are visited in the tree's order, so `test` should have no effects.
+    bool any_of(Rect box, const std::function<bool(Entry)>& test) const;
     // Entries whose bounds come within `radius` of p, sorted by (element, proxy).
     std::vector<Entry> within(Point p, double radius) const;
     // The k entries with the nearest bounds to p, by (bounds distance, element, proxy).

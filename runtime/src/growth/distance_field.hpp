@@ -1,23 +1,5 @@
-// Exact Euclidean distance field over the render buffer, with the nearest obstacle site and
-// its kind for every pixel. Full computation is Felzenszwalb's separable EDT with a feature
-// transform; add_sites() updates incrementally by propagating from the new sites only to the
-// pixels whose nearest site changes.
-//
-// Exactness of add_sites(): the squared distance of a pixel q changes exactly when
-// m(q) = min over new sites s of |q - s|^2 is below its old value D(q). m is computed exactly:
-// for blobs spanning few columns (a placed element, usually) from the lower envelope, per row,
-// of the parabolas of the new sites' columns (SiteBlob), else by an EDT of the new sites alone
-// over a window around them (all new sites lie in the window, so the window EDT is exact). The
-// wavefront visits every pixel with sqrt(m) < sqrt(D) + 1, as a scanline fill that writes
-// each improvement as it evaluates the pixel.
-// Along the straight segment from a changed pixel to its nearest new site, sqrt(m) - sqrt(D)
-// only decreases, and the 8-connected (Bresenham) path of that segment stays within half a
-// pixel of it, which raises sqrt(m) - sqrt(D) by less than 1; so every changed pixel is reached.
-// The window is doubled whenever the wavefront steps outside it.
-//
-// Ties: nearest_site() is one of the nearest sites (which one may differ between compute() and
-// add_sites()); nearest_kind() is canonical: boundary whenever a boundary site is among the
-// nearest (a separate boundary-only field decides), so both paths agree exactly.
+// Exact Euclidean distance field over the render buffer with each pixel's nearest obstacle site
+// and kind; computed in full or updated incrementally (docs/engine.md, "The distance field").
 #pragma once
 
 #include <cstdint>

@@ -1,31 +1,5 @@
-// FindEmptyCircle of Wong et al. section 4.1 over the distance field.
-//
-// Candidate centres are the medial axis: free pixels on a crest of the distance field along one
-// of the four lines through the pixel (horizontal, vertical, two diagonals): neither neighbour on
-// the line is farther from the obstacles, and the distance bends there by at least kBend pixels
-// (2 d(p) - d(a) - d(b) >= kBend). The paper's Manhattan-distance MAT takes pixels at least as
-// large as their neighbours; city-block distances have plateaus along ridges, so that yields the
-// whole ridge. Exact Euclidean distances rise along a ridge, so the crest is tested across it,
-// and the bend threshold drops the faint crests between neighbouring pixels of one rasterized
-// shape (a theta-medial axis).
-//
-// The candidate circle of a pixel is centred on the pixel centre with radius (sqrt(d2) - kMargin)
-// pixels: every rasterized shape lies in the closed squares of its obstacle pixels, which reach
-// at most sqrt(1/2) pixel beyond their centres, and curves are flattened within
-// PixelCover::kFlatten, so the circle errs on the small side and is empty. A candidate is eligible
-// when its nearest obstacle is an element (a circle stopped by the boundary is discarded; ties go
-// to the boundary), its radius is at least the minimum, and it contains no exclude-list point.
-// The largest eligible candidate wins; ties go to the smaller pixel index.
-//
-// find() keeps the eligible candidates as per-pixel states with the best of each 8 x 8 tile in a
-// MaxTree. Distances only decrease as obstacles are added, so a pixel leaves the medial axis only
-// when its own distance changes (lower neighbours never spoil a crest) and joins it only when it
-// or a neighbour changes: update() re-decides exactly the changed pixels and their neighbours
-// (64-bit masks per tile: changed pixels, dilated by one pixel across tile edges) and rescans
-// the candidate bits of the tiles holding them.
-// Candidates blocked by an exclude point wait under that point's id until it is removed.
-// find_by_scan() is the reference: a scan of the whole grid with the same rules. discard()
-// records (pixel, d2) pairs that both searches skip, so the two stay identical.
+// FindEmptyCircle of Wong et al. section 4.1: the largest eligible circle on the medial axis of
+// the distance field, kept up to date incrementally (docs/engine.md, "FindEmptyCircle").
 #pragma once
 
 #include <acanthus/grid_frame.hpp>

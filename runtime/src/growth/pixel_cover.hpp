@@ -1,8 +1,5 @@
 // Conservative scan conversion onto the render buffer's grid: every pixel whose closed square
-// meets the shape is reported, so a free pixel's square is disjoint from every rasterized
-// shape. Curves (arcs, Beziers) are flattened to chords within `kFlatten` pixels first; that
-// is the only way a touched pixel can be missed, and the empty-circle radius keeps a margin
-// for it (see EmptyCircleFinder).
+// meets the shape is reported (curves flattened within kFlatten pixels first).
 #pragma once
 
 #include <acanthus/grid_frame.hpp>

@@ -1,8 +1,5 @@
-// The render buffer of Wong et al. section 4.1: an occupancy grid over the region's bounds
-// (plus a one-pixel frame, so that the region's edge always has boundary pixels beyond it).
-// Pixels whose centre is outside R, or whose square the boundary passes through, are boundary
-// obstacles; placed elements' proxies are rasterized conservatively (PixelCover) as element
-// obstacles.
+// The render buffer of Wong et al. section 4.1: occupancy of the region's pixels by the boundary
+// and by placed elements (docs/engine.md, "The render buffer").
 #pragma once
 
 #include <acanthus/element.hpp>

@@ -1,12 +1,5 @@
-// The new sites of one DistanceField::add_sites() call, spanning few columns, and the exact
-// squared distance from any pixel to the nearest of them.
-//
-// The sites are kept as runs of rows per column, so the squared distance from (i, j) is
-// m(i, j) = min over columns c of (i - c)^2 + g_c(j)^2, with g_c(j) the distance from row j to
-// the nearest site row of column c. For each row the wavefront visits, the lower envelope of
-// those parabolas is built once (Felzenszwalb's construction, breakpoints compared as exact
-// integer fractions); a pixel is then a short walk from the piece of the previous pixel, since
-// fills walk rows in runs of adjacent pixels.
+// The sites of one DistanceField::add_sites() call and the exact squared distance to the nearest
+// of them, from per-row lower envelopes of parabolas (docs/engine.md, "The distance field").
 #pragma once
 
 #include <cstdint>

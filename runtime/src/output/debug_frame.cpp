@@ -14,7 +14,7 @@
 #include <memory>
 #include <string>
 
-#include "output/atomic_file.hpp"
+#include "output/output_writer.hpp"
 #include "output/document.hpp"
 
 namespace acanthus {
@@ -145,11 +145,7 @@ void render_debug_frame(const std::string& path, const Region& region, const Deb
             canvas.stroke(proxy);
         }
 
-    std::string bytes = document.finish();
-    if (path == "-")
-        detail::write_stdout(bytes);
-    else
-        detail::write_file_atomically(path, bytes);
+    detail::write_output(path, document.finish());
 }
 
 }  // namespace acanthus

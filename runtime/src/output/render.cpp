@@ -21,7 +21,7 @@
 #include <optional>
 
 #include "draw/default_style.hpp"
-#include "output/atomic_file.hpp"
+#include "output/output_writer.hpp"
 #include "output/document.hpp"
 #include "output/page_layout.hpp"
 #include "pattern/running_body.hpp"
@@ -197,11 +197,7 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
     if (options.draw_region) draw_region_outline(cr, region, page);
     draw_elements(cr, pattern, elements, style, page, curves);
 
-    std::string bytes = document.finish();
-    if (path == "-")
-        detail::write_stdout(bytes);
-    else
-        detail::write_file_atomically(path, bytes);
+    detail::write_output(path, document.finish());
 }
 
 }  // namespace acanthus

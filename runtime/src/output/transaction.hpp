@@ -1,5 +1,5 @@
 // All the output files of one run, published together: while a transaction is open,
-// write_file_atomically() leaves each file under its temporary name; commit() renames them all
+// write_output_file() leaves each file under its temporary name; commit() renames them all
 // once the whole run has succeeded. A run that fails (exception, watchdog, crash) leaves none.
 #pragma once
 

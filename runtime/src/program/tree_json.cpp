@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "output/atomic_file.hpp"
+#include "output/output_writer.hpp"
 
 namespace acanthus::detail {
 
@@ -107,10 +107,7 @@ std::string tree_json(const Region& region, const std::vector<const Element*>& e
 void write_tree_json(const std::string& path, const Region& region,
                      const std::vector<const Element*>& elements) {
     std::string text = tree_json(region, elements);
-    if (path == "-")
-        detail::write_stdout(text);
-    else
-        detail::write_file_atomically(path, text);
+    detail::write_output(path, text);
 }
 
 }  // namespace acanthus::detail

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "proxy/proxy_path.hpp"
-#include "proxy_factory.hpp"
+#include "fixtures/proxy_factory.hpp"
 
 namespace acanthus {
 namespace {

@@ -13,7 +13,7 @@
 #include "output/coverage.hpp"
 #include "program/metrics_json.hpp"
 #include "program/tree_json.hpp"
-#include "sample_elements.hpp"
+#include "fixtures/sample_elements.hpp"
 
 using namespace acanthus;
 using namespace acanthus::detail;

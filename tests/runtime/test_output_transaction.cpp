@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "output/atomic_file.hpp"
+#include "output/output_writer.hpp"
 #include "output/transaction.hpp"
 
 namespace {
@@ -36,8 +36,8 @@ class OutputTransactionTest : public ::testing::Test {
 TEST_F(OutputTransactionTest, CommitPublishesEveryFile) {
     {
         acanthus::detail::OutputTransaction t;
-        acanthus::detail::write_file_atomically((dir_ / "a.svg").string(), "a");
-        acanthus::detail::write_file_atomically((dir_ / "b.json").string(), "b");
+        acanthus::detail::write_output_file((dir_ / "a.svg").string(), "a");
+        acanthus::detail::write_output_file((dir_ / "b.json").string(), "b");
         EXPECT_FALSE(fs::exists(dir_ / "a.svg"));
         EXPECT_EQ(entries(), 2u);  // the two temporaries
         t.commit();
@@ -53,8 +53,8 @@ TEST_F(OutputTransactionTest, WithoutCommitNothingIsLeftAndOldFilesStay) {
     {
         acanthus::detail::OutputTransaction t;
         t.add_created_directory((dir_ / "frames").string());
-        acanthus::detail::write_file_atomically((dir_ / "a.svg").string(), "new");
-        acanthus::detail::write_file_atomically((dir_ / "frames" / "f.png").string(), "f");
+        acanthus::detail::write_output_file((dir_ / "a.svg").string(), "new");
+        acanthus::detail::write_output_file((dir_ / "frames" / "f.png").string(), "f");
     }
     EXPECT_EQ(read(dir_ / "a.svg"), "old");
     EXPECT_FALSE(fs::exists(dir_ / "frames"));
@@ -62,7 +62,7 @@ TEST_F(OutputTransactionTest, WithoutCommitNothingIsLeftAndOldFilesStay) {
 }
 
 TEST_F(OutputTransactionTest, WithoutTransactionFilesAppearAtOnce) {
-    acanthus::detail::write_file_atomically((dir_ / "a.svg").string(), "a");
+    acanthus::detail::write_output_file((dir_ / "a.svg").string(), "a");
     EXPECT_EQ(read(dir_ / "a.svg"), "a");
 }
 

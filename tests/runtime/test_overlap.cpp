@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "proxy/overlap.hpp"
-#include "proxy_factory.hpp"
+#include "fixtures/proxy_factory.hpp"
 
 namespace acanthus {
 namespace {

@@ -11,7 +11,7 @@
 #include <cstdint>
 
 #include "proxy/overlap.hpp"
-#include "proxy_factory.hpp"
+#include "fixtures/proxy_factory.hpp"
 #include "region/region_data.hpp"
 
 namespace acanthus {

@@ -1,5 +1,5 @@
 // render_to_file and render_debug_frame: every format opened by a real reader, reproducible
-// bytes, styles, %draw, and the atomic writer.
+// bytes, styles, %draw, debug frames, skeletal strokes.
 #include <cairo.h>
 #include <gtest/gtest.h>
 
@@ -16,40 +16,15 @@
 #include <stdexcept>
 
 #include "output/document.hpp"
-#include "sample_elements.hpp"
+#include "fixtures/sample_elements.hpp"
+#include "fixtures/temp_dir.hpp"
 
 using namespace acanthus;
 using namespace acanthus::detail;
+using namespace acanthus::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-class TempDir {
-  public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "acanthus-render-XXXXXX").string();
-        if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-        path_ = pattern;
-    }
-    ~TempDir() { fs::remove_all(path_); }
-    std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-    std::vector<std::string> entries() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
-  private:
-    fs::path path_;
-};
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
-}
 
 int run(const std::string& command) { return std::system((command + " >/dev/null 2>&1").c_str()); }
 
@@ -107,10 +82,7 @@ void draw_blue_disc(Canvas& canvas, const Element& e) {
     canvas.fill_circle(c.center, c.radius, Color{0, 0, 1, 1});
 }
 
-void draw_throws(Canvas&, const Element&) { throw std::runtime_error("bad petal maths"); }
-
 const ElementType blue_dot_type{"bluedot", {ProxyKind::circle}, nullptr, &draw_blue_disc, 21};
-const ElementType throwing_dot_type{"baddot", {ProxyKind::circle}, nullptr, &draw_throws, 33};
 
 }  // namespace
 
@@ -287,67 +259,6 @@ TEST(Render, SeedsAreNotDrawn) {
     Image img(dir / "seed.png");
     auto [x, y] = page_pixel(o.seeds[0].p.point());
     EXPECT_EQ(img.alpha(x, y), 0);
-}
-
-TEST(Render, FailedRenderLeavesNoFileAndKeepsTheOldOne) {
-    TempDir dir;
-    sample::Ornament o;
-    Region region = panel();
-    std::string good = dir / "ornament.svg";
-    render_to_file(good, o.pattern, region, o.placed, options());
-    std::string before = slurp(good);
-    ASSERT_FALSE(before.empty());
-
-    o.dots[4].kind = &throwing_dot_type;
-    for (const char* name : {"ornament.svg", "ornament.pdf", "ornament.png", "ornament.eps"}) {
-        try {
-            render_to_file(dir / name, o.pattern, region, o.placed, options());
-            ADD_FAILURE() << "no error for a throwing %draw";
-        } catch (const RuleFailure& e) {
-            EXPECT_EQ(e.file(), "sample.acr");
-            EXPECT_EQ(e.line(), 33);
-            EXPECT_NE(std::string(e.what()).find("bad petal maths"), std::string::npos);
-            EXPECT_NE(std::string(e.what()).find("%draw baddot"), std::string::npos);
-        }
-    }
-    EXPECT_EQ(slurp(good), before);
-    EXPECT_EQ(dir.entries(), std::vector<std::string>{"ornament.svg"});
-
-    o.dots[4].kind = &sample::dot_type;
-    EXPECT_THROW(render_to_file(good, o.pattern, region, o.placed, options(400, "sparkly")),
-                 UsageError);
-    EXPECT_THROW(render_to_file(good, o.pattern, region, o.placed, options(0)), UsageError);
-    RenderOptions stroked = options();
-    stroked.stroke = "calligraphy";
-    EXPECT_THROW(render_to_file(good, o.pattern, region, o.placed, stroked), UsageError);
-    EXPECT_THROW(render_to_file(dir / "x.gif", o.pattern, region, o.placed, options()), UsageError);
-    EXPECT_THROW(render_to_file(dir / "missing/x.svg", o.pattern, region, o.placed, options()),
-                 InputError);
-    EXPECT_EQ(slurp(good), before);
-    EXPECT_EQ(dir.entries(), std::vector<std::string>{"ornament.svg"});
-}
-
-TEST(Render, WritesFilesWithTheUsualPermissions) {
-    TempDir dir;
-    sample::Ornament o;
-    render_to_file(dir / "p.svg", o.pattern, panel(), o.placed, options());
-    auto perms = fs::status(dir / "p.svg").permissions();
-    EXPECT_NE(perms & fs::perms::owner_read, fs::perms::none);
-    EXPECT_NE(perms & fs::perms::owner_write, fs::perms::none);
-    mode_t mask = umask(0);
-    umask(mask);
-    if (!(mask & 044)) {
-        EXPECT_NE(perms & fs::perms::others_read, fs::perms::none);
-    }
-}
-
-TEST(Render, DashWritesSvgToStdout) {
-    sample::Ornament o;
-    testing::internal::CaptureStdout();
-    render_to_file("-", o.pattern, panel(), o.placed, options());
-    std::string out = testing::internal::GetCapturedStdout();
-    EXPECT_EQ(out.rfind("<?xml", 0), 0u);
-    EXPECT_NE(out.find("</svg>"), std::string::npos);
 }
 
 TEST(DebugFrame, DrawsFigureEightColours) {

@@ -15,73 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "fixtures/alpha_coverage.hpp"
+
 namespace {
 using namespace acanthus;
-
-// An A8 raster of what `draw` filled.
-class Coverage {
-  public:
-    Coverage(int width, int height, const std::function<void(Canvas&)>& draw)
-        : width_(width), height_(height) {
-        cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_A8, width, height);
-        cairo_t* cr = cairo_create(surface);
-        Canvas canvas(cr);
-        canvas.set_color(0, 0, 0, 1);
-        draw(canvas);
-        status_ = cairo_status(cr);
-        cairo_surface_flush(surface);
-        int stride = cairo_image_surface_get_stride(surface);
-        const unsigned char* data = cairo_image_surface_get_data(surface);
-        alpha_.resize(static_cast<std::size_t>(width) * height);
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) alpha_[y * width + x] = data[y * stride + x];
-        cairo_destroy(cr);
-        cairo_surface_destroy(surface);
-    }
-
-    cairo_status_t status() const { return status_; }
-    int alpha(int x, int y) const { return alpha_[y * width_ + x]; }
-    bool covered(int x, int y, int threshold = 128) const { return alpha(x, y) >= threshold; }
-
-    int count(int threshold = 128) const {
-        return static_cast<int>(
-            std::count_if(alpha_.begin(), alpha_.end(), [&](int a) { return a >= threshold; }));
-    }
-    // Pixel-index bounds of pixels with alpha >= threshold: {x0, y0, x1, y1}.
-    Rect bounds(int threshold) const {
-        Rect r{1e9, 1e9, -1e9, -1e9};
-        for (int y = 0; y < height_; ++y)
-            for (int x = 0; x < width_; ++x)
-                if (covered(x, y, threshold)) {
-                    r.x0 = std::min<double>(r.x0, x), r.x1 = std::max<double>(r.x1, x);
-                    r.y0 = std::min<double>(r.y0, y), r.y1 = std::max<double>(r.y1, y);
-                }
-        return r;
-    }
-    int column(int x) const {
-        int n = 0;
-        for (int y = 0; y < height_; ++y) n += covered(x, y);
-        return n;
-    }
-    // Separate covered stretches along row y between columns x0 and x1.
-    int runs(int y, int x0, int x1) const {
-        int n = 0;
-        bool inside = false;
-        for (int x = x0; x < x1; ++x) {
-            bool c = covered(x, y);
-            if (c && !inside) ++n;
-            inside = c;
-        }
-        return n;
-    }
-    int width() const { return width_; }
-    int height() const { return height_; }
-
-  private:
-    int width_, height_;
-    cairo_status_t status_ = CAIRO_STATUS_SUCCESS;
-    std::vector<int> alpha_;
-};
+using namespace acanthus::test;
 
 LineSegmentProxy segment(Point a, Point b) {
     LineSegmentProxy s;
@@ -93,25 +31,6 @@ BezierProxy curvy() {
     BezierProxy b;
     b.set({40, 150}, {100, 20}, {250, 280}, {300, 100});
     return b;
-}
-
-std::filesystem::path temp_file(const std::string& name, const std::string& text) {
-    auto dir = std::filesystem::temp_directory_path() / "acanthus_test_skeletal_stroke";
-    std::filesystem::create_directories(dir);
-    auto path = dir / name;
-    std::ofstream(path) << text;
-    return path;
-}
-
-template <typename F>
-std::string input_error_message(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no InputError";
-    return {};
 }
 
 TEST(SkeletalStroke, BuiltinsIncludeTheFourOfFigure17) {
@@ -273,99 +192,6 @@ TEST(SkeletalStroke, ChainOfCurvesIsOneStroke) {
     // One taper over the whole chain: still full width past the first curve's end.
     EXPECT_NEAR(chain.column(125), 20 * (1 - std::pow((0.525 - 0.2) / 0.8, 1.6)), 1.5);
     EXPECT_EQ(chain.count(1), whole.count(1));
-}
-
-TEST(SkeletalStroke, UserStrokeFromPathDataMapsBoundingBoxToFrame) {
-    // A wedge pointing along the skeleton, in arbitrary units.
-    SkeletalStroke wedge = SkeletalStroke::from_svg_path("M 5,5 L 105,55 L 5,105 Z", "wedge");
-    EXPECT_EQ(wedge.name(), "wedge");
-    Coverage c(300, 100, [&](Canvas& canvas) {
-        wedge.draw(canvas, segment({50, 50}, {250, 50}), 40);
-    });
-    Rect b = c.bounds(8);
-    EXPECT_NEAR(b.x0, 50, 1.5);
-    EXPECT_NEAR(b.x1 + 1, 250, 2);
-    EXPECT_NEAR(b.y0, 30, 1);
-    EXPECT_NEAR(b.y1 + 1, 70, 1);
-    EXPECT_NEAR(c.column(60), 38, 1.5);
-    EXPECT_NEAR(c.column(200), 10, 1.5);
-}
-
-TEST(SkeletalStroke, UserStrokeFromFileAppliesTransformsAndSkipsDefs) {
-    auto path = temp_file("wedge.svg",
-                          "<svg xmlns='http://www.w3.org/2000/svg'>\n"
-                          "<defs><path d='M 0,0 H 1000 V 1000 Z'/></defs>\n"
-                          "<g transform='translate(100,0) scale(2)'>\n"
-                          "  <path d='M 0,0 L 10,5 L 0,10 Z'/>\n"
-                          "</g></svg>\n");
-    SkeletalStroke file = SkeletalStroke::from_svg_file(path.string());
-    SkeletalStroke data = SkeletalStroke::from_svg_path("M 0,0 L 10,5 L 0,10 Z", "same");
-    EXPECT_EQ(file.name(), path.string());
-    auto draw = [](const SkeletalStroke& s) {
-        return Coverage(300, 100, [&](Canvas& canvas) {
-            s.draw(canvas, segment({50, 50}, {250, 50}), 40);
-        });
-    };
-    Coverage a = draw(file), b = draw(data);
-    EXPECT_GT(a.count(), 0.4 * 200 * 40);
-    EXPECT_NEAR(a.count(), b.count(), 4);
-}
-
-TEST(SkeletalStroke, UserStrokeFileHonoursEvenOddFillRule) {
-    const char* ring = "M 0,0 H 10 V 10 H 0 Z M 3,3 H 7 V 7 H 3 Z";
-    auto evenodd = temp_file("ring.svg", std::string("<svg xmlns='http://www.w3.org/2000/svg'>"
-                                                     "<path style='fill-rule:evenodd' d='") +
-                                             ring + "'/></svg>");
-    auto nonzero = temp_file("ring2.svg", std::string("<svg xmlns='http://www.w3.org/2000/svg'>"
-                                                      "<path d='") +
-                                              ring + "'/></svg>");
-    auto centre_covered = [](const SkeletalStroke& s) {
-        Coverage c(300, 100, [&](Canvas& canvas) {
-            s.draw(canvas, segment({50, 50}, {250, 50}), 60);
-        });
-        return c.covered(150, 50);
-    };
-    EXPECT_FALSE(centre_covered(SkeletalStroke::from_svg_file(evenodd.string())));
-    EXPECT_TRUE(centre_covered(SkeletalStroke::from_svg_file(nonzero.string())));
-}
-
-TEST(SkeletalStroke, BadPathDataIsInputErrorNamingTheStroke) {
-    auto m = input_error_message([] { SkeletalStroke::from_svg_path("M 0,0 L 5 Q", "mystroke"); });
-    EXPECT_NE(m.find("mystroke"), std::string::npos) << m;
-    m = input_error_message([] { SkeletalStroke::from_svg_path("", "empty"); });
-    EXPECT_NE(m.find("empty: no path data"), std::string::npos) << m;
-    m = input_error_message([] { SkeletalStroke::from_svg_path("M 0,0 L 10,0", "flat"); });
-    EXPECT_NE(m.find("flat: the stroke shape has no area"), std::string::npos) << m;
-    m = input_error_message(
-        [] { SkeletalStroke::from_svg_path("M 0,0 L 1e999,5 L 0,5 Z", "huge"); });
-    EXPECT_NE(m.find("huge"), std::string::npos) << m;
-}
-
-TEST(SkeletalStroke, BadStrokeFilesAreInputErrorsNamingTheFile) {
-    auto m = input_error_message([] { SkeletalStroke::from_svg_file("/nonexistent/stroke.svg"); });
-    EXPECT_NE(m.find("/nonexistent/stroke.svg"), std::string::npos) << m;
-
-    auto nopath = temp_file("nopath.svg", "<svg xmlns='http://www.w3.org/2000/svg'><rect/></svg>");
-    m = input_error_message([&] { SkeletalStroke::from_svg_file(nopath.string()); });
-    EXPECT_NE(m.find(nopath.string() + ": no path element"), std::string::npos) << m;
-
-    auto broken = temp_file("broken.svg", "<svg>\n<path d='M 0 0'\n</svg>");
-    m = input_error_message([&] { SkeletalStroke::from_svg_file(broken.string()); });
-    EXPECT_NE(m.find(broken.string()), std::string::npos) << m;
-
-    auto notsvg = temp_file("notsvg.svg", "<html/>");
-    m = input_error_message([&] { SkeletalStroke::from_svg_file(notsvg.string()); });
-    EXPECT_NE(m.find("not an SVG file"), std::string::npos) << m;
-
-    auto baddata = temp_file("baddata.svg", "<svg>\n\n<path d='M 0 0 L x'/></svg>");
-    m = input_error_message([&] { SkeletalStroke::from_svg_file(baddata.string()); });
-    EXPECT_NE(m.find(baddata.string() + ": <path> (line 3): bad path data"), std::string::npos)
-        << m;
-
-    auto badtransform =
-        temp_file("badtransform.svg", "<svg><path transform='spin(3)' d='M0,0 H1 V1 Z'/></svg>");
-    m = input_error_message([&] { SkeletalStroke::from_svg_file(badtransform.string()); });
-    EXPECT_NE(m.find("bad transform"), std::string::npos) << m;
 }
 
 TEST(SkeletalStroke, DegenerateSkeletonsDrawNothing) {

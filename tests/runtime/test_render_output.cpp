@@ -1,0 +1,96 @@
+// render_to_file's writing: all or nothing (a failing %draw or a bad option leaves the old file
+// and no temporary behind), the usual file permissions, "-" for standard output.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <acanthus/error.hpp>
+#include <acanthus/region.hpp>
+#include <acanthus/render.hpp>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fixtures/sample_elements.hpp"
+#include "fixtures/temp_dir.hpp"
+
+using namespace acanthus;
+using namespace acanthus::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+Region panel() { return Region::from_spec("rect:100,80"); }
+
+RenderOptions outline(double width = 400, const char* style = "outline") {
+    RenderOptions o;
+    o.width = width;
+    o.style = style;
+    return o;
+}
+
+void draw_throws(Canvas&, const Element&) { throw std::runtime_error("bad petal maths"); }
+const ElementType throwing_dot_type{"baddot", {ProxyKind::circle}, nullptr, &draw_throws, 33};
+
+}  // namespace
+
+TEST(Render, FailedRenderLeavesNoFileAndKeepsTheOldOne) {
+    TempDir dir;
+    sample::Ornament o;
+    Region region = panel();
+    std::string good = dir / "ornament.svg";
+    render_to_file(good, o.pattern, region, o.placed, outline());
+    std::string before = slurp(good);
+    ASSERT_FALSE(before.empty());
+
+    o.dots[4].kind = &throwing_dot_type;
+    for (const char* name : {"ornament.svg", "ornament.pdf", "ornament.png", "ornament.eps"}) {
+        try {
+            render_to_file(dir / name, o.pattern, region, o.placed, outline());
+            ADD_FAILURE() << "no error for a throwing %draw";
+        } catch (const RuleFailure& e) {
+            EXPECT_EQ(e.file(), "sample.acr");
+            EXPECT_EQ(e.line(), 33);
+            EXPECT_NE(std::string(e.what()).find("bad petal maths"), std::string::npos);
+            EXPECT_NE(std::string(e.what()).find("%draw baddot"), std::string::npos);
+        }
+    }
+    EXPECT_EQ(slurp(good), before);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"ornament.svg"});
+
+    o.dots[4].kind = &sample::dot_type;
+    EXPECT_THROW(render_to_file(good, o.pattern, region, o.placed, outline(400, "sparkly")),
+                 UsageError);
+    EXPECT_THROW(render_to_file(good, o.pattern, region, o.placed, outline(0)), UsageError);
+    RenderOptions stroked = outline();
+    stroked.stroke = "calligraphy";
+    EXPECT_THROW(render_to_file(good, o.pattern, region, o.placed, stroked), UsageError);
+    EXPECT_THROW(render_to_file(dir / "x.gif", o.pattern, region, o.placed, outline()), UsageError);
+    EXPECT_THROW(render_to_file(dir / "missing/x.svg", o.pattern, region, o.placed, outline()),
+                 InputError);
+    EXPECT_EQ(slurp(good), before);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"ornament.svg"});
+}
+
+TEST(Render, WritesFilesWithTheUsualPermissions) {
+    TempDir dir;
+    sample::Ornament o;
+    render_to_file(dir / "p.svg", o.pattern, panel(), o.placed, outline());
+    auto perms = fs::status(dir / "p.svg").permissions();
+    EXPECT_NE(perms & fs::perms::owner_read, fs::perms::none);
+    EXPECT_NE(perms & fs::perms::owner_write, fs::perms::none);
+    mode_t mask = umask(0);
+    umask(mask);
+    if (!(mask & 044)) {
+        EXPECT_NE(perms & fs::perms::others_read, fs::perms::none);
+    }
+}
+
+TEST(Render, DashWritesSvgToStdout) {
+    sample::Ornament o;
+    testing::internal::CaptureStdout();
+    render_to_file("-", o.pattern, panel(), o.placed, outline());
+    std::string out = testing::internal::GetCapturedStdout();
+    EXPECT_EQ(out.rfind("<?xml", 0), 0u);
+    EXPECT_NE(out.find("</svg>"), std::string::npos);
+}
