@@ -6,9 +6,9 @@
 // are CPU time of the fill call (one clock for all methods), so other processes on a loaded
 // machine do not skew the ratio; speedup = naive seconds / fill-gap seconds.
 // Last line: {"benchmark":"dartfill", ...}.
-#include <acanthus/dartfill.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
+#include <acanthus/stdlib/dartfill.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>

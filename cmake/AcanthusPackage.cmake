@@ -1,16 +1,15 @@
 # Installation and export: the runtime, its headers, the compiler, the stdlib, and the files that
 # let find_package(Acanthus CONFIG) work from the install tree and from this build tree, plus
-# acanthus.pc for pkg-config. Included (optionally) by the top-level CMakeLists.txt.
+# acanthus.pc for pkg-config. Included by the top-level CMakeLists.txt, after stdlib/ registered
+# its libraries (cmake/AcanthusStdlib.cmake).
 include(CMakePackageConfigHelpers)
 
 set(ACANTHUS_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/Acanthus")
 set(ACANTHUS_INSTALL_STDLIBDIR "${CMAKE_INSTALL_DATADIR}/acanthus/stdlib")
 
 # Inside the tree the same names work as for consumers of the package.
-if(TARGET acanthus AND NOT TARGET Acanthus::acanthus)
-  add_executable(Acanthus::acanthus ALIAS acanthus)
-endif()
-set(ACANTHUS_STDLIB_DIR "${PROJECT_SOURCE_DIR}/stdlib")
+add_executable(Acanthus::acanthus ALIAS acanthus)
+acanthus_stdlib_get(ACANTHUS_STDLIB_DIR RULE_DIR)
 include("${CMAKE_CURRENT_LIST_DIR}/AcanthusRules.cmake")
 
 # --- what is installed --------------------------------------------------------------------------
@@ -19,33 +18,25 @@ install(TARGETS acanthus_runtime EXPORT Acanthus
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/runtime/include/acanthus"
   DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}" FILES_MATCHING PATTERN "*.hpp")
 
-if(TARGET acanthus)
-  set_target_properties(acanthus PROPERTIES EXPORT_NAME acanthus)
-  install(TARGETS acanthus EXPORT Acanthus RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
-endif()
+set_target_properties(acanthus PROPERTIES EXPORT_NAME acanthus)
+install(TARGETS acanthus EXPORT Acanthus RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
 
-file(GLOB ACANTHUS_STDLIB_RULE_FILES "${PROJECT_SOURCE_DIR}/stdlib/*.acr")
-install(DIRECTORY DESTINATION "${ACANTHUS_INSTALL_STDLIBDIR}")  # exists even while empty
-install(FILES ${ACANTHUS_STDLIB_RULE_FILES} DESTINATION "${ACANTHUS_INSTALL_STDLIBDIR}")
+# The stdlib, as its libraries registered themselves (cmake/AcanthusStdlib.cmake): the archive,
+# each public header directory, each rule file, and what the archive links.
+install(TARGETS acanthus_stdlib EXPORT Acanthus ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+acanthus_stdlib_get(stdlib_include_dirs INCLUDE_DIRS)
+foreach(dir IN LISTS stdlib_include_dirs)
+  install(DIRECTORY "${dir}/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}" FILES_MATCHING PATTERN "*.hpp")
+endforeach()
+acanthus_stdlib_get(stdlib_rule_files RULE_FILES)
+install(FILES ${stdlib_rule_files} DESTINATION "${ACANTHUS_INSTALL_STDLIBDIR}")
 
-set(ACANTHUS_CONFIG_DEPENDENCIES "")
-set(ACANTHUS_PC_LIBS "-lacanthus")
-set(ACANTHUS_PC_REQUIRES "cairo pugixml 2geom polyclipping")
-if(TARGET acanthus_stdlib)
-  install(TARGETS acanthus_stdlib EXPORT Acanthus ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
-  # Each library's public header: stdlib/<name>/include/acanthus/<name>.hpp.
-  file(GLOB stdlib_include_dirs LIST_DIRECTORIES true "${PROJECT_SOURCE_DIR}/stdlib/*/include")
-  foreach(dir ${stdlib_include_dirs})
-    if(IS_DIRECTORY "${dir}")
-      install(DIRECTORY "${dir}/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}"
-        FILES_MATCHING PATTERN "*.hpp")
-    endif()
-  endforeach()
-  # CGAL's exact arithmetic needs GMP and MPFR when the stdlib is linked.
-  list(APPEND ACANTHUS_CONFIG_DEPENDENCIES CGAL)
-  set(ACANTHUS_PC_LIBS "-lacanthus_stdlib -lacanthus")
-  string(APPEND ACANTHUS_PC_REQUIRES " mpfr gmp")
-endif()
+acanthus_stdlib_get(ACANTHUS_CONFIG_DEPENDENCIES PACKAGES)
+acanthus_stdlib_get(stdlib_pc_modules PKG_CONFIG)
+set(ACANTHUS_PC_REQUIRES cairo pugixml 2geom polyclipping ${stdlib_pc_modules})
+list(REMOVE_DUPLICATES ACANTHUS_PC_REQUIRES)
+list(JOIN ACANTHUS_PC_REQUIRES " " ACANTHUS_PC_REQUIRES)
+set(ACANTHUS_PC_LIBS "-lacanthus_stdlib -lacanthus")
 
 install(EXPORT Acanthus NAMESPACE Acanthus:: FILE AcanthusTargets.cmake
   DESTINATION "${ACANTHUS_INSTALL_CMAKEDIR}")
@@ -59,7 +50,7 @@ configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/AcanthusConfig.cmake.in
   INSTALL_DESTINATION "${ACANTHUS_INSTALL_CMAKEDIR}"
   PATH_VARS ACANTHUS_CONFIG_STDLIB_DIR ACANTHUS_CONFIG_MODULE_DIR)
 
-set(ACANTHUS_CONFIG_STDLIB_DIR "${PROJECT_SOURCE_DIR}/stdlib")
+set(ACANTHUS_CONFIG_STDLIB_DIR "${ACANTHUS_STDLIB_DIR}")
 set(ACANTHUS_CONFIG_MODULE_DIR "${PROJECT_SOURCE_DIR}/cmake")
 configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/AcanthusConfig.cmake.in"
   "${PROJECT_BINARY_DIR}/AcanthusConfig.cmake"

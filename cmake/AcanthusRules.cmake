@@ -1,12 +1,13 @@
 # acanthus_add_pattern(NAME RULES file.acr [IMPORT_DIRS dir...] [LIBRARIES lib...])
 #
 # Compiles a rule file to C++ with `acanthus compile` and builds it into the executable NAME,
-# linked with Acanthus::runtime (and Acanthus::stdlib when it exists) and LIBRARIES. The compile
+# linked with Acanthus::stdlib, Acanthus::runtime and LIBRARIES. The compile
 # step depends on the rule file, every rule file it imports (found in IMPORT_DIRS, then the
 # stdlib directory) and the compiler, so editing any of them regenerates the program.
 #
 # Used inside the Acanthus tree and, installed next to AcanthusConfig.cmake, by
-# find_package(Acanthus CONFIG). Needs ACANTHUS_STDLIB_DIR set before it is included.
+# find_package(Acanthus CONFIG). Needs ACANTHUS_STDLIB_DIR (the directory of the stdlib's rule
+# files: in the tree, the one the stdlib registry names) set before it is included.
 include_guard(GLOBAL)
 include("${CMAKE_CURRENT_LIST_DIR}/AcanthusImports.cmake")
 
@@ -80,11 +81,7 @@ function(acanthus_add_pattern name)
   endif()
 
   add_executable(${name} "${generated}")
-  target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES})
-  if(TARGET Acanthus::stdlib)
-    target_link_libraries(${name} PRIVATE Acanthus::stdlib)
-  endif()
-  target_link_libraries(${name} PRIVATE Acanthus::runtime)
+  target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES} Acanthus::stdlib Acanthus::runtime)
   set_property(TARGET ${name} PROPERTY ACANTHUS_RULES "${rules}")
   set_property(TARGET ${name} PROPERTY ACANTHUS_GENERATED_SOURCE "${generated}")
 endfunction()

@@ -3,21 +3,16 @@
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
 #include <algorithm>
-#include <boost/geometry.hpp>
-#include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <limits>
+
+#include "growth/pixel_cover.hpp"
 
 namespace acanthus::dartfill {
 namespace {
 
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using BoxPoint = bg::model::point<double, 2, bg::cs::cartesian>;
-using Box = bg::model::box<BoxPoint>;
-using Entry = std::pair<Box, std::size_t>;
-
-Box to_box(const Rect& r) { return Box(BoxPoint(r.x0, r.y0), BoxPoint(r.x1, r.y1)); }
+using acanthus::detail::PixelCover;
+using acanthus::detail::SpatialIndex;
 
 double triangle_area(const Triangle& t) { return std::abs((t[1] - t[0]).cross(t[2] - t[0])) / 2; }
 
@@ -55,39 +50,7 @@ GridFrame make_grid(Rect bounds, int resolution) {
 }
 
 void shape_pixels(const GridFrame& grid, const PlacedShape& shape, std::vector<int>& out) {
-    // Scanline over the outline: each edge adds its crossings with the rows of pixel centres
-    // (half-open in y, so a vertex on a row is counted once), then each row fills between pairs.
-    thread_local std::vector<std::pair<int, double>> crossings;
-    crossings.clear();
-    const std::vector<Point>& ring = shape.outline();
-    for (std::size_t k = 0, n = ring.size(); k < n; ++k) {
-        Point a = ring[k], b = ring[(k + 1) % n];
-        if (a.y == b.y) continue;
-        double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
-        // Rows j with lo <= y0 + (j + 0.5) pixel < hi.
-        int j0 = std::max(0, static_cast<int>(std::ceil((lo - grid.y0) / grid.pixel - 0.5)));
-        int j1 = std::min(grid.height - 1,
-                          static_cast<int>(std::ceil((hi - grid.y0) / grid.pixel - 0.5)) - 1);
-        double slope = (b.x - a.x) / (b.y - a.y);
-        for (int j = j0; j <= j1; ++j) {
-            double y = grid.y0 + (j + 0.5) * grid.pixel;
-            crossings.emplace_back(j, a.x + (y - a.y) * slope);
-        }
-    }
-    std::sort(crossings.begin(), crossings.end());
-    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
-        int j = crossings[k].first;
-        if (crossings[k + 1].first != j) {  // a lone crossing (rounding at a vertex): resync
-            --k;
-            continue;
-        }
-        // Pixels whose centres lie in [x_k, x_k+1).
-        int i0 = static_cast<int>(std::ceil((crossings[k].second - grid.x0) / grid.pixel - 0.5));
-        int i1 =
-            static_cast<int>(std::ceil((crossings[k + 1].second - grid.x0) / grid.pixel - 0.5));
-        for (int i = std::max(i0, 0); i < std::min(i1, grid.width); ++i)
-            out.push_back(j * grid.width + i);
-    }
+    PixelCover(grid).centers_inside({shape.outline()}, /*evenodd=*/true, out);
     const auto& tris = shape.triangles();
     if (!tris.empty()) {
         const Triangle& t = tris.front();
@@ -99,15 +62,12 @@ void shape_pixels(const GridFrame& grid, const PlacedShape& shape, std::vector<i
     }
 }
 
-struct RingContainer::Index {
-    bgi::rtree<Entry, bgi::rstar<16>> tree;
-};
-
 RingContainer::RingContainer(std::vector<std::vector<Point>> rings, bool evenodd)
-    : evenodd_(evenodd), index_(std::make_unique<Index>()) {
+    : rings_(std::move(rings)), evenodd_(evenodd) {
     double inf = std::numeric_limits<double>::infinity();
     bounds_ = {inf, inf, -inf, -inf};
-    for (const auto& ring : rings) {
+    std::vector<std::pair<SpatialIndex::Entry, Rect>> boxes;
+    for (const auto& ring : rings_) {
         for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
             Point a = ring[i], b = ring[(i + 1) % n];
             if (!a.finite()) throw InputError("dartfill: the panel has a non-finite coordinate");
@@ -116,23 +76,22 @@ RingContainer::RingContainer(std::vector<std::vector<Point>> rings, bool evenodd
             if (a == b) continue;
             Rect box{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
                      std::max(a.y, b.y)};
-            index_->tree.insert({to_box(box), edges_.size()});
+            boxes.push_back({{static_cast<int>(edges_.size()), 0}, box});
             edges_.push_back({a, b});
         }
     }
     if (edges_.empty()) throw InputError("dartfill: the panel has no boundary");
+    index_ = SpatialIndex(boxes);
     // Rings nested at odd depth are holes (either fill rule, for rings that do not cross).
-    for (const auto& ring : rings) {
+    for (const auto& ring : rings_) {
         if (ring.size() < 3) continue;
         int depth = 0;
-        for (const auto& other : rings)
+        for (const auto& other : rings_)
             if (&other != &ring && other.size() >= 3 && ring_winding(other, ring.front()) != 0)
                 ++depth;
         area_ += (depth % 2 == 0 ? 1 : -1) * std::abs(signed_area(ring));
     }
 }
-
-RingContainer::~RingContainer() = default;
 
 std::unique_ptr<RingContainer> RingContainer::from_region(const Region& region) {
     Rect b = region.bounds();
@@ -159,17 +118,18 @@ bool RingContainer::admits(const PlacedShape& shape, double tolerance) const {
         return false;
     // No boundary edge may enter a triangle: then the shape is wholly inside or wholly outside.
     const auto& tris = shape.triangles();
-    for (auto it = index_->tree.qbegin(bgi::intersects(to_box(sb))); it != index_->tree.qend();
-         ++it) {
-        const Edge& e = edges_[it->second];
+    const bool edge_enters = index_.any_of(sb, [&](SpatialIndex::Entry entry) {
+        const Edge& e = edges_[entry.element];
         Rect eb{std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x),
                 std::max(e.a.y, e.b.y)};
         Triangle segment{e.a, e.b, e.b};
         for (std::size_t k = 0; k < tris.size(); ++k)
             if (boxes_meet(eb, shape.triangle_bounds()[k]) &&
                 triangles_overlap(tris[k], segment, tolerance))
-                return false;
-    }
+                return true;
+        return false;
+    });
+    if (edge_enters) return false;
     // The largest triangle's centroid is farther from the boundary than any tolerance.
     std::size_t best = 0;
     for (std::size_t k = 1; k < tris.size(); ++k)
@@ -180,31 +140,9 @@ bool RingContainer::admits(const PlacedShape& shape, double tolerance) const {
 
 std::vector<std::uint8_t> RingContainer::rasterize(const GridFrame& grid) const {
     std::vector<std::uint8_t> occupancy(static_cast<std::size_t>(grid.width) * grid.height, 1);
-    std::vector<std::pair<double, int>> crossings;
-    for (int j = 0; j < grid.height; ++j) {
-        double y = grid.y0 + (j + 0.5) * grid.pixel;
-        crossings.clear();
-        for (const Edge& e : edges_) {
-            bool up = e.a.y <= y && y < e.b.y, down = e.b.y <= y && y < e.a.y;
-            if (!up && !down) continue;
-            double x = e.a.x + (y - e.a.y) / (e.b.y - e.a.y) * (e.b.x - e.a.x);
-            crossings.emplace_back(x, up ? 1 : -1);
-        }
-        std::sort(crossings.begin(), crossings.end());
-        int winding = 0, count = 0;
-        for (std::size_t k = 0; k + 1 < crossings.size(); ++k) {
-            winding += crossings[k].second;
-            ++count;
-            bool in = evenodd_ ? count % 2 == 1 : winding != 0;
-            if (!in) continue;
-            // Pixels whose centres lie in [x_k, x_k+1).
-            int i0 = static_cast<int>(std::ceil((crossings[k].first - grid.x0) / grid.pixel - 0.5));
-            int i1 =
-                static_cast<int>(std::ceil((crossings[k + 1].first - grid.x0) / grid.pixel - 0.5));
-            for (int i = std::max(i0, 0); i < std::min(i1, grid.width); ++i)
-                occupancy[static_cast<std::size_t>(j) * grid.width + i] = 0;
-        }
-    }
+    std::vector<int> inside;
+    PixelCover(grid).centers_inside(rings_, evenodd_, inside);
+    for (int p : inside) occupancy[p] = 0;
     return occupancy;
 }
 

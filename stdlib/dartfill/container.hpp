@@ -2,12 +2,13 @@
 // leaves (through the Environment). Answers exact admission tests and rasterizes itself.
 #pragma once
 
-#include <acanthus/growth.hpp>
+#include <acanthus/grid_frame.hpp>
+#include <acanthus/region.hpp>
 #include <cstdint>
 #include <memory>
-#include <string>
 #include <vector>
 
+#include "geometry/spatial_index.hpp"
 #include "placed_shape.hpp"
 
 namespace acanthus {
@@ -38,7 +39,6 @@ class Container {
 class RingContainer : public Container {
   public:
     RingContainer(std::vector<std::vector<Point>> rings, bool evenodd);
-    ~RingContainer() override;
     static std::unique_ptr<RingContainer> from_region(const Region& region);
 
     Rect bounds() const override { return bounds_; }
@@ -51,16 +51,16 @@ class RingContainer : public Container {
     struct Edge {
         Point a, b;
     };
-    struct Index;
-    std::vector<Edge> edges_;
+    std::vector<std::vector<Point>> rings_;
+    std::vector<Edge> edges_;  // the rings' edges of non-zero length
     bool evenodd_;
     Rect bounds_;
     double area_ = 0;
-    std::unique_ptr<Index> index_;
+    acanthus::detail::SpatialIndex index_;  // Entry::element is the index in edges_
 };
 
 // The space left in the panel of the running growth engine. When the Environment exposes its
-// region, the panel is dartfill's own RingContainer (fast screening and scanline raster) and the
+// region, the panel is a RingContainer (fast screening, raster by pixel centres) and the
 // engine is asked only for the exact final test of a candidate and for element distances while
 // rasterizing; without it, every test goes through the Environment and the extent is found by
 // flood-filling from `start`.

@@ -1,7 +1,7 @@
 // The public API: shape sets, method names, and fill() over a region or the running ornament.
-#include <acanthus/dartfill.hpp>
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
+#include <acanthus/stdlib/dartfill.hpp>
 #include <chrono>
 #include <filesystem>
 #include <stdexcept>

@@ -1,20 +1,17 @@
-// The exclusive regions placed so far, with a Boost.Geometry R-tree over their boxes for the
-// broad phase of overlap queries.
+// The exclusive regions placed so far, in the runtime's spatial index (an R-tree over their
+// boxes) for the broad phase of overlap queries.
 #pragma once
 
-#include <memory>
 #include <vector>
 
+#include "geometry/spatial_index.hpp"
 #include "placed_shape.hpp"
 
 namespace acanthus::dartfill {
 
 class Layout {
   public:
-    explicit Layout(double tolerance);
-    ~Layout();
-    Layout(Layout&&) noexcept;
-    Layout& operator=(Layout&&) noexcept;
+    explicit Layout(double tolerance) : tolerance_(tolerance) {}
 
     // True when `candidate` overlaps a placed shape deeper than the tolerance.
     bool collides(const PlacedShape& candidate) const;
@@ -25,10 +22,10 @@ class Layout {
     double tolerance() const { return tolerance_; }
 
   private:
-    struct Index;
     double tolerance_;
     std::vector<PlacedShape> shapes_;
-    std::unique_ptr<Index> index_;
+    // Entry::element is the index in shapes_, indexed by the box of its bounding circle.
+    acanthus::detail::SpatialIndex index_;
 };
 
 }  // namespace acanthus::dartfill

@@ -2,8 +2,8 @@
 // the space and the shapes placed so far, keep it or cancel it.
 #pragma once
 
-#include <acanthus/dartfill.hpp>
 #include <acanthus/random.hpp>
+#include <acanthus/stdlib/dartfill.hpp>
 #include <vector>
 
 #include "container.hpp"

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-#include "triangulation.hpp"
+#include "common/triangulation.hpp"
 
 namespace acanthus::dartfill {
 namespace {
@@ -211,7 +211,7 @@ Shape Shape::from_points(std::string name, std::vector<Point> outline) {
 
     Shape s;
     s.name_ = std::move(name);
-    s.triangles_ = triangulate_polygon(ring);
+    s.triangles_ = common::triangulate_polygon(ring);
     s.outline_ = std::move(ring);
     s.bounds_ = box;
     s.area_ = area;

@@ -1,7 +1,7 @@
 // The shapes behind a ShapeSet, for the library's internals and tests.
 #pragma once
 
-#include <acanthus/dartfill.hpp>
+#include <acanthus/stdlib/dartfill.hpp>
 #include <vector>
 
 #include "shape.hpp"

@@ -1,9 +1,9 @@
 // dartfill exclusive regions: validation, triangulation, transformation and exact overlap.
 #include <gtest/gtest.h>
 
-#include <acanthus/dartfill.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/random.hpp>
+#include <acanthus/stdlib/dartfill.hpp>
 #include <algorithm>
 #include <cmath>
 #include <fstream>

@@ -3,9 +3,9 @@
 // engine far less often; the result must still clear the engine's elements and stay in the panel.
 #include <gtest/gtest.h>
 
-#include <acanthus/dartfill.hpp>
 #include <acanthus/environment.hpp>
 #include <acanthus/region.hpp>
+#include <acanthus/stdlib/dartfill.hpp>
 #include <cmath>
 #include <limits>
 #include <memory>

@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <iostream>
 
-#include "build_command.hpp"
 #include "compilation.hpp"
-#include "toolchain.hpp"
-#include "toolchain_config.hpp"
+#include "driver/build_command.hpp"
+#include "driver/toolchain.hpp"
+#include "driver/toolchain_config.hpp"
 
 namespace {
 

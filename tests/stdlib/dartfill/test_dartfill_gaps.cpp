@@ -2,7 +2,7 @@
 // candidate sampler (Q of Sakurai & Miyata section 4.3) against brute-force references.
 #include <gtest/gtest.h>
 
-#include <acanthus/dartfill.hpp>
+#include <acanthus/stdlib/dartfill.hpp>
 #include <algorithm>
 #include <cmath>
 #include <set>

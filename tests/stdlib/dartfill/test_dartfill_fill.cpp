@@ -2,9 +2,9 @@
 // candidate distribution.
 #include <gtest/gtest.h>
 
-#include <acanthus/dartfill.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
+#include <acanthus/stdlib/dartfill.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

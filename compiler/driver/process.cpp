@@ -1,4 +1,4 @@
-#include "process.hpp"
+#include "driver/process.hpp"
 
 #include <spawn.h>
 #include <sys/wait.h>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "toolchain.hpp"
+#include "driver/toolchain.hpp"
 
 namespace acanthus {
 

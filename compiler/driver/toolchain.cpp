@@ -1,9 +1,8 @@
-#include "toolchain.hpp"
+#include "driver/toolchain.hpp"
 
-#include <algorithm>
 #include <filesystem>
 
-#include "toolchain_config.hpp"
+#include "driver/toolchain_config.hpp"
 
 namespace acanthus {
 
@@ -46,16 +45,7 @@ Toolchain find_toolchain() {
             }
         }
     }
-    t.include_dirs.push_back(ACANTHUS_BUILD_INCLUDE_DIR);
-    // Each stdlib library's public header directory: stdlib/<name>/include.
-    std::error_code ec;
-    std::vector<std::string> stdlib_includes;
-    for (const auto& entry : fs::directory_iterator(ACANTHUS_SOURCE_STDLIB_DIR, ec)) {
-        fs::path include = entry.path() / "include";
-        if (path_exists(include)) stdlib_includes.push_back(include.string());
-    }
-    std::sort(stdlib_includes.begin(), stdlib_includes.end());  // directory order is arbitrary
-    t.include_dirs.insert(t.include_dirs.end(), stdlib_includes.begin(), stdlib_includes.end());
+    t.include_dirs = {ACANTHUS_BUILD_INCLUDE_DIRS};
     t.runtime_library = ACANTHUS_BUILD_RUNTIME_LIB;
     std::string stdlib = ACANTHUS_BUILD_STDLIB_LIB;
     if (!stdlib.empty() && path_exists(stdlib)) t.stdlib_library = stdlib;

@@ -1,13 +1,14 @@
-// The only translation unit that includes CGAL: it compiles slowly.
-#include "triangulation.hpp"
-
+// Constrained Delaunay triangulation of a polygon, keeping the inside triangles (CGAL compiles
+// slowly: one translation unit per kind of triangulation).
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
 #include <deque>
 
-namespace acanthus::dartfill {
+#include "triangulation.hpp"
+
+namespace acanthus::common {
 namespace {
 
 struct FaceInfo {
@@ -50,7 +51,7 @@ void mark_nesting(Cdt& cdt) {
 
 }  // namespace
 
-std::vector<Triangle> triangulate_polygon(const std::vector<Point>& outline) {
+std::vector<std::array<Point, 3>> triangulate_polygon(const std::vector<Point>& outline) {
     Cdt cdt;
     std::vector<Kernel::Point_2> points;
     points.reserve(outline.size());
@@ -58,10 +59,10 @@ std::vector<Triangle> triangulate_polygon(const std::vector<Point>& outline) {
     cdt.insert_constraint(points.begin(), points.end(), /*close=*/true);
     mark_nesting(cdt);
 
-    std::vector<Triangle> triangles;
+    std::vector<std::array<Point, 3>> triangles;
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
         if (f->info().nesting % 2 != 1) continue;
-        Triangle t;
+        std::array<Point, 3> t;
         for (int i = 0; i < 3; ++i) {
             const auto& q = f->vertex(i)->point();
             t[i] = Point{q.x(), q.y()};
@@ -71,4 +72,4 @@ std::vector<Triangle> triangulate_polygon(const std::vector<Point>& outline) {
     return triangles;
 }
 
-}  // namespace acanthus::dartfill
+}  // namespace acanthus::common

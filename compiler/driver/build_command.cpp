@@ -1,4 +1,4 @@
-#include "build_command.hpp"
+#include "driver/build_command.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "process.hpp"
+#include "driver/process.hpp"
 
 namespace acanthus {
 
