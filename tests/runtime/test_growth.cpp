@@ -12,20 +12,7 @@
 
 #include "fixtures/growth_tree.hpp"
 
-using acanthus::Circle;
-using acanthus::CircleProxy;
-using acanthus::DebugFrame;
-using acanthus::Element;
-using acanthus::GrowthEngine;
-using acanthus::GrowthOptions;
-using acanthus::Pattern;
-using acanthus::Point;
-using acanthus::PointProxy;
-using acanthus::ProxyKind;
-using acanthus::Region;
-using acanthus::Result;
-using acanthus::RuleCall;
-using acanthus::RuleInfo;
+using namespace acanthus;
 
 using namespace acanthus::test;
 

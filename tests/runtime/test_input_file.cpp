@@ -9,24 +9,19 @@
 #include <fstream>
 #include <string>
 
+#include "fixtures/temp_dir.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 class InputFileTest : public ::testing::Test {
   protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "acanthus-input-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
     std::string write(const std::string& name, const std::string& text) {
-        std::string path = (dir_ / name).string();
-        std::ofstream(path, std::ios::binary) << text;
-        return path;
+        return tmp_.write(name, text).string();
     }
-    fs::path dir_;
+    acanthus::test::TempDir tmp_{"input"};
+    fs::path dir_ = tmp_.path();
 };
 
 TEST_F(InputFileTest, ReadsARegularFile) {

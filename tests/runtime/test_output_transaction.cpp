@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "fixtures/temp_dir.hpp"
 #include "output/output_writer.hpp"
 #include "output/transaction.hpp"
 
@@ -15,22 +16,13 @@ namespace fs = std::filesystem;
 
 class OutputTransactionTest : public ::testing::Test {
   protected:
-    void SetUp() override {
-        std::string pattern = (fs::temp_directory_path() / "acanthus-outputs-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-        dir_ = pattern;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
     std::size_t entries() const {
         return static_cast<std::size_t>(
             std::distance(fs::directory_iterator(dir_), fs::directory_iterator{}));
     }
-    std::string read(const fs::path& p) {
-        std::ostringstream s;
-        s << std::ifstream(p).rdbuf();
-        return s.str();
-    }
-    fs::path dir_;
+    std::string read(const fs::path& p) { return acanthus::test::slurp(p.string()); }
+    acanthus::test::TempDir tmp_{"outputs"};
+    fs::path dir_ = tmp_.path();
 };
 
 TEST_F(OutputTransactionTest, CommitPublishesEveryFile) {

@@ -16,16 +16,11 @@
 #include <vector>
 
 #include "fixtures/alpha_coverage.hpp"
+#include "fixtures/proxy_factory.hpp"
 
 namespace {
 using namespace acanthus;
 using namespace acanthus::test;
-
-LineSegmentProxy segment(Point a, Point b) {
-    LineSegmentProxy s;
-    s.set(a, b);
-    return s;
-}
 
 BezierProxy curvy() {
     BezierProxy b;
@@ -54,7 +49,8 @@ TEST(SkeletalStroke, UnknownBuiltinIsUsageErrorNamingIt) {
 TEST(SkeletalStroke, TaperedOnHorizontalSegmentFillsLengthAndWidth) {
     const double x0 = 50, y = 50, length = 200, width = 20;
     Coverage c(300, 100, [&](Canvas& canvas) {
-        SkeletalStroke::builtin("tapered").draw(canvas, segment({x0, y}, {x0 + length, y}), width);
+        SkeletalStroke::builtin("tapered").draw(canvas, segment_proxy({x0, y}, {x0 + length, y}),
+                                                width);
     });
     ASSERT_EQ(c.status(), CAIRO_STATUS_SUCCESS);
     Rect b = c.bounds(8);
@@ -104,9 +100,11 @@ TEST(SkeletalStroke, CalligraphicIsThinAlongTheNibAndBroadAcrossIt) {
     const auto& pen = SkeletalStroke::builtin("calligraphic");
     const double width = 20;
     // On screen, up and to the right runs along the 45-degree nib.
-    Coverage along(300, 300, [&](Canvas& c) { pen.draw(c, segment({50, 250}, {250, 50}), width); });
+    Coverage along(300, 300, [&](Canvas& c) {
+        pen.draw(c, segment_proxy({50, 250}, {250, 50}), width);
+    });
     Coverage across(300, 300, [&](Canvas& c) {
-        pen.draw(c, segment({50, 50}, {250, 250}), width);
+        pen.draw(c, segment_proxy({50, 50}, {250, 250}), width);
     });
     EXPECT_GT(across.count(), 0.9 * 283 * width);
     EXPECT_GT(along.count(), 0);
@@ -116,7 +114,7 @@ TEST(SkeletalStroke, CalligraphicIsThinAlongTheNibAndBroadAcrossIt) {
 TEST(SkeletalStroke, BeadedPlacesSeparateBeadsSpacedByWidth) {
     const double width = 20;
     Coverage c(340, 60, [&](Canvas& canvas) {
-        SkeletalStroke::builtin("beaded").draw(canvas, segment({20, 30}, {320, 30}), width);
+        SkeletalStroke::builtin("beaded").draw(canvas, segment_proxy({20, 30}, {320, 30}), width);
     });
     // Motifs of 1.5 widths, a large and a small bead each: 10 motifs on 300 units.
     EXPECT_EQ(c.runs(30, 0, 340), 20);
@@ -126,8 +124,8 @@ TEST(SkeletalStroke, LeafyLeafCountIsProportionalToLengthOverWidth) {
     const double width = 20;
     auto leaves = [&](double length) {
         Coverage c(520, 60, [&](Canvas& canvas) {
-            SkeletalStroke::builtin("leafy").draw(canvas, segment({10, 30}, {10 + length, 30}),
-                                                  width);
+            SkeletalStroke::builtin("leafy").draw(
+                canvas, segment_proxy({10, 30}, {10 + length, 30}), width);
         });
         // One leaf per motif crosses the row a sixth of a width off the stem on each side.
         return std::make_pair(c.runs(33, 0, 520), c.runs(27, 0, 520));
@@ -184,9 +182,10 @@ TEST(SkeletalStroke, PolylineSkeletonWithSharpCornerIsFilledAlongBothLegs) {
 
 TEST(SkeletalStroke, ChainOfCurvesIsOneStroke) {
     const auto& s = SkeletalStroke::builtin("tapered");
-    LineSegmentProxy a = segment({20, 50}, {120, 50}), b = segment({120, 50}, {220, 50});
+    LineSegmentProxy a = segment_proxy({20, 50}, {120, 50}),
+                     b = segment_proxy({120, 50}, {220, 50});
     BezierProxy unset;  // left out of the chain
-    Coverage whole(240, 100, [&](Canvas& c) { s.draw(c, segment({20, 50}, {220, 50}), 20); });
+    Coverage whole(240, 100, [&](Canvas& c) { s.draw(c, segment_proxy({20, 50}, {220, 50}), 20); });
     Coverage chain(240, 100, [&](Canvas& c) { s.draw(c, {&a, &unset, &b}, 20); });
     EXPECT_NEAR(chain.count(), whole.count(), 4);
     // One taper over the whole chain: still full width past the first curve's end.
@@ -199,7 +198,7 @@ TEST(SkeletalStroke, DegenerateSkeletonsDrawNothing) {
     BezierProxy dot;
     dot.set({50, 50}, {50, 50}, {50, 50}, {50, 50});
     BezierProxy unset;  // NaN control points
-    LineSegmentProxy nan_end = segment({10, 10}, {NAN, 20});
+    LineSegmentProxy nan_end = segment_proxy({10, 10}, {NAN, 20});
     CircleProxy zero_circle;
     zero_circle.set({50, 50}, 0);
     ArcProxy zero_arc;
@@ -209,21 +208,22 @@ TEST(SkeletalStroke, DegenerateSkeletonsDrawNothing) {
     PolygonProxy empty_polygon;
     empty_polygon.set(std::vector<Point>{});
     Coverage c(100, 100, [&](Canvas& canvas) {
-        s.draw(canvas, segment({50, 50}, {50, 50}), 10);
+        s.draw(canvas, segment_proxy({50, 50}, {50, 50}), 10);
         for (const Proxy* p : std::initializer_list<const Proxy*>{
                  &dot, &unset, &nan_end, &zero_circle, &zero_arc, &point, &empty_polygon})
             s.draw(canvas, *p, 10);
-        s.draw(canvas, segment({10, 50}, {90, 50}), 0);
-        s.draw(canvas, segment({10, 50}, {90, 50}), -5);
-        s.draw(canvas, segment({10, 50}, {90, 50}), NAN);
-        s.draw(canvas, segment({10, 50}, {90, 50}), INFINITY);
+        s.draw(canvas, segment_proxy({10, 50}, {90, 50}), 0);
+        s.draw(canvas, segment_proxy({10, 50}, {90, 50}), -5);
+        s.draw(canvas, segment_proxy({10, 50}, {90, 50}), NAN);
+        s.draw(canvas, segment_proxy({10, 50}, {90, 50}), INFINITY);
         s.draw(canvas, std::vector<Point>{}, 10);
         s.draw(canvas, std::vector<Point>{{40, 40}}, 10);
         s.draw(canvas, std::vector<Point>{{40, 40}, {40, 40}, {40, 40}}, 10);
         s.draw(canvas, std::vector<Point>{{40, 40}, {NAN, 40}, {60, 40}}, 10);
         SkeletalStroke moved = SkeletalStroke::builtin("leafy");
         SkeletalStroke taken = std::move(moved);
-        moved.draw(canvas, segment({10, 50}, {90, 50}), 10);  // NOLINT: use after move on purpose
+        moved.draw(canvas, segment_proxy({10, 50}, {90, 50}),
+                   10);  // NOLINT: use after move on purpose
     });
     EXPECT_EQ(c.status(), CAIRO_STATUS_SUCCESS);
     EXPECT_EQ(c.count(1), 0);
@@ -232,7 +232,7 @@ TEST(SkeletalStroke, DegenerateSkeletonsDrawNothing) {
 TEST(SkeletalStroke, VeryShortSkeletonStaysAtItsPlace) {
     for (const auto& name : SkeletalStroke::builtin_names()) {
         Coverage c(100, 100, [&](Canvas& canvas) {
-            SkeletalStroke::builtin(name).draw(canvas, segment({50, 50}, {50.0001, 50}), 10);
+            SkeletalStroke::builtin(name).draw(canvas, segment_proxy({50, 50}, {50.0001, 50}), 10);
         });
         EXPECT_EQ(c.status(), CAIRO_STATUS_SUCCESS) << name;
         if (c.count(1) > 0) {

@@ -7,17 +7,12 @@
 #include <string>
 
 #include "fixtures/alpha_coverage.hpp"
+#include "fixtures/proxy_factory.hpp"
 #include "fixtures/temp_dir.hpp"
 
 namespace {
 using namespace acanthus;
 using namespace acanthus::test;
-
-LineSegmentProxy segment(Point a, Point b) {
-    LineSegmentProxy s;
-    s.set(a, b);
-    return s;
-}
 
 template <typename F>
 std::string input_error_message(F&& f) {
@@ -35,7 +30,7 @@ TEST(SkeletalStroke, UserStrokeFromPathDataMapsBoundingBoxToFrame) {
     SkeletalStroke wedge = SkeletalStroke::from_svg_path("M 5,5 L 105,55 L 5,105 Z", "wedge");
     EXPECT_EQ(wedge.name(), "wedge");
     Coverage c(300, 100, [&](Canvas& canvas) {
-        wedge.draw(canvas, segment({50, 50}, {250, 50}), 40);
+        wedge.draw(canvas, segment_proxy({50, 50}, {250, 50}), 40);
     });
     Rect b = c.bounds(8);
     EXPECT_NEAR(b.x0, 50, 1.5);
@@ -59,7 +54,7 @@ TEST(SkeletalStroke, UserStrokeFromFileAppliesTransformsAndSkipsDefs) {
     EXPECT_EQ(file.name(), path.string());
     auto draw = [](const SkeletalStroke& s) {
         return Coverage(300, 100, [&](Canvas& canvas) {
-            s.draw(canvas, segment({50, 50}, {250, 50}), 40);
+            s.draw(canvas, segment_proxy({50, 50}, {250, 50}), 40);
         });
     };
     Coverage a = draw(file), b = draw(data);
@@ -78,7 +73,7 @@ TEST(SkeletalStroke, UserStrokeFileHonoursEvenOddFillRule) {
                                               ring + "'/></svg>");
     auto centre_covered = [](const SkeletalStroke& s) {
         Coverage c(300, 100, [&](Canvas& canvas) {
-            s.draw(canvas, segment({50, 50}, {250, 50}), 60);
+            s.draw(canvas, segment_proxy({50, 50}, {250, 50}), 60);
         });
         return c.covered(150, 50);
     };
