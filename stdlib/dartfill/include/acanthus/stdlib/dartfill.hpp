@@ -1,7 +1,6 @@
-// dartfill: dense non-periodic aggregates of arbitrary (concave) shapes, after Sakurai & Miyata,
-// "Generating Layout of Nonperiodic Aggregates" (2012). Three placement methods share exact
-// triangle-based overlap tests: the naive dart-throwing baseline, the paper's fill-gap method,
-// and a medial-axis variant (docs/stdlib/dartfill.md).
+// dartfill: dense non-periodic aggregates of arbitrary (concave) shapes after Sakurai & Miyata
+// (2012), placed naively, by the paper's fill-gap method or along the medial axis, with exact
+// overlap tests (docs/stdlib/dartfill.md).
 #pragma once
 
 #include <acanthus/body.hpp>
