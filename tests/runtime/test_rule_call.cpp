@@ -129,6 +129,20 @@ TEST(RuleCall, ExceptionsBecomeRuleFailures) {
     EXPECT_EQ(live, before);
 }
 
+TEST(RuleCall, InputErrorsStayInputErrors) {
+    blob parent;
+    RuleInfo rule = make_rule([](RuleCall&) -> Result { throw InputError("ref.json: element 2"); });
+    RuleCall call(rule, parent);
+    try {
+        call.run();
+        FAIL() << "expected InputError";
+    } catch (const RuleFailure&) {
+        FAIL() << "an InputError became a RuleFailure";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "ref.json: element 2");
+    }
+}
+
 TEST(RuleCall, NewChildOfForeignElementIsAnError) {
     static blob outsider;
     blob parent;

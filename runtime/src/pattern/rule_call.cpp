@@ -71,6 +71,8 @@ Result RuleCall::run() {
         r = rule_.body(*this);
     } catch (const RuleFailure&) {
         throw;
+    } catch (const InputError&) {
+        throw;  // a library's input file (a reference, a shape file) is bad input: exit 1
     } catch (const std::exception& e) {
         throw RuleFailure(rule_.file, rule_.line, rule_.name,
                           std::string("exception thrown: ") + e.what());

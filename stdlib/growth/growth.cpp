@@ -1,0 +1,116 @@
+// The public API: modes, Reference accessors, and synthesize() over a region or the running
+// ornament.
+#include <acanthus/environment.hpp>
+#include <acanthus/error.hpp>
+#include <acanthus/stdlib/growth.hpp>
+#include <cmath>
+#include <stdexcept>
+
+#include "panel.hpp"
+#include "reference.hpp"
+#include "synthesis.hpp"
+
+namespace acanthus::growth {
+
+Mode parse_mode(std::string_view text) {
+    if (text == "none" || text == "non-rotation") return Mode::none;
+    if (text == "rotation") return Mode::rotation;
+    if (text == "flow") return Mode::flow;
+    throw InputError("growth: unknown mode '" + std::string(text) +
+                     "' (expected none, rotation or flow)");
+}
+
+std::string_view to_string(Mode mode) {
+    switch (mode) {
+        case Mode::none:
+            return "none";
+        case Mode::rotation:
+            return "rotation";
+        case Mode::flow:
+            return "flow";
+    }
+    return "?";
+}
+
+Reference::Reference(std::shared_ptr<const detail::ReferenceData> data) : data_(std::move(data)) {}
+
+Reference Reference::from_elements(std::vector<ReferenceElement> elements,
+                                   std::vector<std::pair<int, int>> flips,
+                                   const std::string& name) {
+    return Reference(detail::analyse_reference(name, std::move(elements), std::move(flips)));
+}
+
+std::size_t Reference::size() const { return data_->elements.size(); }
+const ReferenceElement& Reference::element(std::size_t i) const { return data_->elements.at(i); }
+double Reference::radius(std::size_t i) const { return data_->radius.at(i); }
+const std::vector<std::pair<int, int>>& Reference::edges() const {
+    return data_->connectivity.edges;
+}
+const std::vector<int>& Reference::ring(std::size_t i) const {
+    return data_->connectivity.rings.at(i);
+}
+bool Reference::boundary(std::size_t i) const { return data_->connectivity.boundary.at(i); }
+double Reference::mean_edge_length() const { return data_->mean_edge; }
+double Reference::shortest_edge_length() const { return data_->shortest_edge; }
+const std::string& Reference::name() const { return data_->name; }
+
+namespace {
+
+void check_options(const Options& o) {
+    auto bad = [](const std::string& why) { throw InputError("growth: " + why); };
+    for (double w : {o.w1, o.w2, o.w3})
+        if (!std::isfinite(w) || w < 0) bad("weights w1, w2, w3 must be finite and >= 0");
+    if (!(o.scale_min > 0) || !(o.scale_max >= o.scale_min) || !std::isfinite(o.scale_max))
+        bad("scale range must satisfy 0 < scale_min <= scale_max");
+    if (!std::isfinite(o.angle_jitter) || o.angle_jitter < 0) bad("angle_jitter must be >= 0");
+    if (!(o.short_factor >= 0) || !(o.angle_factor >= 0) || !(o.long_factor > 0) ||
+        !std::isfinite(o.short_factor + o.angle_factor + o.long_factor))
+        bad("short_factor, angle_factor and long_factor must be finite, >= 0");
+    if (!(o.relax_radius > 0) || !std::isfinite(o.relax_radius)) bad("relax_radius must be > 0");
+    if (!(o.priority_radius >= 0) || !std::isfinite(o.priority_radius))
+        bad("priority_radius must be >= 0");
+    if (o.max_elements < 0) bad("max_elements must be >= 0");
+    if (o.mode == Mode::flow && o.flow_strokes.empty())
+        bad("flow mode needs at least one flow stroke (Options::flow_strokes)");
+}
+
+SynthesisResult run(const Reference& reference, const detail::Panel& panel, const Options& options,
+                    const std::vector<Point>& starts, Random& random) {
+    check_options(options);
+    detail::Synthesis synthesis(reference.data(), panel, options, random);
+    synthesis.plant(starts);
+    synthesis.run();
+    return synthesis.result();
+}
+
+}  // namespace
+
+SynthesisResult synthesize(const Reference& reference, const Region& region, const Options& options,
+                           const std::vector<Point>& starts, std::uint64_t seed) {
+    std::vector<Point> points = starts;
+    if (points.empty())
+        points.push_back(
+            region.largest_inscribed_circle(reference.mean_edge_length() / 100).center);
+    for (Point p : points)
+        if (!p.finite() || !region.contains(p))
+            throw InputError("growth: start point (" + std::to_string(p.x) + ", " +
+                             std::to_string(p.y) + ") lies outside the panel " + region.name());
+    detail::RegionPanel panel(region);
+    Random random(seed);
+    return run(reference, panel, options, points, random);
+}
+
+SynthesisResult synthesize(const Reference& reference, const Options& options, Point start) {
+    Environment* env = Environment::current();
+    if (!env) throw std::logic_error("growth::synthesize(reference, options) needs a rule body");
+    detail::EnvironmentPanel panel(*env);
+    return run(reference, panel, options, {start}, env->random());
+}
+
+SynthesisResult synthesize(const Reference& reference, const Options& options) {
+    Environment* env = Environment::current();
+    if (!env) throw std::logic_error("growth::synthesize(reference, options) needs a rule body");
+    return synthesize(reference, options, env->goal().center);
+}
+
+}  // namespace acanthus::growth

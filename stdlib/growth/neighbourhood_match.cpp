@@ -1,0 +1,72 @@
+#include "neighbourhood_match.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace acanthus::growth::detail {
+
+std::vector<int> ccw_from_widest_gap(const std::vector<Vector>& offsets) {
+    std::vector<int> order(offsets.size());
+    std::iota(order.begin(), order.end(), 0);
+    if (order.size() < 2) return order;
+    auto angle = [&](int i) { return std::atan2(offsets[i].y, offsets[i].x); };
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return angle(a) < angle(b); });
+    std::size_t start = 0;
+    double widest = -1;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        double from = angle(order[k]);
+        double to = angle(order[(k + 1) % order.size()]);
+        double gap = to - from;
+        if (gap <= 0) gap += 2 * M_PI;
+        if (gap > widest) {
+            widest = gap;
+            start = (k + 1) % order.size();
+        }
+    }
+    std::rotate(order.begin(), order.begin() + static_cast<long>(start), order.end());
+    return order;
+}
+
+double alignment_error(const std::vector<RingEntry>& target,
+                       const std::vector<RingEntry>& reference, int shift, double rotation,
+                       const Weights& w) {
+    const std::size_t m = reference.size();
+    double error = 0;
+    for (std::size_t i = 0; i < target.size(); ++i) {
+        const RingEntry& t = target[i];
+        const RingEntry& r = reference[(static_cast<std::size_t>(shift) + i) % m];
+        error += w.w1 * (t.offset - r.offset.rotated(rotation)).length();
+        if (t.symbol >= 0 && t.symbol != r.symbol) error += w.w2;
+        if (t.sub >= 0 && t.sub == r.sub) error += w.w3;
+    }
+    return error;
+}
+
+double best_fit_rotation(const std::vector<RingEntry>& target,
+                         const std::vector<RingEntry>& reference, int shift) {
+    // argmin over theta of sum |t - R(theta) r|^2 = atan2(sum r x t, sum r . t).
+    double s = 0, c = 0;
+    for (std::size_t i = 0; i < target.size(); ++i) {
+        const Vector& r =
+            reference[(static_cast<std::size_t>(shift) + i) % reference.size()].offset;
+        s += r.cross(target[i].offset);
+        c += r.dot(target[i].offset);
+    }
+    return s == 0 && c == 0 ? 0.0 : std::atan2(s, c);
+}
+
+RingMatch match_ring(const std::vector<RingEntry>& target, const std::vector<RingEntry>& reference,
+                     const Weights& w, bool rotate, double rotation) {
+    RingMatch best;
+    if (target.size() > reference.size()) return best;
+    if (target.empty()) return {0.0, 0, rotation};
+    for (int k = 0; k < static_cast<int>(reference.size()); ++k) {
+        double turn = rotate ? best_fit_rotation(target, reference, k) : rotation;
+        double error = alignment_error(target, reference, k, turn, w);
+        if (error < best.error) best = {error, k, turn};
+    }
+    return best;
+}
+
+}  // namespace acanthus::growth::detail

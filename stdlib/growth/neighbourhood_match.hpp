@@ -1,0 +1,48 @@
+// Section 5.2: the error between a target neighbourhood and a reference 1-ring. Neighbours are
+// paired in counter-clockwise order without skipping or flipping; the error is the minimum over
+// the cyclic alignments (in rotation mode, after the best-fit rotation of each alignment).
+#pragma once
+
+#include <acanthus/point.hpp>
+#include <limits>
+#include <vector>
+
+namespace acanthus::growth::detail {
+
+struct RingEntry {
+    Vector offset;    // neighbour minus centre
+    int symbol = -1;  // -1: an id-less seed, which matches any symbol
+    int sub = -1;     // -1: none (seeds, empty sub-ids): never "the same"
+};
+
+struct Weights {
+    double w1 = 1, w2 = 1, w3 = 100;
+};
+
+struct RingMatch {
+    double error = std::numeric_limits<double>::infinity();
+    int shift = -1;       // target[i] pairs with reference[(shift + i) % m]
+    double rotation = 0;  // applied to the reference offsets
+    bool found() const { return shift >= 0; }
+};
+
+// Indices of `offsets` counter-clockwise, starting after the widest angular gap (so that a
+// partial neighbourhood is one consecutive run).
+std::vector<int> ccw_from_widest_gap(const std::vector<Vector>& offsets);
+
+// Error of one alignment at a given rotation.
+double alignment_error(const std::vector<RingEntry>& target,
+                       const std::vector<RingEntry>& reference, int shift, double rotation,
+                       const Weights& w);
+
+// The rotation that best maps the paired reference offsets onto the target ones (least squares,
+// closed form; the centre stays fixed).
+double best_fit_rotation(const std::vector<RingEntry>& target,
+                         const std::vector<RingEntry>& reference, int shift);
+
+// Min over the cyclic alignments; not found when the target has more neighbours than the ring.
+// `rotate`: each alignment at its best-fit rotation; otherwise all at `rotation` (flow mode).
+RingMatch match_ring(const std::vector<RingEntry>& target, const std::vector<RingEntry>& reference,
+                     const Weights& w, bool rotate, double rotation = 0.0);
+
+}  // namespace acanthus::growth::detail

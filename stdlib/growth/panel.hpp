@@ -1,0 +1,44 @@
+// Where synthesis may place motifs: a whole region (tests, benchmarks) or the room the running
+// ornament leaves (the Environment of a rule body: its region and placed elements).
+#pragma once
+
+#include <acanthus/region.hpp>
+
+namespace acanthus {
+class Environment;
+}
+
+namespace acanthus::growth::detail {
+
+class Panel {
+  public:
+    virtual ~Panel() = default;
+    // Seeds outside are dropped.
+    virtual bool contains(Point p) const = 0;
+    // The motif circle lies inside (touching within `tolerance` allowed) and clear of obstacles.
+    virtual bool admits(Circle motif, double tolerance) const = 0;
+};
+
+class RegionPanel : public Panel {
+  public:
+    explicit RegionPanel(const Region& region) : region_(region) {}
+    bool contains(Point p) const override { return region_.contains(p); }
+    bool admits(Circle motif, double tolerance) const override;
+
+  private:
+    const Region& region_;
+};
+
+// Inside a rule body: the running engine answers for its region and its placed elements. A
+// point proxy (the seed synthesis starts on) does not block a motif.
+class EnvironmentPanel : public Panel {
+  public:
+    explicit EnvironmentPanel(Environment& env) : env_(env) {}
+    bool contains(Point p) const override;
+    bool admits(Circle motif, double tolerance) const override;
+
+  private:
+    Environment& env_;
+};
+
+}  // namespace acanthus::growth::detail

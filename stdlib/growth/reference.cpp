@@ -1,0 +1,83 @@
+#include "reference.hpp"
+
+#include <acanthus/error.hpp>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace acanthus::growth::detail {
+
+int ReferenceData::symbol_id(const std::string& s) const {
+    auto it = std::lower_bound(symbols.begin(), symbols.end(), s);
+    return it != symbols.end() && *it == s ? static_cast<int>(it - symbols.begin()) : -1;
+}
+
+std::shared_ptr<const ReferenceData> analyse_reference(std::string name,
+                                                       std::vector<ReferenceElement> elements,
+                                                       std::vector<std::pair<int, int>> flips) {
+    auto bad = [&](std::size_t i, const std::string& why) {
+        throw InputError(name + ": element " + std::to_string(i) + ": " + why);
+    };
+    if (elements.size() < 3)
+        throw InputError(name + ": a reference needs at least 3 elements, it has " +
+                         std::to_string(elements.size()));
+    std::map<std::pair<double, double>, std::size_t> seen;
+    std::vector<Point> points;
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        const ReferenceElement& e = elements[i];
+        if (e.symbol.empty()) bad(i, "empty \"symbol\"");
+        if (!e.position.finite()) bad(i, "coordinates are not finite numbers");
+        if (!std::isfinite(e.angle)) bad(i, "\"angle\" is not a finite number");
+        if (!std::isfinite(e.size) || e.size < 0) bad(i, "\"size\" must be a positive number");
+        auto [it, fresh] = seen.emplace(std::pair{e.position.x, e.position.y}, i);
+        if (!fresh) bad(i, "lies on element " + std::to_string(it->second));
+        points.push_back(e.position);
+    }
+    auto data = std::make_shared<ReferenceData>();
+    data->name = name;
+    data->connectivity = analyse_connectivity(points, flips, name);
+    const Connectivity& c = data->connectivity;
+
+    for (const auto& e : elements) data->symbols.push_back(e.symbol);
+    std::sort(data->symbols.begin(), data->symbols.end());
+    data->symbols.erase(std::unique(data->symbols.begin(), data->symbols.end()),
+                        data->symbols.end());
+    std::vector<std::string> subs;
+    for (const auto& e : elements)
+        if (!e.sub.empty()) subs.push_back(e.sub);
+    std::sort(subs.begin(), subs.end());
+    subs.erase(std::unique(subs.begin(), subs.end()), subs.end());
+
+    double total = 0;
+    data->shortest_edge = INFINITY;
+    for (auto [i, j] : c.edges) {
+        double l = distance(points[i], points[j]);
+        total += l;
+        data->shortest_edge = std::min(data->shortest_edge, l);
+    }
+    data->mean_edge = total / static_cast<double>(c.edges.size());
+
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        const ReferenceElement& e = elements[i];
+        data->symbol.push_back(data->symbol_id(e.symbol));
+        auto it = std::lower_bound(subs.begin(), subs.end(), e.sub);
+        data->sub.push_back(e.sub.empty() ? -1 : static_cast<int>(it - subs.begin()));
+        data->radius.push_back(e.size > 0 ? e.size : 0.35 * data->mean_edge);
+        std::vector<RingSlot> ring;
+        for (std::size_t k = 0; k < c.rings[i].size(); ++k) {
+            int j = c.rings[i][k];
+            ring.push_back({j, points[j] - points[i], c.closed[i][k]});
+        }
+        data->rings.push_back(std::move(ring));
+        if (!c.boundary[i]) data->candidates.push_back(static_cast<int>(i));
+    }
+    // A reference too small to have an inside (a single triangle, a strip) still grows: its
+    // elements with a ring stand in for interior ones.
+    if (data->candidates.empty())
+        for (std::size_t i = 0; i < elements.size(); ++i)
+            if (!data->rings[i].empty()) data->candidates.push_back(static_cast<int>(i));
+    data->elements = std::move(elements);
+    return data;
+}
+
+}  // namespace acanthus::growth::detail

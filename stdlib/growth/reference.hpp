@@ -1,0 +1,42 @@
+// The analysed reference arrangement behind growth::Reference: elements with interned symbol and
+// sub-ids, the connectivity, and each element's 1-ring as offsets (section 4).
+#pragma once
+
+#include <acanthus/stdlib/growth.hpp>
+#include <string>
+#include <vector>
+
+#include "connectivity.hpp"
+
+namespace acanthus::growth::detail {
+
+// One neighbour in a reference 1-ring.
+struct RingSlot {
+    int element = -1;
+    Vector offset;        // neighbour minus centre
+    bool closed = false;  // this slot, the next one and the centre form a kept triangle
+};
+
+struct ReferenceData {
+    std::string name;
+    std::vector<ReferenceElement> elements;
+    std::vector<std::string> symbols;  // sorted names; symbol ids index it
+    std::vector<int> symbol;           // per element
+    std::vector<int> sub;              // per element, interned; -1 for an empty sub
+    std::vector<double> radius;        // collision radius per element
+    Connectivity connectivity;
+    std::vector<std::vector<RingSlot>> rings;  // per element, counter-clockwise
+    std::vector<int> candidates;               // elements matched against (not boundary)
+    double mean_edge = 0;
+    double shortest_edge = 0;
+
+    int symbol_id(const std::string& name) const;  // -1 when unknown
+};
+
+// Validates (finite coordinates and sizes, at least 3 distinct points, flips) and analyses.
+// Errors name `name` and the element index.
+std::shared_ptr<const ReferenceData> analyse_reference(std::string name,
+                                                       std::vector<ReferenceElement> elements,
+                                                       std::vector<std::pair<int, int>> flips);
+
+}  // namespace acanthus::growth::detail

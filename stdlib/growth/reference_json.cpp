@@ -1,0 +1,114 @@
+// The reference arrangement as JSON (issue 10): {"elements": [{"symbol": "a", "sub": "1",
+// "x": 0, "y": 0, "angle": 0, "size": 3}], "flips": [[i, j]]}.
+#include <acanthus/error.hpp>
+#include <acanthus/input_file.hpp>
+#include <acanthus/stdlib/growth.hpp>
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "reference.hpp"
+
+namespace acanthus::growth {
+namespace {
+
+using Json = nlohmann::json;
+
+double number(const Json& e, const char* key, const std::string& where) {
+    const Json& v = e.at(key);
+    if (!v.is_number()) throw InputError(where + ": \"" + key + "\" is not a number");
+    double d = v.get<double>();
+    if (!std::isfinite(d)) throw InputError(where + ": \"" + key + "\" is not finite");
+    return d;
+}
+
+std::string text(const Json& e, const char* key, const std::string& where) {
+    const Json& v = e.at(key);
+    if (!v.is_string()) throw InputError(where + ": \"" + key + "\" is not a string");
+    return v.get<std::string>();
+}
+
+// Deepest nesting of arrays and objects outside strings: parsed JSON is freed recursively, so a
+// file of a million '[' must be refused before it is parsed.
+std::size_t nesting_depth(std::string_view text) {
+    std::size_t depth = 0, deepest = 0;
+    bool in_string = false, escaped = false;
+    for (char ch : text) {
+        if (in_string) {
+            if (escaped)
+                escaped = false;
+            else if (ch == '\\')
+                escaped = true;
+            else if (ch == '"')
+                in_string = false;
+        } else if (ch == '"') {
+            in_string = true;
+        } else if (ch == '[' || ch == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((ch == ']' || ch == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
+}
+
+}  // namespace
+
+Reference Reference::from_json_string(std::string_view input, const std::string& name) {
+    if (nesting_depth(input) > 64) throw InputError(name + ": malformed JSON (nested too deeply)");
+    // Literal NaN and Infinity are not JSON; the parser rejects them as malformed.
+    Json doc = Json::parse(input, nullptr, false);
+    if (doc.is_discarded()) throw InputError(name + ": malformed JSON");
+    if (!doc.is_object() || !doc.contains("elements") || !doc["elements"].is_array())
+        throw InputError(name + ": expected an object with an \"elements\" array");
+    std::vector<ReferenceElement> elements;
+    const Json& list = doc["elements"];
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const Json& e = list[i];
+        std::string where = name + ": element " + std::to_string(i);
+        if (!e.is_object()) throw InputError(where + ": not an object");
+        for (const char* key : {"symbol", "x", "y"})
+            if (!e.contains(key)) throw InputError(where + ": missing \"" + key + "\"");
+        ReferenceElement r;
+        r.symbol = text(e, "symbol", where);
+        if (r.symbol.empty()) throw InputError(where + ": empty \"symbol\"");
+        r.position = {number(e, "x", where), number(e, "y", where)};
+        if (e.contains("sub")) r.sub = text(e, "sub", where);
+        if (e.contains("angle")) r.angle = number(e, "angle", where);
+        if (e.contains("size")) {
+            r.size = number(e, "size", where);
+            if (!(r.size > 0)) throw InputError(where + ": \"size\" must be positive");
+        }
+        elements.push_back(std::move(r));
+    }
+    std::vector<std::pair<int, int>> flips;
+    if (doc.contains("flips")) {
+        const Json& f = doc["flips"];
+        if (!f.is_array()) throw InputError(name + ": \"flips\" is not an array");
+        for (std::size_t k = 0; k < f.size(); ++k) {
+            const Json& pair = f[k];
+            auto index = [&](const Json& v) {
+                if (!v.is_number_integer())
+                    throw InputError(name + ": flip " + std::to_string(k) +
+                                     ": expected two element indices");
+                return v.get<long long>();
+            };
+            if (!pair.is_array() || pair.size() != 2)
+                throw InputError(name + ": flip " + std::to_string(k) + ": expected a pair [i, j]");
+            long long i = index(pair[0]), j = index(pair[1]);
+            auto n = static_cast<long long>(elements.size());
+            if (i < 0 || j < 0 || i >= n || j >= n)
+                throw InputError(name + ": flip " + std::to_string(k) + " [" + std::to_string(i) +
+                                 ", " + std::to_string(j) + "] names no edge (no such element)");
+            flips.emplace_back(static_cast<int>(i), static_cast<int>(j));
+        }
+    }
+    return from_elements(std::move(elements), std::move(flips), name);
+}
+
+Reference Reference::from_json_file(const std::string& path) {
+    std::string content = read_input_file_or_throw(path, "reference arrangement");
+    return from_json_string(content, path);
+}
+
+}  // namespace acanthus::growth

@@ -1,0 +1,259 @@
+#include "synthesis.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "relaxation.hpp"
+
+namespace acanthus::growth::detail {
+
+Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const Options& options,
+                     Random& random)
+    : reference_(reference),
+      panel_(panel),
+      options_(options),
+      random_(random),
+      weights_{options.w1, options.w2, options.w3},
+      l_(reference.mean_edge),
+      l_short_(options.short_factor * reference.shortest_edge),
+      tolerance_(1e-9 * reference.mean_edge),
+      pattern_(reference.mean_edge) {
+    for (std::size_t i = 0; i < reference.elements.size(); ++i) {
+        std::vector<RingEntry> ring;
+        for (const RingSlot& s : reference.rings[i])
+            ring.push_back({s.offset, reference.symbol[s.element], reference.sub[s.element]});
+        rings_.push_back(std::move(ring));
+    }
+    if (options.mode == Mode::flow) flow_.emplace(options.flow_strokes, l_, "growth");
+    for (const std::string& name : reference.symbols) {
+        auto it = options.priority.find(name);
+        priority_.push_back(it == options.priority.end() ? 0 : it->second);
+        priorities_differ_ = priorities_differ_ || priority_.back() != priority_.front();
+    }
+}
+
+int Synthesis::priority(int symbol) const { return symbol >= 0 ? priority_[symbol] : 0; }
+
+int Synthesis::plant(const std::vector<Point>& starts) {
+    int planted = 0;
+    for (Point p : starts) {
+        if (!p.finite() || !panel_.contains(p)) continue;
+        starts_.push_back(p);
+        int id = new_seed(p, -1);
+        pattern_[id].fixed = true;  // the paper holds the initial element
+        ++planted;
+    }
+    return planted;
+}
+
+int Synthesis::new_seed(Point p, int symbol) {
+    Node n;
+    n.position = p;
+    n.symbol = symbol;
+    n.start_distance = INFINITY;
+    for (Point s : starts_) n.start_distance = std::min(n.start_distance, distance(s, p));
+    int id = pattern_.add(std::move(n));
+    queue_.insert({pattern_[id].start_distance, id});
+    ++stats_.seeds;
+    return id;
+}
+
+void Synthesis::drop(int seed) {
+    queue_.erase({pattern_[seed].start_distance, seed});
+    pattern_.kill(seed);
+    ++stats_.dropped;
+}
+
+// Section 5.1: the nearest seed that has no seed of a higher priority within 5 l.
+int Synthesis::next_seed() const {
+    for (auto [d, id] : queue_) {
+        if (!priorities_differ_) return id;
+        const Node& s = pattern_[id];
+        bool blocked = false;
+        for (int other : pattern_.near(s.position, options_.priority_radius * l_)) {
+            const Node& o = pattern_[other];
+            if (!o.placed() && priority(o.symbol) > priority(s.symbol)) {
+                blocked = true;
+                break;
+            }
+        }
+        if (!blocked) return id;
+    }
+    return queue_.empty() ? -1 : queue_.begin()->second;
+}
+
+void Synthesis::run() {
+    auto begin = std::chrono::steady_clock::now();
+    while (!queue_.empty()) {
+        if (options_.max_elements > 0 && static_cast<long>(placed_.size()) >= options_.max_elements)
+            break;
+        int seed = next_seed();
+        queue_.erase({pattern_[seed].start_distance, seed});
+        ++stats_.steps;
+        if (!panel_.contains(pattern_[seed].position)) {
+            pattern_.kill(seed);
+            ++stats_.dropped;
+            continue;
+        }
+        grow(seed);
+    }
+    stats_.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntry>& target) {
+    // Section 5.2, eq. 1: the reference element minimizing ERROR; exact ties are drawn at random
+    // so that a regular reference does not copy one element everywhere.
+    std::vector<Choice> best;
+    double best_error = INFINITY;
+    // Flow mode turns the whole reference so that its x axis follows the field at the seed.
+    const bool rotate = options_.mode == Mode::rotation;
+    const double turn = flow_ ? flow_->angle(seed.position) : 0.0;
+    for (int c : reference_.candidates) {
+        if (seed.symbol >= 0 && reference_.symbol[c] != seed.symbol) continue;
+        RingMatch m = match_ring(target, rings_[c], weights_, rotate, turn);
+        if (!m.found()) continue;
+        double slack = best.empty() ? 0.0 : 1e-9 * (1 + best_error);
+        if (best.empty() || m.error < best_error - slack) {
+            best.clear();
+            best_error = m.error;
+        }
+        if (m.error <= best_error + slack) best.push_back({c, m});
+    }
+    if (best.empty()) return {};
+    if (best.size() == 1) return best.front();
+    return best[static_cast<std::size_t>(
+        random_.uniform_int(0, static_cast<long long>(best.size()) - 1))];
+}
+
+bool Synthesis::motif_fits(int id, Point at, double radius) const {
+    if (!panel_.admits({at, radius}, tolerance_)) return false;
+    for (int other : pattern_.near(at, radius + pattern_.largest_radius())) {
+        const Node& o = pattern_[other];
+        if (other == id || !o.placed()) continue;
+        if (distance(o.position, at) < radius + o.radius - tolerance_) return false;
+    }
+    return true;
+}
+
+void Synthesis::grow(int id) {
+    // The target neighbourhood w(e_tar): linked elements and seeds, CCW from the open side.
+    std::vector<Vector> offsets;
+    std::vector<int> neighbours;
+    for (const Link& l : pattern_[id].links) {
+        neighbours.push_back(l.node);
+        offsets.push_back(pattern_[l.node].position - pattern_[id].position);
+    }
+    std::vector<RingEntry> target;
+    std::vector<int> target_nodes;
+    for (int k : ccw_from_widest_gap(offsets)) {
+        const Node& n = pattern_[neighbours[k]];
+        target.push_back({offsets[k], n.symbol, n.placed() ? n.sub : -1});
+        target_nodes.push_back(neighbours[k]);
+    }
+    Choice choice = choose(pattern_[id], target);
+    if (choice.element < 0) return drop(id);
+    double scale = random_.uniform(options_.scale_min, options_.scale_max);
+    double jitter = options_.angle_jitter > 0
+                        ? random_.uniform(-options_.angle_jitter, options_.angle_jitter)
+                        : 0.0;
+    double radius = reference_.radius[choice.element] * scale;
+    if (!motif_fits(id, pattern_[id].position, radius)) return drop(id);
+
+    Node& n = pattern_[id];
+    const int c = choice.element;
+    n.source = c;
+    n.symbol = reference_.symbol[c];
+    n.sub = reference_.sub[c];
+    n.rotation = choice.match.rotation;
+    n.angle = reference_.elements[c].angle + n.rotation + jitter;
+    n.scale = scale;
+    n.radius = radius;
+    pattern_.note_radius(radius);
+    placed_.push_back(id);
+    const auto& ring = reference_.rings[c];
+    for (std::size_t i = 0; i < target_nodes.size(); ++i) {
+        std::size_t slot = (static_cast<std::size_t>(choice.match.shift) + i) % ring.size();
+        pattern_.set_desired(id, target_nodes[i], ring[slot].offset.rotated(n.rotation));
+    }
+    spawn(id, choice, target_nodes);
+    if (options_.relax) relax_around(id);
+}
+
+bool Synthesis::still_valid(int id) const {
+    const Node& n = pattern_[id];
+    return n.placed() ? motif_fits(id, n.position, n.radius) : panel_.contains(n.position);
+}
+
+void Synthesis::relax_around(int centre) {
+    auto begin = std::chrono::steady_clock::now();
+    // Unknowns: the free nodes in the window; their linked nodes outside it hold still.
+    std::map<int, int> local;
+    std::vector<Point> positions;
+    std::vector<int> free_local, free_nodes;
+    for (int id : pattern_.near(pattern_[centre].position, options_.relax_radius * l_)) {
+        const Node& n = pattern_[id];
+        if (n.fixed || n.links.empty()) continue;
+        local.emplace(id, static_cast<int>(positions.size()));
+        free_local.push_back(static_cast<int>(positions.size()));
+        free_nodes.push_back(id);
+        positions.push_back(n.position);
+    }
+    if (free_nodes.empty()) return;
+    std::vector<Spring> springs;
+    for (int id : free_nodes) {
+        for (const Link& l : pattern_[id].links) {
+            auto [it, fresh] = local.emplace(l.node, static_cast<int>(positions.size()));
+            if (fresh) positions.push_back(pattern_[l.node].position);
+            springs.push_back({local[id], it->second, l.desired});
+            if (!std::binary_search(free_nodes.begin(), free_nodes.end(), l.node))
+                for (const Link& back : pattern_[l.node].links)
+                    if (back.node == id) springs.push_back({it->second, local[id], back.desired});
+        }
+    }
+    relax(positions, springs, free_local);
+    // Apply, then put back any node whose motif would now overlap or leave the panel, until the
+    // moved ones are all valid (all put back is the old, valid state).
+    std::vector<std::pair<int, Point>> moved;
+    for (std::size_t k = 0; k < free_nodes.size(); ++k) {
+        int id = free_nodes[k];
+        Point old = pattern_[id].position;
+        if (positions[free_local[k]] == old) continue;
+        moved.push_back({id, old});
+        pattern_.move(id, positions[free_local[k]]);
+    }
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (auto& [id, old] : moved) {
+            if (pattern_[id].position == old || still_valid(id)) continue;
+            pattern_.move(id, old);
+            changed = true;
+        }
+    }
+    stats_.relax_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+SynthesisResult Synthesis::result() const {
+    SynthesisResult r;
+    std::map<int, int> index;
+    for (int id : placed_) {
+        const Node& n = pattern_[id];
+        index[id] = static_cast<int>(r.motifs.size());
+        const ReferenceElement& e = reference_.elements[n.source];
+        r.motifs.push_back({n.position, e.symbol, e.sub, n.angle, n.scale, n.radius, n.source});
+    }
+    for (int id : placed_)
+        for (const Link& l : pattern_[id].links) {
+            auto it = index.find(l.node);
+            if (it != index.end() && index[id] < it->second)
+                r.edges.emplace_back(index.at(id), it->second);
+        }
+    std::sort(r.edges.begin(), r.edges.end());
+    r.stats = stats_;
+    return r;
+}
+
+}  // namespace acanthus::growth::detail

@@ -1,0 +1,250 @@
+// Synthesis (section 5) in whole regions: motifs never overlap or leave the panel, a regular
+// lattice keeps its spacing and fills the panel, the same seed gives the same result, and the
+// rule-body entry point respects the ornament already placed.
+#include <gtest/gtest.h>
+
+#include <acanthus/environment.hpp>
+#include <acanthus/error.hpp>
+#include <acanthus/region.hpp>
+#include <acanthus/stdlib/growth.hpp>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "growth_fixtures.hpp"
+
+using namespace acanthus;
+using namespace acanthus::growth;
+using acanthus::growth::Options;
+
+namespace {
+
+double median_nearest_neighbour(const std::vector<Motif>& motifs) {
+    std::vector<double> d;
+    for (std::size_t i = 0; i < motifs.size(); ++i) {
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t j = 0; j < motifs.size(); ++j)
+            if (i != j) best = std::min(best, distance(motifs[i].position, motifs[j].position));
+        d.push_back(best);
+    }
+    std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+    return d[d.size() / 2];
+}
+
+double percentile_nearest_neighbour(const std::vector<Motif>& motifs, double q) {
+    std::vector<double> d;
+    for (std::size_t i = 0; i < motifs.size(); ++i) {
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t j = 0; j < motifs.size(); ++j)
+            if (i != j) best = std::min(best, distance(motifs[i].position, motifs[j].position));
+        d.push_back(best);
+    }
+    std::sort(d.begin(), d.end());
+    return d[static_cast<std::size_t>(q * static_cast<double>(d.size() - 1))];
+}
+
+// No overlap (brute force) and every circle inside the region.
+void expect_valid(const SynthesisResult& r, const Region& region) {
+    const double tol = 1e-7;
+    for (std::size_t i = 0; i < r.motifs.size(); ++i) {
+        const Motif& a = r.motifs[i];
+        ASSERT_TRUE(region.contains(a.position)) << "motif " << i << " outside";
+        ASSERT_GE(region.distance_to_boundary(a.position), a.radius - tol) << "motif " << i;
+        for (std::size_t j = i + 1; j < r.motifs.size(); ++j) {
+            const Motif& b = r.motifs[j];
+            ASSERT_GE(distance(a.position, b.position), a.radius + b.radius - tol)
+                << "motifs " << i << " and " << j << " overlap";
+        }
+    }
+}
+
+Reference lattice() {
+    return Reference::from_elements(growth_fixtures::triangular_lattice(7, 7, 10));
+}
+
+class GrowthLattice : public ::testing::TestWithParam<std::tuple<Mode, bool>> {};
+
+TEST_P(GrowthLattice, FillsARectangleWithTheReferenceSpacing) {
+    auto [mode, relax] = GetParam();
+    Reference ref = lattice();
+    Region region = Region::from_spec("rect:200,150");
+    Options o;
+    o.mode = mode;
+    o.relax = relax;
+    SynthesisResult r = synthesize(ref, region, o, {}, 42);
+    expect_valid(r, region);
+    double median = median_nearest_neighbour(r.motifs);
+    EXPECT_NEAR(median, 10.0, 0.5) << "median nearest-neighbour distance";
+    // A regular lattice is reproduced, not just on average: hardly any pair closer than 0.95 a.
+    EXPECT_GT(percentile_nearest_neighbour(r.motifs, 0.1), 9.5);
+    // Filled: count within 20% of area x reference density (one per sqrt(3)/2 a^2).
+    double expected = region.area() / (std::sqrt(3.0) / 2 * 100);
+    EXPECT_GT(static_cast<double>(r.motifs.size()), 0.8 * expected);
+    EXPECT_LT(static_cast<double>(r.motifs.size()), 1.2 * expected);
+    for (const Motif& m : r.motifs) {
+        EXPECT_GE(m.source, 0);
+        EXPECT_FALSE(ref.boundary(static_cast<std::size_t>(m.source)));
+        EXPECT_NEAR(m.radius, 0.35 * ref.mean_edge_length(), 1e-12);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, GrowthLattice,
+                         ::testing::Combine(::testing::Values(Mode::none, Mode::rotation),
+                                            ::testing::Bool()));
+
+TEST(GrowthSynthesis, SameSeedSameResultOtherSeedOtherChoices) {
+    Reference ref = lattice();
+    Region region = Region::from_spec("circle:60");
+    Options o;
+    o.scale_min = 0.8;
+    o.scale_max = 1.1;
+    SynthesisResult a = synthesize(ref, region, o, {}, 7);
+    SynthesisResult b = synthesize(ref, region, o, {}, 7);
+    ASSERT_EQ(a.motifs.size(), b.motifs.size());
+    for (std::size_t i = 0; i < a.motifs.size(); ++i) {
+        EXPECT_EQ(a.motifs[i].position, b.motifs[i].position);
+        EXPECT_EQ(a.motifs[i].source, b.motifs[i].source);
+        EXPECT_EQ(a.motifs[i].scale, b.motifs[i].scale);
+    }
+    EXPECT_EQ(a.edges, b.edges);
+    SynthesisResult c = synthesize(ref, region, o, {}, 8);
+    bool differs = c.motifs.size() != a.motifs.size();
+    for (std::size_t i = 0; !differs && i < a.motifs.size(); ++i)
+        differs =
+            a.motifs[i].source != c.motifs[i].source || a.motifs[i].scale != c.motifs[i].scale;
+    EXPECT_TRUE(differs);
+    expect_valid(c, region);
+}
+
+// Linked motifs i, j copied verbatim: j's source is the reference element at i's source plus
+// their offset (relaxation off, so that offsets stay the reference's).
+int verbatim_links(const Reference& ref, const SynthesisResult& r) {
+    int count = 0;
+    for (auto [i, j] : r.edges) {
+        Point want = ref.element(static_cast<std::size_t>(r.motifs[i].source)).position +
+                     (r.motifs[j].position - r.motifs[i].position);
+        count += distance(ref.element(static_cast<std::size_t>(r.motifs[j].source)).position,
+                          want) < 1e-6;
+    }
+    return count;
+}
+
+TEST(GrowthSynthesis, SubIdTermAvoidsCopyingTheReferenceVerbatim) {
+    // Every element of an irregular reference has its own sub-id. The paper's subid term (1 when
+    // the sub-ids are the same) makes continuing the reference verbatim cost w3; without it the
+    // exact continuation is the best match and the reference is copied in patches.
+    Reference ref = Reference::from_elements(growth_fixtures::jittered_lattice(8, 8, 10, 2));
+    Region region = Region::from_spec("rect:120,100");
+    Options o;
+    o.relax = false;
+    SynthesisResult with = synthesize(ref, region, o, {}, 3);
+    o.w3 = 0;
+    SynthesisResult without = synthesize(ref, region, o, {}, 3);
+    ASSERT_GT(with.edges.size(), 100u);
+    int with_count = verbatim_links(ref, with), without_count = verbatim_links(ref, without);
+    EXPECT_LT(with_count, static_cast<int>(with.edges.size()) / 20);
+    EXPECT_GT(without_count, static_cast<int>(without.edges.size()) / 4);
+}
+
+TEST(GrowthSynthesis, MaxElementsAndStartsOutside) {
+    Reference ref = lattice();
+    Region region = Region::from_spec("rect:200,150");
+    Options o;
+    o.max_elements = 25;
+    SynthesisResult r = synthesize(ref, region, o, {{100, 75}}, 1);
+    EXPECT_EQ(r.motifs.size(), 25u);
+    EXPECT_EQ(r.motifs.front().position, (Point{100, 75}));  // the first element is held
+    // Grown nearest-first: the 25 are the ones closest to the start.
+    for (const Motif& m : r.motifs) EXPECT_LT(distance(m.position, {100, 75}), 35.0);
+    EXPECT_THROW(synthesize(ref, region, o, {{-5, 5}}, 1), InputError);
+    o.mode = Mode::rotation;
+    EXPECT_THROW(parse_mode("spiral"), InputError);
+    EXPECT_EQ(parse_mode("flow"), Mode::flow);
+    EXPECT_EQ(parse_mode("rotation"), Mode::rotation);
+}
+
+TEST(GrowthSynthesis, IrregularReferenceKeepsItsSpacing) {
+    auto elements = growth_fixtures::jittered_lattice(9, 9, 10, 2);
+    Reference ref = Reference::from_elements(elements);
+    std::vector<Motif> as_motifs;
+    for (const auto& e : elements) as_motifs.push_back({e.position, e.symbol, e.sub, 0, 1, 0, 0});
+    double reference_median = median_nearest_neighbour(as_motifs);
+    for (Mode mode : {Mode::none, Mode::rotation}) {
+        Options o;
+        o.mode = mode;
+        Region region = Region::from_spec("ellipse:90,70");
+        SynthesisResult r = synthesize(ref, region, o, {}, 11);
+        expect_valid(r, region);
+        EXPECT_NEAR(median_nearest_neighbour(r.motifs), reference_median, 0.15 * reference_median);
+        EXPECT_GT(r.motifs.size(), 100u);
+    }
+}
+
+// The irregular two-symbol example of examples/references: the checks for an irregular
+// reference (median spacing within 15%, symbol proportions within 10 points).
+TEST(GrowthSynthesis, StonesExampleKeepsSpacingAndProportions) {
+    Reference ref = Reference::from_json_file(std::string(ACANTHUS_SOURCE_DIR) +
+                                              "/examples/references/stones.json");
+    std::vector<Motif> as_motifs;
+    double stones = 0;
+    for (std::size_t i = 0; i < ref.size(); ++i) {
+        as_motifs.push_back({ref.element(i).position, ref.element(i).symbol, "", 0, 1, 0, 0});
+        stones += ref.element(i).symbol == "stone";
+    }
+    double reference_median = median_nearest_neighbour(as_motifs);
+    Region region = Region::from_spec("rect:220,160");
+    for (Mode mode : {Mode::none, Mode::rotation}) {
+        Options o;
+        o.mode = mode;
+        SynthesisResult r = synthesize(ref, region, o, {}, 2);
+        expect_valid(r, region);
+        EXPECT_NEAR(median_nearest_neighbour(r.motifs), reference_median, 0.15 * reference_median);
+        double grown = static_cast<double>(std::count_if(
+            r.motifs.begin(), r.motifs.end(), [](const Motif& m) { return m.symbol == "stone"; }));
+        EXPECT_NEAR(grown / static_cast<double>(r.motifs.size()),
+                    stones / static_cast<double>(ref.size()), 0.10);
+        // Filled: within 20% of area x the reference's density (its points over its hull box).
+        double density = static_cast<double>(ref.size()) / (90.0 * 90.0);
+        EXPECT_GT(static_cast<double>(r.motifs.size()), 0.8 * density * region.area());
+    }
+}
+
+TEST(GrowthSynthesis, ThreeColouredLatticeKeepsNeighboursApart) {
+    // Axial colouring (q - r) mod 3: no two lattice neighbours share a symbol.
+    auto elements = growth_fixtures::triangular_lattice(8, 8, 10);
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        int r = static_cast<int>(i) / 8, c = static_cast<int>(i) % 8;
+        int q = c - (r - r % 2) / 2;
+        elements[i].symbol = std::string(1, static_cast<char>('a' + ((q - r) % 3 + 3) % 3));
+    }
+    Reference ref = Reference::from_elements(elements);
+    for (auto [i, j] : ref.edges()) ASSERT_NE(elements[i].symbol, elements[j].symbol);
+    Region region = Region::from_spec("rect:200,160");
+    for (Mode mode : {Mode::none, Mode::rotation}) {
+        Options o;
+        o.mode = mode;
+        SynthesisResult r = synthesize(ref, region, o, {}, 6);
+        int close = 0, same = 0;
+        for (std::size_t i = 0; i < r.motifs.size(); ++i)
+            for (std::size_t j = i + 1; j < r.motifs.size(); ++j)
+                if (distance(r.motifs[i].position, r.motifs[j].position) < 12) {
+                    ++close;
+                    same += r.motifs[i].symbol == r.motifs[j].symbol;
+                }
+        ASSERT_GT(close, 300);
+        EXPECT_LT(same, close / 10) << to_string(mode);
+    }
+}
+
+TEST(GrowthSynthesis, TwoSymbolsKeepTheirProportions) {
+    Reference ref =
+        Reference::from_elements(growth_fixtures::triangular_lattice(8, 8, 10, {"a", "b"}));
+    Region region = Region::from_spec("rect:180,160");
+    SynthesisResult r = synthesize(ref, region, Options{}, {}, 5);
+    expect_valid(r, region);
+    double a = static_cast<double>(std::count_if(r.motifs.begin(), r.motifs.end(),
+                                                 [](const Motif& m) { return m.symbol == "a"; }));
+    EXPECT_NEAR(a / static_cast<double>(r.motifs.size()), 0.5, 0.1);
+}
+
+}  // namespace
