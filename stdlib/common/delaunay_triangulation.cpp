@@ -50,6 +50,7 @@ std::vector<DelaunayTriangle> delaunay_triangulation(const std::vector<Point>& p
                                         " is not finite");
         input.emplace_back(points[i].x, points[i].y);
     }
+    if (input.size() < 3) return {};  // CGAL's property map would index an empty vector
     Delaunay dt;
     Delaunay::Face_handle hint;
     for (std::size_t i : insertion_order(input)) {
