@@ -5,7 +5,11 @@
 #include <cmath>
 #include <map>
 
+#include "geometry/coordinate_range.hpp"
+
 namespace acanthus::growth::detail {
+
+using acanthus::detail::in_coordinate_range;
 
 int ReferenceData::symbol_id(const std::string& s) const {
     auto it = std::lower_bound(symbols.begin(), symbols.end(), s);
@@ -27,8 +31,11 @@ std::shared_ptr<const ReferenceData> analyse_reference(std::string name,
         const ReferenceElement& e = elements[i];
         if (e.symbol.empty()) bad(i, "empty \"symbol\"");
         if (!e.position.finite()) bad(i, "coordinates are not finite numbers");
+        if (!in_coordinate_range(e.position.x) || !in_coordinate_range(e.position.y))
+            bad(i, "coordinates out of range (the limit is ±1e9 user units)");
         if (!std::isfinite(e.angle)) bad(i, "\"angle\" is not a finite number");
         if (!std::isfinite(e.size) || e.size < 0) bad(i, "\"size\" must be a positive number");
+        if (!in_coordinate_range(e.size)) bad(i, "\"size\" out of range (the limit is 1e9)");
         auto [it, fresh] = seen.emplace(std::pair{e.position.x, e.position.y}, i);
         if (!fresh) bad(i, "lies on element " + std::to_string(it->second));
         points.push_back(e.position);

@@ -5,10 +5,9 @@
 #include <acanthus/proxy.hpp>
 #include <string>
 
-namespace acanthus::detail {
+#include "geometry/coordinate_range.hpp"
 
-// |x|, |y| and radii at most this (region user units). Documented in docs/cli.md.
-inline constexpr double kMaxCoordinate = 1e9;
+namespace acanthus::detail {
 
 // Empty when the (finite) proxy is in range; otherwise what is wrong, e.g.
 // "a negative radius (-3)" or "a coordinate beyond +-1e9 (x = 1e+300)".

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string>
 
+#include "geometry/coordinate_range.hpp"
 #include "region/curves.hpp"
 #include "region/fill.hpp"
 
@@ -66,12 +67,8 @@ double cross_integral(const Geom::Curve& c) {
     return polyline_cross_integral(c);
 }
 
-// Coordinates beyond this are refused: far past any panel, and squaring them for areas and
-// distances must stay finite with room to spare.
-constexpr double kCoordinateLimit = 1e9;
-
 bool in_range(Geom::Point p) {
-    return std::abs(p[Geom::X]) <= kCoordinateLimit && std::abs(p[Geom::Y]) <= kCoordinateLimit;
+    return in_coordinate_range(p[Geom::X]) && in_coordinate_range(p[Geom::Y]);
 }
 
 std::string where(const std::string& name, const std::string& label) {
@@ -84,8 +81,8 @@ void require_in_range(const FilledShape& shape, const std::string& name) {
             const Geom::Curve& c = p[i];
             bool ok = in_range(c.initialPoint()) && in_range(c.finalPoint());
             if (auto arc = dynamic_cast<const Geom::EllipticalArc*>(&c))
-                ok = ok && arc->ray(Geom::X) <= kCoordinateLimit &&
-                     arc->ray(Geom::Y) <= kCoordinateLimit;
+                ok = ok && in_coordinate_range(arc->ray(Geom::X)) &&
+                     in_coordinate_range(arc->ray(Geom::Y));
             else if (auto bez = dynamic_cast<const Geom::BezierCurve*>(&c))
                 for (unsigned k = 0; k <= bez->order(); ++k) ok = ok && in_range((*bez)[k]);
             if (!ok)

@@ -130,4 +130,15 @@ TEST(GrowthJson, BadSizeAndDuplicates) {
     expect_error(head + R"({"symbol": "a", "x": 0, "y": 0}]})", "element 2: lies on element 0");
 }
 
+TEST(GrowthJson, CoordinatesOutOfRange) {
+    // The range regions and placed elements keep (docs/cli.md): ±1e9 is in, beyond is refused.
+    const std::string head = R"({"elements": [{"symbol": "a", "x": 0, "y": 0},
+                                  {"symbol": "a", "x": 1e9, "y": 0}, )";
+    EXPECT_EQ(error_of(head + R"({"symbol": "a", "x": 0, "y": -1e9}]})"), "");
+    expect_error(head + R"({"symbol": "a", "x": 0, "y": -1.5e9}]})",
+                 "element 2: coordinates out of range");
+    expect_error(head + R"({"symbol": "a", "x": 0, "y": 1, "size": 1e300}]})",
+                 "element 2: \"size\" out of range");
+}
+
 }  // namespace
