@@ -27,8 +27,7 @@ std::vector<std::vector<Point>> polylines(const Geom::PathVector& paths) {
     std::vector<std::vector<Point>> out;
     for (const Geom::Path& p : paths) {
         std::vector<Point> line{{p.initialPoint()[Geom::X], p.initialPoint()[Geom::Y]}};
-        for (std::size_t i = 0; i < p.size_closed(); ++i) {
-            const Geom::Curve& c = p[i];
+        for (const Geom::Curve& c : p) {  // the closing segment only when closed
             const bool straight = c.isLineSegment();
             for (int k = straight ? kSamplesPerCurve : 1; k <= kSamplesPerCurve; ++k) {
                 Geom::Point q = c.pointAt(static_cast<double>(k) / kSamplesPerCurve);
