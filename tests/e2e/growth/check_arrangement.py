@@ -1,0 +1,262 @@
+#!/usr/bin/env python3
+"""Issue 10's checks on rules/arrangement.acr, run as a user runs it: references grown into
+panels through the pattern program and --json, then measured. Usage: check_arrangement.py PROGRAM
+SOURCE_DIR WORK_DIR [CASE...]."""
+import json
+import math
+import pathlib
+import subprocess
+import sys
+
+PROGRAM, SOURCE, WORK = sys.argv[1], pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
+REFS = SOURCE / "examples/references"
+PANELS = SOURCE / "examples/panels"
+WORK.mkdir(parents=True, exist_ok=True)
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def run(name, *args, expect=0):
+    out = WORK / f"{name}.svg"
+    js = WORK / f"{name}.json"
+    for f in (out, js):
+        f.unlink(missing_ok=True)
+    p = subprocess.run([PROGRAM, "-o", str(out), "--json", str(js), *args], capture_output=True,
+                       text=True, timeout=300)
+    if p.returncode != expect:
+        check(False, f"{name}: exit {p.returncode}, expected {expect}: {p.stderr.strip()}")
+        return None, p
+    if expect != 0:
+        return None, p
+    return json.loads(js.read_text()), p
+
+
+def motifs(tree):
+    return [e for e in tree["elements"] if e["type"] == "motif"]
+
+
+def centre(m):
+    return m["proxies"][0]["center"]
+
+
+def nearest(points):
+    out = []
+    for i, (x, y) in enumerate(points):
+        out.append(min(math.hypot(x - a, y - b) for j, (a, b) in enumerate(points) if j != i))
+    return out
+
+
+def median(v):
+    v = sorted(v)
+    return v[len(v) // 2]
+
+
+def reference_points(path):
+    """Element centres of a JSON reference (SVG references are measured through a run)."""
+    doc = json.loads(path.read_text())
+    return [(e["x"], e["y"]) for e in doc["elements"]], [e["symbol"] for e in doc["elements"]]
+
+
+def hull_area_perimeter(points):
+    pts = sorted(set(points))
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    hull = lower[:-1] + upper[:-1]
+    area = 0.5 * abs(sum(hull[i][0] * hull[i - 1][1] - hull[i - 1][0] * hull[i][1]
+                         for i in range(len(hull))))
+    perimeter = sum(math.dist(hull[i], hull[i - 1]) for i in range(len(hull)))
+    return area, perimeter
+
+
+def density(points):
+    # Elements per area of the hull grown by half the spacing (each element's own cell).
+    r = median(nearest(points)) / 2
+    area, perimeter = hull_area_perimeter(points)
+    return len(points) / (area + perimeter * r + math.pi * r * r)
+
+
+def valid(name, ms, width, height):
+    """No overlaps, all inside the rectangle panel."""
+    overlaps = 0
+    outside = 0
+    for i, a in enumerate(ms):
+        (x, y), r = centre(a), a["proxies"][0]["radius"]
+        if min(x, y, width - x, height - y) < r - 1e-6:
+            outside += 1
+        for b in ms[i + 1:]:
+            (u, v), s = centre(b), b["proxies"][0]["radius"]
+            if math.hypot(x - u, y - v) < r + s - 1e-6:
+                overlaps += 1
+    check(overlaps == 0, f"{name}: no two motifs overlap ({overlaps} pairs do)")
+    check(outside == 0, f"{name}: no motif leaves the panel ({outside} do)")
+
+
+def grown_like(name, ref, tolerance):
+    points, symbols = reference_points(REFS / ref)
+    tree, _ = run(name, "--param", f"reference={REFS / ref}", "--region", str(PANELS / "rectangle.svg"))
+    if tree is None:
+        return
+    ms = motifs(tree)
+    valid(name, ms, 200, 140)
+    got = median(nearest([centre(m) for m in ms]))
+    want = median(nearest(points))
+    check(abs(got - want) <= tolerance * want,
+          f"{name}: median nearest-neighbour distance {got:.3f} within {tolerance:.0%} of the "
+          f"reference's {want:.3f}")
+    expected = 200 * 140 * density(points)
+    check(abs(len(ms) - expected) <= 0.2 * expected,
+          f"{name}: {len(ms)} motifs, within 20% of area x reference density = {expected:.0f}")
+    for s in sorted(set(symbols)):
+        a = symbols.count(s) / len(symbols)
+        b = sum(1 for m in ms if m["fields"]["symbol"] == s) / len(ms)
+        check(abs(a - b) <= 0.10, f"{name}: symbol {s} {b:.0%} of motifs vs {a:.0%} in the reference")
+    return ms
+
+
+def case_regular():
+    grown_like("regular", "lattice.json", 0.05)
+
+
+def case_irregular():
+    grown_like("irregular", "stones.json", 0.15)
+
+
+def case_no_alike_neighbours():
+    ms = grown_like("tricolour", "tricolour.json", 0.05)
+    if not ms:
+        return
+    pts = [centre(m) for m in ms]
+    close = 1.3 * median(nearest(pts))
+    pairs = same = 0
+    for i in range(len(ms)):
+        for j in range(i + 1, len(ms)):
+            if math.dist(pts[i], pts[j]) < close:
+                pairs += 1
+                same += ms[i]["fields"]["symbol"] == ms[j]["fields"]["symbol"]
+    check(pairs > 0 and same < 0.10 * pairs,
+          f"tricolour: {same} of {pairs} close neighbour pairs share a symbol (under 10%)")
+
+
+def case_flow():
+    # circles-flow.svg: circles of radius 32 and 64 about (80, 80), drawn counter-clockwise on
+    # screen (SVG sweep-flag 0), so the tangent at angle t is (sin t, -cos t).
+    tree, _ = run("flow", "--param", f"reference={REFS / 'fish.svg'}", "--region",
+                  str(PANELS / "circle.svg"), "--param", "growth_mode=flow", "--param",
+                  f"growth_guides={REFS / 'circles-flow.svg'}")
+    if tree is None:
+        return
+    errors = []
+    for m in motifs(tree):
+        x, y = centre(m)
+        r = math.hypot(x - 80, y - 80)
+        if min(abs(r - 32), abs(r - 64)) > 10:  # near a stroke: within about one spacing
+            continue
+        t = math.atan2(y - 80, x - 80)
+        want = math.atan2(-math.cos(t), math.sin(t))
+        d = (m["fields"]["angle"] - want + math.pi) % (2 * math.pi) - math.pi
+        errors.append(abs(d))
+    mean = math.degrees(sum(errors) / max(len(errors), 1))
+    check(len(errors) >= 20 and mean < 15,
+          f"flow: motif angles follow the stroke tangents near the strokes, mean error "
+          f"{mean:.1f} degrees over {len(errors)} motifs (under 15)")
+
+
+def cubic(p0, p1, p2, p3, t):
+    s = 1 - t
+    return tuple(s**3 * a + 3 * s * s * t * b + 3 * s * t * t * c + t**3 * d
+                 for a, b, c, d in zip(p0, p1, p2, p3))
+
+
+def case_boundary():
+    # river-boundary.svg: M 110,0 C 70,40 150,90 100,140 (y grows with t): the seed at (40, 70)
+    # is left of it.
+    tree, _ = run("boundary", "--param", f"reference={REFS / 'rosettes.svg'}", "--region",
+                  str(PANELS / "rectangle.svg"), "--param",
+                  f"growth_guides={REFS / 'river-boundary.svg'}", "--seed", "40,70")
+    if tree is None:
+        return
+    ctrl = [(110, 0), (70, 40), (150, 90), (100, 140)]
+    crossed = 0
+    ms = motifs(tree)
+    for m in ms:
+        x, y = centre(m)
+        lo, hi = 0.0, 1.0
+        for _ in range(60):
+            mid = (lo + hi) / 2
+            if cubic(*ctrl, mid)[1] < y:
+                lo = mid
+            else:
+                hi = mid
+        crossed += x >= cubic(*ctrl, lo)[0]
+    check(len(ms) > 20 and crossed == 0,
+          f"boundary: {len(ms)} motifs, {crossed} beyond the boundary stroke (none allowed)")
+
+
+def case_spray():
+    tree, _ = run("spray", "--param", f"reference={REFS / 'fish.svg'}", "--region",
+                  str(PANELS / "rectangle.svg"), "--param",
+                  f"growth_guides={REFS / 's-curve-spray.svg'}")
+    if tree is None:
+        return
+    ctrl = [(20, 110), (60, 10), (120, 140), (180, 30)]
+    line = [cubic(*ctrl, k / 400) for k in range(401)]
+    ms = motifs(tree)
+    spacing = 16  # fish.svg's row spacing along x, the larger of its spacings
+    far = [m for m in ms if min(math.dist(centre(m), q) for q in line) > 15 + spacing]
+    check(len(ms) > 20 and not far,
+          f"spray: {len(ms)} motifs, {len(far)} beyond the brushed band plus one spacing")
+
+
+def case_deterministic():
+    a = WORK / "same-a.svg"
+    b = WORK / "same-b.svg"
+    c = WORK / "same-c.svg"
+    args = ["--param", f"reference={REFS / 'stones.json'}", "--param", "growth_color_variation=0.2"]
+    for out, seed in ((a, "5"), (b, "5"), (c, "6")):
+        subprocess.run([PROGRAM, "-o", str(out), "--rng-seed", seed, *args], check=True, timeout=300)
+    check(a.read_bytes() == b.read_bytes(), "deterministic: the same --rng-seed gives the same SVG")
+    check(a.read_bytes() != c.read_bytes(), "deterministic: another --rng-seed gives another SVG")
+
+
+def case_bad_input():
+    bad = WORK / "bad"
+    bad.mkdir(exist_ok=True)
+    (bad / "malformed.json").write_text('{"elements": [')
+    (bad / "no-symbol.svg").write_text('<svg xmlns="http://www.w3.org/2000/svg"><rect width="3" height="3"/></svg>')
+    (bad / "collinear.json").write_text(
+        '{"elements": [{"symbol": "a", "x": 0, "y": 0}, {"symbol": "a", "x": 1, "y": 1}, '
+        '{"symbol": "a", "x": 2, "y": 2}]}')
+    (bad / "guides.svg").write_text('<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0,0 L 9,9"/></svg>')
+    cases = [("missing", ["--param", f"reference={bad / 'nonexistent.json'}"], "nonexistent.json"),
+             ("malformed", ["--param", f"reference={bad / 'malformed.json'}"], "malformed.json"),
+             ("no-symbol", ["--param", f"reference={bad / 'no-symbol.svg'}"], "no-symbol.svg"),
+             ("collinear", ["--param", f"reference={bad / 'collinear.json'}"], "collinear.json"),
+             ("guides", ["--param", f"growth_guides={bad / 'guides.svg'}"], "guides.svg"),
+             ("mode", ["--param", "growth_mode=sideways"], "sideways"),
+             ("flow-without-strokes", ["--param", "growth_mode=flow"], "flow stroke")]
+    for name, args, named in cases:
+        _, p = run("bad-" + name, *args, expect=1)
+        out = WORK / f"bad-{name}.svg"
+        check(named in p.stderr and not out.exists(),
+              f"bad input {name}: exit 1 naming '{named}', no output ({p.stderr.strip()[:120]})")
+
+
+CASES = {name[5:]: f for name, f in globals().items() if name.startswith("case_")}
+for name in sys.argv[4:] or CASES:
+    CASES[name]()
+print(f"{len(failures)} failures")
+sys.exit(1 if failures else 0)
