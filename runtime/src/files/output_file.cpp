@@ -46,7 +46,11 @@ int open_temporary_sibling(const std::string& path, std::string& name, std::stri
     std::filesystem::path target(path);
     std::filesystem::path dir = target.parent_path();
     if (dir.empty()) dir = ".";
-    std::string pattern = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+    // Appended piecewise: GCC 12 at -O3 misreads "." + string as an overlapping copy.
+    std::string hidden = ".";
+    hidden += target.filename().string();
+    hidden += ".tmp-XXXXXX";
+    std::string pattern = (dir / hidden).string();
     std::vector<char> temp(pattern.begin(), pattern.end());
     temp.push_back('\0');
     int fd = ::mkstemp(temp.data());

@@ -92,9 +92,15 @@ std::optional<std::string> StyleCascade::property(pugi::xml_node node, const cha
     };
     if (!rules_.empty()) {
         // Only rules whose last compound could match: by id, class, type or any element.
-        if (const char* id = node.attribute("id").value(); *id) consider("#" + std::string(id));
+        // Keys built piecewise: GCC 12 at -O3 misreads "#" + string as an overlapping copy.
+        auto key = [](char sigil, std::string_view name) {
+            std::string k(1, sigil);
+            k += name;
+            return k;
+        };
+        if (const char* id = node.attribute("id").value(); *id) consider(key('#', id));
         std::istringstream classes(node.attribute("class").value());
-        for (std::string c; classes >> c;) consider("." + c);
+        for (std::string c; classes >> c;) consider(key('.', c));
         consider(std::string(local_name(node)));
         consider("*");
     }
