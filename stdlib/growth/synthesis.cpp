@@ -197,7 +197,14 @@ void Synthesis::relax_around(int centre) {
     std::map<int, int> local;
     std::vector<Point> positions;
     std::vector<int> free_local, free_nodes;
-    for (int id : pattern_.near(pattern_[centre].position, options_.relax_radius * l_)) {
+    std::vector<int> window;
+    if (options_.relax_global) {
+        for (int id = 0; id < static_cast<int>(pattern_.nodes().size()); ++id)
+            if (pattern_[id].alive) window.push_back(id);
+    } else {
+        window = pattern_.near(pattern_[centre].position, options_.relax_radius * l_);
+    }
+    for (int id : window) {
         const Node& n = pattern_[id];
         if (n.fixed || n.links.empty()) continue;
         local.emplace(id, static_cast<int>(positions.size()));
@@ -260,6 +267,16 @@ SynthesisResult Synthesis::result() const {
         }
     std::sort(r.edges.begin(), r.edges.end());
     r.stats = stats_;
+    double sum = 0;
+    long links = 0;
+    for (int id : placed_)
+        for (const Link& l : pattern_[id].links)
+            if (pattern_[l.node].placed()) {
+                Vector miss = (pattern_[l.node].position - pattern_[id].position) - l.desired;
+                sum += miss.dot(miss);
+                ++links;
+            }
+    r.stats.link_error = links > 0 ? std::sqrt(sum / static_cast<double>(links)) / l_ : 0.0;
     return r;
 }
 

@@ -10,7 +10,9 @@ set(svg "${OUT_DIR}/${NAME}.svg")
 set(png "${OUT_DIR}/${NAME}.png")
 separate_arguments(extra UNIX_COMMAND "${ARGS}")
 foreach(out ${svg} ${png})
-  execute_process(COMMAND "${PROGRAM}" --region "${PANEL}" --rng-seed 1 --max-elements 500 --width 300 --quiet ${extra} -o "${out}"
+  # A body-time limit far above any body here: the renders are checked, not timed, and a busy
+  # machine (sanitizers, parallel builds) stretches wall time.
+  execute_process(COMMAND "${PROGRAM}" --region "${PANEL}" --rng-seed 1 --max-elements 500 --width 300 --quiet --body-time-limit 240 ${extra} -o "${out}"
     RESULT_VARIABLE rc ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${PROGRAM} failed (${rc}) on ${PANEL}:\n${err}")

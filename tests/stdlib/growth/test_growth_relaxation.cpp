@@ -4,10 +4,13 @@
 
 #include <Eigen/Dense>
 #include <acanthus/random.hpp>
+#include <acanthus/region.hpp>
+#include <acanthus/stdlib/growth.hpp>
 #include <cmath>
 #include <map>
 #include <vector>
 
+#include "growth_fixtures.hpp"
 #include "relaxation.hpp"
 
 using namespace acanthus;
@@ -134,6 +137,25 @@ TEST(GrowthRelaxation, UnanchoredGroupStaysPutWithStiffness) {
     // The pair stretches symmetrically about its old centre instead of drifting away.
     EXPECT_NEAR(positions[1].x - positions[0].x, 2.0, 1e-4);
     EXPECT_NEAR(positions[0].x + positions[1].x, 1.0, 1e-6);
+}
+
+// In a whole synthesis: relaxation, windowed or global, brings the result nearer the reference's
+// offsets (bench/growth.cpp measures by how much, and at what cost).
+TEST(GrowthRelaxation, SynthesisLinkErrorFallsWithRelaxation) {
+    using namespace acanthus::growth;
+    Reference ref =
+        Reference::from_elements(growth_fixtures::jittered_lattice(6, 6, 10, 1.5, {"a", "b"}));
+    acanthus::Region panel = acanthus::Region::from_spec("rect:120,90");
+    Options o;
+    o.relax = false;
+    double none = synthesize(ref, panel, o, {}, 2).stats.link_error;
+    o.relax = true;
+    double window = synthesize(ref, panel, o, {}, 2).stats.link_error;
+    o.relax_global = true;
+    double global = synthesize(ref, panel, o, {}, 2).stats.link_error;
+    EXPECT_GT(none, 0);
+    EXPECT_LT(window, none);
+    EXPECT_LT(global, none);
 }
 
 }  // namespace

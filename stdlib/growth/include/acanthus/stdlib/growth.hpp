@@ -110,6 +110,7 @@ struct Options {
     double angle_factor = 0.5;            // drop a new edge under factor x the original angle
     double long_factor = 1.5;             // l_long = factor x the original edge
     double relax_radius = 3.0;            // x mean edge length: the window each step re-solves
+    bool relax_global = false;  // the paper's global solve each step (slow; for comparison)
     double scale_min = 1.0;               // random scale per motif, uniform
     double scale_max = 1.0;
     double angle_jitter = 0.0;     // radians: random turn of each motif, uniform in +-jitter
@@ -161,6 +162,9 @@ struct SynthesisStats {
     long merged = 0;     // l_short merges
     double seconds = 0;  // wall time (reported only, never used)
     double relax_seconds = 0;
+    // How far the result is from the reference's offsets: RMS over the links between motifs of
+    // |actual offset - wanted offset|, in mean reference edge lengths (what eq. 5 minimizes).
+    double link_error = 0;
 };
 
 struct SynthesisResult {
