@@ -5,24 +5,26 @@
 #include <mutex>
 
 namespace acanthus::growth {
+namespace {
 
-// One load per path for the run: rule bodies and %draw share what they load.
-const Reference& load_reference(const std::string& path) {
+template <class T, class Load>
+const T& once_per_path(const std::string& path, Load load) {
     static std::mutex mutex;
-    static std::map<std::string, Reference> loaded;
+    static std::map<std::string, T> loaded;
     std::lock_guard lock(mutex);
     auto it = loaded.find(path);
-    if (it == loaded.end()) it = loaded.emplace(path, Reference::from_file(path)).first;
+    if (it == loaded.end()) it = loaded.emplace(path, load(path)).first;
     return it->second;
 }
 
+}  // namespace
+
+const Reference& load_reference(const std::string& path) {
+    return once_per_path<Reference>(path, Reference::from_file);
+}
+
 const Guides& load_guides(const std::string& path) {
-    static std::mutex mutex;
-    static std::map<std::string, Guides> loaded;
-    std::lock_guard lock(mutex);
-    auto it = loaded.find(path);
-    if (it == loaded.end()) it = loaded.emplace(path, Guides::from_svg_file(path)).first;
-    return it->second;
+    return once_per_path<Guides>(path, Guides::from_svg_file);
 }
 
 }  // namespace acanthus::growth
