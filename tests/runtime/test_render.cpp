@@ -15,9 +15,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "output/document.hpp"
 #include "fixtures/sample_elements.hpp"
 #include "fixtures/temp_dir.hpp"
+#include "output/document.hpp"
 
 using namespace acanthus;
 using namespace acanthus::detail;
@@ -215,13 +215,13 @@ TEST(Render, OutlineLeavesAreasOpenFilledFillsThem) {
     EXPECT_LT(outline.r(ex, ey), 60);
 }
 
-TEST(Render, DrawFunctionWinsExceptInOrderStyle) {
+TEST(Render, DrawFunctionWinsInDrawnAndOverlayStylesOnly) {
     TempDir dir;
     sample::Ornament o;
     o.dots[3].kind = &blue_dot_type;
     Region region = panel();
     auto [x, y] = page_pixel(o.dots[3].c.center);
-    render_to_file(dir / "draw.png", o.pattern, region, o.placed, options());
+    render_to_file(dir / "draw.png", o.pattern, region, o.placed, options(400, "drawn"));
     Image drawn(dir / "draw.png");
     EXPECT_EQ(drawn.b(x, y), 255);
     EXPECT_EQ(drawn.r(x, y), 0);
@@ -229,6 +229,17 @@ TEST(Render, DrawFunctionWinsExceptInOrderStyle) {
     Image order(dir / "order.png");
     EXPECT_EQ(order.alpha(x, y), 255);
     EXPECT_LT(order.b(x, y), 250);  // coloured by order (green-cyan), not by %draw
+    // Outline shows the proxies themselves (Figure 15(d)): the disc's inside stays empty.
+    render_to_file(dir / "outline.png", o.pattern, region, o.placed, options(400, "outline"));
+    EXPECT_EQ(Image(dir / "outline.png").alpha(x, y), 0);
+    // Overlay: the %draw picture over faint proxies; elements without %draw show faintly only.
+    render_to_file(dir / "overlay.png", o.pattern, region, o.placed, options(400, "overlay"));
+    Image overlay(dir / "overlay.png");
+    EXPECT_EQ(overlay.b(x, y), 255);
+    EXPECT_EQ(overlay.r(x, y), 0);
+    auto [ex, ey] = page_pixel({o.dots[2].c.center.x + 6, o.dots[2].c.center.y});
+    EXPECT_GT(overlay.max_alpha_near(ex, ey), 20);
+    EXPECT_LT(overlay.max_alpha_near(ex, ey), 200);
 }
 
 TEST(Render, BackgroundAndRegionOutline) {

@@ -22,7 +22,7 @@ namespace {
 
 Region panel() { return Region::from_spec("rect:100,80"); }
 
-RenderOptions outline(double width = 400, const char* style = "outline") {
+RenderOptions outline(double width = 400, const char* style = "drawn") {
     RenderOptions o;
     o.width = width;
     o.style = style;

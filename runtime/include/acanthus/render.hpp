@@ -18,7 +18,7 @@ OutputFormat format_for_path(const std::string& path);
 
 struct RenderOptions {
     double width = 800;               // output width in pixels (PNG) or points (vector formats)
-    std::string style = "outline";    // outline | filled | order
+    std::string style = "drawn";      // drawn | outline | filled | order | overlay
     std::optional<Color> background;  // none: transparent (PNG) / no background rectangle
     bool draw_region = true;          // the region's outline
     std::string stroke;               // skeletal stroke name applied to curves, or empty

@@ -10,6 +10,7 @@ namespace {
 
 constexpr Color ink{0.10, 0.10, 0.10, 1};
 constexpr Color light_fill{0.80, 0.88, 0.76, 1};
+constexpr Color faint{0.55, 0.62, 0.78, 0.55};  // overlay: proxies under the author's drawing
 
 // The same hue darkened, so filled order-style areas keep a visible edge.
 Color darker(Color c) { return {c.r * 0.55, c.g * 0.55, c.b * 0.55, c.a}; }
@@ -17,10 +18,17 @@ Color darker(Color c) { return {c.r * 0.55, c.g * 0.55, c.b * 0.55, c.a}; }
 }  // namespace
 
 RenderStyle parse_render_style(const std::string& name) {
+    if (name == "drawn") return RenderStyle::drawn;
     if (name == "outline") return RenderStyle::outline;
     if (name == "filled") return RenderStyle::filled;
     if (name == "order") return RenderStyle::order;
-    throw UsageError("unknown style '" + name + "': expected outline, filled or order");
+    if (name == "overlay") return RenderStyle::overlay;
+    throw UsageError("unknown style '" + name +
+                     "': expected drawn, outline, filled, order or overlay");
+}
+
+bool uses_draw_bodies(RenderStyle style) {
+    return style == RenderStyle::drawn || style == RenderStyle::overlay;
 }
 
 double order_hue(long rank, long count) {
@@ -42,9 +50,16 @@ void draw_default(Canvas& canvas, const Element& element, RenderStyle style, Col
             continue;
         }
         switch (style) {
+            case RenderStyle::drawn:
             case RenderStyle::outline:
                 canvas.set_color(ink);
                 canvas.stroke(proxy);
+                break;
+            case RenderStyle::overlay:
+                canvas.set_color(faint);
+                canvas.set_line_width(width * 0.6);
+                canvas.stroke(proxy);
+                canvas.set_line_width(width);
                 break;
             case RenderStyle::filled:
                 if (area) {

@@ -9,12 +9,14 @@
 namespace acanthus::detail {
 
 enum class RenderStyle {
-    outline,  // every proxy in outline, the paper's default rendering
-    filled,   // areas filled with a light colour and outlined, curves stroked
+    drawn,    // each type's %draw; types without one in outline (the default)
+    outline,  // every proxy in outline, %draw ignored (the paper's Figure 15(d))
+    filled,   // areas filled with a light colour and outlined, curves stroked, %draw ignored
     order,    // coloured by placement order, oldest red to newest purple (Figure 14)
+    overlay,  // %draw over faint proxies: what an author drew and what the engine placed
 };
 
-// Throws UsageError on anything but "outline", "filled" or "order".
+// Throws UsageError on anything but "drawn", "outline", "filled", "order" or "overlay".
 RenderStyle parse_render_style(const std::string& name);
 
 // The hue wheel position of placement rank `rank` among `count` elements: red 0 to purple 0.8.
@@ -31,5 +33,8 @@ struct CurveStroke {
 // With `skip_curves`, curve proxies are left out (a skeletal stroke draws them afterwards).
 void draw_default(Canvas& canvas, const Element& element, RenderStyle style, Color order_color,
                   const CurveStroke& curves = {}, bool skip_curves = false);
+
+// True when `style` calls a type's %draw.
+bool uses_draw_bodies(RenderStyle style);
 
 }  // namespace acanthus::detail

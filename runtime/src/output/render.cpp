@@ -1,9 +1,11 @@
 // render_to_file: the grown ornament on one page, through the same Cairo drawing for every format.
 //
-// Styles: "outline" and "filled" call a type's %draw when it has one (the author's drawing wins),
-// else draw the proxies in that style. "order" ignores %draw and colours every element by its
-// placement order, oldest red to newest purple, as Figure 14 of the paper does: it is a diagnostic
-// view of the growth, and a %draw would hide exactly what it shows.
+// Styles: "drawn" (the default) calls a type's %draw when it has one (the author's drawing wins),
+// else outlines the proxies. "outline" and "filled" draw the proxies themselves and ignore %draw,
+// as the paper's Figure 15(d) shows an ornament's proxies. "order" colours every element by its
+// placement order, oldest red to newest purple, as Figure 14 does: a diagnostic view of the
+// growth, which a %draw would hide. "overlay" draws every element's proxies faintly, then the
+// %draw pictures over them, for authors checking their drawing against the geometry.
 // Seeds are not drawn (they are markers, not ornament) unless the seed type has a %draw.
 // RenderOptions::stroke (a built-in skeletal stroke name or an .svg stroke file) applies to every
 // curve of the pattern: %draw bodies are set aside, area proxies are drawn in the chosen style,
@@ -21,8 +23,8 @@
 #include <optional>
 
 #include "draw/default_style.hpp"
-#include "output/output_writer.hpp"
 #include "output/document.hpp"
+#include "output/output_writer.hpp"
 #include "output/page_layout.hpp"
 #include "pattern/running_body.hpp"
 
@@ -135,8 +137,15 @@ void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const 
     for (long index = 0; index < count; ++index) {
         const Element& element = *elements[static_cast<std::size_t>(index)];
         const ElementType& type = element.type();
-        bool custom = type.draw != nullptr && style != RenderStyle::order && !curves.stroke;
+        bool custom = type.draw != nullptr && detail::uses_draw_bodies(style) && !curves.stroke;
         if (!custom && pattern.seed != nullptr && &type == pattern.seed) continue;
+        if (custom && style == RenderStyle::overlay) {
+            cairo_save(cr);
+            cairo_new_path(cr);
+            cairo_set_line_width(cr, page.line_width);
+            detail::draw_default(canvas, element, style, {}, {}, false);
+            cairo_restore(cr);
+        }
 
         cairo_save(cr);
         cairo_new_path(cr);

@@ -90,8 +90,9 @@ std::string check_color(const std::string& s) {
 }
 
 std::string check_style(const std::string& s) {
-    if (s == "outline" || s == "filled" || s == "order") return {};
-    return "--style must be outline, filled or order, not '" + s + "'";
+    for (const char* known : {"drawn", "outline", "filled", "order", "overlay"})
+        if (s == known) return {};
+    return "--style must be drawn, outline, filled, order or overlay, not '" + s + "'";
 }
 
 std::string footer(const Pattern& pattern, const std::string& program) {
@@ -255,7 +256,8 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->check(at_least("--width", 1, 32767))
         ->group(output_group);
     app.add_option("--style", o.render.style,
-                   "outline, filled, or order (colour by placement order)")
+                   "drawn (%draw, the default), outline or filled (the proxies), order "
+                   "(colour by placement order), overlay (%draw over faint proxies)")
         ->type_name("STYLE")
         ->capture_default_str()
         ->check(check_style)
