@@ -1,0 +1,68 @@
+// The ready pattern generator trees (Figure 4's idea): what goes where on a facade.
+#include <acanthus/stdlib/cells.hpp>
+
+namespace acanthus::cells {
+
+namespace {
+
+// Arc edges labelled `arch` get `arch`; other arcs and everything else get `rest`.
+Node arches(Node arch, Node rest) {
+    return by_label("arch", by_curve(arch, rest), by_curve(arch, rest));
+}
+
+// Opening bottoms (sill and its corners) get window-bottom headers; the rest goes to `rest`.
+Node sills(Node rest) {
+    Node wb = generator("window_bottom", window_bottom());
+    Node openings = by_part(rest, by_kind(wb, wb, rest), rest);
+    return Node([openings, rest](const FeatureRef& f, Context& c) {
+        bool opening = false;
+        auto i = static_cast<std::size_t>(f.index);
+        if (f.kind == FeatureKind::corner) opening = c.facade().corners()[i].opening;
+        if (f.kind == FeatureKind::edge) opening = c.facade().edges()[i].opening;
+        // A door's bottom lies on the ground, not over wall: only openings with wall below.
+        if (opening)
+            openings(f, c);
+        else
+            rest(f, c);
+    });
+}
+
+}  // namespace
+
+Node brick_tree() {
+    Node b = generator("bricks", bricks());
+    return by_kind(sills(b), arches(generator("arch_stones", arch_stones()), sills(b)), b);
+}
+
+Node framed_tree() {
+    Node b = generator("bricks", bricks());
+    Node lin = generator("lintel", lintel());
+    Node q = generator("quoins", quoins());
+    Node openings = by_part(by_curve(b, lin), generator("window_bottom", window_bottom()), q);
+    Node features = Node([=](const FeatureRef& f, Context& c) {
+        auto i = static_cast<std::size_t>(f.index);
+        bool opening = f.kind == FeatureKind::corner ? c.facade().corners()[i].opening
+                                                     : c.facade().edges()[i].opening;
+        if (opening)
+            openings(f, c);
+        else if (f.kind == FeatureKind::edge && c.facade().edges()[i].vertical())
+            q(f, c);
+        else
+            b(f, c);
+    });
+    // Top corners of openings lay the lintel before any corner brick can notch it.
+    return by_kind(features, arches(generator("arch_stones", arch_stones()), features), b);
+}
+
+Node ashlar_tree() {
+    Node a = generator("ashlar", ashlar());
+    return by_kind(a, arches(generator("arch_stones", arch_stones()), a), a);
+}
+
+Node rgb_tree() { return generator("rgb_blocks", rgb_blocks()); }
+
+Node tree_for(const Options& options) {
+    return options.bond == Bond::ashlar ? ashlar_tree() : brick_tree();
+}
+
+}  // namespace acanthus::cells
