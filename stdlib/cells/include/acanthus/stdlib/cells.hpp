@@ -136,7 +136,6 @@ struct Options {
     int arch_rows = 1;          // rows of arch stones
     int lintel_bearing = 2;     // lintel past each jamb, in quarter bricks
     int quoin_long = 4, quoin_short = 2;  // jamb quoins, in quarter bricks, alternating by course
-    double corner_angle = 10;             // degrees of turn that make a corner
     double arc_tolerance = 0;  // chord error of drawn arcs; 0: mortar / 20 (at least 1e-3)
 };
 
