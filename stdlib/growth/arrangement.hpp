@@ -22,6 +22,7 @@ struct Node {
     double rotation = 0;
     double angle = 0;
     double scale = 1;
+    double tint = 0;
     double radius = 0;
     double start_distance = 0;  // to the nearest start seed: the growth order
     bool alive = true;

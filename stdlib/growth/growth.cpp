@@ -3,9 +3,14 @@
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/stdlib/growth.hpp>
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
+#include "geometry/coordinate_range.hpp"
+#include "guided_panel.hpp"
 #include "panel.hpp"
 #include "reference.hpp"
 #include "synthesis.hpp"
@@ -32,6 +37,32 @@ std::string_view to_string(Mode mode) {
     return "?";
 }
 
+std::map<std::string, int> parse_priority(std::string_view text) {
+    std::map<std::string, int> priority;
+    auto trim = [](std::string_view v) {
+        while (!v.empty() && std::isspace(static_cast<unsigned char>(v.front())))
+            v.remove_prefix(1);
+        while (!v.empty() && std::isspace(static_cast<unsigned char>(v.back()))) v.remove_suffix(1);
+        return v;
+    };
+    while (!trim(text).empty()) {
+        std::size_t comma = text.find(',');
+        std::string_view item = trim(text.substr(0, comma));
+        text = comma == std::string_view::npos ? std::string_view() : text.substr(comma + 1);
+        std::size_t eq = item.find('=');
+        std::string_view name = trim(item.substr(0, eq == std::string_view::npos ? 0 : eq));
+        std::string_view value = eq == std::string_view::npos ? "" : trim(item.substr(eq + 1));
+        int level = 0;
+        auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), level);
+        if (name.empty() || value.empty() || ec != std::errc() ||
+            end != value.data() + value.size())
+            throw InputError("growth: priority '" + std::string(item) +
+                             "' is not symbol=integer (e.g. \"flower=2,leaf=1\")");
+        priority[std::string(name)] = level;
+    }
+    return priority;
+}
+
 Reference::Reference(std::shared_ptr<const detail::ReferenceData> data) : data_(std::move(data)) {}
 
 Reference Reference::from_elements(std::vector<ReferenceElement> elements,
@@ -53,6 +84,11 @@ bool Reference::boundary(std::size_t i) const { return data_->connectivity.bound
 double Reference::mean_edge_length() const { return data_->mean_edge; }
 double Reference::shortest_edge_length() const { return data_->shortest_edge; }
 const std::string& Reference::name() const { return data_->name; }
+const std::vector<Outline>& Reference::outlines(std::size_t i) const {
+    return data_->outlines.at(i);
+}
+std::size_t Reference::symbol_count() const { return data_->symbols.size(); }
+int Reference::symbol_index(std::size_t i) const { return data_->symbol.at(i); }
 
 namespace {
 
@@ -71,14 +107,37 @@ void check_options(const Options& o) {
         bad("priority_radius must be >= 0");
     if (o.max_elements < 0) bad("max_elements must be >= 0");
     if (o.mode == Mode::flow && o.flow_strokes.empty())
-        bad("flow mode needs at least one flow stroke (Options::flow_strokes)");
+        bad("flow mode needs at least one flow stroke (Options::flow_strokes, or a guides file "
+            "with class=\"flow\" paths)");
+    if (!(o.color_variation >= 0 && o.color_variation <= 1))
+        bad("color_variation must be in [0, 1]");
+    auto finite_line = [](const std::vector<Point>& line) {
+        return !line.empty() && std::all_of(line.begin(), line.end(), [](Point p) {
+            return p.finite() && acanthus::detail::in_coordinate_range(p.x) &&
+                   acanthus::detail::in_coordinate_range(p.y);
+        });
+    };
+    for (const auto& line : o.boundary_strokes)
+        if (!finite_line(line)) bad("a boundary stroke has no points or a coordinate beyond ±1e9");
+    for (const Options::Spray& s : o.spray_strokes)
+        if (!finite_line(s.points) || !(s.width > 0) ||
+            !acanthus::detail::in_coordinate_range(s.width))
+            bad("a spray stroke needs points within ±1e9 and a width in (0, 1e9]");
+}
+
+// Spray strokes start growth at their first points (section 3: the brush plants seeds).
+std::vector<Point> with_spray_starts(std::vector<Point> starts, const Options& options) {
+    for (const Options::Spray& s : options.spray_strokes) starts.push_back(s.points.front());
+    return starts;
 }
 
 SynthesisResult run(const Reference& reference, const detail::Panel& panel, const Options& options,
                     const std::vector<Point>& starts, Random& random) {
     check_options(options);
-    detail::Synthesis synthesis(reference.data(), panel, options, random);
-    synthesis.plant(starts);
+    detail::GuidedPanel guided(panel, options);
+    const bool tools = !options.boundary_strokes.empty() || !options.spray_strokes.empty();
+    detail::Synthesis synthesis(reference.data(), tools ? guided : panel, options, random);
+    synthesis.plant(with_spray_starts(starts, options));
     synthesis.run();
     return synthesis.result();
 }
@@ -88,7 +147,7 @@ SynthesisResult run(const Reference& reference, const detail::Panel& panel, cons
 SynthesisResult synthesize(const Reference& reference, const Region& region, const Options& options,
                            const std::vector<Point>& starts, std::uint64_t seed) {
     std::vector<Point> points = starts;
-    if (points.empty())
+    if (points.empty() && options.spray_strokes.empty())
         points.push_back(
             region.largest_inscribed_circle(reference.mean_edge_length() / 100).center);
     for (Point p : points)

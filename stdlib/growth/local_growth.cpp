@@ -35,12 +35,16 @@ void Synthesis::spawn(int centre, const Choice& choice, const std::vector<int>& 
         const Point p = pattern_[centre].position;
         const Vector offset = ring[j].offset.rotated(rotation);
         const Point q = p + offset;
-        if (!panel_.contains(q)) {
+        if (!panel_.contains(q) || !panel_.reaches(p, q)) {
             ++stats_.dropped;
             continue;
         }
         // (b): an element or seed within l_short takes the new seed's place.
         int near = pattern_.nearest(q, l_short_, centre);
+        if (near >= 0 && !panel_.reaches(p, pattern_[near].position)) {
+            ++stats_.dropped;  // it lies beyond a boundary stroke
+            continue;
+        }
         if (near >= 0) {
             ++stats_.merged;
             slot_node[j] = near;
@@ -84,7 +88,7 @@ void Synthesis::link_ring_pair(int centre, int a, int b, double original, Vector
     const Point p = pattern_[centre].position;
     const Point pa = pattern_[a].position, pb = pattern_[b].position;
     if (distance(pa, pb) <= options_.long_factor * original) {
-        if (!pattern_.crosses(pa, pb, a, b)) pattern_.link(a, b, desired);
+        if (!pattern_.crosses(pa, pb, a, b) && panel_.reaches(pa, pb)) pattern_.link(a, b, desired);
         return;
     }
     // (e): too long; an id-less seed at the end of the bisector of angle a-centre-b, as long as
@@ -93,7 +97,7 @@ void Synthesis::link_ring_pair(int centre, int a, int b, double original, Vector
     if (!(va.cross(vb) > 0)) return;
     Vector dir = (va.normalized() + vb.normalized()).normalized();
     Point x = p + dir * ((va.length() + vb.length()) / 2);
-    if (!panel_.contains(x) || pattern_.nearest(x, l_short_, -1) >= 0 ||
+    if (!panel_.contains(x) || !panel_.reaches(p, x) || pattern_.nearest(x, l_short_, -1) >= 0 ||
         pattern_.crosses(p, x, centre, -1))
         return;
     int seed = new_seed(x, -1);
@@ -101,7 +105,8 @@ void Synthesis::link_ring_pair(int centre, int a, int b, double original, Vector
     // (f): link the extra seed to a and b where no edge is in the way.
     for (int end : {a, b}) {
         Point pe = pattern_[end].position;
-        if (!pattern_.crosses(pe, x, end, seed)) pattern_.link(end, seed, x - pe);
+        if (!pattern_.crosses(pe, x, end, seed) && panel_.reaches(pe, x))
+            pattern_.link(end, seed, x - pe);
     }
 }
 

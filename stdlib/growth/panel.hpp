@@ -17,6 +17,8 @@ class Panel {
     virtual bool contains(Point p) const = 0;
     // The motif circle lies inside (touching within `tolerance` allowed) and clear of obstacles.
     virtual bool admits(Circle motif, double tolerance) const = 0;
+    // Growth may step from `from` to `to` (no boundary stroke between them).
+    virtual bool reaches(Point /*from*/, Point /*to*/) const { return true; }
 };
 
 class RegionPanel : public Panel {

@@ -18,7 +18,8 @@ int ReferenceData::symbol_id(const std::string& s) const {
 
 std::shared_ptr<const ReferenceData> analyse_reference(std::string name,
                                                        std::vector<ReferenceElement> elements,
-                                                       std::vector<std::pair<int, int>> flips) {
+                                                       std::vector<std::pair<int, int>> flips,
+                                                       std::vector<std::vector<Outline>> outlines) {
     auto bad = [&](std::size_t i, const std::string& why) {
         throw InputError(name + ": element " + std::to_string(i) + ": " + why);
     };
@@ -83,6 +84,8 @@ std::shared_ptr<const ReferenceData> analyse_reference(std::string name,
     if (data->candidates.empty())
         for (std::size_t i = 0; i < elements.size(); ++i)
             if (!data->rings[i].empty()) data->candidates.push_back(static_cast<int>(i));
+    outlines.resize(elements.size());
+    data->outlines = std::move(outlines);
     data->elements = std::move(elements);
     return data;
 }

@@ -20,10 +20,11 @@ struct RingSlot {
 struct ReferenceData {
     std::string name;
     std::vector<ReferenceElement> elements;
-    std::vector<std::string> symbols;  // sorted names; symbol ids index it
-    std::vector<int> symbol;           // per element
-    std::vector<int> sub;              // per element, interned; -1 for an empty sub
-    std::vector<double> radius;        // collision radius per element
+    std::vector<std::string> symbols;            // sorted names; symbol ids index it
+    std::vector<int> symbol;                     // per element
+    std::vector<int> sub;                        // per element, interned; -1 for an empty sub
+    std::vector<double> radius;                  // collision radius per element
+    std::vector<std::vector<Outline>> outlines;  // per element (empty lists for JSON)
     Connectivity connectivity;
     std::vector<std::vector<RingSlot>> rings;  // per element, counter-clockwise
     std::vector<int> candidates;               // elements matched against (not boundary)
@@ -35,8 +36,8 @@ struct ReferenceData {
 
 // Validates (finite coordinates and sizes, at least 3 distinct points, flips) and analyses.
 // Errors name `name` and the element index.
-std::shared_ptr<const ReferenceData> analyse_reference(std::string name,
-                                                       std::vector<ReferenceElement> elements,
-                                                       std::vector<std::pair<int, int>> flips);
+std::shared_ptr<const ReferenceData> analyse_reference(
+    std::string name, std::vector<ReferenceElement> elements,
+    std::vector<std::pair<int, int>> flips, std::vector<std::vector<Outline>> outlines = {});
 
 }  // namespace acanthus::growth::detail

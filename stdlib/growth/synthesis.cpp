@@ -159,6 +159,9 @@ void Synthesis::grow(int id) {
     double jitter = options_.angle_jitter > 0
                         ? random_.uniform(-options_.angle_jitter, options_.angle_jitter)
                         : 0.0;
+    double tint = options_.color_variation > 0
+                      ? random_.uniform(-options_.color_variation, options_.color_variation)
+                      : 0.0;
     double radius = reference_.radius[choice.element] * scale;
     if (!motif_fits(id, pattern_[id].position, radius)) return drop(id);
 
@@ -170,6 +173,7 @@ void Synthesis::grow(int id) {
     n.rotation = choice.match.rotation;
     n.angle = reference_.elements[c].angle + n.rotation + jitter;
     n.scale = scale;
+    n.tint = tint;
     n.radius = radius;
     pattern_.note_radius(radius);
     placed_.push_back(id);
@@ -227,7 +231,9 @@ void Synthesis::relax_around(int centre) {
     for (bool changed = true; changed;) {
         changed = false;
         for (auto& [id, old] : moved) {
-            if (pattern_[id].position == old || still_valid(id)) continue;
+            if (pattern_[id].position == old ||
+                (still_valid(id) && panel_.reaches(old, pattern_[id].position)))
+                continue;
             pattern_.move(id, old);
             changed = true;
         }
@@ -243,7 +249,8 @@ SynthesisResult Synthesis::result() const {
         const Node& n = pattern_[id];
         index[id] = static_cast<int>(r.motifs.size());
         const ReferenceElement& e = reference_.elements[n.source];
-        r.motifs.push_back({n.position, e.symbol, e.sub, n.angle, n.scale, n.radius, n.source});
+        r.motifs.push_back(
+            {n.position, e.symbol, e.sub, n.angle, n.scale, n.radius, n.source, n.tint});
     }
     for (int id : placed_)
         for (const Link& l : pattern_[id].links) {

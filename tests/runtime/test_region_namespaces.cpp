@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "region/svg/attributes.hpp"
+#include "svg/attributes.hpp"
 
 using acanthus::InputError;
 using acanthus::Region;

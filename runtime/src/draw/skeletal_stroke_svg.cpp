@@ -13,7 +13,7 @@
 #include <pugixml.hpp>
 
 #include "draw/skeletal_stroke_data.hpp"
-#include "region/svg/attributes.hpp"
+#include "svg/attributes.hpp"
 
 namespace acanthus {
 

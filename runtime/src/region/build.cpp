@@ -10,7 +10,7 @@
 #include <cmath>
 #include <string>
 
-#include "geometry/coordinate_range.hpp"
+#include "geometry/path_checks.hpp"
 #include "region/curves.hpp"
 #include "region/fill.hpp"
 
@@ -20,8 +20,6 @@ namespace {
 double wedge(Geom::Point a, Geom::Point b) {
     return a[Geom::X] * b[Geom::Y] - a[Geom::Y] * b[Geom::X];
 }
-
-bool finite(Geom::Point p) { return std::isfinite(p[Geom::X]) && std::isfinite(p[Geom::Y]); }
 
 // Five-point Gauss-Legendre on [0, 1]: exact for polynomials up to degree 9, so exact for
 // x(t) y'(t) of any Bézier up to order 5.
@@ -67,29 +65,8 @@ double cross_integral(const Geom::Curve& c) {
     return polyline_cross_integral(c);
 }
 
-bool in_range(Geom::Point p) {
-    return in_coordinate_range(p[Geom::X]) && in_coordinate_range(p[Geom::Y]);
-}
-
 std::string where(const std::string& name, const std::string& label) {
     return label.empty() || label == name ? name : name + ": " + label;
-}
-
-void require_in_range(const FilledShape& shape, const std::string& name) {
-    for (const Geom::Path& p : shape.paths) {
-        for (std::size_t i = 0; i < p.size_closed(); ++i) {
-            const Geom::Curve& c = p[i];
-            bool ok = in_range(c.initialPoint()) && in_range(c.finalPoint());
-            if (auto arc = dynamic_cast<const Geom::EllipticalArc*>(&c))
-                ok = ok && in_coordinate_range(arc->ray(Geom::X)) &&
-                     in_coordinate_range(arc->ray(Geom::Y));
-            else if (auto bez = dynamic_cast<const Geom::BezierCurve*>(&c))
-                for (unsigned k = 0; k <= bez->order(); ++k) ok = ok && in_range((*bez)[k]);
-            if (!ok)
-                throw InputError(where(name, shape.label) +
-                                 ": coordinates out of range (the limit is ±1e9 user units)");
-        }
-    }
 }
 
 }  // namespace
@@ -106,19 +83,6 @@ double signed_area(const Geom::PathVector& paths) {
     return sum;
 }
 
-void require_finite(const Geom::PathVector& paths, const std::string& name,
-                    const std::string& label) {
-    for (const Geom::Path& p : paths) {
-        for (std::size_t i = 0; i < p.size_closed(); ++i) {
-            const Geom::Curve& c = p[i];
-            Geom::Rect b = c.boundsFast();
-            if (!finite(c.initialPoint()) || !finite(c.finalPoint()) || !finite(b.min()) ||
-                !finite(b.max()))
-                throw InputError(name + ": " + label + ": coordinates are not finite numbers");
-        }
-    }
-}
-
 std::unique_ptr<RegionData> build_region_data(const std::string& name,
                                               std::vector<FilledShape> shapes) {
     std::erase_if(shapes, [](const FilledShape& s) { return s.paths.empty(); });
@@ -126,7 +90,7 @@ std::unique_ptr<RegionData> build_region_data(const std::string& name,
     data->name = name;
     std::size_t curves = 0;
     for (FilledShape& s : shapes) {
-        require_in_range(s, name);
+        require_in_range(s.paths, where(name, s.label));
         try {
             for (Geom::Path& p : s.paths) p.close(true);  // fill closes open subpaths
             s.paths = arcs_to_cubics(s.paths);

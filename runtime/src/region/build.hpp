@@ -23,10 +23,6 @@ inline constexpr std::size_t kMaxRegionCurves = 1000000;
 double signed_area(const Geom::PathVector& paths);
 double signed_area(const Geom::Path& path);
 
-// Throws InputError "<name>: <label>: ..." when a coordinate is NaN or infinite.
-void require_finite(const Geom::PathVector& paths, const std::string& name,
-                    const std::string& label);
-
 // Combines the shapes into one region (their union). A single shape keeps its fill rule;
 // several shapes give a nonzero region. Throws InputError naming `name` (and the shape) for
 // coordinates beyond ±1e9, and when the union has no area.

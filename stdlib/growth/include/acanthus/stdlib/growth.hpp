@@ -4,6 +4,7 @@
 #pragma once
 
 #include <acanthus/body.hpp>
+#include <acanthus/canvas.hpp>
 #include <acanthus/point.hpp>
 #include <acanthus/region.hpp>
 #include <cstdint>
@@ -24,6 +25,8 @@ enum class Mode {
 // "none" (or "non-rotation"), "rotation", "flow"; throws InputError otherwise.
 Mode parse_mode(std::string_view text);
 std::string_view to_string(Mode mode);
+// "flower=2, leaf=1" (symbol=integer, comma separated; "" for none); throws InputError.
+std::map<std::string, int> parse_priority(std::string_view text);
 
 // One element of a reference arrangement. size <= 0 means the default collision radius,
 // 0.35 x the mean reference edge length.
@@ -33,6 +36,19 @@ struct ReferenceElement {
     Point position;
     double angle = 0;  // radians
     double size = 0;
+};
+
+// One shape of an SVG reference element, as drawn, relative to the element's centre: subpaths of
+// cubic Béziers (points[0] the start, then three points per curve).
+struct OutlinePath {
+    std::vector<Point> points;
+    bool closed = true;
+};
+struct Outline {
+    std::vector<OutlinePath> paths;
+    Color fill{0, 0, 0, 1};
+    Color stroke{0, 0, 0, 0};  // alpha 0: not stroked
+    double stroke_width = 1;
 };
 
 namespace detail {
@@ -47,6 +63,13 @@ class Reference {
     // {"elements": [{"symbol", "x", "y", optional "sub", "angle", "size"}], "flips": [[i, j]]}
     static Reference from_json_file(const std::string& path);
     static Reference from_json_string(std::string_view text, const std::string& name);
+    // An SVG drawing: every shape or group with data-symbol (optional data-sub, data-angle in
+    // degrees, data-size) is one element at the centre of its bounding box; its shapes are its
+    // outline. Flips: data-flips="i j; k l" on the root.
+    static Reference from_svg_file(const std::string& path);
+    static Reference from_svg_string(std::string_view text, const std::string& name);
+    // By content: an SVG when the file's first non-blank character is '<', else JSON.
+    static Reference from_file(const std::string& path);
     static Reference from_elements(std::vector<ReferenceElement> elements,
                                    std::vector<std::pair<int, int>> flips = {},
                                    const std::string& name = "reference");
@@ -63,6 +86,10 @@ class Reference {
     double mean_edge_length() const;
     double shortest_edge_length() const;
     const std::string& name() const;
+    // Element i's drawn shapes (SVG references; empty for JSON ones).
+    const std::vector<Outline>& outlines(std::size_t i) const;
+    std::size_t symbol_count() const;
+    int symbol_index(std::size_t i) const;  // element i's symbol among the sorted symbol names
     const detail::ReferenceData& data() const { return *data_; }
 
   private:
@@ -85,10 +112,33 @@ struct Options {
     double relax_radius = 3.0;            // x mean edge length: the window each step re-solves
     double scale_min = 1.0;               // random scale per motif, uniform
     double scale_max = 1.0;
-    double angle_jitter = 0.0;  // radians: random turn of each motif, uniform in +-jitter
+    double angle_jitter = 0.0;     // radians: random turn of each motif, uniform in +-jitter
+    double color_variation = 0.0;  // each motif's tint, uniform in +-variation (0..1)
     // Flow mode: polylines whose direction (first point to last) the field follows; RBF
     // interpolated between them. At least one is needed in flow mode.
     std::vector<std::vector<Point>> flow_strokes;
+    // Section 3's boundary tool: growth never crosses these polylines.
+    std::vector<std::vector<Point>> boundary_strokes;
+    // Section 3's spray tool: when there is any, growth happens only within width/2 of one, and
+    // starts at each spray stroke's first point too.
+    struct Spray {
+        std::vector<Point> points;
+        double width = 0;
+    };
+    std::vector<Spray> spray_strokes;
+};
+
+// The tools drawn in an SVG: paths, polylines and lines with class `flow` (direction from start
+// to end), `boundary`, or `spray` (its stroke width is the brush diameter). Curves are
+// flattened. Throws InputError naming the file and element on bad input or when none is found.
+struct Guides {
+    std::vector<std::vector<Point>> flow, boundary;
+    std::vector<Options::Spray> spray;
+
+    static Guides from_svg_file(const std::string& path);
+    static Guides from_svg_string(std::string_view text, const std::string& name);
+    // Adds the strokes to the options' flow, boundary and spray strokes.
+    void add_to(Options& options) const;
 };
 
 // One synthesized element: the reference element `source` copied at `position`, turned by
@@ -101,6 +151,7 @@ struct Motif {
     double scale = 1;
     double radius = 0;
     int source = -1;
+    double tint = 0;  // colour variation: > 0 lighter, < 0 darker (Options::color_variation)
 };
 
 struct SynthesisStats {
@@ -129,6 +180,16 @@ SynthesisResult synthesize(const Reference& reference, const Options& options, P
 // As above, starting at the centre of the body's empty circle.
 SynthesisResult synthesize(const Reference& reference, const Options& options);
 
+// A reference loaded once per path and kept for the run (by Reference::from_file), so that rule
+// bodies and %draw share it.
+const Reference& load_reference(const std::string& path);
+const Guides& load_guides(const std::string& path);
+
+// Draws reference element `source` at `centre`, turned to `angle` (radians) and scaled: its
+// outline for an SVG reference, else a glyph in its symbol's colour with a tick along the angle.
+void draw_motif(Canvas& canvas, const Reference& reference, int source, Point centre, double angle,
+                double scale, double tint = 0);
+
 // Inside a rule body: one element of type T per motif (T has a circle proxy p0 and fields symbol,
 // sub, angle, scale and source, as `motif` in growth.acr), each added with new_child(). Returns
 // how many were added.
@@ -143,6 +204,7 @@ int add_motifs(const SynthesisResult& result, bool sterile = true) {
         e->angle = m.angle;
         e->scale = m.scale;
         e->source = m.source;
+        if constexpr (requires { e->tint; }) e->tint = m.tint;
         e->sterile = sterile;
         acanthus::body::new_child(*e);
         ++added;

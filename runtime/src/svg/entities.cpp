@@ -1,4 +1,4 @@
-#include "region/svg/entities.hpp"
+#include "svg/entities.hpp"
 
 #include <acanthus/error.hpp>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "region/svg/namespaces.hpp"
+#include "svg/namespaces.hpp"
 
 namespace acanthus::detail {
 namespace {

@@ -1,5 +1,6 @@
-// The CSS cascade for the two properties a region reads, fill-rule and display: the rules of
-// a file's <style> sheets, the style attribute and presentation attributes, in CSS order.
+// The CSS cascade for the properties the SVG reader reads (fill-rule, display, fill, stroke,
+// stroke-width): the rules of a file's <style> sheets, the style attribute and presentation
+// attributes, in CSS order.
 #pragma once
 
 #include <cstddef>
@@ -9,14 +10,14 @@
 #include <string>
 #include <vector>
 
-#include "region/svg/attributes.hpp"
+#include "svg/attributes.hpp"
 
 namespace acanthus::detail {
 
 class StyleCascade {
   public:
     // Adds the rules of every <style> element of the SVG namespace (type text/css or none)
-    // that set fill-rule or display; throws InputError naming `file` when there are too many.
+    // that set one of those properties; throws InputError naming `file` when there are too many.
     void read(const std::vector<pugi::xml_node>& style_elements, const std::string& file);
 
     // A property as the cascade gives it: !important style-sheet rules, then the style

@@ -1,4 +1,4 @@
-#include "region/svg/source.hpp"
+#include "svg/source.hpp"
 
 #include <acanthus/error.hpp>
 #include <algorithm>

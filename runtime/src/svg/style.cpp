@@ -1,4 +1,4 @@
-#include "region/svg/style.hpp"
+#include "svg/style.hpp"
 
 #include <acanthus/error.hpp>
 #include <iterator>
@@ -6,12 +6,16 @@
 #include <sstream>
 #include <tuple>
 
-#include "region/svg/namespaces.hpp"
+#include "svg/namespaces.hpp"
 
 namespace acanthus::detail {
 namespace {
 
-constexpr std::size_t kMaxCssRules = 10000;  // style-sheet rules setting fill-rule or display
+constexpr std::size_t kMaxCssRules = 10000;  // style-sheet rules setting a property read here
+
+const std::vector<std::string_view> kProperties = {"fill-rule", "display", "fill", "stroke",
+                                                   "stroke-width"};
+constexpr const char* kPropertyNames = "fill-rule, display, fill, stroke or stroke-width";
 
 bool matches(const CssCompound& c, pugi::xml_node node) {
     if (!c.type.empty() && c.type != local_name(node)) return false;
@@ -58,11 +62,9 @@ void StyleCascade::read(const std::vector<pugi::xml_node>& style_elements,
         for (pugi::xml_node text : n.children())
             if (text.type() == pugi::node_pcdata || text.type() == pugi::node_cdata)
                 sheet += text.value();
-        for (CssRule& r : parse_style_sheet(sheet, {"fill-rule", "display"}, order)) {
+        for (CssRule& r : parse_style_sheet(sheet, kProperties, order)) {
             if (rules_.size() == kMaxCssRules)
-                throw InputError(file +
-                                 ": style sheets set fill-rule or display in more "
-                                 "than " +
+                throw InputError(file + ": style sheets set " + kPropertyNames + " in more than " +
                                  std::to_string(kMaxCssRules) + " rules");
             const CssCompound& key = r.compounds.back();
             index_[!key.id.empty()        ? "#" + key.id

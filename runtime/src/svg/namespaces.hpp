@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "region/svg/source.hpp"
+#include "svg/source.hpp"
 
 namespace acanthus::detail {
 

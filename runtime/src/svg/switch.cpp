@@ -1,4 +1,4 @@
-#include "region/svg/switch.hpp"
+#include "svg/switch.hpp"
 
 #include <algorithm>
 #include <array>

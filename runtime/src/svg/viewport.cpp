@@ -1,10 +1,10 @@
-#include "region/svg/viewport.hpp"
+#include "svg/viewport.hpp"
 
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "region/svg/attributes.hpp"
+#include "svg/attributes.hpp"
 
 namespace acanthus::detail {
 

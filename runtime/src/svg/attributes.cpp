@@ -1,4 +1,4 @@
-#include "region/svg/attributes.hpp"
+#include "svg/attributes.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -8,7 +8,7 @@
 #include <optional>
 #include <pugixml.hpp>
 
-#include "region/svg/source.hpp"
+#include "svg/source.hpp"
 
 namespace acanthus::detail {
 

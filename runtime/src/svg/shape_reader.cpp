@@ -1,58 +1,63 @@
-// Region from an SVG file: every filled shape outside defs/clipPath/mask/symbol, in the user
-// units of the root element (its viewBox is not applied), with group and shape transforms.
-// docs/regions.md says exactly what is read and what is left out.
+#include "svg/shape_reader.hpp"
+
 #include <2geom/elliptical-arc.h>
 #include <2geom/exception.h>
 #include <2geom/path-sink.h>
 #include <2geom/svg-path-parser.h>
 
 #include <acanthus/error.hpp>
-#include <acanthus/input_file.hpp>
-#include <acanthus/region.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <map>
 #include <optional>
 #include <pugixml.hpp>
 #include <set>
+#include <sstream>
 
-#include "region/build.hpp"
-#include "region/svg/attributes.hpp"
-#include "region/svg/entities.hpp"
-#include "region/svg/namespaces.hpp"
-#include "region/svg/source.hpp"
-#include "region/svg/style.hpp"
-#include "region/svg/switch.hpp"
-#include "region/svg/viewport.hpp"
+#include "geometry/path_checks.hpp"
+#include "svg/attributes.hpp"
+#include "svg/entities.hpp"
+#include "svg/namespaces.hpp"
+#include "svg/source.hpp"
+#include "svg/style.hpp"
+#include "svg/switch.hpp"
+#include "svg/viewport.hpp"
 
-namespace acanthus {
+namespace acanthus::detail {
 namespace {
 
-using detail::Namespaces;
-using Axis = detail::SvgAxis;
+using Axis = SvgAxis;
 
 constexpr int kMaxDepth = 256;            // element nesting, including <use> chains
 constexpr int kMaxUseExpansions = 10000;  // guards against exponential <use> fan-out
-constexpr std::size_t kMaxCurves = detail::kMaxRegionCurves;  // as read, before arcs become cubics
+constexpr std::size_t kMaxCurves = kMaxSvgCurves;
 constexpr const char* kBadArc =
     "an elliptical arc cannot be computed (its coordinates or radii are out of range)";
-constexpr std::uintmax_t kMaxFileBytes = 64u << 20;
 
 struct Context {
-    Geom::Affine ctm = Geom::identity();  // element coordinates -> root user units
-    bool evenodd = false;                 // inherited fill-rule
-    const Namespaces* ns = nullptr;       // declarations in scope of the parent element
-    Geom::Point viewport{0, 0};           // nearest viewport in user units (0: not known)
+    Geom::Affine ctm = Geom::identity();          // element coordinates -> root user units
+    bool evenodd = false;                         // inherited fill-rule
+    const Namespaces* ns = nullptr;               // declarations in scope of the parent element
+    Geom::Point viewport{0, 0};                   // nearest viewport in user units (0: not known)
+    std::string fill = "black", stroke = "none";  // inherited paint
+    double stroke_width = 1;                      // inherited, in the element's units
+    std::shared_ptr<const SvgElement> element;    // the parent element
 };
 
-class SvgRegionReader {
+std::vector<std::string> words(const char* text) {
+    std::istringstream in(text);
+    std::vector<std::string> out;
+    for (std::string w; in >> w;) out.push_back(std::move(w));
+    return out;
+}
+
+class SvgShapeReader {
   public:
-    SvgRegionReader(std::string name, std::string_view text)
+    SvgShapeReader(std::string name, std::string_view text)
         : name_(std::move(name)), text_(text), source_(name_, text_) {}
 
-    std::vector<detail::FilledShape> read() {
+    std::vector<SvgShape> read() {
         pugi::xml_parse_result result =
             doc_.load_buffer(text_.data(), text_.size(), pugi::parse_default | pugi::parse_doctype);
         if (!result) {
@@ -65,16 +70,12 @@ class SvgRegionReader {
         collect_ids(root);
         style_.read(style_elements_, name_);
         Namespaces root_scope = Namespaces::at(root);
-        if (detail::svg_name(root, &root_scope) != "svg")
+        if (svg_name(root, &root_scope) != "svg")
             throw InputError(name_ + ": not an SVG file: the root element is <" +
                              std::string(root.name()) + ">, not <svg> in the SVG namespace");
         Context top;
-        top.viewport = detail::root_viewport(root);
+        top.viewport = root_viewport(root);
         visit(root, top, 0, true);
-        if (shapes_.empty())
-            throw InputError(name_ +
-                             ": no fillable shape (path, polygon, polyline, rect, circle or "
-                             "ellipse) outside defs, clipPath, mask and symbol");
         return std::move(shapes_);
     }
 
@@ -86,7 +87,7 @@ class SvgRegionReader {
     // Expands DOCTYPE entities in attribute values (pugixml expands only the predefined
     // ones), and finds the elements that ids name and the <style> elements.
     void collect_ids(pugi::xml_node root) {
-        detail::DoctypeEntities entities(doc_, kMaxFileBytes);
+        DoctypeEntities entities(doc_, kMaxSvgFileBytes);
         for (pugi::xml_node n = root; n;) {
             if (n.type() == pugi::node_element) {
                 if (!entities.empty())
@@ -94,7 +95,7 @@ class SvgRegionReader {
                         if (std::strchr(a.value(), '&'))
                             a.set_value(entities.expand(a.value(), name_).c_str());
                 if (const char* id = n.attribute("id").value(); *id) ids_.emplace(id, n);
-                if (detail::local_name(n) == "style") style_elements_.push_back(n);
+                if (local_name(n) == "style") style_elements_.push_back(n);
             }
             // Iterative pre-order walk: depth is unbounded here.
             if (n.first_child()) {
@@ -109,19 +110,19 @@ class SvgRegionReader {
 
     double length(pugi::xml_node node, const char* attr, double fallback, const Context& ctx,
                   Axis axis) const {
-        return detail::svg_length(source_, node, attr, fallback, ctx.viewport, axis);
+        return svg_length(source_, node, attr, fallback, ctx.viewport, axis);
     }
 
     double non_negative(pugi::xml_node node, const char* attr, double fallback, const Context& ctx,
                         Axis axis) const {
-        return detail::non_negative_length(source_, node, attr, fallback, ctx.viewport, axis);
+        return non_negative_length(source_, node, attr, fallback, ctx.viewport, axis);
     }
 
-    // Enters the viewport `node` establishes (see detail::enter_viewport); false when it
+    // Enters the viewport `node` establishes (see enter_viewport); false when it
     // disables rendering.
     bool enter_viewport(pugi::xml_node node, pugi::xml_node use, Context& ctx) const {
-        std::optional<detail::SvgViewport> v =
-            detail::enter_viewport(source_, node, use, ctx.viewport);
+        std::optional<SvgViewport> v =
+            ::acanthus::detail::enter_viewport(source_, node, use, ctx.viewport);
         if (!v) return false;
         ctx.viewport = v->size;
         ctx.ctm = v->transform * ctx.ctm;
@@ -138,11 +139,11 @@ class SvgRegionReader {
         Namespaces scope{parent.ns, {}};
         scope.declare(node);
         const Namespaces* ns = scope.bindings.empty() ? parent.ns : &scope;
-        std::string tag = detail::svg_name(node, ns);
+        std::string tag = svg_name(node, ns);
         static const std::set<std::string> kIgnored = {
-            "defs", "clipPath", "mask",   "symbol",         "metadata",       "title",
-            "desc", "style",    "script", "pattern",        "marker",         "filter",
-            "text", "image",    "line",   "linearGradient", "radialGradient", "foreignObject"};
+            "defs", "clipPath", "mask",           "symbol",         "metadata",     "title",
+            "desc", "style",    "script",         "pattern",        "marker",       "filter",
+            "text", "image",    "linearGradient", "radialGradient", "foreignObject"};
         if (tag.empty() || kIgnored.count(tag)) return;
         if (style_.property(node, "display") == "none") return;
 
@@ -150,8 +151,8 @@ class SvgRegionReader {
         ctx.ns = ns;
         if (pugi::xml_attribute t = node.attribute("transform")) {
             try {
-                ctx.ctm = detail::parse_transform(t.value()) * parent.ctm;
-            } catch (const detail::SvgSyntaxError& e) {
+                ctx.ctm = parse_transform(t.value()) * parent.ctm;
+            } catch (const SvgSyntaxError& e) {
                 fail(node, e.what());
             }
         }
@@ -165,14 +166,16 @@ class SvgRegionReader {
             }
         }
 
+        inherit_paint(node, ctx);
+        ctx.element = element_of(node, tag, parent.element);
+
         if (tag == "svg" && !root && !enter_viewport(node, use, ctx)) return;
         if (tag == "svg" || tag == "g" || tag == "a") {
             for (pugi::xml_node child : node.children()) visit(child, ctx, depth + 1);
         } else if (tag == "switch") {
             // Only the first child element whose conditions pass is drawn (whatever it is).
             for (pugi::xml_node child : node.children()) {
-                if (child.type() != pugi::node_element || !detail::passes_conditions(child))
-                    continue;
+                if (child.type() != pugi::node_element || !passes_conditions(child)) continue;
                 visit(child, ctx, depth + 1);
                 break;
             }
@@ -190,7 +193,7 @@ class SvgRegionReader {
     }
 
     void visit_use(pugi::xml_node node, const Context& ctx, int depth) {
-        std::string href = detail::use_href(source_, node, ctx.ns);
+        std::string href = use_href(source_, node, ctx.ns);
         if (href.empty()) return;
         if (href[0] != '#')
             fail(node, "references outside the file ('" + href + "') are not supported");
@@ -212,7 +215,7 @@ class SvgRegionReader {
         Namespaces own{&outer, {}};
         own.declare(target);
         use_chain_.push_back(target);
-        if (detail::svg_name(target, &own) == "symbol") {
+        if (svg_name(target, &own) == "symbol") {
             inner.ns = &own;
             if (enter_viewport(target, node, inner))
                 for (pugi::xml_node child : target.children()) visit(child, inner, depth + 2);
@@ -242,14 +245,20 @@ class SvgRegionReader {
         } else if (tag == "polygon" || tag == "polyline") {
             std::vector<Geom::Point> pts;
             try {
-                pts = detail::parse_points(node.attribute("points").value());
-            } catch (const detail::SvgSyntaxError& e) {
+                pts = parse_points(node.attribute("points").value());
+            } catch (const SvgSyntaxError& e) {
                 fail(node, e.what());
             }
-            if (pts.size() < 3) return pv;  // nothing to fill
+            if (pts.size() < 2) return pv;  // nothing drawn
             Geom::Path path(pts.front());
             for (std::size_t i = 1; i < pts.size(); ++i) path.appendNew<Geom::LineSegment>(pts[i]);
-            path.close(true);  // a polyline is filled as if closed
+            path.close(tag == "polygon");
+            pv.push_back(std::move(path));
+        } else if (tag == "line") {
+            Geom::Point a(length(node, "x1", 0, ctx, Axis::X), length(node, "y1", 0, ctx, Axis::Y));
+            Geom::Point b(length(node, "x2", 0, ctx, Axis::X), length(node, "y2", 0, ctx, Axis::Y));
+            Geom::Path path(a);
+            path.appendNew<Geom::LineSegment>(b);
             pv.push_back(std::move(path));
         } else if (tag == "rect") {
             pv = rect_geometry(node, ctx);
@@ -331,17 +340,12 @@ class SvgRegionReader {
     void add_shape(pugi::xml_node node, Geom::PathVector pv, const Context& ctx) {
         if (ctx.ctm.det() == 0) return;  // flattened onto a line or a point: nothing to fill
         std::size_t curves = 0;
-        for (Geom::Path& p : pv) {
-            p.close(true);  // fill closes open subpaths
-            curves += p.size_closed();
-        }
+        for (Geom::Path& p : pv) curves += p.size_closed();
         curves_ += curves;
         if (curves_ > kMaxCurves)
-            fail(node, "the region has more than " + std::to_string(kMaxCurves) + " curves");
-        std::string where = detail::SvgSource::label(node);
-        if (auto [line, col] = source_.position(node.offset_debug()); line > 0)
-            where += " (line " + std::to_string(line) + ")";
-        detail::require_finite(pv, name_, where);
+            fail(node, "the file has more than " + std::to_string(kMaxCurves) + " curves");
+        const std::string where = name_ + ": " + ctx.element->label;
+        require_finite(pv, where);
         // lib2geom throws on arcs it cannot place (radii stretched to reach a far endpoint,
         // M 1e88,0 A 1,1 6 0 0 0,1): refused naming the element, as any bad coordinate is.
         try {
@@ -350,38 +354,68 @@ class SvgRegionReader {
         } catch (const Geom::Exception&) {
             fail(node, kBadArc);
         }
-        detail::require_finite(pv, name_, where);
-        shapes_.push_back({std::move(pv), ctx.evenodd, where});
+        require_finite(pv, where);
+        require_in_range(pv, where);
+        SvgShape shape;
+        shape.paths = std::move(pv);
+        shape.evenodd = ctx.evenodd;
+        shape.fill = ctx.fill;
+        shape.stroke = ctx.stroke;
+        shape.stroke_width = ctx.stroke_width * std::sqrt(std::abs(ctx.ctm.det()));
+        shape.element = ctx.element;
+        shapes_.push_back(std::move(shape));
+    }
+
+    // fill, stroke and stroke-width as CSS inherits them; a stroke width that does not parse
+    // (a percentage, em) keeps the inherited one.
+    void inherit_paint(pugi::xml_node node, Context& ctx) const {
+        if (auto v = style_.property(node, "fill"); v && *v != "inherit") ctx.fill = *v;
+        if (auto v = style_.property(node, "stroke"); v && *v != "inherit") ctx.stroke = *v;
+        if (auto v = style_.property(node, "stroke-width"); v && *v != "inherit") {
+            try {
+                double w = parse_length(*v);
+                if (std::isfinite(w) && w >= 0) ctx.stroke_width = w;
+            } catch (const SvgSyntaxError&) {
+            }
+        }
+    }
+
+    std::shared_ptr<const SvgElement> element_of(pugi::xml_node node, const std::string& tag,
+                                                 std::shared_ptr<const SvgElement> parent) const {
+        auto e = std::make_shared<SvgElement>();
+        e->tag = tag;
+        e->id = node.attribute("id").value();
+        e->classes = words(node.attribute("class").value());
+        for (pugi::xml_attribute a : node.attributes())
+            if (std::strncmp(a.name(), "data-", 5) == 0) e->data.emplace(a.name() + 5, a.value());
+        e->label = SvgSource::label(node);
+        if (auto [line, col] = source_.position(node.offset_debug()); line > 0)
+            e->label += " (line " + std::to_string(line) + ")";
+        e->parent = std::move(parent);
+        return e;
     }
 
     std::string name_;
     std::string_view text_;
-    detail::SvgSource source_;
+    SvgSource source_;
     pugi::xml_document doc_;
     std::map<std::string, pugi::xml_node> ids_;
     std::vector<pugi::xml_node> style_elements_;
-    detail::StyleCascade style_;
+    StyleCascade style_;
     std::vector<pugi::xml_node> use_chain_;
     int use_expansions_ = 0;
     std::size_t curves_ = 0;
-    std::vector<detail::FilledShape> shapes_;
+    std::vector<SvgShape> shapes_;
 };
 
 }  // namespace
 
-Region Region::from_svg_string(std::string_view svg, const std::string& name) {
-    std::vector<detail::FilledShape> shapes = SvgRegionReader(name, svg).read();
-    return Region(detail::build_region_data(name, std::move(shapes)));
+bool SvgElement::has_class(const std::string& word) const {
+    return std::find(classes.begin(), classes.end(), word) != classes.end();
 }
 
-Region Region::from_svg_file(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::exists(std::filesystem::status(path, ec)))
-        throw InputError(path +
-                         ": cannot open region file: no such file (expected an SVG file "
-                         "or rect:W,H, circle:R, ellipse:RX,RY)");
-    const std::string text = read_input_file_or_throw(path, "region file", kMaxFileBytes);
-    return from_svg_string(text, path);
+std::vector<SvgShape> read_svg_shapes(std::string_view text, const std::string& name) {
+    return SvgShapeReader(name, text).read();
 }
 
-}  // namespace acanthus
+}  // namespace acanthus::detail
