@@ -50,10 +50,12 @@ CourseGrid make_grid(const Facade& facade, int face, double ux, double uy) {
     const Face& f = facade.faces()[static_cast<std::size_t>(face)];
     std::vector<double> vx{f.bounds.x0, f.bounds.x1}, vy{f.bounds.y0, f.bounds.y1};
     for (int e : f.edges) {
+        // Edge ends only: the inner ends of a flattened curve's chords are no features, and
+        // lines through them would cut courses to half height along the curve.
         const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
-        for (const Segment& s : edge.segments) {
-            vx.push_back(s.a.x);
-            vy.push_back(s.a.y);
+        for (Point p : {edge.segments.front().a, edge.segments.back().b}) {
+            vx.push_back(p.x);
+            vy.push_back(p.y);
         }
         if (edge.arc || edge.closed) {
             vx.push_back(edge.bounds.x0), vx.push_back(edge.bounds.x1);

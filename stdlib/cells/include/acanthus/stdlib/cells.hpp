@@ -7,6 +7,7 @@
 #include <acanthus/body.hpp>
 #include <acanthus/point.hpp>
 #include <acanthus/random.hpp>
+#include <acanthus/region.hpp>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -106,6 +107,20 @@ class Facade {
     // Throws InputError naming `source_name` and the shape: no wall, an opening crossing the
     // wall's outline, a shape without area, non-finite coordinates.
     static Facade from_shapes(std::vector<FacadeShape> shapes, const std::string& source_name);
+    // A facade drawing (docs/stdlib/cells.md, "Facade SVG"): labels are the class words of each
+    // shape and of its ancestor groups, then its id (else its nearest ancestor's); the wall is
+    // the filled shapes whose nearest element with a class has `wall`, every other filled shape
+    // is an opening; lines and unfilled shapes are ignored. Throws InputError naming the file
+    // and the element, as from_shapes does, and on unreadable or malformed SVG.
+    static Facade from_svg_file(const std::string& path);
+    static Facade from_svg_string(std::string_view text, const std::string& name);
+    // A panel as a wall: all of the region is wall (labels `wall panel`), its holes are holes
+    // in the wall's outline, not openings.
+    static Facade from_region(const Region& region);
+    // The facade of --region: its SVG file read as a facade when a shape in it has the class
+    // `wall`; an SVG without one is all wall (every filled shape, labels `wall panel`, arcs
+    // exact); a built-in shape (rect:W,H, ...) goes to from_region().
+    static Facade for_panel(const Region& region);
 
     const std::vector<Corner>& corners() const;
     const std::vector<Edge>& edges() const;
@@ -293,7 +308,9 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options, 
 Texture texture(const Facade& facade, const Node& tree, const Options& options);
 
 // Inside a rule body: one element of type T per cell (T has a polygon proxy p0 and fields
-// generator, feature, label and course, as `cell` in cells.acr). Returns how many were added.
+// generator, feature, label and course, as `cell` in cells.acr; a field `tint`, when T has one,
+// gets a uniform number in [-1, 1] from the program's --rng-seed for colour variation). Returns
+// how many were added.
 template <class T>
 int add_cells(const Texture& texture, bool sterile = true) {
     int added = 0;
@@ -304,6 +321,7 @@ int add_cells(const Texture& texture, bool sterile = true) {
         e->feature = std::string(to_string(c.feature));
         e->label = c.label;
         e->course = c.course;
+        if constexpr (requires { e->tint = 0.0; }) e->tint = acanthus::body::rng.uniform(-1, 1);
         e->sterile = sterile;
         acanthus::body::new_child(*e);
         ++added;
