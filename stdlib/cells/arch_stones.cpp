@@ -51,15 +51,38 @@ void place_voussoirs(const Edge& edge, Context& c, double width, double depth, i
     }
 }
 
+// Where two arcs meet at an angle (a pointed arch's apex) the voussoirs of each side end on a
+// radial joint of their own arc, leaving a wedge: the keystone, whose two sides continue those
+// joints, all rows deep.
+void place_keystone(const Corner& k, Context& c, double depth) {
+    const auto& edges = c.facade().edges();
+    if (k.edge_in < 0 || k.edge_out < 0) return;
+    const Edge& a = edges[static_cast<std::size_t>(k.edge_in)];
+    const Edge& b = edges[static_cast<std::size_t>(k.edge_out)];
+    if (!a.arc || !b.arc) return;
+    auto away = [&](const Edge& e, const Segment& s, double at) {
+        Vector u = (k.position - s.center).normalized();
+        return u.dot(e.inward(at)) < 0 ? -u : u;  // into the wall, away from the opening
+    };
+    Vector ua = away(a, a.segments.back(), a.length), ub = away(b, b.segments.front(), 0);
+    if (ua.dot(ub) > std::cos(1.0 * M_PI / 180)) return;  // no wedge: the arcs meet smoothly
+    c.place({k.position, k.position + ua * depth, k.position + ub * depth});
+}
+
 }  // namespace detail
 
 Generator arch_stones() {
     return [](const FeatureRef& f, Context& c) {
+        const Options& o = c.options();
+        double depth = o.arch_depth > 0 ? o.arch_depth : o.brick_length + o.mortar;
+        if (f.kind == FeatureKind::corner) {
+            const Corner& k = c.facade().corners()[static_cast<std::size_t>(f.index)];
+            detail::place_keystone(k, c, depth * std::max(1, o.arch_rows));
+            return;
+        }
         if (f.kind != FeatureKind::edge) return;
         const Edge& e = c.facade().edges()[static_cast<std::size_t>(f.index)];
-        const Options& o = c.options();
         double width = o.voussoir_width > 0 ? o.voussoir_width : 2 * (o.brick_height + o.mortar);
-        double depth = o.arch_depth > 0 ? o.arch_depth : o.brick_length + o.mortar;
         detail::place_voussoirs(e, c, width, depth, o.arch_rows);
     };
 }

@@ -1,5 +1,6 @@
 // The ready pattern generator trees (Figure 4's idea): what goes where on a facade.
 #include <acanthus/stdlib/cells.hpp>
+#include <algorithm>
 
 namespace acanthus::cells {
 
@@ -27,11 +28,32 @@ Node sills(Node rest) {
     });
 }
 
+// Corners where two arcs labelled `arch` meet (a pointed apex) get the keystone.
+Node apexes(Node arch, Node rest) {
+    return Node([arch, rest](const FeatureRef& f, Context& c) {
+        const auto& corners = c.facade().corners();
+        const auto& edges = c.facade().edges();
+        bool apex = false;
+        if (f.kind == FeatureKind::corner) {
+            const Corner& k = corners[static_cast<std::size_t>(f.index)];
+            apex = k.edge_in >= 0 && k.edge_out >= 0 &&
+                   edges[static_cast<std::size_t>(k.edge_in)].arc &&
+                   edges[static_cast<std::size_t>(k.edge_out)].arc &&
+                   std::find(k.labels.begin(), k.labels.end(), "arch") != k.labels.end();
+        }
+        if (apex)
+            arch(f, c);
+        else
+            rest(f, c);
+    });
+}
+
 }  // namespace
 
 Node brick_tree() {
     Node b = generator("bricks", bricks());
-    return by_kind(sills(b), arches(generator("arch_stones", arch_stones()), sills(b)), b);
+    Node arch = generator("arch_stones", arch_stones());
+    return by_kind(apexes(arch, sills(b)), arches(arch, sills(b)), b);
 }
 
 Node framed_tree() {
@@ -51,12 +73,14 @@ Node framed_tree() {
             b(f, c);
     });
     // Top corners of openings lay the lintel before any corner brick can notch it.
-    return by_kind(features, arches(generator("arch_stones", arch_stones()), features), b);
+    Node arch = generator("arch_stones", arch_stones());
+    return by_kind(apexes(arch, features), arches(arch, features), b);
 }
 
 Node ashlar_tree() {
     Node a = generator("ashlar", ashlar());
-    return by_kind(a, arches(generator("arch_stones", arch_stones()), a), a);
+    Node arch = generator("arch_stones", arch_stones());
+    return by_kind(apexes(arch, a), arches(arch, a), a);
 }
 
 Node rgb_tree() { return generator("rgb_blocks", rgb_blocks()); }

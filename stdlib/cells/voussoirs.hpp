@@ -8,5 +8,7 @@ namespace acanthus::cells::detail {
 
 // `width` along the arc (the count is the stretch's length over it, rounded), `depth` per row.
 void place_voussoirs(const Edge& edge, Context& c, double width, double depth, int rows);
+// The wedge between two arcs of an arch meeting at corner `k` (a pointed apex), if any.
+void place_keystone(const Corner& k, Context& c, double depth);
 
 }  // namespace acanthus::cells::detail

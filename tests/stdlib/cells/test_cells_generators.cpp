@@ -100,3 +100,42 @@ TEST(CellsGenerators, WindowBottomRefusesFaces) {
     EXPECT_THROW(texture(f, generator("window_bottom", window_bottom()), Options{}, 1),
                  acanthus::InputError);
 }
+
+TEST(CellsGenerators, PointedArchGetsAKeystone) {
+    // An equilateral pointed arch: arcs of radius 1200 struck from the opposite springings.
+    std::vector<FacadeShape> s;
+    s.push_back(shape(rect(0, 0, 6000, 4000), {"wall"}, "gable"));
+    s.push_back(
+        shape("M 2400 3000 V 2000 A 1200 1200 0 0 1 3000 960.77 "
+              "A 1200 1200 0 0 1 3600 2000 V 3000 Z",
+              {"window", "arch"}, "lancet"));
+    Facade f = Facade::from_shapes(std::move(s), "gable.svg");
+    Texture t = texture(f, brick_tree(), Options{}, 2);
+    const Point apex{3000, 960.77};
+    const Point centers[2] = {{3600, 2000}, {2400, 2000}};
+    int keystones = 0;
+    for (const Cell& c : t.cells) {
+        if (c.generator != "arch_stones" || c.feature != FeatureKind::corner) continue;
+        ++keystones;
+        // Each side continues a radial joint of one of the arcs.
+        const auto& p = c.polygon;
+        for (std::size_t k = 0; k < p.size(); ++k) {
+            Point a = p[k], b = p[(k + 1) % p.size()];
+            acanthus::Vector d = (b - a).normalized();
+            double best = 90;
+            for (Point o : centers) {
+                acanthus::Vector r = (midpoint(a, b) - o).normalized();
+                best = std::min(best, std::acos(std::min(1.0, std::abs(d.dot(r)))) * 180 / M_PI);
+            }
+            if (std::abs(d.y) > 0.1) {
+                EXPECT_LT(best, 2.0);  // the top is a chord, not a joint
+            }
+        }
+        EXPECT_LT(distance(p.front(), apex), 50.0);
+    }
+    EXPECT_EQ(keystones, 1);
+    Report r = check_texture(f, t, 10);
+    EXPECT_LT(r.overlap, 1.0);
+    EXPECT_LT(r.over_openings, 1.0);
+    EXPECT_GE(r.coverage, 0.99);
+}
