@@ -1,4 +1,4 @@
-// Lintels: one stone in the course over an opening's straight head, bearing past each jamb. The
+// Lintels: one stone in the courses over an opening's straight head, bearing past each jamb. The
 // head's corners lay it too (corners come first), so no corner brick notches it.
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
@@ -37,7 +37,11 @@ Generator lintel() {
         int b = c.options().lintel_bearing;
         u0 = std::max(0, u0 - b);
         u1 = std::min(layout.grid.units(), u1 + 1 + b);
-        c.place(detail::polygon_of(layout.grid.cell(row, u0, u1)), layout.grid.course(row));
+        // As deep as lintel_courses courses (rows above have lower indices in SVG numbers).
+        int top = std::max(0, row - std::max(1, c.options().lintel_courses) + 1);
+        Rect r = layout.grid.cell(row, u0, u1);
+        r.y0 = layout.grid.ys[static_cast<std::size_t>(top)];
+        c.place(detail::polygon_of(r), layout.grid.course(row));
     };
 }
 

@@ -6,10 +6,9 @@ namespace acanthus::cells {
 
 namespace {
 
-// Arc edges labelled `arch` get `arch`; other arcs and everything else get `rest`.
-Node arches(Node arch, Node rest) {
-    return by_label("arch", by_curve(arch, rest), by_curve(arch, rest));
-}
+// Arc edges get `arch`, labelled `arch` or not (a ring of voussoirs is what a mason lays round
+// an oculus too); straight edges get `rest`.
+Node arches(Node arch, Node rest) { return by_curve(arch, rest); }
 
 // Opening bottoms (sill and its corners) get window-bottom headers; the rest goes to `rest`.
 Node sills(Node rest) {

@@ -150,6 +150,7 @@ struct Options {
     double arch_depth = 0;      // each row's depth; 0: brick_length + mortar
     int arch_rows = 1;          // rows of arch stones
     int lintel_bearing = 2;     // lintel past each jamb, in quarter bricks
+    int lintel_courses = 2;     // lintel depth, in courses
     int quoin_long = 4, quoin_short = 2;  // jamb quoins, in quarter bricks, alternating by course
     double arc_tolerance = 0;  // chord error of drawn arcs; 0: mortar / 20 (at least 1e-3)
 };
