@@ -2,7 +2,9 @@
 // element tree, then asks what issue 11 asks. Cells never overlap, never cover an opening or
 // leave the wall; with the joint added back they cover >= 99% of the wall; every window's sill
 // has window_bottom cells under >= 80% of its width; every convex corner carries a corner cell.
-//   check_facade FACADE.svg TREE.json MORTAR [no-sills]
+// In running bond (`running=LENGTH`, the brick length), head joints of consecutive courses are
+// at least a quarter brick apart away from openings and corners.
+//   check_facade FACADE.svg TREE.json MORTAR [no-sills] [running=LENGTH]
 // `no-sills`: skip the window_bottom check (the ashlar tree lays no window-bottom course).
 // Prints what it found; exit 0 when all hold, 1 otherwise, 2 on bad arguments.
 #include <acanthus/error.hpp>
@@ -10,6 +12,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -52,11 +55,61 @@ Rect box_of(const std::vector<Point>& p) {
     return r;
 }
 
+struct Joint {
+    double x, y0, y1;
+};
+
+// Head joints per course: where two bricks of one course abut (a joint's width apart), not
+// within a brick length of an opening or a corner.
+std::map<int, std::vector<Joint>> head_joints(const Facade& facade, const std::vector<Cell>& cells,
+                                              double mortar, double length) {
+    std::map<int, std::vector<Rect>> rows;
+    for (const Cell& c : cells)
+        if (c.generator == "bricks" && c.course >= 0 && c.polygon.size() == 4)
+            rows[c.course].push_back(box_of(c.polygon));
+    std::vector<Rect> keep_off;
+    for (const auto& o : facade.openings()) {
+        Rect b = box_of(o);
+        keep_off.push_back({b.x0 - length, b.y0 - length, b.x1 + length, b.y1 + length});
+    }
+    for (const Corner& k : facade.corners())
+        keep_off.push_back({k.position.x - length, k.position.y - length, k.position.x + length,
+                            k.position.y + length});
+    std::map<int, std::vector<Joint>> out;
+    for (auto& [course, rects] : rows) {
+        std::sort(rects.begin(), rects.end(), [](Rect a, Rect b) { return a.x0 < b.x0; });
+        for (std::size_t i = 0; i + 1 < rects.size(); ++i) {
+            Rect a = rects[i], b = rects[i + 1];
+            if (std::abs(a.x1 + mortar - b.x0) > 1e-6 * length || std::abs(a.y0 - b.y0) > 1e-6 ||
+                std::abs(a.y1 - b.y1) > 1e-6)
+                continue;
+            Joint j{a.x1 + mortar / 2, a.y0, a.y1};
+            bool near = std::any_of(keep_off.begin(), keep_off.end(), [&](Rect r) {
+                return j.x > r.x0 && j.x < r.x1 && j.y1 > r.y0 && j.y0 < r.y1;
+            });
+            if (!near) out[course].push_back(j);
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 4 && !(argc == 5 && std::string(argv[4]) == "no-sills")) {
-        std::cerr << "usage: check_facade FACADE.svg TREE.json MORTAR [no-sills]\n";
+    bool sills = true;
+    double running = 0;
+    for (int i = 4; i < argc; ++i) {
+        std::string a = argv[i];
+        if (a == "no-sills")
+            sills = false;
+        else if (a.rfind("running=", 0) == 0)
+            running = std::atof(a.c_str() + 8);
+        else
+            argc = 0;
+    }
+    if (argc < 4) {
+        std::cerr
+            << "usage: check_facade FACADE.svg TREE.json MORTAR [no-sills] [running=LENGTH]\n";
         return 2;
     }
     const double mortar = std::atof(argv[3]);
@@ -82,7 +135,7 @@ int main(int argc, char** argv) {
         if (r.coverage < 0.99) fail("coverage below 99%");
 
         for (const Edge& e : facade.edges()) {
-            if (argc == 5) break;
+            if (!sills) break;
             if (!e.opening || e.arc || e.part != Part::bottom || !has(e.labels, "window")) continue;
             double x0 = std::min(e.at(0).x, e.at(e.length).x);
             double x1 = std::max(e.at(0).x, e.at(e.length).x), y = e.at(0).y;
@@ -125,6 +178,28 @@ int main(int argc, char** argv) {
                      std::to_string(k.position.y) + ")");
         }
         std::cout << convex << " convex corners\n";
+        if (running > 0) {
+            int compared = 0, close = 0;
+            auto joints = head_joints(facade, t.cells, mortar, running);
+            for (const auto& [course, xs] : joints) {
+                auto next = joints.find(course + 1);
+                if (next == joints.end()) continue;
+                for (const Joint& a : xs)
+                    for (const Joint& b : next->second) {
+                        if (std::abs(a.x - b.x) > running) continue;  // far apart: not stacked
+                        ++compared;
+                        if (std::abs(a.x - b.x) < running / 4 - 1e-6) {
+                            ++close;
+                            fail("head joints at x " + std::to_string(a.x) + " and " +
+                                 std::to_string(b.x) + " in courses " + std::to_string(course) +
+                                 " and " + std::to_string(course + 1));
+                        }
+                    }
+            }
+            std::cout << compared << " head joints compared with the course above, " << close
+                      << " closer than a quarter brick\n";
+            if (compared == 0) fail("no head joints to compare");
+        }
         return ok ? 0 : 1;
     } catch (const std::exception& e) {
         std::cout << "FAIL " << e.what() << "\n";
