@@ -79,8 +79,8 @@ void check(const Options& o, const std::string& source_name) {
         o.arch_depth < 0)
         bad("arch stone sizes must be 0 (automatic) or more");
     if (o.arch_rows < 1) bad("cells_arch_rows must be at least 1");
-    if (o.lintel_bearing < 0 || o.quoin_long < 1 || o.quoin_short < 1)
-        bad("lintel bearing and quoin lengths must be positive");
+    if (o.lintel_bearing < 0 || o.lintel_courses < 1 || o.quoin_long < 1 || o.quoin_short < 1)
+        bad("lintel bearing, lintel depth and quoin lengths must be positive");
 }
 
 Texture texture(const Facade& facade, const Node& tree, const Options& options,
