@@ -10,9 +10,8 @@ namespace {
 // an oculus too); straight edges get `rest`.
 Node arches(Node arch, Node rest) { return by_curve(arch, rest); }
 
-// Opening bottoms (sill and its corners) get window-bottom headers; the rest goes to `rest`.
-Node sills(Node rest) {
-    Node wb = generator("window_bottom", window_bottom());
+// Opening bottoms (sill and its corners) get `wb`; the rest goes to `rest`.
+Node sills(Node rest, Node wb = generator("window_bottom", window_bottom())) {
     Node openings = by_part(rest, by_kind(wb, wb, rest), rest);
     return Node([openings, rest](const FeatureRef& f, Context& c) {
         bool opening = false;
@@ -79,7 +78,8 @@ Node framed_tree() {
 Node ashlar_tree() {
     Node a = generator("ashlar", ashlar());
     Node arch = generator("arch_stones", arch_stones());
-    return by_kind(apexes(arch, a), arches(arch, a), a);
+    Node wb = generator("window_bottom", sill_stones());
+    return by_kind(apexes(arch, sills(a, wb)), arches(arch, sills(a, wb)), a);
 }
 
 Node rgb_tree() { return generator("rgb_blocks", rgb_blocks()); }

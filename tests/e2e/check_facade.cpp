@@ -5,7 +5,7 @@
 // In running bond (`running=LENGTH`, the brick length), head joints of consecutive courses are
 // at least a quarter brick apart away from openings and corners.
 //   check_facade FACADE.svg TREE.json MORTAR [no-sills] [running=LENGTH]
-// `no-sills`: skip the window_bottom check (the ashlar tree lays no window-bottom course).
+// `no-sills`: skip the window_bottom check (for trees that lay no window bottoms).
 // Prints what it found; exit 0 when all hold, 1 otherwise, 2 on bad arguments.
 #include <acanthus/error.hpp>
 #include <acanthus/input_file.hpp>

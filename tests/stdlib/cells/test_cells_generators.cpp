@@ -139,3 +139,31 @@ TEST(CellsGenerators, PointedArchGetsAKeystone) {
     EXPECT_LT(r.over_openings, 1.0);
     EXPECT_GE(r.coverage, 0.99);
 }
+
+TEST(CellsGenerators, AshlarSillStonesUnderWindows) {
+    Facade f = row_house();
+    Options o;
+    o.bond = Bond::ashlar;
+    o.ashlar_unit = 150;
+    Texture t = texture(f, tree_for(o), o, 5);
+    // w1 and w2: sills at y 2600 from x 600 to 1500 and 4500 to 5400.
+    for (double x0 : {600.0, 4500.0}) {
+        double covered = 0;
+        int stones = 0;
+        for (const Cell& c : t.cells) {
+            if (c.generator != "window_bottom") continue;
+            double a = 1e300, b = -1e300, top = 1e300;
+            for (Point p : c.polygon)
+                a = std::min(a, p.x), b = std::max(b, p.x), top = std::min(top, p.y);
+            if (std::abs(top - 2605) > 1e-6) continue;  // the row under the sill, half a joint down
+            covered += std::max(0.0, std::min(b + 5, x0 + 900) - std::max(a - 5, x0));
+            ++stones;
+            EXPECT_LE(b - a, 4 * 150 * 1.5);  // no longer than the ashlar maximum
+        }
+        EXPECT_GE(covered, 0.99 * 900) << "sill at x " << x0;
+        EXPECT_GE(stones, 2);
+    }
+    Report r = check_texture(f, t, 10);
+    EXPECT_LT(r.overlap, 1.0);
+    EXPECT_GE(r.coverage, 0.99);
+}

@@ -280,9 +280,11 @@ Generator arch_bricks();    // bricks on end along arcs, the grid where the arc 
 Generator ashlar();         // random ashlar on the grid tool, seeded
 Generator lintel();         // one stone over an opening, past each jamb
 Generator quoins();         // long and short stones alternating up the sides
+Generator sill_stones();    // window bottom of a stone wall: the ashlar row under each sill
 
 // Ready trees: bricks with window bottoms, arches and corner bricks; ashlar framed the same
-// way; RGB blocks. tree_for() picks bricks or ashlar from options.bond.
+// way (its window bottoms are sill stones, placed as "window_bottom"); RGB blocks. tree_for() picks
+// bricks or ashlar from options.bond.
 Node brick_tree();
 Node ashlar_tree();
 Node rgb_tree();
