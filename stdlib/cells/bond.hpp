@@ -1,0 +1,31 @@
+// Brick bonds as sequences of pieces along a course, in quarter-brick units of the grid:
+// stretcher 4, header 2. Each course's sequence is shifted so that the bond's joints stagger.
+#pragma once
+
+#include <acanthus/stdlib/cells.hpp>
+#include <vector>
+
+namespace acanthus::cells::detail {
+
+struct Piece {
+    int start = 0;  // first unit
+    int length = 0;
+    bool cut = false;   // shorter or longer than the bond's piece there (a bat or a closer)
+    bool full = false;  // every unit fully inside the face
+};
+
+struct BondPattern {
+    Bond bond = Bond::running;
+    // Piece lengths of `course` (counted from the bottom) and where the sequence starts.
+    std::vector<int> lengths(int course) const;
+    int offset(int course) const;
+    int period() const;  // phases tried for the fewest cut pieces
+};
+
+// The pieces of a run of units [a, b) in `course`, the sequence shifted by `phase`. A one-unit
+// remnant at either end joins its neighbour (as a three-quarter bat, or a half bat and a
+// three-quarter bat), so no quarter bats are laid.
+void pieces_of_run(const BondPattern& bond, int course, int phase, int a, int b,
+                   std::vector<Piece>& out);
+
+}  // namespace acanthus::cells::detail

@@ -1,0 +1,91 @@
+#include "brick_layout.hpp"
+
+#include <string>
+
+#include "context_data.hpp"
+
+namespace acanthus::cells::detail {
+
+namespace {
+
+// Runs of units in a row that touch the face, cut into pieces.
+void row_pieces(const CourseGrid& g, const BondPattern& bond, int phase, int row,
+                std::vector<Piece>& out) {
+    out.clear();
+    const int n = g.units();
+    for (int u = 0; u < n;) {
+        if (g.at(row, u) == kOutside) {
+            ++u;
+            continue;
+        }
+        int a = u;
+        while (u < n && g.at(row, u) != kOutside) ++u;
+        pieces_of_run(bond, g.course(row), phase, a, u, out);
+    }
+    for (Piece& p : out) {
+        p.full = true;
+        for (int k = p.start; k < p.start + p.length; ++k)
+            if (g.at(row, k) != kFull) p.full = false;
+    }
+}
+
+}  // namespace
+
+long cut_pieces(const CourseGrid& grid, const BondPattern& bond, int phase) {
+    long cut = 0;
+    std::vector<Piece> pieces;
+    for (int r = 0; r < grid.rows(); ++r) {
+        row_pieces(grid, bond, phase, r, pieces);
+        for (const Piece& p : pieces) cut += p.cut;
+    }
+    return cut;
+}
+
+bool BrickLayout::find(Point p, int& row, int& piece) const {
+    row = grid.row_at(p.y);
+    int u = grid.unit_at(p.x);
+    if (row < 0 || u < 0) return false;
+    piece = piece_of_unit[static_cast<std::size_t>(row)][static_cast<std::size_t>(u)];
+    return piece >= 0;
+}
+
+Rect BrickLayout::rect(int row, int piece) const {
+    const Piece& p = rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
+    return grid.cell(row, p.start, p.start + p.length);
+}
+
+BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o) {
+    BrickLayout layout;
+    layout.grid =
+        make_grid(facade, face, (o.brick_length + o.mortar) / 4, o.brick_height + o.mortar);
+    layout.bond.bond = o.bond == Bond::ashlar ? Bond::running : o.bond;
+    long best = -1;
+    for (int phase = 0; phase < layout.bond.period(); ++phase) {
+        long cut = cut_pieces(layout.grid, layout.bond, phase);
+        if (best < 0 || cut < best) best = cut, layout.phase = phase;
+    }
+    layout.cut_pieces = best;
+    const int rows = layout.grid.rows();
+    layout.rows.resize(static_cast<std::size_t>(rows));
+    layout.piece_of_unit.resize(static_cast<std::size_t>(rows));
+    layout.taken.resize(static_cast<std::size_t>(rows));
+    for (int r = 0; r < rows; ++r) {
+        auto& pieces = layout.rows[static_cast<std::size_t>(r)];
+        row_pieces(layout.grid, layout.bond, layout.phase, r, pieces);
+        auto& index = layout.piece_of_unit[static_cast<std::size_t>(r)];
+        index.assign(static_cast<std::size_t>(layout.grid.units()), -1);
+        for (std::size_t k = 0; k < pieces.size(); ++k)
+            for (int u = pieces[k].start; u < pieces[k].start + pieces[k].length; ++u)
+                index[static_cast<std::size_t>(u)] = static_cast<int>(k);
+        layout.taken[static_cast<std::size_t>(r)].assign(pieces.size(), 0);
+    }
+    return layout;
+}
+
+BrickLayout& brick_layout(Context& context, int face) {
+    return context.data().layout<BrickLayout>("bricks:" + std::to_string(face), [&] {
+        return make_brick_layout(context.facade(), face, context.options());
+    });
+}
+
+}  // namespace acanthus::cells::detail

@@ -1,0 +1,35 @@
+// The bricks of a face before any is laid [5.2]: the grid tool at quarter-brick units and
+// course height, runs of units inside the face cut into the bond's pieces, with the phase that
+// gives the fewest cut bricks ("fewest half bricks"; the corner flips follow from it).
+#pragma once
+
+#include <acanthus/stdlib/cells.hpp>
+#include <vector>
+
+#include "bond.hpp"
+#include "course_grid.hpp"
+
+namespace acanthus::cells::detail {
+
+struct BrickLayout {
+    CourseGrid grid;
+    BondPattern bond;
+    int phase = 0;
+    std::vector<std::vector<Piece>> rows;         // per grid row, left to right
+    std::vector<std::vector<int>> piece_of_unit;  // per row: piece index or -1
+    std::vector<std::vector<char>> taken;         // per row and piece: laid already
+    long cut_pieces = 0;
+
+    // The piece under point p: row and index, or false.
+    bool find(Point p, int& row, int& piece) const;
+    Rect rect(int row, int piece) const;
+};
+
+BrickLayout make_brick_layout(const Facade& facade, int face, const Options& options);
+// Cut pieces the face would have with `phase` (for the fewest-half-bricks choice and its test).
+long cut_pieces(const CourseGrid& grid, const BondPattern& bond, int phase);
+
+// The layout of `face` shared by every generator that lays bricks in this context.
+BrickLayout& brick_layout(Context& context, int face);
+
+}  // namespace acanthus::cells::detail

@@ -1,0 +1,69 @@
+// Bricks [5.2]: one brick per corner, the bricks along each edge (alternating whole and cut at
+// a jamb, as the bond gives them), then every brick of the face left free. All of them come
+// from the face's one layout, so corners, edges and face agree on the bond.
+#include <acanthus/stdlib/cells.hpp>
+#include <set>
+
+#include "brick_layout.hpp"
+#include "context_data.hpp"
+#include "face_occupancy.hpp"
+#include "feature_walk.hpp"
+
+namespace acanthus::cells {
+
+using detail::BrickLayout;
+
+namespace {
+
+void lay(Context& c, BrickLayout& layout, int row, int piece) {
+    char& taken = layout.taken[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
+    if (taken) return;
+    taken = 1;
+    c.place(detail::polygon_of(layout.rect(row, piece)), layout.grid.course(row));
+}
+
+}  // namespace
+
+Generator bricks() {
+    return [](const FeatureRef& f, Context& c) {
+        const Facade& facade = c.facade();
+        int face = detail::face_of(facade, f);
+        BrickLayout& layout = detail::brick_layout(c, face);
+        const double inset =
+            0.25 * std::min(c.options().brick_height, c.options().brick_length / 4);
+        int row = 0, piece = 0;
+        if (f.kind == FeatureKind::corner) {
+            const Corner& corner = facade.corners()[static_cast<std::size_t>(f.index)];
+            if (layout.find(detail::inside_corner(corner, inset), row, piece))
+                lay(c, layout, row, piece);
+            return;
+        }
+        if (f.kind == FeatureKind::edge) {
+            const Edge& e = facade.edges()[static_cast<std::size_t>(f.index)];
+            std::set<std::pair<int, int>> seen;
+            std::vector<std::pair<int, int>> order;
+            detail::walk_edge(e, inset, inset, [&](Point p, double) {
+                if (layout.find(p, row, piece) && seen.insert({row, piece}).second)
+                    order.emplace_back(row, piece);
+            });
+            for (auto [r, k] : order) lay(c, layout, r, k);
+            return;
+        }
+        FaceOccupancy& occupancy = c.face_occupancy(face);
+        for (int r = 0; r < layout.grid.rows(); ++r) {
+            auto& pieces = layout.rows[static_cast<std::size_t>(r)];
+            auto& taken = layout.taken[static_cast<std::size_t>(r)];
+            for (std::size_t k = 0; k < pieces.size(); ++k) {
+                if (taken[k]) continue;
+                taken[k] = 1;
+                Rect rect = layout.rect(r, static_cast<int>(k));
+                if (pieces[k].full && occupancy.rect_is_free(rect))
+                    c.place_free_rect(rect, layout.grid.course(r));
+                else
+                    c.place(detail::polygon_of(rect), layout.grid.course(r));
+            }
+        }
+    };
+}
+
+}  // namespace acanthus::cells

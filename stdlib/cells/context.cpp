@@ -1,0 +1,169 @@
+// Context::place: cells claim space-filling footprints in the occupancy maps [3.3]; the drawn
+// cell is the claim shrunk by half the mortar joint [5.4].
+#include <acanthus/stdlib/cells.hpp>
+#include <algorithm>
+#include <cmath>
+
+#include "clip.hpp"
+#include "context_data.hpp"
+#include "facade_data.hpp"
+#include "face_occupancy.hpp"
+
+namespace acanthus::cells {
+
+namespace detail {
+int face_of(const Facade& facade, const FeatureRef& f) {
+    switch (f.kind) {
+        case FeatureKind::corner:
+            return facade.corners()[static_cast<std::size_t>(f.index)].face;
+        case FeatureKind::edge:
+            return facade.edges()[static_cast<std::size_t>(f.index)].face;
+        case FeatureKind::face:
+            return f.index;
+    }
+    return 0;
+}
+}  // namespace detail
+
+Context::Context(const Facade& facade, const Options& options, std::uint64_t seed)
+    : data_(std::make_unique<detail::ContextData>()) {
+    data_->facade = &facade;
+    data_->options = options;
+    data_->random.reseed(seed);
+    for (const Edge& e : facade.edges()) data_->edges.emplace_back(e.length);
+    data_->faces.resize(facade.faces().size());
+    Rect b = facade.bounds();
+    data_->edge_tolerance = 2e-5 * std::max(b.width(), b.height());
+}
+
+Context::~Context() = default;
+const Facade& Context::facade() const { return *data_->facade; }
+const Options& Context::options() const { return data_->options; }
+Random& Context::random() { return data_->random; }
+EdgeOccupancy& Context::edge_occupancy(int edge) {
+    return data_->edges.at(static_cast<std::size_t>(edge));
+}
+FaceOccupancy& Context::face_occupancy(int face) {
+    std::unique_ptr<FaceOccupancy>& f = data_->faces.at(static_cast<std::size_t>(face));
+    if (!f) f = std::make_unique<FaceOccupancy>(*data_->facade, face);
+    return *f;
+}
+const FeatureRef& Context::feature() const { return data_->feature; }
+std::vector<Cell>& Context::cells() { return data_->cells; }
+
+void Context::begin(const std::string& generator, const FeatureRef& feature) {
+    data_->generator = generator;
+    data_->feature = feature;
+    const std::vector<std::string>* labels = nullptr;
+    const Facade& f = *data_->facade;
+    auto i = static_cast<std::size_t>(feature.index);
+    switch (feature.kind) {
+        case FeatureKind::corner:
+            labels = &f.corners()[i].labels;
+            break;
+        case FeatureKind::edge:
+            labels = &f.edges()[i].labels;
+            break;
+        case FeatureKind::face:
+            labels = &f.faces()[i].labels;
+            break;
+    }
+    data_->label.clear();
+    for (const std::string& l : *labels) {
+        if (!data_->label.empty()) data_->label += ' ';
+        data_->label += l;
+    }
+}
+
+namespace {
+
+bool axis_rect(const std::vector<Point>& p, Rect& r) {
+    if (p.size() != 4) return false;
+    r = detail::bounds_of(p);
+    for (Point q : p)
+        if ((q.x != r.x0 && q.x != r.x1) || (q.y != r.y0 && q.y != r.y1)) return false;
+    return true;
+}
+
+}  // namespace
+
+int Context::place_free_rect(Rect r, int course) {
+    const Facade& facade = *data_->facade;
+    int face = detail::face_of(facade, data_->feature);
+    face_occupancy(face).claim(r);
+    double h = data_->options.mortar / 2;
+    if (r.width() <= 2 * h || r.height() <= 2 * h) return 0;
+    Cell c;
+    c.polygon = {
+        {r.x0 + h, r.y0 + h}, {r.x1 - h, r.y0 + h}, {r.x1 - h, r.y1 - h}, {r.x0 + h, r.y1 - h}};
+    c.generator = data_->generator;
+    c.feature = data_->feature.kind;
+    c.label = data_->label;
+    c.course = course;
+    c.feature_index = data_->feature.index;
+    data_->cells.push_back(std::move(c));
+    return 1;
+}
+
+int Context::place(const std::vector<Point>& claim, int course, bool clip) {
+    const Facade& facade = *data_->facade;
+    int face = detail::face_of(facade, data_->feature);
+    FaceOccupancy& occupancy = face_occupancy(face);
+    std::vector<std::vector<Point>> pieces;
+    if (clip)
+        pieces = occupancy.free_part(claim);
+    else
+        pieces.push_back(claim);
+    const detail::IntScale& scale = occupancy.data().scale();
+    int added = 0;
+    for (const std::vector<Point>& piece : pieces) {
+        occupancy.claim(piece);
+        if (data_->feature.kind != FeatureKind::face) {
+            // Project the claim onto the face's edges it lies along (its vertices on them).
+            Rect box = detail::bounds_of(piece);
+            double tol = data_->edge_tolerance;
+            Rect grown{box.x0 - tol, box.y0 - tol, box.x1 + tol, box.y1 + tol};
+            for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
+                const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+                if (!detail::overlaps(edge.bounds, grown)) continue;
+                double s0 = 1e300, s1 = -1e300;
+                int on = 0;
+                for (Point v : piece) {
+                    if (!grown.contains(v)) continue;
+                    double s = edge.project(v);
+                    if (distance(edge.at(s), v) > tol) continue;
+                    s0 = std::min(s0, s);
+                    s1 = std::max(s1, s);
+                    ++on;
+                }
+                if (on >= 2) data_->edges[static_cast<std::size_t>(e)].claim(s0, s1);
+            }
+        }
+        Rect r;
+        std::vector<std::vector<Point>> drawn;
+        double h = data_->options.mortar / 2;
+        if (axis_rect(piece, r)) {
+            if (r.width() > 2 * h && r.height() > 2 * h)
+                drawn.push_back({{r.x0 + h, r.y0 + h},
+                                 {r.x1 - h, r.y0 + h},
+                                 {r.x1 - h, r.y1 - h},
+                                 {r.x0 + h, r.y1 - h}});
+        } else {
+            drawn = detail::shrink(piece, h, scale);
+        }
+        for (std::vector<Point>& d : drawn) {
+            Cell c;
+            c.polygon = std::move(d);
+            c.generator = data_->generator;
+            c.feature = data_->feature.kind;
+            c.label = data_->label;
+            c.course = course;
+            c.feature_index = data_->feature.index;
+            data_->cells.push_back(std::move(c));
+            ++added;
+        }
+    }
+    return added;
+}
+
+}  // namespace acanthus::cells

@@ -1,0 +1,38 @@
+// What a Context holds while a tree runs: occupancy maps, the cells so far, the running
+// generator, and per-face layouts that generators share (a brick layout, an ashlar grid).
+#pragma once
+
+#include <acanthus/stdlib/cells.hpp>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace acanthus::cells::detail {
+
+struct ContextData {
+    const Facade* facade = nullptr;
+    Options options;
+    Random random;
+    std::vector<EdgeOccupancy> edges;
+    std::vector<std::unique_ptr<FaceOccupancy>> faces;
+    std::vector<Cell> cells;
+    std::string generator;
+    FeatureRef feature;
+    std::string label;
+    double edge_tolerance = 0;
+    std::map<std::string, std::shared_ptr<void>> shared;  // key: what + face
+
+    // The layout of type T under `key`, made by `make()` on first use.
+    template <class T, class Make>
+    T& layout(const std::string& key, Make&& make) {
+        std::shared_ptr<void>& slot = shared[key];
+        if (!slot) slot = std::make_shared<T>(make());
+        return *static_cast<T*>(slot.get());
+    }
+};
+
+// The face a feature belongs to.
+int face_of(const Facade& facade, const FeatureRef& feature);
+
+}  // namespace acanthus::cells::detail

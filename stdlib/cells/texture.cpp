@@ -1,0 +1,113 @@
+// Running a tree over a facade in the order of [4.2]: all corners, all edges, then all faces.
+#include <acanthus/environment.hpp>
+#include <acanthus/error.hpp>
+#include <acanthus/stdlib/cells.hpp>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace acanthus::cells {
+
+std::string_view to_string(FeatureKind kind) {
+    switch (kind) {
+        case FeatureKind::corner:
+            return "corner";
+        case FeatureKind::edge:
+            return "edge";
+        case FeatureKind::face:
+            return "face";
+    }
+    return "face";
+}
+
+std::string_view to_string(Part part) {
+    switch (part) {
+        case Part::top:
+            return "top";
+        case Part::bottom:
+            return "bottom";
+        case Part::side:
+            return "side";
+    }
+    return "side";
+}
+
+Bond parse_bond(std::string_view text) {
+    if (text == "running" || text == "stretcher") return Bond::running;
+    if (text == "stack") return Bond::stack;
+    if (text == "english") return Bond::english;
+    if (text == "flemish") return Bond::flemish;
+    if (text == "header") return Bond::header;
+    if (text == "ashlar") return Bond::ashlar;
+    throw InputError("cells: unknown bond \"" + std::string(text) +
+                     "\" (running, stretcher, stack, english, flemish, header or ashlar)");
+}
+
+std::string_view to_string(Bond bond) {
+    switch (bond) {
+        case Bond::running:
+            return "running";
+        case Bond::stack:
+            return "stack";
+        case Bond::english:
+            return "english";
+        case Bond::flemish:
+            return "flemish";
+        case Bond::header:
+            return "header";
+        case Bond::ashlar:
+            return "ashlar";
+    }
+    return "running";
+}
+
+void check(const Options& o, const std::string& source_name) {
+    auto bad = [&](const std::string& what) { throw InputError(source_name + ": cells: " + what); };
+    auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+    if (!positive(o.brick_length) || !positive(o.brick_height))
+        bad("the brick size must be positive (cells_brick=LENGTHxHEIGHT), not " +
+            std::to_string(o.brick_length) + "x" + std::to_string(o.brick_height));
+    if (!std::isfinite(o.mortar) || o.mortar < 0) bad("the mortar joint must be 0 or more");
+    if (o.mortar >= std::min(o.brick_length, o.brick_height))
+        bad("the mortar joint must be thinner than the brick");
+    if (!std::isfinite(o.ashlar_unit) || o.ashlar_unit < 0)
+        bad("cells_ashlar_unit must be 0 or more");
+    if (o.ashlar_max_width < 1 || o.ashlar_max_height < 1)
+        bad("the ashlar maximum size must be at least 1x1 grid units");
+    if (o.ashlar_max_seam < 1) bad("cells_ashlar_seam must be at least 1");
+    if (!std::isfinite(o.voussoir_width) || o.voussoir_width < 0 || !std::isfinite(o.arch_depth) ||
+        o.arch_depth < 0)
+        bad("arch stone sizes must be 0 (automatic) or more");
+    if (o.arch_rows < 1) bad("cells_arch_rows must be at least 1");
+    if (o.lintel_bearing < 0 || o.lintel_courses < 1 || o.quoin_long < 1 || o.quoin_short < 1)
+        bad("lintel bearing, lintel depth and quoin lengths must be positive");
+}
+
+Texture texture(const Facade& facade, const Node& tree, const Options& options,
+                std::uint64_t seed) {
+    check(options, facade.name());
+    auto start = std::chrono::steady_clock::now();
+    Context context(facade, options, seed);
+    Texture out;
+    for (std::size_t i = 0; i < facade.corners().size(); ++i)
+        tree({FeatureKind::corner, static_cast<int>(i)}, context);
+    out.stats.corners = static_cast<long>(context.cells().size());
+    for (std::size_t i = 0; i < facade.edges().size(); ++i)
+        tree({FeatureKind::edge, static_cast<int>(i)}, context);
+    out.stats.edges = static_cast<long>(context.cells().size()) - out.stats.corners;
+    for (std::size_t i = 0; i < facade.faces().size(); ++i)
+        tree({FeatureKind::face, static_cast<int>(i)}, context);
+    out.cells = std::move(context.cells());
+    out.stats.faces = static_cast<long>(out.cells.size()) - out.stats.corners - out.stats.edges;
+    out.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+Texture texture(const Facade& facade, const Node& tree, const Options& options) {
+    Environment* env = Environment::current();
+    if (!env) throw std::logic_error("cells::texture(facade, tree, options) needs a rule body");
+    return texture(facade, tree, options, env->random().next_u64());
+}
+
+}  // namespace acanthus::cells

@@ -1,0 +1,91 @@
+// The ready pattern generator trees (Figure 4's idea): what goes where on a facade.
+#include <acanthus/stdlib/cells.hpp>
+#include <algorithm>
+
+namespace acanthus::cells {
+
+namespace {
+
+// Arc edges get `arch`, labelled `arch` or not (a ring of voussoirs is what a mason lays round
+// an oculus too); straight edges get `rest`.
+Node arches(Node arch, Node rest) { return by_curve(arch, rest); }
+
+// Opening bottoms (sill and its corners) get `wb`; the rest goes to `rest`.
+Node sills(Node rest, Node wb = generator("window_bottom", window_bottom())) {
+    Node openings = by_part(rest, by_kind(wb, wb, rest), rest);
+    return Node([openings, rest](const FeatureRef& f, Context& c) {
+        bool opening = false;
+        auto i = static_cast<std::size_t>(f.index);
+        if (f.kind == FeatureKind::corner) opening = c.facade().corners()[i].opening;
+        if (f.kind == FeatureKind::edge) opening = c.facade().edges()[i].opening;
+        // A door's bottom lies on the ground, not over wall: only openings with wall below.
+        if (opening)
+            openings(f, c);
+        else
+            rest(f, c);
+    });
+}
+
+// Corners where two arcs labelled `arch` meet (a pointed apex) get the keystone.
+Node apexes(Node arch, Node rest) {
+    return Node([arch, rest](const FeatureRef& f, Context& c) {
+        const auto& corners = c.facade().corners();
+        const auto& edges = c.facade().edges();
+        bool apex = false;
+        if (f.kind == FeatureKind::corner) {
+            const Corner& k = corners[static_cast<std::size_t>(f.index)];
+            apex = k.edge_in >= 0 && k.edge_out >= 0 &&
+                   edges[static_cast<std::size_t>(k.edge_in)].arc &&
+                   edges[static_cast<std::size_t>(k.edge_out)].arc &&
+                   std::find(k.labels.begin(), k.labels.end(), "arch") != k.labels.end();
+        }
+        if (apex)
+            arch(f, c);
+        else
+            rest(f, c);
+    });
+}
+
+}  // namespace
+
+Node brick_tree() {
+    Node b = generator("bricks", bricks());
+    Node arch = generator("arch_stones", arch_stones());
+    return by_kind(apexes(arch, sills(b)), arches(arch, sills(b)), b);
+}
+
+Node framed_tree() {
+    Node b = generator("bricks", bricks());
+    Node lin = generator("lintel", lintel());
+    Node q = generator("quoins", quoins());
+    Node openings = by_part(by_curve(b, lin), generator("window_bottom", window_bottom()), q);
+    Node features = Node([=](const FeatureRef& f, Context& c) {
+        auto i = static_cast<std::size_t>(f.index);
+        bool opening = f.kind == FeatureKind::corner ? c.facade().corners()[i].opening
+                                                     : c.facade().edges()[i].opening;
+        if (opening)
+            openings(f, c);
+        else if (f.kind == FeatureKind::edge && c.facade().edges()[i].vertical())
+            q(f, c);
+        else
+            b(f, c);
+    });
+    // Top corners of openings lay the lintel before any corner brick can notch it.
+    Node arch = generator("arch_stones", arch_stones());
+    return by_kind(apexes(arch, features), arches(arch, features), b);
+}
+
+Node ashlar_tree() {
+    Node a = generator("ashlar", ashlar());
+    Node arch = generator("arch_stones", arch_stones());
+    Node wb = generator("window_bottom", sill_stones());
+    return by_kind(apexes(arch, sills(a, wb)), arches(arch, sills(a, wb)), a);
+}
+
+Node rgb_tree() { return generator("rgb_blocks", rgb_blocks()); }
+
+Node tree_for(const Options& options) {
+    return options.bond == Bond::ashlar ? ashlar_tree() : brick_tree();
+}
+
+}  // namespace acanthus::cells

@@ -1,0 +1,136 @@
+// Features of a facade [3.1]: wall minus openings, exact arcs, corners, labels, window
+// analysis; bad facades named by file and shape.
+#include <gtest/gtest.h>
+
+#include <acanthus/error.hpp>
+#include <algorithm>
+
+#include "cells_oracle.hpp"
+
+using namespace cells_test;
+
+namespace {
+
+bool has(const std::vector<std::string>& v, const std::string& s) {
+    return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+std::string message_of(std::vector<FacadeShape> shapes) {
+    try {
+        Facade::from_shapes(std::move(shapes), "bad.svg");
+    } catch (const acanthus::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(CellsFacade, WallMinusOpenings) {
+    Facade f = row_house();
+    ASSERT_EQ(f.faces().size(), 1u);
+    // 6000 x 4000 less two windows, the arched window and the door.
+    double arched = 800 * 900 + M_PI * 400 * 400 / 2;
+    double expected = 6000.0 * 4000 - 2 * 900 * 1400 - arched - 600 * 1000;
+    EXPECT_NEAR(f.wall_area(), expected, 1e-3 * expected);
+    // The door reaches the ground: a notch in the outline, two more convex corners.
+    int convex = 0, concave = 0;
+    for (const Corner& c : f.corners()) (c.convex ? convex : concave)++;
+    EXPECT_EQ(convex, 4 + 2);       // the wall's four, and the door's feet on the ground
+    EXPECT_EQ(concave, 8 + 2 + 2);  // two windows, the arched one's sill, the door's head
+}
+
+TEST(CellsFacade, ArcsStayExactAndLabelled) {
+    Facade f = row_house();
+    int arcs = 0;
+    for (const Edge& e : f.edges()) {
+        if (!e.arc) continue;
+        ++arcs;
+        EXPECT_TRUE(has(e.labels, "arch"));
+        EXPECT_TRUE(has(e.labels, "w3"));
+        EXPECT_NEAR(e.segments.front().radius, 400, 1e-6);
+        EXPECT_NEAR(e.length, M_PI * 400, 1e-6);
+        EXPECT_EQ(e.part, Part::top);
+        // Arc length parameterization: the middle of the arc is its crown.
+        EXPECT_NEAR(e.at(e.length / 2).y, 1700 - 400, 1e-6);
+        EXPECT_NEAR(e.project(e.at(123.0)), 123.0, 1e-6);
+    }
+    EXPECT_EQ(arcs, 1);
+}
+
+TEST(CellsFacade, WindowAnalysis) {
+    Facade f = row_house();
+    int bottoms = 0, tops = 0;
+    for (const Edge& e : f.edges()) {
+        if (!has(e.labels, "w1")) continue;
+        if (e.part == Part::bottom) {
+            ++bottoms;
+            EXPECT_NEAR(e.at(0).y, 2600, 1e-9);  // the sill: wall below it
+            EXPECT_GT(e.inward(e.length / 2).y, 0.99);
+        }
+        if (e.part == Part::top) ++tops;
+    }
+    EXPECT_EQ(bottoms, 1);
+    EXPECT_EQ(tops, 1);
+    for (const Corner& c : f.corners())
+        if (has(c.labels, "w1")) {
+            EXPECT_NE(c.part, Part::side);
+        }
+    // The wall's own top edge: the wall lies below it.
+    for (const Edge& e : f.edges())
+        if (!e.opening && !e.vertical() && e.at(0).y == 0) {
+            EXPECT_EQ(e.part, Part::top);
+        }
+}
+
+TEST(CellsFacade, UnionOfWallShapes) {
+    std::vector<FacadeShape> s;
+    s.push_back(shape(rect(0, 0, 1000, 1000), {"wall"}, "a"));
+    s.push_back(shape(rect(1000, 0, 1000, 1000), {"wall", "brick"}, "b"));
+    Facade f = Facade::from_shapes(std::move(s), "two.svg");
+    ASSERT_EQ(f.faces().size(), 1u);
+    EXPECT_NEAR(f.wall_area(), 2e6, 1);
+    EXPECT_EQ(f.corners().size(), 4u);
+}
+
+TEST(CellsFacade, BadFacadesNameFileAndShape) {
+    std::string m = message_of({shape(rect(0, 0, 10, 10), {"window"}, "w")});
+    EXPECT_NE(m.find("bad.svg"), std::string::npos) << m;
+    EXPECT_NE(m.find("wall"), std::string::npos) << m;
+
+    m = message_of({shape(rect(0, 0, 100, 100), {"wall"}, "wall1"),
+                    shape(rect(90, 10, 20, 20), {"window"}, "w7")});
+    EXPECT_NE(m.find("bad.svg"), std::string::npos) << m;
+    EXPECT_NE(m.find("w7"), std::string::npos) << m;
+    EXPECT_NE(m.find("crosses"), std::string::npos) << m;
+
+    m = message_of({shape(rect(0, 0, 100, 100), {"wall"}, "wall1"),
+                    shape("M 10 10 L 50 10 L 90 10 Z", {"window"}, "flat")});
+    EXPECT_NE(m.find("flat"), std::string::npos) << m;
+    EXPECT_NE(m.find("no area"), std::string::npos) << m;
+
+    Facade f = row_house();
+    Options o;
+    o.brick_length = 0;
+    try {
+        texture(f, brick_tree(), o, 1);
+        ADD_FAILURE() << "a brick of length zero was accepted";
+    } catch (const acanthus::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("row_house.svg"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("brick"), std::string::npos);
+    }
+}
+
+TEST(CellsFacade, EdgeOccupancyMergesIntervals) {
+    EdgeOccupancy e(10);
+    e.claim(2, 3);
+    e.claim(5, 6);
+    e.claim(2.5, 5.5);
+    ASSERT_EQ(e.claimed().size(), 1u);
+    EXPECT_FALSE(e.is_free(4, 4.5));
+    EXPECT_TRUE(e.is_free(7, 9));
+    auto free = e.free_intervals();
+    ASSERT_EQ(free.size(), 2u);
+    EXPECT_DOUBLE_EQ(free[0].second, 2);
+    EXPECT_DOUBLE_EQ(free[1].first, 6);
+}
