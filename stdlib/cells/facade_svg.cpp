@@ -149,7 +149,7 @@ Facade Facade::from_region(const Region& region) {
     return from_shapes(std::move(shapes), r.name);
 }
 
-Facade Facade::for_panel(const Region& region) {
+Facade Facade::for_panel(const Region& region, bool whole_panel) {
     const std::string& name = region.name();
     std::error_code ec;
     if (is_spec(name) || !std::filesystem::is_regular_file(name, ec)) return from_region(region);
@@ -158,6 +158,10 @@ Facade Facade::for_panel(const Region& region) {
     // Read again rather than taken from the region: the drawing's circular arcs stay exact.
     bool wall = std::any_of(svg.begin(), svg.end(),
                             [](const SvgShape& s) { return wall_role(chain_of(s)); });
+    if (!wall && !whole_panel)
+        throw InputError(name +
+                         ": no filled shape with class \"wall\": not a facade (its wall is the "
+                         "union of the shapes with class wall; docs/stdlib/cells.md)");
     return from_svg_shapes(svg, name, !wall);
 }
 

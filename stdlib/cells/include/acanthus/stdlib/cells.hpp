@@ -117,10 +117,11 @@ class Facade {
     // A panel as a wall: all of the region is wall (labels `wall panel`), its holes are holes
     // in the wall's outline, not openings.
     static Facade from_region(const Region& region);
-    // The facade of --region: its SVG file read as a facade when a shape in it has the class
-    // `wall`; an SVG without one is all wall (every filled shape, labels `wall panel`, arcs
-    // exact); a built-in shape (rect:W,H, ...) goes to from_region().
-    static Facade for_panel(const Region& region);
+    // The facade of --region: its SVG file read as a facade (a file without a filled `wall`
+    // shape is an InputError naming it, unless `whole_panel`: then it is all wall, every filled
+    // shape labelled `wall panel`, arcs exact); a built-in shape (rect:W,H, ...) goes to
+    // from_region().
+    static Facade for_panel(const Region& region, bool whole_panel = false);
 
     const std::vector<Corner>& corners() const;
     const std::vector<Edge>& edges() const;
