@@ -23,6 +23,8 @@ IntScale scale_for(Rect frame);
 double signed_area(const std::vector<Point>& polygon);
 Rect bounds_of(const std::vector<Point>& polygon);
 bool overlaps(Rect a, Rect b);  // open interiors intersect
+// True when `polygon` is an axis-aligned rectangle (four corners, any order); `r` its box.
+bool axis_rect(const std::vector<Point>& polygon, Rect& r);
 
 // The polygon inset by `distance` (mitred corners); may split or vanish.
 std::vector<std::vector<Point>> shrink(const std::vector<Point>& polygon, double distance,

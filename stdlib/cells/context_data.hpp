@@ -21,6 +21,7 @@ struct ContextData {
     FeatureRef feature;
     std::string label;
     double edge_tolerance = 0;
+    std::vector<int> near_edges;                          // scratch for place()
     std::map<std::string, std::shared_ptr<void>> shared;  // key: what + face
 
     // The layout of type T under `key`, made by `make()` on first use.
