@@ -62,6 +62,16 @@ std::string_view to_string(Bond bond) {
     return "running";
 }
 
+AshlarMethod parse_ashlar_method(std::string_view text) {
+    if (text == "merge") return AshlarMethod::merge;
+    if (text == "rules") return AshlarMethod::rules;
+    throw InputError("cells: unknown ashlar method \"" + std::string(text) + "\" (merge or rules)");
+}
+
+std::string_view to_string(AshlarMethod method) {
+    return method == AshlarMethod::rules ? "rules" : "merge";
+}
+
 void check(const Options& o, const std::string& source_name) {
     auto bad = [&](const std::string& what) { throw InputError(source_name + ": cells: " + what); };
     auto positive = [](double v) { return std::isfinite(v) && v > 0; };
