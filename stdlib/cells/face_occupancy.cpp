@@ -62,27 +62,21 @@ FaceOccupancyData::FaceOccupancyData(const FacadeData& facade, int face)
     cell_w_ = w / nx_;
     cell_h_ = h / ny_;
     const auto buckets = static_cast<std::size_t>(nx_ * ny_);
-    edge_buckets_.resize(buckets);
-    ring_buckets_.resize(buckets);
-    feature_edge_buckets_.resize(buckets);
-    claim_buckets_.resize(buckets);
+    claim_head_.assign(buckets, -1);
     bucket_inside_.assign(buckets, -1);
     for (const std::vector<Point>& loop : f.loops) {
         int ring = static_cast<int>(ring_boxes_.size());
         ring_boxes_.push_back(bounds_of(loop));
-        for_buckets(ring_boxes_.back(),
-                    [&](int b) { ring_buckets_[static_cast<std::size_t>(b)].push_back(ring); });
+        for_buckets(ring_boxes_.back(), [&](int b) { ring_buckets_.add(b, ring); });
         for (std::size_t k = 0; k < loop.size(); ++k) {
             RingEdge e{loop[k], loop[(k + 1) % loop.size()]};
             int index = static_cast<int>(ring_edges_.size());
             ring_edges_.push_back(e);
             Rect box{std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x),
                      std::max(e.a.y, e.b.y)};
-            for_buckets(
-                box, [&](int b) { edge_buckets_[static_cast<std::size_t>(b)].push_back(index); });
+            for_buckets(box, [&](int b) { edge_buckets_.add(b, index); });
         }
     }
-    int_edge_buckets_.resize(buckets);
     for (const ClipperLib::Path& ring : rings_)
         for (std::size_t k = 0; k < ring.size(); ++k) {
             RingEdge e{scale_.to_point(ring[k]), scale_.to_point(ring[(k + 1) % ring.size()])};
@@ -90,14 +84,31 @@ FaceOccupancyData::FaceOccupancyData(const FacadeData& facade, int face)
             int_edges_.push_back(e);
             Rect box{std::min(e.a.x, e.b.x), std::min(e.a.y, e.b.y), std::max(e.a.x, e.b.x),
                      std::max(e.a.y, e.b.y)};
-            for_buckets(box, [&](int b) {
-                int_edge_buckets_[static_cast<std::size_t>(b)].push_back(index);
-            });
+            for_buckets(box, [&](int b) { int_edge_buckets_.add(b, index); });
         }
     for (int e : f.edges)
-        for_buckets(facade.edges[static_cast<std::size_t>(e)].bounds, [&](int b) {
-            feature_edge_buckets_[static_cast<std::size_t>(b)].push_back(e);
-        });
+        for_buckets(facade.edges[static_cast<std::size_t>(e)].bounds,
+                    [&](int b) { feature_edge_buckets_.add(b, e); });
+    for (BucketLists* lists :
+         {&ring_buckets_, &edge_buckets_, &int_edge_buckets_, &feature_edge_buckets_})
+        lists->finish(nx_ * ny_);
+}
+
+void BucketLists::finish(int buckets) {
+    start_.assign(static_cast<std::size_t>(buckets) + 1, 0);
+    for (const auto& [b, item] : pairs_) ++start_[static_cast<std::size_t>(b) + 1];
+    for (std::size_t b = 0; b < static_cast<std::size_t>(buckets); ++b) start_[b + 1] += start_[b];
+    items_.resize(pairs_.size());
+    std::vector<int> next(start_.begin(), start_.end() - 1);
+    for (const auto& [b, item] : pairs_)
+        items_[static_cast<std::size_t>(next[static_cast<std::size_t>(b)]++)] = item;
+    pairs_ = {};
+}
+
+void FaceOccupancyData::link_claim(int bucket, int claim) {
+    int& head = claim_head_[static_cast<std::size_t>(bucket)];
+    claim_links_.push_back({claim, head});
+    head = static_cast<int>(claim_links_.size()) - 1;
 }
 
 template <class F>
@@ -121,14 +132,14 @@ void FaceOccupancyData::claim(ClipperLib::Path path, Rect box) {
     claimed_area_ += std::abs(ClipperLib::Area(path)) / (scale_.scale * scale_.scale);
     claims_.push_back({box, static_cast<int>(claim_paths_.size())});
     claim_paths_.push_back(std::move(path));
-    for_buckets(box, [&](int b) { claim_buckets_[static_cast<std::size_t>(b)].push_back(index); });
+    for_buckets(box, [&](int b) { link_claim(b, index); });
 }
 
 void FaceOccupancyData::claim(Rect rect) {
     int index = static_cast<int>(claims_.size());
     claimed_area_ += rect_area(scale_, rect) / (scale_.scale * scale_.scale);
     claims_.push_back({rect, -1});
-    for_buckets(rect, [&](int b) { claim_buckets_[static_cast<std::size_t>(b)].push_back(index); });
+    for_buckets(rect, [&](int b) { link_claim(b, index); });
 }
 
 // Even-odd over the rings whose box holds p: all of them are listed in p's bucket.
@@ -147,7 +158,7 @@ bool FaceOccupancyData::inside(Point p) const { return inside_rings(p); }
 void FaceOccupancyData::edges_near(Rect r, std::vector<int>& out) const {
     out.clear();
     for_buckets(r, [&](int b) {
-        const std::vector<int>& edges = feature_edge_buckets_[static_cast<std::size_t>(b)];
+        std::span<const int> edges = feature_edge_buckets_[static_cast<std::size_t>(b)];
         out.insert(out.end(), edges.begin(), edges.end());
     });
     std::sort(out.begin(), out.end());
@@ -165,8 +176,8 @@ bool FaceOccupancyData::rect_is_free(Rect r) const {
                 return;
             }
         }
-        for (int c : claim_buckets_[static_cast<std::size_t>(b)])
-            if (overlaps(claims_[static_cast<std::size_t>(c)].box, r)) {
+        for (int l = claim_head_[static_cast<std::size_t>(b)]; l >= 0; l = link(l).next)
+            if (overlaps(claims_[static_cast<std::size_t>(link(l).claim)].box, r)) {
                 free = false;
                 return;
             }
@@ -204,8 +215,8 @@ bool FaceOccupancyData::snapped_rect_is_free(Rect r) const {
                 return;
             }
         }
-        for (int c : claim_buckets_[static_cast<std::size_t>(b)]) {
-            const Rect& box = claims_[static_cast<std::size_t>(c)].box;
+        for (int l = claim_head_[static_cast<std::size_t>(b)]; l >= 0; l = link(l).next) {
+            const Rect& box = claims_[static_cast<std::size_t>(link(l).claim)].box;
             // On the grid, as the booleans see it (rounding is monotone, so the float test
             // finds every candidate).
             if (overlaps(box, r) &&
@@ -237,8 +248,10 @@ std::vector<std::vector<Point>> FaceOccupancyData::free_part(
                     ClipperLib::pftEvenOdd);
     near.clear();
     for_buckets(box, [&](int b) {
-        for (int c : claim_buckets_[static_cast<std::size_t>(b)])
+        for (int l = claim_head_[static_cast<std::size_t>(b)]; l >= 0; l = link(l).next) {
+            int c = link(l).claim;
             if (overlaps(claims_[static_cast<std::size_t>(c)].box, box)) near.push_back(c);
+        }
     });
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());

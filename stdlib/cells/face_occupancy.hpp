@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <memory>
 #include <polyclipping/clipper.hpp>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "clip.hpp"
@@ -32,6 +34,20 @@ class Blocks {
     std::size_t size_ = 0;
 };
 
+// Fixed lists per bucket, built once: one array of items, sliced by bucket (no vector each).
+class BucketLists {
+  public:
+    void add(int bucket, int item) { pairs_.emplace_back(bucket, item); }
+    void finish(int buckets);  // items keep the order they were added in
+    std::span<const int> operator[](std::size_t b) const {
+        return {items_.data() + start_[b], items_.data() + start_[b + 1]};
+    }
+
+  private:
+    std::vector<std::pair<int, int>> pairs_;
+    std::vector<int> start_, items_;
+};
+
 class FaceOccupancyData {
   public:
     FaceOccupancyData(const FacadeData& facade, int face);
@@ -54,6 +70,8 @@ class FaceOccupancyData {
     template <class F>
     void for_buckets(Rect r, F&& f) const;
     int bucket_of(Point p) const;
+    void link_claim(int bucket, int claim);
+    const auto& link(int l) const { return claim_links_[static_cast<std::size_t>(l)]; }
     bool inside_rings(Point p) const;
 
     IntScale scale_;
@@ -62,25 +80,30 @@ class FaceOccupancyData {
     double cell_w_ = 1, cell_h_ = 1;
     std::vector<ClipperLib::Path> rings_;
     std::vector<Rect> ring_boxes_;
-    std::vector<std::vector<int>> ring_buckets_;  // rings whose box reaches the bucket
+    BucketLists ring_buckets_;  // rings whose box reaches the bucket
     struct RingEdge {
         Point a, b;
     };
     std::vector<RingEdge> ring_edges_;
-    std::vector<std::vector<int>> edge_buckets_;
+    BucketLists edge_buckets_;
     std::vector<RingEdge> int_edges_;  // the integer rings' edges, in user units
-    std::vector<std::vector<int>> int_edge_buckets_;
+    BucketLists int_edge_buckets_;
     // Buckets no ring edge reaches are all inside or all outside: 1, 0, or -1 not yet known.
     // A cache filled by const queries; a FaceOccupancy belongs to one Context, one thread.
     mutable std::vector<signed char> bucket_inside_;
-    std::vector<std::vector<int>> feature_edge_buckets_;
+    BucketLists feature_edge_buckets_;
     struct Claim {
         Rect box;
         int path = -1;  // index into claim_paths_, or -1: the box is the claim
     };
     Blocks<Claim> claims_;
     std::vector<ClipperLib::Path> claim_paths_;
-    std::vector<std::vector<int>> claim_buckets_;
+    // Claims per bucket, newest first: a list threaded through one append-only array.
+    struct Link {
+        int claim, next;
+    };
+    std::vector<int> claim_head_;
+    Blocks<Link> claim_links_;
     double claimed_area_ = 0;
 };
 
