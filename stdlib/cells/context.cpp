@@ -83,15 +83,8 @@ int Context::place_free_rect(Rect r, int course) {
     face_occupancy(face).claim(r);
     double h = data_->options.mortar / 2;
     if (r.width() <= 2 * h || r.height() <= 2 * h) return 0;
-    Cell c;
-    c.polygon = {
+    data_->add_cell(course).polygon = {
         {r.x0 + h, r.y0 + h}, {r.x1 - h, r.y0 + h}, {r.x1 - h, r.y1 - h}, {r.x0 + h, r.y1 - h}};
-    c.generator = data_->generator;
-    c.feature = data_->feature.kind;
-    c.label = data_->label;
-    c.course = course;
-    c.feature_index = data_->feature.index;
-    data_->cells.push_back(std::move(c));
     return 1;
 }
 
@@ -153,14 +146,7 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip) {
             drawn = detail::shrink(piece, h, scale);
         }
         for (std::vector<Point>& d : drawn) {
-            Cell c;
-            c.polygon = std::move(d);
-            c.generator = data_->generator;
-            c.feature = data_->feature.kind;
-            c.label = data_->label;
-            c.course = course;
-            c.feature_index = data_->feature.index;
-            data_->cells.push_back(std::move(c));
+            data_->add_cell(course).polygon = std::move(d);
             ++added;
         }
     }
