@@ -68,8 +68,6 @@ Rect bounds_of(const std::vector<Point>& polygon) {
     return r;
 }
 
-bool overlaps(Rect a, Rect b) { return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1; }
-
 bool axis_rect(const std::vector<Point>& p, Rect& r) {
     if (p.size() != 4) return false;
     r = bounds_of(p);
