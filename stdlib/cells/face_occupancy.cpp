@@ -183,12 +183,21 @@ bool FaceOccupancyData::rect_is_free(Rect r) const {
             }
     });
     if (!free) return false;
-    // No ring edge crosses r, so r is wholly in or out, as is a bucket no ring edge reaches; r's
-    // centre (on no ring edge, r having area) tells both, and the bucket remembers.
+    // No ring edge crosses r, so r is wholly in or out, as is a bucket no ring edge reaches, and
+    // r's centre (on no ring edge, r having area) lies in its bucket: the bucket's status is r's.
+    // The bucket's own centre, half a bucket from any ring edge, decides it once, safe from the
+    // rounding of the integer rings.
     Point c = r.center();
-    auto b = static_cast<std::size_t>(bucket_of(c));
-    if (!(r.width() > 0 && r.height() > 0) || !edge_buckets_[b].empty()) return inside_rings(c);
-    if (bucket_inside_[b] < 0) bucket_inside_[b] = inside_rings(c) ? 1 : 0;
+    int bucket = bucket_of(c);
+    auto b = static_cast<std::size_t>(bucket);
+    // (A centre beyond the face's bounds sits in no bucket: bucket_of() only clamps it.)
+    if (!(r.width() > 0 && r.height() > 0) || !bounds_.contains(c) || !edge_buckets_[b].empty())
+        return inside_rings(c);
+    if (bucket_inside_[b] < 0) {
+        Point middle{bounds_.x0 + (bucket % nx_ + 0.5) * cell_w_,
+                     bounds_.y0 + (bucket / nx_ + 0.5) * cell_h_};
+        bucket_inside_[b] = inside_rings(middle) ? 1 : 0;
+    }
     return bucket_inside_[b] == 1;
 }
 
