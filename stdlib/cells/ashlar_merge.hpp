@@ -13,9 +13,9 @@ struct Stone {
 };
 
 // `free`: rows x units, row-major, nonzero where a stone may go. Stones come back in reading
-// order of their top-left units. Ends after at most n (1 + 2 (max_w + max_h)) picks for n free
-// units: each pick either merges (at most n - 1 times, requeueing the merged stone's
-// neighbours) or drops a stone from the queue.
+// order of their top-left units. Ends after fewer than 2 n (1 + max_w + max_h) picks for n
+// free units: each pick takes one stone off the queue; n start on it, and each merge (at most
+// n - 1) queues the merged stone and at most 2 (max_w + max_h) neighbours again.
 std::vector<Stone> merge_ashlar(const std::vector<char>& free, int rows, int units, int max_w,
                                 int max_h, Random& random);
 
