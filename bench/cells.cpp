@@ -1,12 +1,14 @@
 // cells: a 100 m x 30 m facade (user units: mm) with 200 openings in running bond, then the
 // same facade a tenth as tall (20 openings) for the cost per cell as the facade grows 10x.
-// Prints one JSON line.
+// Prints one JSON line. `bench_cells --dump FILE` also writes the big facade's cells, one a line
+// (generator, feature, course, vertices to 17 digits), to compare outputs across changes.
 #include <2geom/svg-path-parser.h>
 
 #include <acanthus/stdlib/cells.hpp>
 #include <acanthus/stdlib/cells/facade_shape.hpp>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -39,19 +41,33 @@ struct Run {
     double seconds;
 };
 
-static Run run(int cols, int rows) {
+static void dump(const cells::Texture& t, const char* path) {
+    std::FILE* out = std::fopen(path, "w");
+    if (!out) return;
+    for (const cells::Cell& c : t.cells) {
+        std::fprintf(out, "%s %s %d", c.generator.c_str(),
+                     std::string(cells::to_string(c.feature)).c_str(), c.course);
+        for (const acanthus::Point& p : c.polygon) std::fprintf(out, " %.17g,%.17g", p.x, p.y);
+        std::fputc('\n', out);
+    }
+    std::fclose(out);
+}
+
+static Run run(int cols, int rows, const char* dump_path = nullptr) {
     auto t0 = std::chrono::steady_clock::now();
     cells::Facade f = facade(cols, rows);
     cells::Options o;
     cells::Texture t = cells::texture(f, cells::brick_tree(), o, 1);
     double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (dump_path) dump(t, dump_path);
     return {t.cells.size(), s};
 }
 
-int main() {
-    run(2, 1);               // warm up
-    Run small = run(20, 1);  // 100 m x 3 m, 20 openings: a tenth of the big facade
-    Run big = run(20, 10);   // 100 m x 30 m, 200 openings
+int main(int argc, char** argv) {
+    const char* dump_path = argc == 3 && std::strcmp(argv[1], "--dump") == 0 ? argv[2] : nullptr;
+    run(2, 1);                         // warm up
+    Run small = run(20, 1);            // 100 m x 3 m, 20 openings: a tenth of the big facade
+    Run big = run(20, 10, dump_path);  // 100 m x 30 m, 200 openings
     double per_small = small.seconds / static_cast<double>(small.cells);
     double per_big = big.seconds / static_cast<double>(big.cells);
     std::printf(

@@ -1,14 +1,16 @@
 // Random ashlar [5.2] on the grid tool's small units. Corners get one stone, edges stones of
-// random length (alternating depth up vertical edges). Faces: instead of the paper's merging of
-// random neighbours, stones are laid in reading order with a random size up to the maximum,
+// random length (alternating depth up vertical edges). Faces: by default the paper's method (a
+// stone per free unit, random neighbours merged up to the maximum size: ashlar_merge.cpp);
+// with AshlarMethod::rules, stones laid in reading order with a random size up to the maximum,
 // chosen so that no four stones meet at a point and no straight joint runs along more than
-// `ashlar_max_seam` stones (merging alone cannot promise either).
+// `ashlar_max_seam` stones where some size allows it (merging alone cannot promise either).
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "ashlar_merge.hpp"
 #include "context_data.hpp"
 #include "course_grid.hpp"
 #include "feature_walk.hpp"
@@ -17,9 +19,7 @@ namespace acanthus::cells {
 
 namespace {
 
-struct Stone {
-    int row, unit, h, w;
-};
+using detail::Stone;
 
 class AshlarFace {
   public:
@@ -191,8 +191,20 @@ Generator ashlar() {
                 if (grid.at(row, u) != detail::kOutside &&
                     layout.get(row, u) == AshlarFace::kBlocked)
                     c.place(detail::polygon_of(grid.cell(row, u, u + 1)), grid.course(row));
-        layout.lay(c.random());
-        for (const Stone& s : layout.stones())
+        std::vector<Stone> stones;
+        if (o.ashlar_method == AshlarMethod::merge) {
+            std::vector<char> free(static_cast<std::size_t>(grid.rows() * grid.units()));
+            for (int row = 0; row < grid.rows(); ++row)
+                for (int u = 0; u < grid.units(); ++u)
+                    free[static_cast<std::size_t>(row * grid.units() + u)] =
+                        layout.get(row, u) == AshlarFace::kEmpty;
+            stones = detail::merge_ashlar(free, grid.rows(), grid.units(), o.ashlar_max_width,
+                                          o.ashlar_max_height, c.random());
+        } else {
+            layout.lay(c.random());
+            stones = layout.stones();
+        }
+        for (const Stone& s : stones)
             c.place_free_rect(
                 Rect{grid.xs[s.unit], grid.ys[s.row], grid.xs[s.unit + s.w], grid.ys[s.row + s.h]},
                 grid.course(s.row + s.h - 1));

@@ -8,16 +8,17 @@ namespace {
 int floor_mod(int a, int m) { return ((a % m) + m) % m; }
 }  // namespace
 
-std::vector<int> BondPattern::lengths(int course) const {
+std::span<const int> BondPattern::lengths(int course) const {
+    static constexpr int stretcher[] = {4}, header[] = {2}, flemish[] = {2, 4};
     switch (bond) {
         case Bond::english:
-            return course % 2 == 0 ? std::vector<int>{4} : std::vector<int>{2};
+            return course % 2 == 0 ? std::span<const int>(stretcher) : std::span<const int>(header);
         case Bond::flemish:
-            return {2, 4};
+            return flemish;
         case Bond::header:
-            return {2};
+            return header;
         default:
-            return {4};
+            return stretcher;
     }
 }
 
@@ -40,7 +41,7 @@ int BondPattern::period() const { return bond == Bond::flemish ? 6 : bond == Bon
 
 void pieces_of_run(const BondPattern& bond, int course, int phase, int a, int b,
                    std::vector<Piece>& out) {
-    const std::vector<int> lengths = bond.lengths(course);
+    const std::span<const int> lengths = bond.lengths(course);
     const int period = std::accumulate(lengths.begin(), lengths.end(), 0);
     const int base = bond.offset(course) + phase;
     // The boundary at or before a.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <acanthus/stdlib/cells.hpp>
+#include <span>
 #include <vector>
 
 namespace acanthus::cells::detail {
@@ -17,7 +18,7 @@ struct Piece {
 struct BondPattern {
     Bond bond = Bond::running;
     // Piece lengths of `course` (counted from the bottom) and where the sequence starts.
-    std::vector<int> lengths(int course) const;
+    std::span<const int> lengths(int course) const;  // static storage: asked per run of units
     int offset(int course) const;
     int period() const;  // phases tried for the fewest cut pieces
 };

@@ -68,7 +68,13 @@ Rect bounds_of(const std::vector<Point>& polygon) {
     return r;
 }
 
-bool overlaps(Rect a, Rect b) { return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1; }
+bool axis_rect(const std::vector<Point>& p, Rect& r) {
+    if (p.size() != 4) return false;
+    r = bounds_of(p);
+    for (Point q : p)
+        if ((q.x != r.x0 && q.x != r.x1) || (q.y != r.y0 && q.y != r.y1)) return false;
+    return true;
+}
 
 std::vector<std::vector<Point>> shrink(const std::vector<Point>& polygon, double distance,
                                        const IntScale& s) {

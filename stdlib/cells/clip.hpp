@@ -22,7 +22,12 @@ IntScale scale_for(Rect frame);
 
 double signed_area(const std::vector<Point>& polygon);
 Rect bounds_of(const std::vector<Point>& polygon);
-bool overlaps(Rect a, Rect b);  // open interiors intersect
+// Open interiors intersect. Inline: the occupancy maps ask it for every claim near a query.
+inline bool overlaps(Rect a, Rect b) {
+    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+// True when `polygon` is an axis-aligned rectangle (four corners, any order); `r` its box.
+bool axis_rect(const std::vector<Point>& polygon, Rect& r);
 
 // The polygon inset by `distance` (mitred corners); may split or vanish.
 std::vector<std::vector<Point>> shrink(const std::vector<Point>& polygon, double distance,

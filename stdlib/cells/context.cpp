@@ -75,17 +75,7 @@ void Context::begin(const std::string& generator, const FeatureRef& feature) {
     }
 }
 
-namespace {
-
-bool axis_rect(const std::vector<Point>& p, Rect& r) {
-    if (p.size() != 4) return false;
-    r = detail::bounds_of(p);
-    for (Point q : p)
-        if ((q.x != r.x0 && q.x != r.x1) || (q.y != r.y0 && q.y != r.y1)) return false;
-    return true;
-}
-
-}  // namespace
+using detail::axis_rect;
 
 int Context::place_free_rect(Rect r, int course) {
     const Facade& facade = *data_->facade;
@@ -93,15 +83,8 @@ int Context::place_free_rect(Rect r, int course) {
     face_occupancy(face).claim(r);
     double h = data_->options.mortar / 2;
     if (r.width() <= 2 * h || r.height() <= 2 * h) return 0;
-    Cell c;
-    c.polygon = {
+    data_->add_cell(course).polygon = {
         {r.x0 + h, r.y0 + h}, {r.x1 - h, r.y0 + h}, {r.x1 - h, r.y1 - h}, {r.x0 + h, r.y1 - h}};
-    c.generator = data_->generator;
-    c.feature = data_->feature.kind;
-    c.label = data_->label;
-    c.course = course;
-    c.feature_index = data_->feature.index;
-    data_->cells.push_back(std::move(c));
     return 1;
 }
 
@@ -109,13 +92,24 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip) {
     const Facade& facade = *data_->facade;
     int face = detail::face_of(facade, data_->feature);
     FaceOccupancy& occupancy = face_occupancy(face);
-    std::vector<std::vector<Point>> pieces;
-    if (clip)
-        pieces = occupancy.free_part(claim);
-    else
-        pieces.push_back(claim);
     const detail::IntScale& scale = occupancy.data().scale();
+    std::vector<std::vector<Point>> pieces;
+    Rect r;
+    if (clip && axis_rect(claim, r)) {
+        // What the booleans would give when the rectangle is wholly free: itself on the grid.
+        auto snap = [&](Point p) { return scale.to_point(scale.to_int(p)); };
+        Point a = snap({r.x0, r.y0}), b = snap({r.x1, r.y1});
+        if (a.x < b.x && a.y < b.y && occupancy.data().snapped_rect_is_free({a.x, a.y, b.x, b.y}))
+            pieces.push_back({a, {b.x, a.y}, b, {a.x, b.y}});
+        else
+            pieces = occupancy.free_part(claim);
+    } else if (clip) {
+        pieces = occupancy.free_part(claim);
+    } else {
+        pieces.push_back(claim);
+    }
     int added = 0;
+    std::vector<int>& near = data_->near_edges;
     for (const std::vector<Point>& piece : pieces) {
         occupancy.claim(piece);
         if (data_->feature.kind != FeatureKind::face) {
@@ -123,7 +117,8 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip) {
             Rect box = detail::bounds_of(piece);
             double tol = data_->edge_tolerance;
             Rect grown{box.x0 - tol, box.y0 - tol, box.x1 + tol, box.y1 + tol};
-            for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
+            occupancy.data().edges_near(grown, near);
+            for (int e : near) {
                 const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
                 if (!detail::overlaps(edge.bounds, grown)) continue;
                 double s0 = 1e300, s1 = -1e300;
@@ -139,7 +134,6 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip) {
                 if (on >= 2) data_->edges[static_cast<std::size_t>(e)].claim(s0, s1);
             }
         }
-        Rect r;
         std::vector<std::vector<Point>> drawn;
         double h = data_->options.mortar / 2;
         if (axis_rect(piece, r)) {
@@ -152,14 +146,7 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip) {
             drawn = detail::shrink(piece, h, scale);
         }
         for (std::vector<Point>& d : drawn) {
-            Cell c;
-            c.polygon = std::move(d);
-            c.generator = data_->generator;
-            c.feature = data_->feature.kind;
-            c.label = data_->label;
-            c.course = course;
-            c.feature_index = data_->feature.index;
-            data_->cells.push_back(std::move(c));
+            data_->add_cell(course).polygon = std::move(d);
             ++added;
         }
     }

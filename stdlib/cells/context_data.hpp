@@ -21,6 +21,18 @@ struct ContextData {
     FeatureRef feature;
     std::string label;
     double edge_tolerance = 0;
+    std::vector<int> near_edges;  // scratch for place()
+
+    // A new cell of the running generator and feature, built in place; the caller sets polygon.
+    Cell& add_cell(int course) {
+        Cell& c = cells.emplace_back();
+        c.generator = generator;
+        c.feature = feature.kind;
+        c.label = label;
+        c.course = course;
+        c.feature_index = feature.index;
+        return c;
+    }
     std::map<std::string, std::shared_ptr<void>> shared;  // key: what + face
 
     // The layout of type T under `key`, made by `make()` on first use.

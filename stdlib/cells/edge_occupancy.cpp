@@ -1,6 +1,7 @@
 // 1-D occupancy maps of edges [3.3]: sorted, merged arc-length intervals.
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
+#include <iterator>
 
 namespace acanthus::cells {
 
@@ -9,22 +10,17 @@ void EdgeOccupancy::claim(double s0, double s1) {
     s0 = std::max(s0, 0.0);
     s1 = std::min(s1, length_);
     if (!(s1 > s0)) return;
-    std::vector<std::pair<double, double>> merged;
-    merged.reserve(runs_.size() + 1);
-    bool placed = false;
-    for (const auto& r : runs_) {
-        if (r.second < s0) {
-            merged.push_back(r);
-        } else if (r.first > s1) {
-            if (!placed) merged.emplace_back(s0, s1), placed = true;
-            merged.push_back(r);
-        } else {
-            s0 = std::min(s0, r.first);
-            s1 = std::max(s1, r.second);
-        }
+    // Runs ending before s0 or starting after s1 stay; those between merge with the claim.
+    auto first = std::lower_bound(runs_.begin(), runs_.end(), s0,
+                                  [](const auto& r, double v) { return r.second < v; });
+    auto last = std::upper_bound(first, runs_.end(), s1,
+                                 [](double v, const auto& r) { return v < r.first; });
+    if (first != last) {
+        s0 = std::min(s0, first->first);
+        s1 = std::max(s1, std::prev(last)->second);
+        first = runs_.erase(first, last);
     }
-    if (!placed) merged.emplace_back(s0, s1);
-    runs_ = std::move(merged);
+    runs_.insert(first, {s0, s1});
 }
 
 bool EdgeOccupancy::is_free(double s0, double s1) const {

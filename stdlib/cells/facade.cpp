@@ -190,11 +190,18 @@ Facade Facade::from_shapes(std::vector<FacadeShape> shapes, const std::string& s
     }
     // The shape a boundary curve lies on: openings before walls, where both share a stretch.
     const double near = 1e-5 * size;
+    // Each shape's bounds grown by `near`: a cheap refusal before the distance, which would
+    // otherwise make this quadratic in the number of openings.
+    std::vector<Rect> reach(shapes.size(), Rect{0, 0, -1, -1});
+    for (std::size_t i = 0; i < shapes.size(); ++i)
+        if (Geom::OptRect b = shapes[i].paths.boundsFast())
+            reach[i] = {b->left() - near, b->top() - near, b->right() + near, b->bottom() + near};
     auto shape_of = [&](const Geom::Curve& c) {
         Geom::Point mid = c.pointAt(0.5);
         for (int pass = 0; pass < 2; ++pass)
             for (std::size_t i = 0; i < shapes.size(); ++i) {
                 if (is_wall(shapes[i]) != (pass == 1)) continue;
+                if (!reach[i].contains({mid.x(), mid.y()})) continue;
                 if (distance_to(shapes[i].paths, mid) <= near) return static_cast<int>(i);
             }
         return -1;

@@ -2,6 +2,7 @@
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/stdlib/cells.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -61,6 +62,16 @@ std::string_view to_string(Bond bond) {
     return "running";
 }
 
+AshlarMethod parse_ashlar_method(std::string_view text) {
+    if (text == "merge") return AshlarMethod::merge;
+    if (text == "rules") return AshlarMethod::rules;
+    throw InputError("cells: unknown ashlar method \"" + std::string(text) + "\" (merge or rules)");
+}
+
+std::string_view to_string(AshlarMethod method) {
+    return method == AshlarMethod::rules ? "rules" : "merge";
+}
+
 void check(const Options& o, const std::string& source_name) {
     auto bad = [&](const std::string& what) { throw InputError(source_name + ": cells: " + what); };
     auto positive = [](double v) { return std::isfinite(v) && v > 0; };
@@ -88,6 +99,12 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options,
     check(options, facade.name());
     auto start = std::chrono::steady_clock::now();
     Context context(facade, options, seed);
+    // Room for a brick bond and its cut bricks at once: growing by doubling copies every cell
+    // and touches twice the memory. Only reserved pages cost nothing; capped all the same.
+    double bricks = facade.wall_area() / ((options.brick_length + options.mortar) *
+                                          (options.brick_height + options.mortar));
+    context.cells().reserve(static_cast<std::size_t>(
+        std::min(1.25 * bricks + 4.0 * static_cast<double>(facade.corners().size()), 2e6)));
     Texture out;
     for (std::size_t i = 0; i < facade.corners().size(); ++i)
         tree({FeatureKind::corner, static_cast<int>(i)}, context);

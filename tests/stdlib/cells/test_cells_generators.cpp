@@ -1,9 +1,8 @@
-// Arch stones with radial joints, ashlar within its maximum and without four-way joints, RGB
-// blocks, author-written generators in a tree.
+// Arch stones with radial joints, RGB blocks, author-written generators in a tree (ashlar:
+// test_cells_ashlar.cpp).
 #include <gtest/gtest.h>
 
 #include <acanthus/error.hpp>
-#include <map>
 #include <set>
 
 #include "cells_oracle.hpp"
@@ -32,37 +31,6 @@ TEST(CellsGenerators, ArchStonesHaveRadialJoints) {
     EXPECT_GE(joints, 2 * stones - 2);
     Report r = check_texture(f, t, 10);
     EXPECT_LT(r.overlap, 1.0);
-}
-
-TEST(CellsGenerators, AshlarWithinMaximumAndJointRules) {
-    Facade f = row_house();
-    Options o;
-    o.bond = Bond::ashlar;
-    o.ashlar_unit = 100;
-    o.mortar = 0;  // claims are drawn as they are, so joints can be read off exactly
-    Texture t = texture(f, tree_for(o), o, 11);
-    Report r = check_texture(f, t, 0);
-    EXPECT_LT(r.overlap, 1.0);
-    EXPECT_GE(r.coverage, 0.99);
-    std::map<std::pair<long, long>, int> corners;  // grid points where stone corners meet
-    int face_stones = 0;
-    for (const Cell& c : t.cells) {
-        if (c.generator != "ashlar" || c.feature != FeatureKind::face || c.polygon.size() != 4)
-            continue;
-        ++face_stones;
-        double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-        for (Point p : c.polygon)
-            x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y),
-            y1 = std::max(y1, p.y);
-        EXPECT_LE(x1 - x0, 4 * 100 * 1.5 + 1e-6);  // four units, stretched by the grid tool
-        EXPECT_LE(y1 - y0, 2 * 100 * 1.5 + 1e-6);
-        for (double x : {x0, x1})
-            for (double y : {y0, y1}) ++corners[{std::lround(x * 8), std::lround(y * 8)}];
-    }
-    EXPECT_GT(face_stones, 300);
-    int four_way = 0;
-    for (auto& [p, n] : corners) four_way += n >= 4;
-    EXPECT_LE(four_way, face_stones / 100) << "four-way joints among face stones";
 }
 
 TEST(CellsGenerators, RgbBlocksByFeature) {

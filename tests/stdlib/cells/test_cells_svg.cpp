@@ -141,7 +141,16 @@ TEST(CellsSvg, PanelsAreWholeWalls) {
     // The arched panel with an arched hole (even-odd): the hole is part of the wall's outline.
     acanthus::Region arch = acanthus::Region::from_svg_file(std::string(ACANTHUS_SOURCE_DIR) +
                                                             "/examples/panels/arch-window.svg");
-    f = Facade::for_panel(arch);
+    // Without a `wall` it is not a facade; asked to, it is tiled as one wall.
+    try {
+        Facade::for_panel(arch);
+        ADD_FAILURE() << "an SVG without a wall was read as a facade";
+    } catch (const acanthus::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("arch-window.svg: no filled shape with class"),
+                  std::string::npos)
+            << e.what();
+    }
+    f = Facade::for_panel(arch, true);
     EXPECT_NEAR(f.wall_area(), arch.area(), 1e-3 * arch.area());
     EXPECT_TRUE(f.openings().empty());
     // A facade drawing as --region: its `wall` shapes and openings.

@@ -138,6 +138,14 @@ class Facade {
     std::shared_ptr<const detail::FacadeData> data_;
 };
 
+// How ashlar fills a face: `merge`, the paper's (a stone per grid unit, random neighbours
+// merged up to the maximum size); `rules`, beyond the paper (laid in reading order so that no
+// four stones meet at a point and no straight joint runs along more than ashlar_max_seam stones,
+// wherever some stone size allows it).
+enum class AshlarMethod { merge, rules };
+AshlarMethod parse_ashlar_method(std::string_view text);  // "merge" or "rules"; InputError else
+std::string_view to_string(AshlarMethod method);
+
 struct Options {
     double brick_length = 215;  // user units; bricks and the grid tool's module
     double brick_height = 65;
@@ -146,7 +154,8 @@ struct Options {
     double ashlar_unit = 0;    // grid of the ashlar tool; 0: brick_height + mortar
     int ashlar_max_width = 4;  // ashlar stones, in grid units
     int ashlar_max_height = 2;
-    int ashlar_max_seam = 4;    // no straight joint along more stones than this
+    AshlarMethod ashlar_method = AshlarMethod::merge;
+    int ashlar_max_seam = 4;    // rules: no straight joint along more stones than this
     double voussoir_width = 0;  // arch stones along the arc; 0: 2 x (brick_height + mortar)
     double arch_depth = 0;      // each row's depth; 0: brick_length + mortar
     int arch_rows = 1;          // rows of arch stones
