@@ -19,19 +19,8 @@ using acanthus::growth::Options;
 
 namespace {
 
-double median_nearest_neighbour(const std::vector<Motif>& motifs) {
-    std::vector<double> d;
-    for (std::size_t i = 0; i < motifs.size(); ++i) {
-        double best = std::numeric_limits<double>::infinity();
-        for (std::size_t j = 0; j < motifs.size(); ++j)
-            if (i != j) best = std::min(best, distance(motifs[i].position, motifs[j].position));
-        d.push_back(best);
-    }
-    std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
-    return d[d.size() / 2];
-}
-
-double percentile_nearest_neighbour(const std::vector<Motif>& motifs, double q) {
+// Each motif's distance to its nearest other motif, ascending (brute force).
+std::vector<double> nearest_neighbour_distances(const std::vector<Motif>& motifs) {
     std::vector<double> d;
     for (std::size_t i = 0; i < motifs.size(); ++i) {
         double best = std::numeric_limits<double>::infinity();
@@ -40,6 +29,16 @@ double percentile_nearest_neighbour(const std::vector<Motif>& motifs, double q) 
         d.push_back(best);
     }
     std::sort(d.begin(), d.end());
+    return d;
+}
+
+double median_nearest_neighbour(const std::vector<Motif>& motifs) {
+    std::vector<double> d = nearest_neighbour_distances(motifs);
+    return d[d.size() / 2];
+}
+
+double percentile_nearest_neighbour(const std::vector<Motif>& motifs, double q) {
+    std::vector<double> d = nearest_neighbour_distances(motifs);
     return d[static_cast<std::size_t>(q * static_cast<double>(d.size() - 1))];
 }
 
