@@ -69,4 +69,46 @@ RingMatch match_ring(const std::vector<RingEntry>& target, const std::vector<Rin
     return best;
 }
 
+double outer_ring_error(const std::vector<OuterEntry>& target,
+                        const std::vector<OuterEntry>& reference, double rotation, double reach,
+                        const Weights& w) {
+    // Symbols only: position is the 1-ring's job, and summing a dozen position residuals here
+    // outweighed the 1-ring's symbol evidence (tricolour got worse; measured in bench/growth).
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    double error = 0;
+    for (const OuterEntry& t : target) {
+        double nearest = reach;
+        int symbol = -2;  // none within reach
+        for (const OuterEntry& r : reference) {
+            Vector turned{c * r.offset.x - s * r.offset.y, s * r.offset.x + c * r.offset.y};
+            double d = (t.offset - turned).length();
+            if (d < nearest) {
+                nearest = d;
+                symbol = r.symbol;
+            }
+        }
+        if (symbol == -2 || (t.symbol >= 0 && symbol != t.symbol)) error += w.w2;
+    }
+    return error;
+}
+
+RingMatch match_two_ring(const std::vector<RingEntry>& target,
+                         const std::vector<RingEntry>& reference,
+                         const std::vector<OuterEntry>& target_outer,
+                         const std::vector<OuterEntry>& reference_outer, const Weights& w,
+                         bool rotate, double rotation, double reach, double bound) {
+    RingMatch best;
+    if (target.size() > reference.size()) return best;
+    const int shifts = target.empty() ? 1 : static_cast<int>(reference.size());
+    for (int k = 0; k < shifts; ++k) {
+        double turn =
+            rotate && !target.empty() ? best_fit_rotation(target, reference, k) : rotation;
+        double error = alignment_error(target, reference, k, turn, w);
+        if (error >= std::min(bound, best.error)) continue;
+        error += outer_ring_error(target_outer, reference_outer, turn, reach, w);
+        if (error < best.error) best = {error, k, turn};
+    }
+    return best;
+}
+
 }  // namespace acanthus::growth::detail

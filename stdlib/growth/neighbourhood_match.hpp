@@ -15,6 +15,12 @@ struct RingEntry {
     int sub = -1;     // -1: none (seeds, empty sub-ids): never "the same"
 };
 
+// A neighbour's neighbour (the 2-ring without the 1-ring), matched by nearest position.
+struct OuterEntry {
+    Vector offset;    // from the centre
+    int symbol = -1;  // -1: unknown (an id-less seed), matches any symbol
+};
+
 struct Weights {
     double w1 = 1, w2 = 1, w3 = 100;
 };
@@ -44,5 +50,19 @@ double best_fit_rotation(const std::vector<RingEntry>& target,
 // `rotate`: each alignment at its best-fit rotation; otherwise all at `rotation` (flow mode).
 RingMatch match_ring(const std::vector<RingEntry>& target, const std::vector<RingEntry>& reference,
                      const Weights& w, bool rotate, double rotation = 0.0);
+
+// The 2-ring term of an alignment: w2 for each target entry whose nearest reference entry (turned
+// by `rotation`) has another symbol or lies farther than `reach`.
+double outer_ring_error(const std::vector<OuterEntry>& target,
+                        const std::vector<OuterEntry>& reference, double rotation, double reach,
+                        const Weights& w);
+
+// match_ring with the 2-ring term added to every alignment's error (the option beside the
+// paper's 1-ring matching). Alignments whose 1-ring error alone reaches `bound` are skipped.
+RingMatch match_two_ring(const std::vector<RingEntry>& target,
+                         const std::vector<RingEntry>& reference,
+                         const std::vector<OuterEntry>& target_outer,
+                         const std::vector<OuterEntry>& reference_outer, const Weights& w,
+                         bool rotate, double rotation, double reach, double bound);
 
 }  // namespace acanthus::growth::detail

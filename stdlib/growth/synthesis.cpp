@@ -26,6 +26,23 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
             ring.push_back({s.offset, reference.symbol[s.element], reference.sub[s.element]});
         rings_.push_back(std::move(ring));
     }
+    if (options.two_ring) {
+        for (std::size_t i = 0; i < reference.elements.size(); ++i) {
+            std::vector<int> inner{static_cast<int>(i)};
+            for (const RingSlot& s : reference.rings[i]) inner.push_back(s.element);
+            std::vector<int> outer;
+            for (const RingSlot& s : reference.rings[i])
+                for (const RingSlot& t : reference.rings[s.element])
+                    if (std::find(inner.begin(), inner.end(), t.element) == inner.end() &&
+                        std::find(outer.begin(), outer.end(), t.element) == outer.end())
+                        outer.push_back(t.element);
+            std::vector<OuterEntry> entries;
+            for (int e : outer)
+                entries.push_back({reference.elements[e].position - reference.elements[i].position,
+                                   reference.symbol[e]});
+            outer_rings_.push_back(std::move(entries));
+        }
+    }
     if (options.mode == Mode::flow) flow_.emplace(options.flow_strokes, l_, "growth");
     for (const std::string& name : reference.symbols) {
         auto it = options.priority.find(name);
@@ -103,7 +120,22 @@ void Synthesis::run() {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
-Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntry>& target) {
+std::vector<OuterEntry> Synthesis::outer_ring(int seed, const std::vector<int>& ring_nodes) const {
+    std::vector<OuterEntry> outer;
+    std::vector<int> seen = ring_nodes;
+    seen.push_back(seed);
+    for (int n : ring_nodes)
+        for (const Link& l : pattern_[n].links) {
+            if (std::find(seen.begin(), seen.end(), l.node) != seen.end()) continue;
+            seen.push_back(l.node);
+            const Node& o = pattern_[l.node];
+            if (o.placed()) outer.push_back({o.position - pattern_[seed].position, o.symbol});
+        }
+    return outer;
+}
+
+Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntry>& target,
+                                    const std::vector<OuterEntry>& target_outer) {
     // Section 5.2, eq. 1: the reference element minimizing ERROR; exact ties are drawn at random
     // so that a regular reference does not copy one element everywhere.
     std::vector<Choice> best;
@@ -113,7 +145,12 @@ Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntr
     const double turn = flow_ ? flow_->angle(seed.position) : 0.0;
     for (int c : reference_.candidates) {
         if (seed.symbol >= 0 && reference_.symbol[c] != seed.symbol) continue;
-        RingMatch m = match_ring(target, rings_[c], weights_, rotate, turn);
+        RingMatch m =
+            options_.two_ring
+                ? match_two_ring(target, rings_[c], target_outer, outer_rings_[c], weights_, rotate,
+                                 turn, 0.5 * l_,
+                                 best.empty() ? INFINITY : best_error + 1e-9 * (1 + best_error))
+                : match_ring(target, rings_[c], weights_, rotate, turn);
         if (!m.found()) continue;
         double slack = best.empty() ? 0.0 : 1e-9 * (1 + best_error);
         if (best.empty() || m.error < best_error - slack) {
@@ -153,7 +190,9 @@ void Synthesis::grow(int id) {
         target.push_back({offsets[k], n.symbol, n.placed() ? n.sub : -1});
         target_nodes.push_back(neighbours[k]);
     }
-    Choice choice = choose(pattern_[id], target);
+    Choice choice =
+        choose(pattern_[id], target,
+               options_.two_ring ? outer_ring(id, target_nodes) : std::vector<OuterEntry>{});
     if (choice.element < 0) return drop(id);
     double scale = random_.uniform(options_.scale_min, options_.scale_max);
     double jitter = options_.angle_jitter > 0

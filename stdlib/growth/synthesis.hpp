@@ -38,7 +38,10 @@ class Synthesis {
 
     int next_seed() const;
     void grow(int seed);
-    Choice choose(const Node& seed, const std::vector<RingEntry>& target);
+    Choice choose(const Node& seed, const std::vector<RingEntry>& target,
+                  const std::vector<OuterEntry>& target_outer);
+    // Placed neighbours of the 1-ring nodes, beyond the seed and its 1-ring (Options::two_ring).
+    std::vector<OuterEntry> outer_ring(int seed, const std::vector<int>& ring_nodes) const;
     bool motif_fits(int id, Point at, double radius) const;
     // Section 5.4: new seeds from the chosen ring, merged, dropped or extended by the heuristics.
     void spawn(int centre, const Choice& choice, const std::vector<int>& target_nodes);
@@ -55,8 +58,9 @@ class Synthesis {
     Random& random_;
     Weights weights_;
     std::optional<FlowField> flow_;
-    std::vector<std::vector<RingEntry>> rings_;  // per reference element, unrotated
-    std::vector<int> priority_;                  // per symbol id
+    std::vector<std::vector<RingEntry>> rings_;         // per reference element, unrotated
+    std::vector<std::vector<OuterEntry>> outer_rings_;  // per reference element (two_ring only)
+    std::vector<int> priority_;                         // per symbol id
     bool priorities_differ_ = false;
     double l_ = 1, l_short_ = 0.5, tolerance_ = 0;
     Arrangement pattern_;

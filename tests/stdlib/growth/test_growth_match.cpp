@@ -172,3 +172,53 @@ TEST(GrowthMatchRules, TargetStartsAfterTheWidestGap) {
 }
 
 }  // namespace
+
+TEST(GrowthTwoRing, OuterTermCountsSymbolMismatchesAndMisses) {
+    Weights w{1.0, 2.0, 100.0};
+    std::vector<OuterEntry> ref{{{2, 0}, 0}, {{0, 2}, 1}, {{-2, 0}, 0}};
+    // Paired by nearest offset: a match, a symbol mismatch, an unknown symbol, a miss.
+    std::vector<OuterEntry> target{{{2.1, 0}, 0}, {{0, 1.9}, 0}, {{-2, 0.1}, -1}, {{0, -2}, 0}};
+    EXPECT_DOUBLE_EQ(outer_ring_error(target, ref, 0.0, 0.5, w), 2 * 2.0);
+    // Turned a quarter, the reference's (0, 2) lands on (-2, 0) and (2, 0) on (0, 2).
+    EXPECT_DOUBLE_EQ(outer_ring_error({{{0, 2}, 0}, {{-2, 0}, 1}}, ref, M_PI / 2, 0.5, w), 0.0);
+    EXPECT_DOUBLE_EQ(outer_ring_error({}, ref, 0.0, 0.5, w), 0.0);
+    EXPECT_DOUBLE_EQ(outer_ring_error(target, {}, 0.0, 0.5, w), 4 * 2.0);
+}
+
+TEST(GrowthTwoRing, PruningKeepsTheExhaustiveMinimum) {
+    // Every alignment scored in full (1-ring error at its rotation plus the 2-ring term) against
+    // the pruned search.
+    Random random(23);
+    Weights w{1.0, 1.0, 100.0};
+    int compared = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const bool rotate = trial % 2 == 1;
+        int m = static_cast<int>(random.uniform_int(1, 7));
+        int n = static_cast<int>(random.uniform_int(0, m));
+        auto ref = random_ring(random, m, 2, 3);
+        auto target = random_ring(random, n, 2, 3);
+        std::vector<OuterEntry> ref_outer, target_outer;
+        for (const RingEntry& e : random_ring(random, 10, 2, 1))
+            ref_outer.push_back({e.offset * 2, e.symbol});
+        for (const RingEntry& e :
+             random_ring(random, static_cast<int>(random.uniform_int(0, 8)), 2, 1))
+            target_outer.push_back({e.offset * 2, e.symbol});
+        double want = INFINITY;
+        for (int k = 0; k < (target.empty() ? 1 : m); ++k) {
+            double turn = rotate && !target.empty() ? best_fit_rotation(target, ref, k) : 0.0;
+            want = std::min(want, alignment_error(target, ref, k, turn, w) +
+                                      outer_ring_error(target_outer, ref_outer, turn, 0.6, w));
+        }
+        RingMatch got =
+            match_two_ring(target, ref, target_outer, ref_outer, w, rotate, 0.0, 0.6, INFINITY);
+        ASSERT_TRUE(got.found()) << "trial " << trial;
+        EXPECT_NEAR(got.error, want, 1e-9 * (1 + want)) << "trial " << trial;
+        // A bound above the minimum changes nothing.
+        EXPECT_NEAR(
+            match_two_ring(target, ref, target_outer, ref_outer, w, rotate, 0.0, 0.6, want + 1)
+                .error,
+            want, 1e-9 * (1 + want));
+        ++compared;
+    }
+    EXPECT_EQ(compared, 300);
+}

@@ -247,3 +247,23 @@ TEST(GrowthSynthesis, TwoSymbolsKeepTheirProportions) {
 }
 
 }  // namespace
+
+TEST(GrowthSynthesis, TwoRingKeepsAStripePeriodTheOneRingLoses) {
+    // Columns a, a, a, b: an a column's 1-ring cannot tell which a it is, its 2-ring can.
+    const auto elements = growth_fixtures::striped_grid(10, 12, 10, 4);
+    Reference ref = Reference::from_elements(elements);
+    Region region = Region::from_spec("rect:200,160");
+    double one = 0, two = 0;
+    for (unsigned long long seed : {1ULL, 2ULL, 3ULL}) {
+        for (bool two_ring : {false, true}) {
+            Options o;
+            o.two_ring = two_ring;
+            SynthesisResult r = synthesize(ref, region, o, {}, seed);
+            std::vector<growth_fixtures::Placed> placed;
+            for (const Motif& m : r.motifs) placed.push_back({m.position, m.symbol});
+            (two_ring ? two : one) += growth_fixtures::two_ring_consistency(elements, placed) / 3;
+        }
+    }
+    EXPECT_GT(two, 0.6);
+    EXPECT_GT(two, one + 0.2) << "1-ring " << one << ", 2-ring " << two;
+}

@@ -111,7 +111,10 @@ struct Options {
     double long_factor = 1.5;             // l_long = factor x the original edge
     double relax_radius = 3.0;            // x mean edge length: the window each step re-solves
     bool relax_global = false;  // the paper's global solve each step (slow; for comparison)
-    double scale_min = 1.0;               // random scale per motif, uniform
+    // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
+    // only the 1-ring: more context at the growth front, for near-regular references.
+    bool two_ring = false;
+    double scale_min = 1.0;  // random scale per motif, uniform
     double scale_max = 1.0;
     double angle_jitter = 0.0;     // radians: random turn of each motif, uniform in +-jitter
     double color_variation = 0.0;  // each motif's tint, uniform in +-variation (0..1)
