@@ -278,3 +278,29 @@ TEST(Growth, DebugFrameDescribesTheAskedIteration) {
     EXPECT_GT(boundary, 0);
     EXPECT_GT(element, 0);
 }
+
+TEST(Growth, DebugFrameDrawsOneCirclePerEmptyRegionAndTheExcludedOnes) {
+    // The shy pattern fails on the left half: late frames have circles on the exclude list.
+    variant::phase = 0;
+    const Region region = Region::from_spec("rect:100,60");
+    GrowthOptions o = small_options();
+    o.seeds = {{75, 30}};
+    acanthus::GrowthStats stats;
+    const Pattern p = variant::shy_pattern();
+    grow(p, region, o, &stats);
+    ASSERT_GT(stats.iterations, 20);
+    variant::phase = 0;
+    GrowthEngine engine(p, region, o);
+    DebugFrame got;
+    engine.on_debug_frame(stats.iterations - 5, [&](const DebugFrame& f) { got = f; });
+    engine.run();
+    EXPECT_FALSE(got.excluded.empty());
+    EXPECT_FALSE(got.eligible.empty());
+    for (const Circle& c : got.excluded) EXPECT_LT(c.center.x - c.radius, 50.0);
+    std::vector<Circle> all = got.eligible;
+    all.insert(all.end(), got.excluded.begin(), got.excluded.end());
+    for (std::size_t i = 0; i < all.size(); ++i)
+        for (std::size_t j = i + 1; j < all.size(); ++j)
+            EXPECT_GE(distance(all[i].center, all[j].center), all[i].radius + all[j].radius)
+                << "circles " << i << " and " << j << " overlap";
+}

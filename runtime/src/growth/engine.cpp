@@ -20,6 +20,7 @@
 #include <string>
 
 #include "growth/distance_field.hpp"
+#include "growth/distinct_circles.hpp"
 #include "growth/empty_circle_finder.hpp"
 #include "growth/engine_environment.hpp"
 #include "growth/exclude_list.hpp"
@@ -37,8 +38,8 @@ using Clock = std::chrono::steady_clock;
 
 // Consecutive %exhausted CONTINUE rounds that place nothing before the engine gives up.
 constexpr int kMaxFruitlessRounds = 16;
-// Candidates reported in a debug frame.
-constexpr std::size_t kDebugCandidates = 400;
+// Candidate pixels a debug frame looks at (every one, in practice), before distinct_circles.
+constexpr std::size_t kDebugCandidates = 1'000'000;
 constexpr long kProgressEvery = 1000;
 
 std::string format_number(double v) {
@@ -250,10 +251,11 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         frame.iteration = stats.iterations;
         frame.grid = raster.grid();
         frame.occupancy = raster.occupancy();
-        for (int p : finder.best_candidates(kDebugCandidates)) {
-            const Circle c = finder.circle_of(p);
+        std::vector<Circle> circles;
+        for (int p : finder.best_candidates(kDebugCandidates))
+            circles.push_back(finder.circle_of(p));
+        for (const Circle& c : detail::distinct_circles(std::move(circles)))
             (exclude.any_inside(c) ? frame.excluded : frame.eligible).push_back(c);
-        }
         frame.chosen = goal;
         frame.candidates.assign(parents.begin(), parents.end());
         frame.placed = ornament.view();
