@@ -256,3 +256,13 @@ TEST(Canvas, PathOperationsAndColoursReachCairo) {
     EXPECT_EQ(r.red(60, 45), 255);
     EXPECT_EQ(canvas.cairo(), r.cr());
 }
+
+TEST(Canvas, PixelIsOneOutputPixelInUserUnits) {
+    Raster r;
+    Canvas c = r.canvas();
+    EXPECT_DOUBLE_EQ(c.pixel(), 1.0);
+    cairo_scale(r.cr(), 4, 2);  // user units: 4 px across, 2 px down; the coarser one counts
+    EXPECT_DOUBLE_EQ(c.pixel(), 0.5);
+    cairo_rotate(r.cr(), 0.7);
+    EXPECT_NEAR(c.pixel(), 0.5, 1e-12);
+}

@@ -26,6 +26,9 @@ class Canvas {
     void set_color(Color c);
     void set_line_width(double w);
     double line_width() const;
+    // One output pixel in user units, at the current transformation: what a width or a size
+    // must stay above to be seen (e.g. std::max(w, 0.75 * canvas.pixel())).
+    double pixel() const;
 
     void move_to(Point p);
     void line_to(Point p);

@@ -2,6 +2,7 @@
 #include <cairo.h>
 
 #include <acanthus/canvas.hpp>
+#include <algorithm>
 #include <cmath>
 
 namespace acanthus {
@@ -24,6 +25,14 @@ void Canvas::set_color(Color c) { cairo_set_source_rgba(cr_, c.r, c.g, c.b, c.a)
 void Canvas::set_line_width(double w) { cairo_set_line_width(cr_, w); }
 
 double Canvas::line_width() const { return cairo_get_line_width(cr_); }
+
+double Canvas::pixel() const {
+    // The longer image of a device pixel's sides: under a non-uniform scale, the safe one.
+    double ux = 1, uy = 0, vx = 0, vy = 1;
+    cairo_device_to_user_distance(cr_, &ux, &uy);
+    cairo_device_to_user_distance(cr_, &vx, &vy);
+    return std::max(std::hypot(ux, uy), std::hypot(vx, vy));
+}
 
 void Canvas::move_to(Point p) { cairo_move_to(cr_, p.x, p.y); }
 
