@@ -30,6 +30,12 @@ foreach(dir IN LISTS stdlib_include_dirs)
 endforeach()
 acanthus_stdlib_get(stdlib_rule_files RULE_FILES)
 install(FILES ${stdlib_rule_files} DESTINATION "${ACANTHUS_INSTALL_STDLIBDIR}")
+# `acanthus preview`: its page, and the panels it offers.
+install(FILES "${PROJECT_SOURCE_DIR}/preview/index.html" "${PROJECT_SOURCE_DIR}/preview/preview.js"
+  "${PROJECT_SOURCE_DIR}/preview/preview.css"
+  DESTINATION "${CMAKE_INSTALL_DATADIR}/acanthus/preview")
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/panels/" DESTINATION "${CMAKE_INSTALL_DATADIR}/acanthus/panels"
+  FILES_MATCHING PATTERN "*.svg")
 
 acanthus_stdlib_get(ACANTHUS_CONFIG_DEPENDENCIES PACKAGES)
 acanthus_stdlib_get(stdlib_pc_modules PKG_CONFIG)

@@ -9,7 +9,8 @@
 namespace acanthus {
 
 bool compile_rule_file(const CompileRequest& request, bool generate_code, std::string& cpp,
-                       std::ostream& diagnostics_out, std::vector<std::string>* read_files) {
+                       std::ostream& diagnostics_out, std::vector<std::string>* read_files,
+                       std::vector<ParamSummary>* params) {
     SourceFiles files;
     Diagnostics diagnostics(files);
     ImportLoader loader(files, diagnostics, request.include_dirs, request.stdlib_dirs);
@@ -25,6 +26,17 @@ bool compile_rule_file(const CompileRequest& request, bool generate_code, std::s
     if (diagnostics.error_count() > 0) {
         diagnostics.print(diagnostics_out);
         return false;
+    }
+    if (params) {
+        for (const ParamModel& p : model.params) {
+            ParamSummary summary{p.decl->name.text, std::string(p.type.info),
+                                 p.decl->default_value.text, "", ""};
+            if (p.decl->range) {
+                summary.low = p.decl->range->low.text;
+                summary.high = p.decl->range->high.text;
+            }
+            params->push_back(std::move(summary));
+        }
     }
     if (generate_code) cpp = generate_cpp(model, files, request.generate);
     return true;

@@ -17,10 +17,19 @@ struct CompileRequest {
     GenerateOptions generate;
 };
 
+// A checked %param, as the preview shows it.
+struct ParamSummary {
+    std::string name;
+    std::string type;           // "double", "std::string", ...
+    std::string default_text;   // as written
+    std::string low, high;      // `in [LO, HI]`, empty when not declared
+};
+
 // True with `cpp` set when the rule file has no errors. `generate_code` false only checks.
 // `read_files`, when given, receives the path of every rule file read (the input, its imports).
 bool compile_rule_file(const CompileRequest& request, bool generate_code, std::string& cpp,
                        std::ostream& diagnostics_out,
-                       std::vector<std::string>* read_files = nullptr);
+                       std::vector<std::string>* read_files = nullptr,
+                       std::vector<ParamSummary>* params = nullptr);
 
 }  // namespace acanthus

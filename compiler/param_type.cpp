@@ -1,6 +1,8 @@
 #include "param_type.hpp"
 
 #include <charconv>
+#include <cstdlib>
+#include <string>
 #include <cmath>
 #include <limits>
 
@@ -100,6 +102,15 @@ bool default_parses(const ParamType& type, std::string_view text, std::string& w
     }
     if (!ok) why = "a string literal in double quotes, such as \"red\"";
     return ok;
+}
+
+bool is_numeric(const ParamType& type) {
+    return type.cpp == "int" || type.cpp == "long" || type.cpp == "float" || type.cpp == "double";
+}
+
+long double numeric_value(std::string_view text) {
+    std::string s(text);
+    return std::strtold(s.c_str(), nullptr);
 }
 
 }  // namespace acanthus

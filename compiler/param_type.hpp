@@ -20,4 +20,10 @@ std::string_view param_type_list();  // "int, long, float, double, bool, string,
 // Whether `text` is a valid default for `type`; when not, `why` says what is expected.
 bool default_parses(const ParamType& type, std::string_view text, std::string& why);
 
+// int, long, float, double: the types that can declare a range `in [LO, HI]`.
+bool is_numeric(const ParamType& type);
+
+// The value of a numeric literal that default_parses accepted, for comparing bounds.
+long double numeric_value(std::string_view text);
+
 }  // namespace acanthus

@@ -325,8 +325,48 @@ class Checker {
                                        ": expected " + why);
                 return;
             }
+            if (decl.range && !range_ok(decl, *type, written)) return;
         }
         if (type && declared) model_.params.push_back(ParamModel{&decl, file, *type});
+    }
+
+    // `in [LO, HI]`: numeric types only, bounds of the parameter's type, LO < HI, default inside.
+    bool range_ok(const ast::ParamDecl& decl, const ParamType& type, const std::string& written) {
+        const ast::ParamRange& range = *decl.range;
+        const std::string who = quoted(written) + " parameter " + quoted(decl.name.text);
+        if (!is_numeric(type)) {
+            diagnostics_.error(range.where, who +
+                                                " cannot have a range: only int, long, float and "
+                                                "double parameters can");
+            return false;
+        }
+        bool ok = true;
+        for (const ast::Name* bound : {&range.low, &range.high}) {
+            std::string why;
+            if (!default_parses(type, bound->text, why)) {
+                diagnostics_.error(bound->where, "bad range bound " + quoted(bound->text) +
+                                                     " for " + who + ": expected " + why);
+                ok = false;
+            }
+        }
+        if (!ok) return false;
+        const long double low = numeric_value(range.low.text);
+        const long double high = numeric_value(range.high.text);
+        const std::string shown = "[" + range.low.text + ", " + range.high.text + "]";
+        if (!(low < high)) {
+            diagnostics_.error(range.where, "empty range " + shown + " for parameter " +
+                                                quoted(decl.name.text) +
+                                                ": the low bound must be less than the high one");
+            return false;
+        }
+        const long double value = numeric_value(decl.default_value.text);
+        if (value < low || value > high) {
+            diagnostics_.error(decl.default_value.where,
+                               "default " + quoted(decl.default_value.text) + " of parameter " +
+                                   quoted(decl.name.text) + " is outside its range " + shown);
+            return false;
+        }
+        return true;
     }
 
     void exhausted(const ast::ExhaustedDecl& decl, std::uint32_t file) {

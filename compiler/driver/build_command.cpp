@@ -95,7 +95,7 @@ bool build_executable(const Toolchain& toolchain, const BuildOptions& options,
     }
     if (ok) {
         std::vector<std::string> cmd = compile_command(toolchain, options, source, temp);
-        int status = run_process(cmd, error);
+        int status = options.runner ? options.runner(cmd, error) : run_process(cmd, error);
         if (status != 0) {
             if (status > 0)
                 error = "the C++ compiler failed (exit status " + std::to_string(status) + ")";

@@ -2,6 +2,7 @@
 // and the content-addressed cache `run` uses.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -9,9 +10,13 @@
 
 namespace acanthus {
 
+// Runs a compiler command line; returns its exit status, or -1 with `error` set.
+using CommandRunner = std::function<int(const std::vector<std::string>&, std::string&)>;
+
 struct BuildOptions {
     std::string cxx;                 // empty: $CXX, then the compiler Acanthus was built with
     std::string optimization = "2";  // -O LEVEL
+    CommandRunner runner;            // empty: run_process (inherited stdio, not cancellable)
 };
 
 // The compiler command line that turns `source` into `executable`.

@@ -11,6 +11,7 @@
 
 #include "compilation.hpp"
 #include "driver/build_command.hpp"
+#include "driver/preview_command.hpp"
 #include "driver/toolchain.hpp"
 #include "driver/toolchain_config.hpp"
 
@@ -43,7 +44,7 @@ int fail(const std::string& message) {
     return kBadInput;
 }
 
-constexpr const char* kCommands[] = {"compile", "check", "build", "run"};
+constexpr const char* kCommands[] = {"compile", "check", "build", "run", "preview"};
 
 // CLI11 would say "A subcommand is required"; name the word and list the commands instead.
 bool report_unknown_command(int argc, char** argv) {
@@ -60,6 +61,7 @@ bool report_unknown_command(int argc, char** argv) {
               << "  check    check a rule file and report every error\n"
               << "  build    build a rule file into an executable program\n"
               << "  run      build a rule file (cached) and run it\n"
+              << "  preview  serve a live page of a rule file's render, updated on save\n"
               << "Run 'acanthus --help' for the options.\n";
     return true;
 }
@@ -134,12 +136,27 @@ int main(int argc, char** argv) {
     run->footer(
         "Usage: acanthus run [-I DIR]... [--cxx CXX] [-O LEVEL] FILE.acr [program options...]");
 
+    auto* preview = app.add_subcommand(
+        "preview",
+        "Serve a live page of the rule file's render on 127.0.0.1, re-rendered on every save; "
+        "arguments after FILE go to the program, besides --port N and --host ADDR");
+    preview->add_option("-I", includes, "Directory searched by %import (repeatable, in order)")
+        ->allow_extra_args(false);
+    preview->add_option("--cxx", build_options.cxx, "C++ compiler");
+    preview->add_option("-O", build_options.optimization, "Optimization level (default 1)");
+    preview->prefix_command();
+    preview->footer(
+        "Usage: acanthus preview [-I DIR]... [--cxx CXX] [-O LEVEL] FILE.acr [program options...] "
+        "[--port N] [--host ADDR]");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : kBadUsage;
     }
 
+    // Previews favour a quick build over a fast program (docs/preview.md, bench/preview.sh).
+    if (preview->parsed() && preview->count("-O") == 0) build_options.optimization = "1";
     static const std::string levels[] = {"0", "1", "2", "3", "s", "g", "fast", "z"};
     if (std::find(std::begin(levels), std::end(levels), build_options.optimization) ==
         std::end(levels)) {
@@ -149,6 +166,16 @@ int main(int argc, char** argv) {
     }
 
     Toolchain toolchain = acanthus::find_toolchain();
+    if (preview->parsed()) {
+        std::vector<std::string> rest = preview->remaining();
+        if (rest.empty()) {
+            std::cerr << "acanthus: error: 'preview' needs a rule file\n" << preview->help();
+            return kBadUsage;
+        }
+        input = rest.front();
+        rest.erase(rest.begin());
+        return acanthus::run_preview(input, includes, toolchain, build_options, rest);
+    }
     std::vector<std::string> program_args;
     if (run->parsed()) {
         program_args = run->remaining();

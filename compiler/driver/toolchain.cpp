@@ -41,6 +41,8 @@ Toolchain find_toolchain() {
                 fs::path stdlib = prefix / libdir / "libacanthus_stdlib.a";
                 if (path_exists(stdlib)) t.stdlib_library = stdlib.string();
                 t.stdlib_dirs.push_back((prefix / "share/acanthus/stdlib").string());
+                t.preview_dir = (prefix / "share/acanthus/preview").string();
+                t.panels_dir = (prefix / "share/acanthus/panels").string();
                 return t;
             }
         }
@@ -51,6 +53,8 @@ Toolchain find_toolchain() {
     if (!stdlib.empty() && path_exists(stdlib)) t.stdlib_library = stdlib;
     t.stdlib_dirs.push_back(ACANTHUS_SOURCE_STDLIB_DIR);
     t.stdlib_dirs.push_back(ACANTHUS_INSTALL_STDLIB_DIR);
+    t.preview_dir = ACANTHUS_SOURCE_PREVIEW_DIR;
+    t.panels_dir = ACANTHUS_SOURCE_PANELS_DIR;
     return t;
 }
 

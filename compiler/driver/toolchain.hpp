@@ -18,6 +18,8 @@ struct Toolchain {
     std::vector<std::string> sanitize_flags;
     std::vector<std::string> stdlib_dirs;  // where %import looks after -I
     std::string default_cxx;
+    std::string preview_dir;  // the preview page (index.html, preview.js, preview.css)
+    std::string panels_dir;   // the panels the preview offers
 };
 
 Toolchain find_toolchain();

@@ -65,6 +65,22 @@ Parser::symbol_type token_bad(acanthus::ScanState& s, std::string_view what) {
     return Parser::make_BAD(s.token());
 }
 
+// Where `in` starts a range inside an unquoted default ("3.0 in [0.5, 10]"): the offset of the
+// blanks before it, or the text's size when there is none.
+std::size_t range_start(std::string_view text) {
+    for (std::size_t i = 1; i + 2 <= text.size(); ++i) {
+        bool blank_before = text[i - 1] == ' ' || text[i - 1] == '\t';
+        if (!blank_before || text.compare(i, 2, "in") != 0) continue;
+        bool ends = i + 2 == text.size() || text[i + 2] == ' ' || text[i + 2] == '\t' ||
+                    text[i + 2] == '[';
+        if (!ends) continue;
+        std::size_t cut = i;
+        while (cut > 0 && (text[cut - 1] == ' ' || text[cut - 1] == '\t')) --cut;
+        return cut;
+    }
+    return text.size();
+}
+
 std::string keyword_of(std::string_view match) {
     std::size_t p = match.find('%');
     return std::string(match.substr(p + 1));
@@ -78,7 +94,7 @@ WS          [ \t\r\f\v]
 DIGITS      [0-9]+
 BADRUN      [^A-Za-z0-9_ \t\r\f\v\n\0{*/;="]+
 
-%x OCOMMENT ELEMENT_HEAD RULE_HEAD PARAM_LINE PARAM_VALUE IMPORT_LINE KEYWORD_REST
+%x OCOMMENT ELEMENT_HEAD RULE_HEAD PARAM_LINE PARAM_VALUE PARAM_RANGE IMPORT_LINE KEYWORD_REST
 %x BODY BODY_COMMENT BODY_RAW AFTER_END
 
 %%
@@ -202,10 +218,31 @@ BADRUN      [^A-Za-z0-9_ \t\r\f\v\n\0{*/;="]+
 
 <PARAM_VALUE>{
 {WS}+                   { }
-\"([^"\\\n\0]|\\.)*\"     { BEGIN(PARAM_LINE); return Parser::make_DEFAULT_TEXT(yytext, yyextra->token()); }
-[^ \t\r\f\v\n\0;"/]+({WS}+[^ \t\r\f\v\n\0;"/]+)* { BEGIN(PARAM_LINE); return Parser::make_DEFAULT_TEXT(yytext, yyextra->token()); }
+\"([^"\\\n\0]|\\.)*\"     { BEGIN(PARAM_RANGE); return Parser::make_DEFAULT_TEXT(yytext, yyextra->token()); }
+[^ \t\r\f\v\n\0;"/]+({WS}+[^ \t\r\f\v\n\0;"/]+)* {
+                          /* The default ends where a range begins: `3.0 in [0.5, 10]`. */
+                          std::size_t cut = range_start(std::string_view(yytext, static_cast<std::size_t>(yyleng)));
+                          if (cut < static_cast<std::size_t>(yyleng)) KEEP(static_cast<int>(cut));
+                          BEGIN(PARAM_RANGE);
+                          return Parser::make_DEFAULT_TEXT(yytext, yyextra->token());
+                        }
 .|\n                    { KEEP(0); BEGIN(PARAM_LINE); }
 <<EOF>>                 { BEGIN(PARAM_LINE); }
+}
+
+    /* after the default: an optional `in [LO, HI]`, then ';' */
+<PARAM_RANGE>{
+{WS}+                   { }
+"//"[^\n\0]*              { }
+"in"                    { return Parser::make_IN(yyextra->token()); }
+"["                     { return Parser::make_LBRACKET(yyextra->token()); }
+"]"                     { return Parser::make_RBRACKET(yyextra->token()); }
+","                     { return Parser::make_COMMA(yyextra->token()); }
+";"                     { BEGIN(PARAM_LINE); return Parser::make_SEMI(yyextra->token()); }
+\n                      { BEGIN(INITIAL); return Parser::make_LINE_END(yyextra->token()); }
+[^ \t\r\f\v\n\0;,\[\]/]+  { return Parser::make_BOUND(yytext, yyextra->token()); }
+.                       { return token_bad(*yyextra, "in a '%param' line; expected 'in [LO, HI]' or ';'"); }
+<<EOF>>                 { BEGIN(INITIAL); return Parser::make_LINE_END(yyextra->token()); }
 }
 
     /* %import "name" */

@@ -30,6 +30,9 @@ struct ParamInfo {
     // Parses `text` into the parameter; false with `error` set on a bad value.
     bool (*assign)(std::string_view text, std::string& error) = nullptr;
     std::string (*current)() = nullptr;
+    // `in [LO, HI]` as written, numeric parameters only; both empty when none was declared.
+    std::string low;
+    std::string high;
 };
 
 struct Pattern {

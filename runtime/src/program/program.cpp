@@ -8,6 +8,7 @@
 #include <acanthus/skeletal_stroke.hpp>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -43,6 +44,21 @@ std::string program_name(const Pattern& pattern, int argc, char** argv) {
     return "acanthus";
 }
 
+std::string range_text(const ParamInfo& p) {
+    return p.low.empty() ? std::string() : "[" + p.low + ", " + p.high + "]";
+}
+
+// A declared range `in [LO, HI]` holds on --param too (bounds included).
+void check_range(const ParamInfo& p, const std::string& value) {
+    if (p.low.empty() || p.high.empty() || !p.current) return;
+    const long double v = std::strtold(p.current().c_str(), nullptr);
+    const long double low = std::strtold(p.low.c_str(), nullptr);
+    const long double high = std::strtold(p.high.c_str(), nullptr);
+    if (v < low || v > high)
+        throw InputError("bad value for parameter '" + p.name + "' (" + p.type + "): '" + value +
+                         "' is outside the declared range " + range_text(p));
+}
+
 // Applies --param NAME=VALUE in order; a later value for the same name wins.
 void apply_params(const Pattern& pattern, const std::vector<std::string>& assignments) {
     for (const std::string& a : assignments) {
@@ -63,6 +79,7 @@ void apply_params(const Pattern& pattern, const std::vector<std::string>& assign
         if (!param->assign || !param->assign(value, error))
             throw InputError("bad value for parameter '" + name + "' (" + param->type +
                              "): " + (error.empty() ? "'" + value + "' does not parse" : error));
+        check_range(*param, value);
     }
 }
 
@@ -71,15 +88,24 @@ void list_params(const Pattern& pattern, std::ostream& out) {
         out << "'" << pattern.name << "' declares no parameters\n";
         return;
     }
-    std::vector<std::vector<std::string>> rows{{"name", "type", "default", "current"}};
-    for (const ParamInfo& p : pattern.params)
-        rows.push_back({p.name, p.type, p.default_text, p.current ? p.current() : "?"});
-    std::vector<std::size_t> widths(4, 0);
+    // A fifth column, `range`, only when some parameter declares one: the four-column table
+    // of files without ranges stays as it was.
+    bool ranges = false;
+    for (const ParamInfo& p : pattern.params) ranges = ranges || !p.low.empty();
+    const std::size_t columns = ranges ? 5 : 4;
+    std::vector<std::vector<std::string>> rows{{"name", "type", "default", "current", "range"}};
+    for (const ParamInfo& p : pattern.params) {
+        const std::string range = range_text(p);
+        rows.push_back({p.name, p.type, p.default_text, p.current ? p.current() : "?",
+                        range.empty() ? "-" : range});
+    }
+    std::vector<std::size_t> widths(columns, 0);
     for (const auto& row : rows)
-        for (std::size_t c = 0; c < 4; ++c) widths[c] = std::max(widths[c], row[c].size());
+        for (std::size_t c = 0; c < columns; ++c) widths[c] = std::max(widths[c], row[c].size());
     for (const auto& row : rows) {
-        for (std::size_t c = 0; c < 3; ++c) out << std::left << std::setw(widths[c] + 2) << row[c];
-        out << row[3] << "\n";
+        for (std::size_t c = 0; c + 1 < columns; ++c)
+            out << std::left << std::setw(widths[c] + 2) << row[c];
+        out << row[columns - 1] << "\n";
     }
 }
 

@@ -1,0 +1,144 @@
+#include "driver/preview_child.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <thread>
+
+extern char** environ;
+
+namespace acanthus {
+
+namespace {
+
+// posix_spawn's attributes and file actions, freed on every path.
+class SpawnSetup {
+  public:
+    SpawnSetup() {
+        posix_spawnattr_init(&attr_);
+        posix_spawn_file_actions_init(&actions_);
+    }
+    ~SpawnSetup() {
+        posix_spawnattr_destroy(&attr_);
+        posix_spawn_file_actions_destroy(&actions_);
+    }
+    SpawnSetup(const SpawnSetup&) = delete;
+    SpawnSetup& operator=(const SpawnSetup&) = delete;
+
+    void prepare(const ChildRun& run) {
+        // Own process group: one kill reaches the compiler's own children too. The server
+        // blocks SIGINT and SIGTERM in its threads; the child starts with them unblocked.
+        sigset_t empty, defaults;
+        sigemptyset(&empty);
+        sigemptyset(&defaults);
+        for (int s : {SIGINT, SIGTERM, SIGPIPE, SIGHUP}) sigaddset(&defaults, s);
+        posix_spawnattr_setsigmask(&attr_, &empty);
+        posix_spawnattr_setsigdefault(&attr_, &defaults);
+        posix_spawnattr_setpgroup(&attr_, 0);
+        posix_spawnattr_setflags(&attr_,
+                                 POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+        posix_spawn_file_actions_addopen(&actions_, 0, "/dev/null", O_RDONLY, 0);
+        open_output(1, run.stdout_path);
+        open_output(2, run.stderr_path);
+    }
+    posix_spawnattr_t* attr() { return &attr_; }
+    posix_spawn_file_actions_t* actions() { return &actions_; }
+
+  private:
+    void open_output(int fd, const std::string& path) {
+        posix_spawn_file_actions_addopen(&actions_, fd, path.empty() ? "/dev/null" : path.c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    }
+    posix_spawnattr_t attr_;
+    posix_spawn_file_actions_t actions_;
+};
+
+void kill_group(pid_t pid) {
+    ::kill(-pid, SIGKILL);
+    ::kill(pid, SIGKILL);
+}
+
+}  // namespace
+
+ChildEnd run_child(const ChildRun& run) {
+    ChildEnd end;
+    if (run.argv.empty()) {
+        end.error = "no command";
+        return end;
+    }
+    std::vector<char*> args;
+    for (const std::string& a : run.argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    SpawnSetup setup;
+    setup.prepare(run);
+    pid_t pid = 0;
+    int rc = posix_spawnp(&pid, args[0], setup.actions(), setup.attr(), args.data(), environ);
+    if (rc != 0) {
+        end.error = "cannot run '" + run.argv[0] + "': " + std::strerror(rc);
+        return end;
+    }
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    int status = 0;
+    for (;;) {
+        pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (done < 0 && errno != EINTR) {
+            kill_group(pid);
+            end.how = ChildEnd::How::signaled;
+            end.code = SIGKILL;
+            return end;
+        }
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        const bool cancelled = run.cancel && run.cancel->load();
+        const bool late = run.deadline_seconds > 0 && elapsed > run.deadline_seconds;
+        if (cancelled || late) {
+            kill_group(pid);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            }
+            end.how = cancelled ? ChildEnd::How::cancelled : ChildEnd::How::timed_out;
+            return end;
+        }
+        if (run.on_poll) run.on_poll();
+        std::this_thread::sleep_for(std::chrono::milliseconds(elapsed < 1 ? 10 : 50));
+    }
+    // The group may still hold grandchildren (a compiler's helpers); none must outlive the run.
+    ::kill(-pid, SIGKILL);
+    if (WIFEXITED(status)) {
+        end.how = ChildEnd::How::exited;
+        end.code = WEXITSTATUS(status);
+    } else {
+        end.how = ChildEnd::How::signaled;
+        end.code = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    }
+    return end;
+}
+
+std::string describe(const ChildEnd& end, double deadline_seconds) {
+    switch (end.how) {
+        case ChildEnd::How::exited:
+            return "exit status " + std::to_string(end.code);
+        case ChildEnd::How::signaled:
+            return "killed by signal " + std::to_string(end.code) + " (" + strsignal(end.code) +
+                   ")";
+        case ChildEnd::How::timed_out: {
+            std::string s = std::to_string(deadline_seconds);
+            s.erase(s.find_last_not_of('0') + 1);
+            if (!s.empty() && s.back() == '.') s.pop_back();
+            return "still running after " + s + " s; stopped";
+        }
+        case ChildEnd::How::cancelled:
+            return "cancelled";
+        case ChildEnd::How::not_started:
+            return end.error;
+    }
+    return {};
+}
+
+}  // namespace acanthus

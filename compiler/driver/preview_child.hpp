@@ -1,0 +1,33 @@
+// A child process of the preview server (the C++ compiler, the generated program): started
+// without a shell in a process group of its own, its output captured in files, waited for with
+// a deadline and a cancel flag, and killed with everything it started.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace acanthus {
+
+struct ChildRun {
+    std::vector<std::string> argv;
+    std::string stdout_path;  // empty: /dev/null
+    std::string stderr_path;  // empty: /dev/null
+    double deadline_seconds = 0;                // 0: none
+    const std::atomic<bool>* cancel = nullptr;  // set: kill the child and return
+    std::function<void()> on_poll;              // called about ten times a second while it runs
+};
+
+struct ChildEnd {
+    enum class How { exited, signaled, timed_out, cancelled, not_started } how = How::not_started;
+    int code = 0;       // exit status, or the signal
+    std::string error;  // why it did not start
+};
+
+ChildEnd run_child(const ChildRun& run);
+
+// "exit status 3", "killed by signal 11 (Segmentation fault)", "timed out after 20 s", ...
+std::string describe(const ChildEnd& end, double deadline_seconds);
+
+}  // namespace acanthus

@@ -1,0 +1,165 @@
+#include "driver/preview_command.hpp"
+
+#include <httplib.h>
+#include <pthread.h>
+#include <stdlib.h>
+
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+#include "driver/preview_render_job.hpp"
+#include "driver/preview_routes.hpp"
+#include "driver/preview_status.hpp"
+
+namespace acanthus {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kBadInput = 1;
+constexpr int kBadUsage = 2;
+constexpr int kDefaultPort = 8765;
+
+int usage(const std::string& message) {
+    std::cerr << "acanthus: error: " << message
+              << "\nUsage: acanthus preview [-I DIR]... [-O LEVEL] FILE.acr [program options] "
+                 "[--port N] [--host ADDR]\n";
+    return kBadUsage;
+}
+
+// Takes --port and --host out of `args`.
+bool take_server_options(std::vector<std::string>& args, int& port, std::string& host,
+                         std::string& error) {
+    std::vector<std::string> rest;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        std::string name = a.substr(0, a.find('=')), value;
+        if (name != "--port" && name != "--host") {
+            rest.push_back(a);
+            continue;
+        }
+        if (a.find('=') != std::string::npos) {
+            value = a.substr(a.find('=') + 1);
+        } else if (i + 1 < args.size()) {
+            value = args[++i];
+        } else {
+            error = "'" + name + "' needs a value";
+            return false;
+        }
+        if (name == "--host") {
+            if (value.empty()) return error = "'--host' needs an address", false;
+            host = value;
+            continue;
+        }
+        if (value.empty() || value.size() > 5 ||
+            value.find_first_not_of("0123456789") != std::string::npos ||
+            std::stoi(value) > 65535)
+            return error = "bad port '" + value + "' (0 to 65535; 0 picks a free one)", false;
+        port = std::stoi(value);
+    }
+    args = rest;
+    return true;
+}
+
+std::vector<std::string> list_panels(const std::string& dir) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_regular_file() && entry.path().extension() == ".svg" && name.size() <= 64 &&
+            name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") ==
+                std::string::npos)
+            names.push_back(name);
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+}  // namespace
+
+int run_preview(const std::string& input, const std::vector<std::string>& includes,
+                const Toolchain& toolchain, const BuildOptions& build,
+                const std::vector<std::string>& program_args) {
+    std::vector<std::string> args = program_args;
+    int port = kDefaultPort;
+    std::string host = "127.0.0.1", error;
+    if (!take_server_options(args, port, host, error)) return usage(error);
+    PreviewSettings settings;
+    if (!settings.take(args, error)) return usage(error);
+    std::error_code ec;
+    if (!fs::is_regular_file(input, ec)) {
+        std::cerr << "acanthus: error: cannot read '" << input << "': not a regular file\n";
+        return kBadInput;
+    }
+    if (!fs::is_regular_file(fs::path(toolchain.preview_dir) / "index.html", ec)) {
+        std::cerr << "acanthus: error: the preview page is missing from '" << toolchain.preview_dir
+                  << "'\n";
+        return kBadInput;
+    }
+    std::string work = (fs::temp_directory_path(ec) / "acanthus-preview.XXXXXX").string();
+    if (!mkdtemp(work.data())) {
+        std::cerr << "acanthus: error: cannot create a temporary directory\n";
+        return kBadInput;
+    }
+
+    // Ctrl-C and SIGTERM are taken by one thread (sigwait); every other thread, and so the
+    // server's, runs with them blocked. Children get them back (preview_child).
+    sigset_t stop_signals;
+    sigemptyset(&stop_signals);
+    sigaddset(&stop_signals, SIGINT);
+    sigaddset(&stop_signals, SIGTERM);
+    sigaddset(&stop_signals, SIGHUP);
+    pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+    std::signal(SIGPIPE, SIG_IGN);
+
+    int code = 0;
+    {
+        PreviewStatus status;
+        PreviewConfig config{input, includes, toolchain, build, work};
+        std::atomic<bool> stopping{false};
+        httplib::Server server;
+        server.set_payload_max_length(kMaxRequestBody);
+        server.new_task_queue = [] { return new httplib::ThreadPool(16); };
+        RenderJob job(config, settings, status);
+        std::string stem = fs::path(input).stem().string();
+        PreviewSite site{job,  status, toolchain.preview_dir, toolchain.panels_dir,
+                         list_panels(toolchain.panels_dir), work, stem, stopping};
+        add_routes(server, site);
+
+        int bound = port == 0 ? server.bind_to_any_port(host) : (server.bind_to_port(host, port) ? port : -1);
+        if (bound < 0) {
+            std::cerr << "acanthus: error: cannot listen on " << host << ":" << port
+                      << " (in use? try --port N, or --port 0 for any free port)\n";
+            code = kBadInput;
+        } else {
+            std::thread signals([&] {
+                timespec tick{0, 200'000'000};
+                while (!stopping) {
+                    if (sigtimedwait(&stop_signals, nullptr, &tick) > 0) break;
+                }
+                stopping = true;
+                status.wake_all();
+                server.stop();
+            });
+            const std::string shown = host.find(':') != std::string::npos ? "[" + host + "]" : host;
+            std::cout << "acanthus preview: " << input << " at http://" << shown << ":" << bound
+                      << "/  (Ctrl-C stops)" << std::endl;
+            server.listen_after_bind();
+            stopping = true;
+            status.wake_all();
+            signals.join();
+            std::cout << "acanthus preview: stopped" << std::endl;
+        }
+        stopping = true;
+        job.stop();
+    }
+    fs::remove_all(work, ec);
+    return code;
+}
+
+}  // namespace acanthus

@@ -1,0 +1,273 @@
+#include "driver/preview_render_job.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "compilation.hpp"
+#include "driver/preview_child.hpp"
+#include "driver/process.hpp"
+
+namespace acanthus {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string read_text(const std::string& path, std::size_t limit = 64u << 20) {
+    std::ifstream in(path, std::ios::binary);
+    std::string s;
+    if (!in) return s;
+    s.resize(limit);
+    in.read(s.data(), static_cast<std::streamsize>(limit));
+    s.resize(static_cast<std::size_t>(in.gcount()));
+    return s;
+}
+
+double seconds_since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// The last `name: iteration N, M elements, S s` line of --progress.
+bool last_progress(const std::string& text, long& iterations, long& elements, double& seconds) {
+    static const std::regex line(R"(iteration (\d+), (\d+) elements, ([0-9.]+) s)");
+    auto end = std::sregex_iterator();
+    bool found = false;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), line); it != end; ++it) {
+        iterations = std::stol((*it)[1]);
+        elements = std::stol((*it)[2]);
+        seconds = std::stod((*it)[3]);
+        found = true;
+    }
+    return found;
+}
+
+std::string stem_of(const std::string& path) {
+    std::string stem = fs::path(path).stem().string();
+    return stem.empty() ? "pattern" : stem;
+}
+
+}  // namespace
+
+RenderJob::RenderJob(PreviewConfig config, PreviewSettings settings, PreviewStatus& status)
+    : config_(std::move(config)),
+      status_(status),
+      settings_(std::move(settings)),
+      watcher_([this] { request(); }) {
+    watcher_.watch({config_.input});
+    thread_ = std::thread([this] { loop(); });
+}
+
+RenderJob::~RenderJob() { stop(); }
+
+void RenderJob::stop() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    cancel_ = true;
+    stop_extras_ = true;
+    cv_.notify_all();
+    watcher_.stop();
+    if (thread_.joinable()) thread_.join();
+}
+
+void RenderJob::request() {
+    std::lock_guard lock(mutex_);
+    ++wanted_;
+    cancel_ = true;
+    cv_.notify_all();
+}
+
+PreviewSettings RenderJob::settings() const {
+    std::lock_guard lock(mutex_);
+    return settings_;
+}
+
+void RenderJob::set_settings(PreviewSettings settings) {
+    {
+        std::lock_guard lock(mutex_);
+        settings_ = std::move(settings);
+    }
+    request();
+}
+
+void RenderJob::loop() {
+    for (;;) {
+        long generation = 0;
+        {
+            std::unique_lock lock(mutex_);
+            cv_.wait(lock, [&] { return stopping_ || wanted_ != done_; });
+            if (stopping_) return;
+            generation = wanted_;
+            cancel_ = false;
+        }
+        render(generation);
+        std::lock_guard lock(mutex_);
+        done_ = generation;
+    }
+}
+
+std::string RenderJob::command_line(const PreviewSettings& s) const {
+    std::vector<std::string> cmd{"acanthus", "run"};
+    for (const std::string& dir : config_.includes) cmd.insert(cmd.end(), {"-I", dir});
+    cmd.push_back(config_.input);
+    std::vector<std::string> args = s.arguments();
+    cmd.insert(cmd.end(), args.begin(), args.end());
+    cmd.insert(cmd.end(), {"-o", stem_of(config_.input) + ".svg"});
+    return quote_command(cmd);
+}
+
+bool RenderJob::build(const std::string& stem, const std::string& cpp, std::string& executable) {
+    const std::string log = (fs::path(config_.work_dir) / "build.log").string();
+    BuildOptions options = config_.build;
+    bool cancelled = false;
+    options.runner = [&](const std::vector<std::string>& argv, std::string& error) {
+        ChildRun run;
+        run.argv = argv;
+        run.stdout_path = log + ".out";
+        run.stderr_path = log;
+        run.cancel = &cancel_;
+        run.deadline_seconds = 600;
+        ChildEnd end = run_child(run);
+        if (end.how == ChildEnd::How::exited) return end.code;
+        cancelled = end.how == ChildEnd::How::cancelled;
+        error = describe(end, run.deadline_seconds);
+        return -1;
+    };
+    std::error_code ec;
+    fs::remove(log, ec);
+    std::string error;
+    if (cached_executable(config_.toolchain, options, stem, cpp, executable, error)) return true;
+    if (cancelled) return false;
+    std::string output = read_text(log, 1u << 20);
+    if (output.empty()) output = "acanthus: error: " + error + "\n";
+    status_.fail("build", output, parse_diagnostics(output), 0);
+    return false;
+}
+
+void RenderJob::render(long generation) {
+    const auto start = Clock::now();
+    const PreviewSettings settings = this->settings();
+    status_.begin("compiling");
+    status_.set_command(command_line(settings));
+
+    CompileRequest request;
+    request.input = config_.input;
+    request.include_dirs = config_.includes;
+    request.stdlib_dirs = config_.toolchain.stdlib_dirs;
+    const std::string stem = stem_of(config_.input);
+    request.generate.output_name = stem + ".cpp";
+    std::string cpp;
+    std::ostringstream diagnostics;
+    std::vector<std::string> files;
+    std::vector<ParamSummary> params;
+    bool compiled = compile_rule_file(request, true, cpp, diagnostics, &files, &params);
+    files.push_back(config_.input);
+    watcher_.watch(files);
+    if (!compiled) {
+        status_.fail("compile", diagnostics.str(), parse_diagnostics(diagnostics.str()),
+                     seconds_since(start));
+        return;
+    }
+    status_.set_params(params);
+
+    status_.begin("building");
+    std::string executable;
+    if (!build(stem, cpp, executable)) return;
+    if (cancel_) return;
+
+    status_.begin("growing");
+    const fs::path dir(config_.work_dir);
+    const std::string tag = std::to_string(generation);
+    const std::string svg = (dir / ("render-" + tag + ".svg")).string();
+    const std::string tree = (dir / ("tree-" + tag + ".json")).string();
+    const std::string out = (dir / ("metrics-" + tag + ".json")).string();
+    const std::string err = (dir / ("messages-" + tag + ".txt")).string();
+    ChildRun run;
+    run.argv = {executable};
+    std::vector<std::string> arguments = settings.arguments();
+    run.argv.insert(run.argv.end(), arguments.begin(), arguments.end());
+    run.argv.insert(run.argv.end(), {"-o", svg, "--json", tree, "--metrics", "--progress"});
+    run.stdout_path = out;
+    run.stderr_path = err;
+    run.cancel = &cancel_;
+    // The program stops itself at --time-limit (and a runaway body a second later); the
+    // deadline is for a program that does not.
+    run.deadline_seconds = settings.time_limit + 10;
+    run.on_poll = [&] {
+        long iterations = 0, elements = 0;
+        double seconds = 0;
+        if (last_progress(read_text(err, 1u << 20), iterations, elements, seconds))
+            status_.progress(iterations, elements, seconds);
+    };
+    ChildEnd end = run_child(run);
+    std::error_code ec;
+    if (end.how == ChildEnd::How::cancelled) {
+        for (const std::string& f : {svg, tree, out, err}) fs::remove(f, ec);
+        return;
+    }
+    std::string messages = read_text(err, 1u << 20);
+    if (end.how == ChildEnd::How::exited && end.code == 0) {
+        PreviewStatus::json metrics = PreviewStatus::json::object();
+        try {
+            metrics = PreviewStatus::json::parse(read_text(out));
+            PreviewStatus::json t = PreviewStatus::json::parse(read_text(tree));
+            metrics["region"] = t.at("region");
+        } catch (const std::exception&) {
+        }
+        {
+            std::lock_guard lock(mutex_);
+            good_executable_ = executable;
+            good_arguments_ = arguments;
+        }
+        status_.succeed(read_text(svg), metrics, seconds_since(start));
+    } else {
+        // Only the program's error lines: the progress lines are noise here.
+        std::string shown;
+        std::istringstream lines(messages);
+        for (std::string line; std::getline(lines, line);)
+            if (line.find(": iteration ") == std::string::npos) shown += line + "\n";
+        if (end.how != ChildEnd::How::exited)
+            shown += "acanthus: error: the program was " + describe(end, run.deadline_seconds) +
+                     " (--time-limit " + std::to_string(static_cast<long>(settings.time_limit)) +
+                     " s)\n";
+        else if (shown.empty())
+            shown = "acanthus: error: the program ended with " + describe(end, 0) + "\n";
+        status_.fail("run", shown, parse_diagnostics(shown), seconds_since(start));
+    }
+    for (const std::string& f : {svg, tree, out, err}) fs::remove(f, ec);
+}
+
+ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double deadline_seconds) {
+    ExtraRun result;
+    ChildRun run;
+    {
+        std::lock_guard lock(mutex_);
+        if (good_executable_.empty()) {
+            result.message = "there is no good render yet";
+            return result;
+        }
+        run.argv = {good_executable_};
+        run.argv.insert(run.argv.end(), good_arguments_.begin(), good_arguments_.end());
+    }
+    run.argv.insert(run.argv.end(), extra.begin(), extra.end());
+    static std::atomic<long> counter{0};
+    const std::string err =
+        (fs::path(config_.work_dir) / ("extra-" + std::to_string(++counter) + ".txt")).string();
+    run.stderr_path = err;
+    run.cancel = &stop_extras_;
+    run.deadline_seconds = deadline_seconds;
+    ChildEnd end = run_child(run);
+    result.ok = end.how == ChildEnd::How::exited && end.code == 0;
+    if (!result.ok) result.message = read_text(err, 1u << 16) + describe(end, deadline_seconds);
+    std::error_code ec;
+    fs::remove(err, ec);
+    return result;
+}
+
+}  // namespace acanthus

@@ -1,0 +1,73 @@
+// The render job of the preview: on each request, compile the rule file (in process), build the
+// program (cached by content hash, in a child process) and run it (a child process with a
+// deadline). A newer request cancels the one in progress: its compiler or program is killed.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "driver/build_command.hpp"
+#include "driver/preview_settings.hpp"
+#include "driver/preview_status.hpp"
+#include "driver/preview_watcher.hpp"
+#include "driver/toolchain.hpp"
+
+namespace acanthus {
+
+struct PreviewConfig {
+    std::string input;                  // the rule file
+    std::vector<std::string> includes;  // -I
+    Toolchain toolchain;
+    BuildOptions build;
+    std::string work_dir;  // the server's own temporary directory
+};
+
+// A program run besides the live render: a download, frames, a debug frame.
+struct ExtraRun {
+    bool ok = false;
+    std::string message;  // the program's messages when not ok
+};
+
+class RenderJob {
+  public:
+    RenderJob(PreviewConfig config, PreviewSettings settings, PreviewStatus& status);
+    ~RenderJob();
+    RenderJob(const RenderJob&) = delete;
+    RenderJob& operator=(const RenderJob&) = delete;
+
+    void request();  // render again (cancels a render in progress)
+    void stop();
+
+    PreviewSettings settings() const;
+    void set_settings(PreviewSettings settings);  // and render again
+
+    // Runs the program of the latest good render again with `extra` arguments (outputs).
+    ExtraRun run_again(const std::vector<std::string>& extra, double deadline_seconds);
+
+  private:
+    void loop();
+    void render(long generation);
+    bool build(const std::string& stem, const std::string& cpp, std::string& executable);
+    std::string command_line(const PreviewSettings& s) const;
+
+    PreviewConfig config_;
+    PreviewStatus& status_;
+    mutable std::mutex mutex_;
+    std::condition_variable cv_;
+    PreviewSettings settings_;
+    long wanted_ = 1, done_ = 0;
+    bool stopping_ = false;
+    std::atomic<bool> cancel_{false};
+    std::atomic<bool> stop_extras_{false};
+    std::string good_executable_;
+    std::vector<std::string> good_arguments_;
+    FileWatcher watcher_;
+    std::thread thread_;
+};
+
+}  // namespace acanthus

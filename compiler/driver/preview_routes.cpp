@@ -1,0 +1,354 @@
+#include "driver/preview_routes.hpp"
+
+#include <httplib.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "driver/preview_guides.hpp"
+#include "driver/preview_render_job.hpp"
+#include "driver/preview_status.hpp"
+
+namespace acanthus {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+std::string read_file(const fs::path& path, bool& ok) {
+    std::ifstream in(path, std::ios::binary);
+    ok = static_cast<bool>(in);
+    std::ostringstream s;
+    if (ok) s << in.rdbuf();
+    return s.str();
+}
+
+void send_file(httplib::Response& res, const fs::path& path, const char* type) {
+    bool ok = false;
+    std::string body = read_file(path, ok);
+    if (!ok) {
+        res.status = 404;
+        res.set_content("not found\n", "text/plain");
+        return;
+    }
+    res.set_content(body, type);
+}
+
+void bad_request(httplib::Response& res, const std::string& message) {
+    res.status = 400;
+    res.set_content(json{{"error", message}}.dump(), "application/json");
+}
+
+bool parse_json(const httplib::Request& req, httplib::Response& res, json& out) {
+    try {
+        out = json::parse(req.body);
+        if (!out.is_object()) throw std::runtime_error("not an object");
+        return true;
+    } catch (const std::exception&) {
+        bad_request(res, "the body must be a JSON object");
+        return false;
+    }
+}
+
+bool finite_number(const json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
+
+std::string coordinate(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+// POST /settings: {"params": {...}, "rng_seed": "7", "panel": "heart.svg", "seeds": [[x, y]]}.
+// Each field is optional; what is given replaces the current setting.
+bool apply_settings(PreviewSite& site, const json& body, PreviewSettings& s, std::string& error) {
+    if (body.contains("params")) {
+        if (!body["params"].is_object()) return error = "params must be an object", false;
+        for (const auto& [name, value] : body["params"].items()) {
+            if (name.empty() || name.find('=') != std::string::npos)
+                return error = "bad parameter name", false;
+            if (value.is_null())
+                s.params.erase(name);
+            else if (value.is_string())
+                s.params[name] = value.get<std::string>();
+            else if (value.is_boolean())
+                s.params[name] = value.get<bool>() ? "true" : "false";
+            else if (finite_number(value))
+                s.params[name] = value.dump();
+            else
+                return error = "bad value for parameter '" + name + "'", false;
+        }
+    }
+    if (body.contains("rng_seed")) {
+        const json& v = body["rng_seed"];
+        std::string seed = v.is_string() ? v.get<std::string>()
+                           : v.is_number_unsigned() ? std::to_string(v.get<unsigned long long>())
+                                                    : "x";
+        if (seed.size() > 20 || seed.find_first_not_of("0123456789") != std::string::npos)
+            return error = "rng_seed must be a decimal integer", false;
+        s.rng_seed = seed;
+    }
+    if (body.contains("panel")) {
+        if (!body["panel"].is_string()) return error = "panel must be a name", false;
+        const std::string panel = body["panel"];
+        if (panel.empty()) {
+            s.region.clear();
+        } else if (panel == "uploaded") {
+            const fs::path up = fs::path(site.work_dir) / "uploaded.svg";
+            if (!fs::exists(up)) return error = "no panel was uploaded", false;
+            s.region = up.string();
+        } else if (std::find(site.panels.begin(), site.panels.end(), panel) != site.panels.end()) {
+            s.region = (fs::path(site.panels_dir) / panel).string();
+        } else {
+            return error = "unknown panel '" + panel + "'", false;
+        }
+    }
+    if (body.contains("seeds")) {
+        const json& seeds = body["seeds"];
+        if (!seeds.is_array() || seeds.size() > 100)
+            return error = "seeds must be a list of at most 100 [x, y] pairs", false;
+        s.seeds.clear();
+        for (const json& p : seeds) {
+            if (!p.is_array() || p.size() != 2 || !finite_number(p[0]) || !finite_number(p[1]))
+                return error = "each seed is [x, y]", false;
+            s.seeds.push_back(coordinate(p[0]) + "," + coordinate(p[1]));
+        }
+    }
+    return true;
+}
+
+void settings_json(const PreviewSettings& s, const PreviewSite& site, json& out) {
+    out["params"] = s.params;
+    out["rng_seed"] = s.rng_seed;
+    std::string panel;
+    if (!s.region.empty()) {
+        fs::path r(s.region);
+        if (r.parent_path() == fs::path(site.panels_dir)) panel = r.filename().string();
+        else if (r.parent_path() == fs::path(site.work_dir)) panel = "uploaded";
+        else panel = s.region;
+    }
+    out["panel"] = panel;
+    out["seeds"] = s.seeds;
+    out["time_limit"] = s.time_limit;
+}
+
+// A program output made on request (a download, a debug frame) in the server's directory.
+void send_rerun(PreviewSite& site, httplib::Response& res, const std::vector<std::string>& extra,
+                const fs::path& file, const char* type, const std::string& download) {
+    ExtraRun run = site.job.run_again(extra, 120);
+    if (!run.ok) {
+        res.status = 409;
+        res.set_content(run.message + "\n", "text/plain");
+        return;
+    }
+    send_file(res, file, type);
+    if (!download.empty())
+        res.set_header("Content-Disposition", "attachment; filename=\"" + download + "\"");
+    std::error_code ec;
+    fs::remove(file, ec);
+}
+
+}  // namespace
+
+void add_routes(httplib::Server& server, PreviewSite& site) {
+    static const std::pair<const char*, const char*> assets[] = {
+        {"/", "text/html; charset=utf-8"},
+        {"/preview.js", "text/javascript; charset=utf-8"},
+        {"/preview.css", "text/css; charset=utf-8"}};
+    for (const auto& [path, type] : assets) {
+        const std::string file = std::string(path) == "/" ? "index.html" : path + 1;
+        const std::string mime = type;
+        server.Get(path, [&site, file, mime](const httplib::Request&, httplib::Response& res) {
+            send_file(res, fs::path(site.assets_dir) / file, mime.c_str());
+            res.set_header("Cache-Control", "no-store");
+        });
+    }
+
+    server.Get("/status.json", [&site](const httplib::Request&, httplib::Response& res) {
+        json status = site.status.to_json();
+        settings_json(site.job.settings(), site, status["settings"]);
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(status.dump(), "application/json");
+    });
+
+    server.Get("/render.svg", [&site](const httplib::Request&, httplib::Response& res) {
+        std::string svg = site.status.svg();
+        if (svg.empty()) {
+            res.status = 404;
+            res.set_content("no good render yet\n", "text/plain");
+            return;
+        }
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(svg, "image/svg+xml");
+    });
+
+    for (const char* ext : {"pdf", "png"}) {
+        const std::string e = ext;
+        server.Get("/render." + e, [&site, e](const httplib::Request&, httplib::Response& res) {
+            static std::atomic<long> n{0};
+            const fs::path file =
+                fs::path(site.work_dir) / ("download-" + std::to_string(++n) + "." + e);
+            send_rerun(site, res, {"-o", file.string(), "--quiet"}, file,
+                       e == "pdf" ? "application/pdf" : "image/png", site.stem + "." + e);
+        });
+    }
+
+    server.Get("/debug-frame.png", [&site](const httplib::Request& req, httplib::Response& res) {
+        const std::string it = req.get_param_value("iteration");
+        if (it.empty() || it.size() > 9 || it.find_first_not_of("0123456789") != std::string::npos ||
+            std::stol(it) < 1) {
+            bad_request(res, "iteration must be a positive integer");
+            return;
+        }
+        static std::atomic<long> n{0};
+        const std::string tag = std::to_string(++n);
+        const fs::path file = fs::path(site.work_dir) / ("debug-" + tag + ".png");
+        const fs::path svg = fs::path(site.work_dir) / ("debug-" + tag + ".svg");
+        send_rerun(site, res,
+                   {"--debug-frame", it, file.string(), "--max-iterations", it, "-o", svg.string(),
+                    "--quiet"},
+                   file, "image/png", "");
+        std::error_code ec;
+        fs::remove(svg, ec);
+    });
+
+    // Frames of the growth: POST /frames {"every": K} makes them, GET /frames/N.png serves them.
+    static std::mutex frames_mutex;
+    server.Post("/frames", [&site](const httplib::Request& req, httplib::Response& res) {
+        json body;
+        if (!parse_json(req, res, body)) return;
+        long every = body.value("every", 1L);
+        if (every < 1 || every > 1000000) return bad_request(res, "every must be 1 or more");
+        std::lock_guard lock(frames_mutex);
+        const fs::path dir = fs::path(site.work_dir) / "frames";
+        const fs::path last = fs::path(site.work_dir) / "frames-final.svg";
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+        ExtraRun run = site.job.run_again(
+            {"--frames", dir.string(), "--every", std::to_string(every), "-o", last.string(),
+             "--quiet"},
+            300);
+        fs::remove(last, ec);
+        if (!run.ok) {
+            res.status = 409;
+            res.set_content(json{{"error", run.message}}.dump(), "application/json");
+            return;
+        }
+        long count = 0;
+        for (const auto& entry : fs::directory_iterator(dir, ec)) count += entry.is_regular_file();
+        res.set_content(json{{"count", count}}.dump(), "application/json");
+    });
+    server.Get(R"(/frames/(\d{1,6})\.png)", [&site](const httplib::Request& req,
+                                                   httplib::Response& res) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame-%06ld.png", std::stol(req.matches[1].str()));
+        std::lock_guard lock(frames_mutex);
+        send_file(res, fs::path(site.work_dir) / "frames" / name, "image/png");
+    });
+
+    server.Get("/panels.json", [&site](const httplib::Request&, httplib::Response& res) {
+        res.set_content(json(site.panels).dump(), "application/json");
+    });
+    server.Get(R"(/panels/([A-Za-z0-9_.-]{1,64}))", [&site](const httplib::Request& req,
+                                                          httplib::Response& res) {
+        const std::string name = req.matches[1];
+        if (std::find(site.panels.begin(), site.panels.end(), name) == site.panels.end()) {
+            res.status = 404;
+            res.set_content("not found\n", "text/plain");
+            return;
+        }
+        send_file(res, fs::path(site.panels_dir) / name, "image/svg+xml");
+    });
+
+    server.Post("/settings", [&site](const httplib::Request& req, httplib::Response& res) {
+        json body;
+        if (!parse_json(req, res, body)) return;
+        PreviewSettings s = site.job.settings();
+        std::string error;
+        if (!apply_settings(site, body, s, error)) return bad_request(res, error);
+        site.job.set_settings(s);
+        json out;
+        settings_json(s, site, out);
+        res.set_content(out.dump(), "application/json");
+    });
+
+    // A panel dropped onto the page: saved in the server's own directory, used from now on.
+    server.Post("/panel", [&site](const httplib::Request& req, httplib::Response& res) {
+        if (req.body.size() > kMaxRequestBody) {
+            res.status = 413;
+            return;
+        }
+        if (req.body.find("<svg") == std::string::npos)
+            return bad_request(res, "the panel must be an SVG file");
+        const fs::path file = fs::path(site.work_dir) / "uploaded.svg";
+        std::ofstream(file, std::ios::binary) << req.body;
+        PreviewSettings s = site.job.settings();
+        s.region = file.string();
+        s.seeds.clear();
+        site.job.set_settings(s);
+        res.set_content(json{{"panel", "uploaded"}}.dump(), "application/json");
+    });
+
+    // Growth-library strokes drawn on the page, saved as the guides SVG the library reads.
+    server.Post("/guides", [&site](const httplib::Request& req, httplib::Response& res) {
+        json body;
+        if (!parse_json(req, res, body)) return;
+        std::string svg, error;
+        if (!guides_svg(body, svg, error)) return bad_request(res, error);
+        const fs::path file = fs::path(site.work_dir) / "guides.svg";
+        PreviewSettings s = site.job.settings();
+        if (svg.empty()) {
+            std::error_code ec;
+            fs::remove(file, ec);
+            s.params.erase("growth_guides");
+        } else {
+            std::ofstream(file, std::ios::binary) << svg;
+            s.params["growth_guides"] = file.string();
+        }
+        if (body.contains("mode") && body["mode"].is_string())
+            s.params["growth_mode"] = body["mode"].get<std::string>();
+        site.job.set_settings(s);
+        res.set_content(json{{"guides", svg.empty() ? "" : file.string()}}.dump(),
+                        "application/json");
+    });
+    server.Get("/guides.svg", [&site](const httplib::Request&, httplib::Response& res) {
+        send_file(res, fs::path(site.work_dir) / "guides.svg", "image/svg+xml");
+        res.set_header("Content-Disposition", "attachment; filename=\"guides.svg\"");
+    });
+
+    // Server-sent events: the status, each time it changes (and every 15 s to keep it open).
+    server.Get("/events", [&site](const httplib::Request&, httplib::Response& res) {
+        res.set_header("Cache-Control", "no-store");
+        auto seen = std::make_shared<long>(-1);
+        res.set_chunked_content_provider(
+            "text/event-stream", [&site, seen](std::size_t, httplib::DataSink& sink) {
+                if (*seen >= 0) {
+                    long now = *seen;
+                    for (int i = 0; i < 15 && now == *seen && !site.stopping; ++i)
+                        now = site.status.wait_for_change(*seen, 1000);
+                }
+                if (site.stopping) return false;
+                json status = site.status.to_json();
+                *seen = status["version"].get<long>();
+                settings_json(site.job.settings(), site, status["settings"]);
+                const std::string event = "data: " + status.dump() + "\n\n";
+                return sink.write(event.data(), event.size());
+            });
+    });
+
+    server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+        if (res.body.empty()) {
+            res.set_content(res.status == 404   ? "not found\n"
+                            : res.status == 413 ? "request body too large\n"
+                                                : "error\n",
+                            "text/plain");
+        }
+    });
+}
+
+}  // namespace acanthus

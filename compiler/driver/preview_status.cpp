@@ -1,0 +1,123 @@
+#include "driver/preview_status.hpp"
+
+#include <chrono>
+
+namespace acanthus {
+
+void PreviewStatus::changed() {
+    ++version_;
+    cv_.notify_all();
+}
+
+void PreviewStatus::begin(const std::string& phase) {
+    std::lock_guard lock(mutex_);
+    state_ = "running";
+    phase_ = phase;
+    if (phase == "compiling") progress_iterations_ = progress_elements_ = 0, progress_seconds_ = 0;
+    changed();
+}
+
+void PreviewStatus::progress(long iterations, long elements, double seconds) {
+    std::lock_guard lock(mutex_);
+    if (iterations == progress_iterations_ && elements == progress_elements_) return;
+    progress_iterations_ = iterations;
+    progress_elements_ = elements;
+    progress_seconds_ = seconds;
+    changed();
+}
+
+void PreviewStatus::set_params(std::vector<ParamSummary> params) {
+    std::lock_guard lock(mutex_);
+    params_ = std::move(params);
+}
+
+void PreviewStatus::set_command(std::string command) {
+    std::lock_guard lock(mutex_);
+    command_ = std::move(command);
+}
+
+void PreviewStatus::succeed(std::string svg, const json& metrics, double seconds) {
+    std::lock_guard lock(mutex_);
+    ++revision_;
+    state_ = "ok";
+    phase_ = "done";
+    error_kind_.clear();
+    output_.clear();
+    diagnostics_.clear();
+    svg_ = std::move(svg);
+    metrics_ = metrics;
+    elements_ = metrics.value("elements", 0L);
+    seconds_ = seconds;
+    changed();
+}
+
+void PreviewStatus::fail(const std::string& kind, const std::string& output,
+                         std::vector<PreviewDiagnostic> diagnostics, double seconds) {
+    std::lock_guard lock(mutex_);
+    ++revision_;
+    state_ = "error";
+    phase_ = "done";
+    error_kind_ = kind;
+    output_ = output;
+    diagnostics_ = std::move(diagnostics);
+    seconds_ = seconds;
+    changed();
+}
+
+PreviewStatus::json PreviewStatus::to_json() const {
+    std::lock_guard lock(mutex_);
+    json diagnostics = json::array();
+    for (const PreviewDiagnostic& d : diagnostics_)
+        diagnostics.push_back(
+            {{"file", d.file}, {"line", d.line}, {"column", d.column}, {"message", d.message}});
+    json params = json::array();
+    for (const ParamSummary& p : params_) {
+        json entry = {{"name", p.name}, {"type", p.type}, {"default", p.default_text}};
+        if (!p.low.empty()) entry["range"] = {p.low, p.high};
+        params.push_back(entry);
+    }
+    return {{"revision", revision_},
+            {"state", state_},
+            {"phase", phase_},
+            {"elements", elements_},
+            {"seconds", seconds_},
+            {"diagnostics", diagnostics},
+            {"error_kind", error_kind_},
+            {"output", output_},
+            {"params", params},
+            {"metrics", metrics_},
+            {"command", command_},
+            {"progress",
+             {{"iterations", progress_iterations_},
+              {"elements", progress_elements_},
+              {"seconds", progress_seconds_}}},
+            {"version", version_}};
+}
+
+std::string PreviewStatus::svg() const {
+    std::lock_guard lock(mutex_);
+    return svg_;
+}
+
+long PreviewStatus::revision() const {
+    std::lock_guard lock(mutex_);
+    return revision_;
+}
+
+long PreviewStatus::version() const {
+    std::lock_guard lock(mutex_);
+    return version_;
+}
+
+long PreviewStatus::wait_for_change(long seen, int timeout_ms) const {
+    std::unique_lock lock(mutex_);
+    cv_.wait_for(lock, std::chrono::milliseconds(timeout_ms), [&] { return version_ != seen; });
+    return version_;
+}
+
+void PreviewStatus::wake_all() {
+    std::lock_guard lock(mutex_);
+    cv_.notify_all();
+}
+
+}  // namespace acanthus

@@ -1,0 +1,61 @@
+// What the preview page and scripts see: the state of the latest render, its diagnostics,
+// metrics and parameters, the latest good SVG. Every change bumps a version that /events waits on.
+#pragma once
+
+#include <condition_variable>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "compilation.hpp"
+#include "driver/preview_diagnostics.hpp"
+
+namespace acanthus {
+
+class PreviewStatus {
+  public:
+    using json = nlohmann::json;
+
+    // A render began: compiling, then building, then growing.
+    void begin(const std::string& phase);
+    void progress(long iterations, long elements, double seconds);
+    void set_params(std::vector<ParamSummary> params);
+    void set_command(std::string command);
+    // A render finished well: the picture and the program's --metrics.
+    void succeed(std::string svg, const json& metrics, double seconds);
+    // A render failed: compiler output (with diagnostics) or the program's error.
+    void fail(const std::string& kind, const std::string& output,
+              std::vector<PreviewDiagnostic> diagnostics, double seconds);
+
+    json to_json() const;
+    std::string svg() const;
+    long revision() const;
+    // Waits until the version passes `seen` or `timeout_ms` ran out; returns the version.
+    long wait_for_change(long seen, int timeout_ms) const;
+    long version() const;
+    void wake_all();
+
+  private:
+    void changed();  // holds mutex_
+
+    mutable std::mutex mutex_;
+    mutable std::condition_variable cv_;
+    long version_ = 0;
+    long revision_ = 0;
+    std::string state_ = "running";
+    std::string phase_ = "starting";
+    std::string error_kind_;
+    std::string output_;  // the compiler's or program's messages, exactly as printed
+    std::vector<PreviewDiagnostic> diagnostics_;
+    std::vector<ParamSummary> params_;
+    json metrics_ = json::object();
+    std::string svg_;
+    std::string command_;
+    long elements_ = 0;
+    double seconds_ = 0;
+    long progress_iterations_ = 0, progress_elements_ = 0;
+    double progress_seconds_ = 0;
+};
+
+}  // namespace acanthus

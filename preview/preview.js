@@ -1,0 +1,355 @@
+// acanthus preview: the page. Plain JavaScript, no build step, nothing from the network but
+// this server. State arrives as server-sent events (/events); controls POST to /settings.
+"use strict";
+
+const $ = (id) => document.getElementById(id);
+const SVGNS = "http://www.w3.org/2000/svg";
+
+const page = {
+  status: null,
+  revision: -1,
+  paramSignature: "",
+  size: { width: 800, height: 600 },  // the render's page units (its viewBox)
+  view: { x: 0, y: 0, scale: 1 },
+  mode: "pan",
+  seeds: [],                           // region coordinates
+  strokes: [],                         // {kind, width, points: [[x, y]...]} in region coordinates
+  frames: 0,
+  pictureUrl: null,
+};
+
+// --- where the region lands on the page (runtime/src/output/page_layout.cpp) ---------------
+function layout() {
+  const b = page.status && page.status.metrics && page.status.metrics.region &&
+            page.status.metrics.region.bounds;
+  if (!b) return null;
+  const bw = b[2] - b[0] > 0 ? b[2] - b[0] : 1, bh = b[3] - b[1] > 0 ? b[3] - b[1] : 1;
+  const margin = 0.02 * Math.max(bw, bh);
+  const sx = bw + 2 * margin, sy = bh + 2 * margin;
+  const width = page.size.width, height = Math.max(1, Math.round(width * sy / sx));
+  const scale = Math.min(width / sx, height / sy);
+  const cx = (b[0] + b[2]) / 2, cy = (b[1] + b[3]) / 2;
+  return { scale, ox: width / 2 - cx * scale, oy: height / 2 - cy * scale };
+}
+function toPage(p) { const l = layout(); return l ? [l.ox + p[0] * l.scale, l.oy + p[1] * l.scale] : p; }
+function toRegion(p) { const l = layout(); return l ? [(p[0] - l.ox) / l.scale, (p[1] - l.oy) / l.scale] : p; }
+
+// --- talking to the server ----------------------------------------------------------------
+async function post(path, body, type) {
+  const r = await fetch(path, { method: "POST", body: typeof body === "string" ? body : JSON.stringify(body),
+                                headers: { "Content-Type": type || "application/json" } });
+  if (!r.ok) { const t = await r.text(); showNote(`${path}: ${t}`); throw new Error(t); }
+  return r.json();
+}
+let noteTimer = null;
+function showNote(text) {
+  const n = $("dropnote"); n.textContent = text; n.hidden = false;
+  clearTimeout(noteTimer); noteTimer = setTimeout(() => { n.hidden = true; }, 4000);
+}
+let settingsTimer = null, pendingSettings = {};
+function sendSettings(change) {  // coalesces quick changes (a slider being dragged)
+  Object.assign(pendingSettings, change);
+  clearTimeout(settingsTimer);
+  settingsTimer = setTimeout(() => { const s = pendingSettings; pendingSettings = {}; post("/settings", s); }, 120);
+}
+
+// --- status ---------------------------------------------------------------------------------
+function update(status) {
+  page.status = status;
+  const state = $("state");
+  state.textContent = status.state === "running" ? status.phase : status.state;
+  state.className = "badge " + status.state;
+  $("phase").textContent = status.state === "running" ? "" : `${status.phase}`;
+  const p = status.progress || {};
+  const limit = (status.settings && status.settings.time_limit) || 20;
+  if (status.state === "running" && status.phase === "growing") {
+    $("progress").value = Math.min(1, (p.seconds || 0) / limit);
+    $("elements").textContent = `${p.elements || 0} elements`;
+    $("seconds").textContent = `${(p.seconds || 0).toFixed(1)} s`;
+  } else {
+    $("progress").value = status.state === "running" ? 0 : 1;
+    $("elements").textContent = `${status.elements} elements`;
+    $("seconds").textContent = `${status.seconds.toFixed(2)} s`;
+  }
+  $("revision").textContent = `revision ${status.revision}`;
+  $("command").textContent = status.command || "";
+  const diag = $("diagnostics");
+  if (status.state === "error") { diag.textContent = status.output; diag.hidden = false; }
+  else if (status.state === "ok") diag.hidden = true;
+  if (status.state === "ok" && status.revision !== page.revision) loadPicture(status.revision);
+  if (status.state !== "running") page.revision = status.revision;
+  document.body.dataset.revision = String(status.revision);
+  document.body.dataset.state = status.state;
+  buildParams(status);
+  syncSettings(status.settings || {});
+  fillRules(status.metrics && status.metrics.rules);
+  const growth = (status.params || []).some((q) => q.name === "growth_guides");
+  $("growthtools").hidden = !growth;
+  for (const el of document.querySelectorAll(".growth")) el.hidden = !growth;
+}
+
+async function loadPicture(revision) {
+  const r = await fetch(`/render.svg?revision=${revision}`);
+  if (!r.ok) return;
+  const text = await r.text();
+  const doc = new DOMParser().parseFromString(text, "image/svg+xml");
+  const root = doc.documentElement, vb = (root.getAttribute("viewBox") || "").split(/[\s,]+/).map(Number);
+  const first = page.pictureUrl === null;
+  if (vb.length === 4 && vb[2] > 0) page.size = { width: vb[2], height: vb[3] };
+  const url = URL.createObjectURL(new Blob([text], { type: "image/svg+xml" }));
+  const img = $("picture");
+  img.onload = () => { if (page.pictureUrl) URL.revokeObjectURL(page.pictureUrl); page.pictureUrl = url;
+                       document.body.dataset.shown = String(revision); };
+  img.src = url;
+  for (const el of [img, $("frame"), $("overlay")]) {
+    el.style.width = page.size.width + "px"; el.style.height = page.size.height + "px";
+  }
+  $("overlay").setAttribute("viewBox", `0 0 ${page.size.width} ${page.size.height}`);
+  if (first) fit();
+  drawOverlay();
+}
+
+function paramRange(q) {
+  if (q.range) return q.range.map(Number);
+  const d = Number(q.default);
+  if (d === 0) return [0, q.type === "int" || q.type === "long" ? 10 : 1];
+  return d > 0 ? [0, 2 * d] : [2 * d, 0];
+}
+
+function buildParams(status) {
+  const params = status.params || [];
+  const signature = JSON.stringify(params);
+  if (signature === page.paramSignature) return;
+  page.paramSignature = signature;
+  const box = $("params");
+  box.textContent = "";
+  const current = (status.settings && status.settings.params) || {};
+  for (const q of params) {
+    const row = document.createElement("div");
+    row.className = "row";
+    row.dataset.param = q.name;
+    const label = document.createElement("label");
+    label.textContent = q.name;
+    label.title = `${q.type} ${q.name} = ${q.default}` + (q.range ? ` in [${q.range[0]}, ${q.range[1]}]` : "");
+    row.append(label);
+    const value = current[q.name] !== undefined ? current[q.name] : q.default;
+    if (["int", "long", "float", "double"].includes(q.type)) {
+      const [lo, hi] = paramRange(q);
+      const integer = q.type === "int" || q.type === "long";
+      const slider = document.createElement("input");
+      slider.type = "range"; slider.min = lo; slider.max = hi;
+      slider.step = integer ? 1 : (hi - lo) / 200;
+      slider.value = value; slider.name = q.name;
+      const field = document.createElement("input");
+      field.type = "number"; field.step = integer ? 1 : "any"; field.value = value;
+      if (q.range) { field.min = lo; field.max = hi; }
+      slider.addEventListener("input", () => {
+        const v = integer ? String(Math.round(slider.value)) : String(Number(slider.value));
+        field.value = v; sendSettings({ params: { [q.name]: v } });
+      });
+      field.addEventListener("change", () => { slider.value = field.value; sendSettings({ params: { [q.name]: field.value } }); });
+      row.append(slider, field);
+    } else if (q.type === "bool") {
+      const box2 = document.createElement("input");
+      box2.type = "checkbox"; box2.checked = value === "true" || value === "1";
+      box2.addEventListener("change", () => sendSettings({ params: { [q.name]: box2.checked ? "true" : "false" } }));
+      row.append(box2);
+    } else {
+      const text = document.createElement("input");
+      text.type = "text";
+      text.value = value.startsWith('"') && value.endsWith('"') ? JSON.parse(value) : value;
+      text.addEventListener("change", () => sendSettings({ params: { [q.name]: text.value } }));
+      row.append(text);
+    }
+    box.append(row);
+  }
+}
+
+function syncSettings(s) {
+  if (document.activeElement !== $("rng") && s.rng_seed !== undefined) $("rng").value = s.rng_seed || "1";
+  const panel = $("panel");
+  if (s.panel !== undefined && document.activeElement !== panel) {
+    if (s.panel && ![...panel.options].some((o) => o.value === s.panel)) panel.add(new Option(s.panel, s.panel));
+    panel.value = s.panel || "";
+  }
+  page.seeds = (s.seeds || []).map((t) => t.split(",").map(Number));
+  $("seedcount").textContent = page.seeds.length ? `${page.seeds.length} seed(s)` : "default seed";
+  drawOverlay();
+}
+
+function fillRules(rules) {
+  const body = $("rules").tBodies[0];
+  body.textContent = "";
+  for (const r of rules || []) {
+    const tr = body.insertRow();
+    if (r.successes === 0) { tr.className = "never"; tr.title = "this rule never fired"; }
+    tr.insertCell().textContent = r.rule;
+    for (const v of [r.line, r.successes, r.failures]) { const c = tr.insertCell(); c.className = "n"; c.textContent = v; }
+  }
+}
+
+// --- zoom and pan ---------------------------------------------------------------------------
+function applyView() {
+  $("canvas").style.transform = `translate(${page.view.x}px, ${page.view.y}px) scale(${page.view.scale})`;
+}
+function fit() {
+  const v = $("view").getBoundingClientRect();
+  const s = Math.min(v.width / page.size.width, v.height / page.size.height) * 0.97;
+  page.view = { scale: s, x: (v.width - page.size.width * s) / 2, y: (v.height - page.size.height * s) / 2 };
+  applyView();
+}
+function eventToPage(e) {
+  const v = $("view").getBoundingClientRect();
+  return [(e.clientX - v.left - page.view.x) / page.view.scale, (e.clientY - v.top - page.view.y) / page.view.scale];
+}
+$("view").addEventListener("wheel", (e) => {
+  e.preventDefault();
+  const v = $("view").getBoundingClientRect();
+  const mx = e.clientX - v.left, my = e.clientY - v.top;
+  const k = Math.exp(-e.deltaY * 0.0015);
+  page.view.x = mx - (mx - page.view.x) * k;
+  page.view.y = my - (my - page.view.y) * k;
+  page.view.scale *= k;
+  applyView();
+}, { passive: false });
+$("view").addEventListener("dblclick", fit);
+$("zoomfit").addEventListener("click", fit);
+
+let drag = null;
+$("view").addEventListener("pointerdown", (e) => {
+  if (e.button !== 0) return;
+  $("view").setPointerCapture(e.pointerId);
+  if (page.mode === "pan") drag = { kind: "pan", x: e.clientX, y: e.clientY, vx: page.view.x, vy: page.view.y };
+  else if (page.mode === "seed") {
+    page.seeds.push(toRegion(eventToPage(e)));
+    drawOverlay();
+    sendSettings({ seeds: page.seeds });
+  } else {
+    const scale = (layout() || { scale: 1 }).scale;
+    drag = { kind: "stroke", stroke: { kind: page.mode, width: Number($("brush").value) / scale, points: [toRegion(eventToPage(e))] } };
+    page.strokes.push(drag.stroke);
+  }
+});
+$("view").addEventListener("pointermove", (e) => {
+  if (!drag) return;
+  if (drag.kind === "pan") {
+    page.view.x = drag.vx + e.clientX - drag.x; page.view.y = drag.vy + e.clientY - drag.y; applyView();
+  } else {
+    const p = toRegion(eventToPage(e)), last = drag.stroke.points[drag.stroke.points.length - 1];
+    const l = layout() || { scale: 1 };
+    if (Math.hypot(p[0] - last[0], p[1] - last[1]) * l.scale * page.view.scale >= 3) { drag.stroke.points.push(p); drawOverlay(); }
+  }
+});
+$("view").addEventListener("pointerup", () => {
+  if (drag && drag.kind === "stroke") {
+    if (drag.stroke.points.length < 2) page.strokes.pop();
+    sendStrokes();
+  }
+  drag = null;
+});
+
+function sendStrokes() {
+  const body = { strokes: page.strokes };
+  if (page.strokes.some((s) => s.kind === "flow")) body.mode = "flow";
+  $("strokecount").textContent = page.strokes.length ? `${page.strokes.length} stroke(s)` : "no strokes";
+  drawOverlay();
+  post("/guides", body);
+}
+
+function drawOverlay() {
+  const svg = $("overlay");
+  svg.textContent = "";
+  const l = layout();
+  for (const s of page.strokes) {
+    const line = document.createElementNS(SVGNS, "polyline");
+    line.setAttribute("points", s.points.map((p) => toPage(p).join(",")).join(" "));
+    line.setAttribute("class", `stroke stroke-${s.kind}`);
+    line.setAttribute("stroke-width", s.kind === "spray" && l ? s.width * l.scale : 2.5);
+    svg.append(line);
+  }
+  for (const s of page.seeds) {
+    const c = document.createElementNS(SVGNS, "circle");
+    const p = toPage(s);
+    c.setAttribute("cx", p[0]); c.setAttribute("cy", p[1]); c.setAttribute("r", 5);
+    c.setAttribute("class", "seedmark");
+    svg.append(c);
+  }
+}
+
+for (const b of document.querySelectorAll("#modes button")) {
+  b.addEventListener("click", () => {
+    page.mode = b.dataset.mode;
+    for (const o of document.querySelectorAll("#modes button")) o.classList.toggle("on", o === b);
+    $("view").className = page.mode;
+  });
+}
+
+// --- controls -------------------------------------------------------------------------------
+$("rng").addEventListener("change", () => sendSettings({ rng_seed: String($("rng").value) }));
+$("shuffle").addEventListener("click", () => {
+  const seed = String(Math.floor(Math.random() * 1e9));
+  $("rng").value = seed;
+  sendSettings({ rng_seed: seed });
+});
+$("panel").addEventListener("change", () => { page.seeds = []; sendSettings({ panel: $("panel").value, seeds: [] }); });
+$("clearseeds").addEventListener("click", () => { page.seeds = []; drawOverlay(); sendSettings({ seeds: [] }); });
+$("clearstrokes").addEventListener("click", () => { page.strokes = []; sendStrokes(); });
+
+async function loadPanels() {
+  const names = await (await fetch("/panels.json")).json();
+  const select = $("panel");
+  select.add(new Option("built-in panel", ""));
+  for (const n of names) select.add(new Option(n, n));
+}
+
+// A dropped SVG becomes the panel.
+const view = $("view");
+view.addEventListener("dragover", (e) => { e.preventDefault(); view.classList.add("dragover"); });
+view.addEventListener("dragleave", () => view.classList.remove("dragover"));
+view.addEventListener("drop", async (e) => {
+  e.preventDefault();
+  view.classList.remove("dragover");
+  const file = e.dataTransfer.files[0];
+  if (!file) return;
+  if (file.size > 4 * 1024 * 1024) { showNote("the panel is larger than 4 MiB"); return; }
+  await post("/panel", await file.text(), "image/svg+xml");
+  page.seeds = [];
+});
+
+// --- growth animation and debug frames ------------------------------------------------------
+function showFrame(url) {
+  const f = $("frame");
+  f.src = url; f.hidden = false;
+  $("picture").style.visibility = "hidden";
+}
+$("showrender").addEventListener("click", () => { $("frame").hidden = true; $("picture").style.visibility = "visible"; });
+let playTimer = null;
+$("play").addEventListener("click", async () => {
+  clearInterval(playTimer);
+  $("frameinfo").textContent = "rendering frames…";
+  const iterations = (page.status.metrics && page.status.metrics.iterations) || 100;
+  const every = Math.max(1, Math.ceil(iterations / 80));
+  const r = await post("/frames", { every });
+  page.frames = r.count;
+  const pos = $("framepos");
+  pos.max = r.count; pos.value = 1;
+  let i = 1;
+  const show = () => { pos.value = i; showFrame(`/frames/${i}.png?t=${Date.now()}`); $("frameinfo").textContent = `${i}/${r.count}`; };
+  show();
+  playTimer = setInterval(() => { if (i >= r.count) { clearInterval(playTimer); return; } i += 1; show(); }, 80);
+});
+$("framepos").addEventListener("input", () => {
+  clearInterval(playTimer);
+  const i = $("framepos").value;
+  showFrame(`/frames/${i}.png`); $("frameinfo").textContent = `${i}/${page.frames}`;
+});
+function showDebug() { showFrame(`/debug-frame.png?iteration=${$("debugit").value}`); }
+$("debugshow").addEventListener("click", showDebug);
+$("debugprev").addEventListener("click", () => { $("debugit").value = Math.max(1, Number($("debugit").value) - 1); showDebug(); });
+$("debugnext").addEventListener("click", () => { $("debugit").value = Number($("debugit").value) + 1; showDebug(); });
+
+// --- start ----------------------------------------------------------------------------------
+loadPanels();
+const events = new EventSource("/events");
+events.onmessage = (e) => update(JSON.parse(e.data));
+window.addEventListener("resize", () => applyView());
