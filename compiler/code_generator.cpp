@@ -216,11 +216,9 @@ class Generator {
             out_ << "        p.params.push_back({" << cpp_string(n) << ", "
                  << cpp_string(p.type.info) << ", " << cpp_string(p.decl->default_value.text)
                  << ", " << static_cast<long>(p.decl->keyword.begin.line) << ", &acr_param_set_"
-                 << n << ", &acr_param_get_" << n;
-            if (p.decl->range)
-                out_ << ", " << cpp_string(p.decl->range->low.text) << ", "
-                     << cpp_string(p.decl->range->high.text);
-            out_ << "});\n";
+                 << n << ", &acr_param_get_" << n << ", "
+                 << cpp_string(p.decl->range ? p.decl->range->low.text : "") << ", "
+                 << cpp_string(p.decl->range ? p.decl->range->high.text : "") << "});\n";
         }
         if (model_.exhausted) {
             out_ << "        p.exhausted = &acr_exhausted;\n"

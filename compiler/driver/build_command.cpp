@@ -57,12 +57,20 @@ std::string file_identity(const std::string& path) {
 
 }  // namespace
 
-std::vector<std::string> compile_command(const Toolchain& toolchain, const BuildOptions& options,
-                                         const std::string& source, const std::string& executable) {
+std::vector<std::string> compiler_flags(const Toolchain& toolchain, const BuildOptions& options) {
     std::vector<std::string> cmd{compiler(toolchain, options), "-std=c++20",
                                  "-O" + options.optimization};
     cmd.insert(cmd.end(), toolchain.sanitize_flags.begin(), toolchain.sanitize_flags.end());
     for (const std::string& dir : toolchain.include_dirs) cmd.push_back("-I" + dir);
+    return cmd;
+}
+
+std::vector<std::string> compile_command(const Toolchain& toolchain, const BuildOptions& options,
+                                         const std::string& source, const std::string& executable) {
+    std::vector<std::string> cmd = compiler_flags(toolchain, options);
+    if (!options.precompiled_header.empty())
+        cmd.insert(cmd.end(), {"-include", options.precompiled_header});
+    cmd.insert(cmd.end(), options.extra_flags.begin(), options.extra_flags.end());
     cmd.insert(cmd.end(), {source, "-o", executable, "-Wl,--start-group"});
     if (!toolchain.stdlib_library.empty()) cmd.push_back(toolchain.stdlib_library);
     cmd.push_back(toolchain.runtime_library);

@@ -17,7 +17,14 @@ struct BuildOptions {
     std::string cxx;                 // empty: $CXX, then the compiler Acanthus was built with
     std::string optimization = "2";  // -O LEVEL
     CommandRunner runner;            // empty: run_process (inherited stdio, not cancellable)
+    // Previews: a header compiled ahead (`-include`, its .gch beside it) and flags such as
+    // -fuse-ld=lld, all part of the cache key.
+    std::string precompiled_header;
+    std::vector<std::string> extra_flags;
 };
+
+// The compiler, language level, optimization, sanitizer flags and include directories.
+std::vector<std::string> compiler_flags(const Toolchain& toolchain, const BuildOptions& options);
 
 // The compiler command line that turns `source` into `executable`.
 std::vector<std::string> compile_command(const Toolchain& toolchain, const BuildOptions& options,

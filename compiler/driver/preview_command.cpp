@@ -3,10 +3,12 @@
 #include <httplib.h>
 #include <pthread.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <thread>
@@ -66,6 +68,20 @@ bool take_server_options(std::vector<std::string>& args, int& port, std::string&
     return true;
 }
 
+bool on_path(const std::string& program) {
+    const char* path = std::getenv("PATH");
+    std::string dirs = path ? path : "/usr/bin:/bin";
+    std::size_t start = 0;
+    while (start <= dirs.size()) {
+        std::size_t end = dirs.find(':', start);
+        if (end == std::string::npos) end = dirs.size();
+        const fs::path candidate = fs::path(dirs.substr(start, end - start)) / program;
+        if (access(candidate.c_str(), X_OK) == 0) return true;
+        start = end + 1;
+    }
+    return false;
+}
+
 std::vector<std::string> list_panels(const std::string& dir) {
     std::vector<std::string> names;
     std::error_code ec;
@@ -117,10 +133,15 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
     pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
 
+    // lld links a program in about half the time of the default linker.
+    BuildOptions fast = build;
+    if (fast.cxx.empty() && !std::getenv("CXX") && on_path("ld.lld"))
+        fast.extra_flags.push_back("-fuse-ld=lld");
+
     int code = 0;
     {
         PreviewStatus status;
-        PreviewConfig config{input, includes, toolchain, build, work};
+        PreviewConfig config{input, includes, toolchain, fast, work};
         std::atomic<bool> stopping{false};
         httplib::Server server;
         server.set_payload_max_length(kMaxRequestBody);

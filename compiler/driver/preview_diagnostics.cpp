@@ -21,7 +21,14 @@ std::vector<PreviewDiagnostic> parse_diagnostics(const std::string& output) {
                 out.push_back({m[1], 0, 0, m[4]});
             }
         } else if (std::regex_match(line, m, unlocated)) {
-            out.push_back({m[1], 0, 0, m[2]});
+            // The program names the rule file and line of a failing rule: `x.acr:31: rule ...`.
+            static const std::regex rule(R"(^(.+?\.acr):(\d+): (.*)$)");
+            std::smatch r;
+            const std::string message = m[2];
+            if (std::regex_match(message, r, rule))
+                out.push_back({r[1], std::stoi(r[2]), 0, r[3]});
+            else
+                out.push_back({m[1], 0, 0, message});
         }
     }
     return out;

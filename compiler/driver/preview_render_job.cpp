@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "compilation.hpp"
+#include "driver/precompiled_prelude.hpp"
 #include "driver/preview_child.hpp"
 #include "driver/process.hpp"
 
@@ -142,6 +143,12 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, std::stri
     std::error_code ec;
     fs::remove(log, ec);
     std::string error;
+    if (!prelude_failed_ && !use_precompiled_prelude(config_.toolchain, options, error)) {
+        if (cancelled) return false;
+        prelude_failed_ = true;  // build without it from now on; only slower
+        options.precompiled_header.clear();
+    }
+    error.clear();
     if (cached_executable(config_.toolchain, options, stem, cpp, executable, error)) return true;
     if (cancelled) return false;
     std::string output = read_text(log, 1u << 20);

@@ -64,6 +64,7 @@ class RenderJob {
     bool stopping_ = false;
     std::atomic<bool> cancel_{false};
     std::atomic<bool> stop_extras_{false};
+    bool prelude_failed_ = false;
     std::string good_executable_;
     std::vector<std::string> good_arguments_;
     FileWatcher watcher_;

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Usage: bench/preview.sh BUILD_DIR
+# `acanthus preview` edit-to-picture: for every pattern in rules/, at its default size, the time
+# from saving a changed rule body to the new revision in /status.json (compile, build with the
+# precompiled prelude, grow, render): the median of 3 edits after a first render. Last line: one
+# JSON object, {"seconds": {"dots": ..., ...}, "max": ...}.
+# needs: acanthus acanthus_runtime acanthus_stdlib
+set -euo pipefail
+BUILD="$1"
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+exec python3 "$ROOT/bench/preview_edit.py" "$BUILD/compiler/acanthus" "$ROOT"

@@ -1,0 +1,87 @@
+#include "driver/precompiled_prelude.hpp"
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+
+#include <acanthus/output_file.hpp>
+
+#include "driver/process.hpp"
+
+namespace acanthus {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The includes at the top of every generated file (code_generator.cpp writes the same ones).
+constexpr const char* kPrelude =
+    "#include <acanthus/rules.hpp>\n"
+    "#include <cstddef>\n"
+    "#include <stdexcept>\n"
+    "#include <string>\n"
+    "#include <string_view>\n";
+
+std::string key(const std::vector<std::string>& parts) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a: a cache key
+    for (const std::string& p : parts) {
+        for (char c : p + '\n') {
+            h ^= static_cast<unsigned char>(c);
+            h *= 0x100000001b3ULL;
+        }
+    }
+    char out[17];
+    std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+    return out;
+}
+
+std::string identity(const std::string& path) {
+    std::error_code ec;
+    auto size = fs::file_size(path, ec);
+    auto time = fs::last_write_time(path, ec);
+    return path + ":" + std::to_string(size) + ":" +
+           std::to_string(time.time_since_epoch().count());
+}
+
+}  // namespace
+
+bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options,
+                             std::string& error) {
+    BuildOptions plain = options;
+    plain.precompiled_header.clear();
+    std::vector<std::string> flags = compiler_flags(toolchain, plain);
+    std::vector<std::string> parts = flags;
+    parts.push_back(kPrelude);
+    // The headers change with the library they come with.
+    parts.push_back(identity(toolchain.runtime_library));
+    parts.push_back(identity(toolchain.stdlib_library));
+    const fs::path dir = fs::path(cache_directory()) / ("prelude-" + key(parts));
+    const fs::path header = dir / "prelude.hpp";
+    const fs::path gch = dir / "prelude.hpp.gch";
+    std::error_code ec;
+    if (fs::exists(gch, ec) && fs::exists(header, ec)) {
+        options.precompiled_header = header.string();
+        return true;
+    }
+    fs::create_directories(dir, ec);
+    if (ec || !write_file_atomically(header.string(), kPrelude, error)) {
+        if (error.empty()) error = "cannot create '" + dir.string() + "'";
+        return false;
+    }
+    std::string temp = create_temporary_sibling(gch.string(), error);
+    if (temp.empty()) return false;
+    std::vector<std::string> cmd = flags;
+    cmd.insert(cmd.end(), {"-x", "c++-header", header.string(), "-o", temp});
+    int status = options.runner ? options.runner(cmd, error) : run_process(cmd, error);
+    if (status != 0 || std::rename(temp.c_str(), gch.c_str()) != 0) {
+        if (status > 0) error = "precompiling the prelude failed (exit status " +
+                                std::to_string(status) + ")";
+        remove_if_present(temp);
+        return false;
+    }
+    options.precompiled_header = header.string();
+    return true;
+}
+
+}  // namespace acanthus

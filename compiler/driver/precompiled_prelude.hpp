@@ -1,0 +1,18 @@
+// The prelude every generated program includes (<acanthus/rules.hpp> and a few standard
+// headers), precompiled once per compiler command line into the cache: parsing it is most of
+// the time a small rule file takes to compile, and a preview recompiles on every save.
+#pragma once
+
+#include <string>
+
+#include "driver/build_command.hpp"
+#include "driver/toolchain.hpp"
+
+namespace acanthus {
+
+// Sets `options.precompiled_header` to the cached prelude, building it when missing. False with
+// `error` set when it cannot be built (the caller may then build without it).
+bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options,
+                             std::string& error);
+
+}  // namespace acanthus
