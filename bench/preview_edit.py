@@ -69,6 +69,8 @@ def measure(acanthus, root, rule):
             edit(path, 1000 + n)
             s = wait_revision(url, before)
             times.append(time.monotonic() - start)
+            print("  %s edit %d: %.3f s %s" % (os.path.basename(rule), n, times[-1], s.get("timings")),
+                  file=sys.stderr)
             if s["state"] != "ok":
                 raise RuntimeError("%s: %s" % (rule, s["output"]))
         return statistics.median(times)
@@ -89,6 +91,9 @@ def main():
     os.environ["ACANTHUS_CACHE_DIR"] = cache  # cold cache: every edit builds its program
     try:
         rules = sorted(f for f in os.listdir(os.path.join(root, "rules")) if f.endswith(".acr"))
+        only = os.environ.get("ACANTHUS_BENCH_PATTERNS")
+        if only:
+            rules = [f for f in rules if f[:-4] in only.split(",")]
         seconds = {}
         for f in rules:
             seconds[f[:-4]] = round(measure(acanthus, root, os.path.join(root, "rules", f)), 3)

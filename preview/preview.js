@@ -165,7 +165,22 @@ function buildParams(status) {
   }
 }
 
+// Controls follow the settings (changed by another tab, a tool, the command line) unless the
+// user is on them.
+function syncParams(values) {
+  for (const row of document.querySelectorAll("#params .row")) {
+    const v = values[row.dataset.param];
+    if (v === undefined) continue;
+    for (const input of row.querySelectorAll("input")) {
+      if (input === document.activeElement) continue;
+      if (input.type === "checkbox") input.checked = v === "true" || v === "1";
+      else input.value = v;
+    }
+  }
+}
+
 function syncSettings(s) {
+  syncParams(s.params || {});
   if (document.activeElement !== $("rng") && s.rng_seed !== undefined) $("rng").value = s.rng_seed || "1";
   const panel = $("panel");
   if (s.panel !== undefined && document.activeElement !== panel) {

@@ -182,11 +182,15 @@ void RenderJob::render(long generation) {
         return;
     }
     status_.set_params(params);
+    status_.set_timing("compile", seconds_since(start));
 
     status_.begin("building");
+    const auto build_start = Clock::now();
     std::string executable;
     if (!build(stem, cpp, executable)) return;
     if (cancel_) return;
+    status_.set_timing("build", seconds_since(build_start));
+    const auto grow_start = Clock::now();
 
     status_.begin("growing");
     const fs::path dir(config_.work_dir);
@@ -232,6 +236,7 @@ void RenderJob::render(long generation) {
             good_executable_ = executable;
             good_arguments_ = arguments;
         }
+        status_.set_timing("grow", seconds_since(grow_start));
         status_.succeed(read_text(svg), metrics, seconds_since(start));
     } else {
         // Only the program's error lines: the progress lines are noise here.

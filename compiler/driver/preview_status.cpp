@@ -31,6 +31,12 @@ void PreviewStatus::set_params(std::vector<ParamSummary> params) {
     params_ = std::move(params);
 }
 
+void PreviewStatus::set_timing(const std::string& phase, double seconds) {
+    std::lock_guard lock(mutex_);
+    if (phase == "compile") timings_ = json::object();
+    timings_[phase] = seconds;
+}
+
 void PreviewStatus::set_command(std::string command) {
     std::lock_guard lock(mutex_);
     command_ = std::move(command);
@@ -87,6 +93,7 @@ PreviewStatus::json PreviewStatus::to_json() const {
             {"params", params},
             {"metrics", metrics_},
             {"command", command_},
+            {"timings", timings_},
             {"progress",
              {{"iterations", progress_iterations_},
               {"elements", progress_elements_},

@@ -22,6 +22,8 @@ class PreviewStatus {
     void progress(long iterations, long elements, double seconds);
     void set_params(std::vector<ParamSummary> params);
     void set_command(std::string command);
+    // Seconds one phase of the current render took (compile, build, grow): where time goes.
+    void set_timing(const std::string& phase, double seconds);
     // A render finished well: the picture and the program's --metrics.
     void succeed(std::string svg, const json& metrics, double seconds);
     // A render failed: compiler output (with diagnostics) or the program's error.
@@ -52,6 +54,7 @@ class PreviewStatus {
     json metrics_ = json::object();
     std::string svg_;
     std::string command_;
+    json timings_ = json::object();
     long elements_ = 0;
     double seconds_ = 0;
     long progress_iterations_ = 0, progress_elements_ = 0;

@@ -1,0 +1,178 @@
+// acanthus preview in a real browser (headless Chromium driven by puppeteer-core): the page
+// loads the render, follows edits of the rule file on disk, shows a diagnostic at its line and
+// keeps the last good picture, re-renders when a slider moves, and draws a flow stroke with the
+// growth library. ACANTHUS_PREVIEW_SCREENSHOTS=DIR saves the pictures docs/preview.md shows.
+// Usage: node browser.test.js ACANTHUS CHROMIUM
+"use strict";
+const { spawn } = require("child_process");
+const fs = require("fs");
+const os = require("os");
+const path = require("path");
+const puppeteer = require("puppeteer-core");
+
+const [acanthus, chromium] = process.argv.slice(2).map((p, i) => (i === 0 ? path.resolve(p) : p));
+const here = __dirname;
+const root = path.resolve(here, "../..");
+const shots = process.env.ACANTHUS_PREVIEW_SCREENSHOTS;
+let failures = 0;
+const servers = [];
+
+function check(ok, what) {
+  console.log((ok ? "ok: " : "FAIL: ") + what);
+  if (!ok) failures += 1;
+}
+
+function startServer(ruleFile, args, cwd) {
+  return new Promise((resolve, reject) => {
+    const child = spawn(acanthus, ["preview", ruleFile, "--port", "0", ...args],
+                        { cwd, stdio: ["ignore", "pipe", "inherit"], detached: true });
+    servers.push(child);
+    let out = "";
+    const timer = setTimeout(() => reject(new Error("the server did not start")), 20000);
+    child.stdout.on("data", (d) => {
+      out += d;
+      const m = out.match(/http:\/\/[^ \n]+/);
+      if (m) { clearTimeout(timer); resolve({ child, url: m[0] }); }
+    });
+    child.on("exit", (code) => reject(new Error("the server exited with " + code)));
+  });
+}
+
+function stopServers() {
+  for (const child of servers) {
+    if (child.exitCode !== null) continue;
+    try { process.kill(-child.pid, "SIGINT"); } catch (e) { /* gone */ }
+    setTimeout(() => { try { process.kill(-child.pid, "SIGKILL"); } catch (e) { /* gone */ } }, 5000).unref();
+  }
+}
+
+async function status(url) { return (await fetch(url + "status.json")).json(); }
+
+// Waits until the page shows a render newer than `after` (or an error after it).
+async function waitShown(page, after, state = "ok", timeout = 90000) {
+  await page.waitForFunction((a, s) => {
+    const b = document.body.dataset;
+    if (Number(b.revision) <= a || b.state !== s) return false;
+    return s !== "ok" || Number(b.shown) === Number(b.revision);
+  }, { timeout, polling: 100 }, after, state);
+  return Number(await page.evaluate(() => document.body.dataset.revision));
+}
+
+function save(file, text) { fs.writeFileSync(file + ".tmp", text); fs.renameSync(file + ".tmp", file); }
+
+async function shot(page, name) {
+  if (!shots) return;
+  fs.mkdirSync(shots, { recursive: true });
+  await page.screenshot({ path: path.join(shots, name) });
+  console.log("saved " + path.join(shots, name));
+}
+
+async function rulesAndSliders(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "bubbles.acr");
+  const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8");
+  save(rules, good);
+  const { url } = await startServer(rules, ["--region", "rect:120,80"], work);
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1280, height: 760 });
+  await page.goto(url);
+  let rev = await waitShown(page, 0);
+  check(rev >= 1, "the page shows the first render");
+  const sliders = await page.$$eval("#params input[type=range]", (l) => l.map((s) => [s.name, s.min, s.max]));
+  check(JSON.stringify(sliders[0]) === JSON.stringify(["max_radius", "0.5", "10"]),
+        "a slider per numeric parameter, with the declared range: " + JSON.stringify(sliders));
+  check(await page.$("#params input[type=checkbox]") !== null, "a checkbox for the bool parameter");
+  const rulesShown = await page.$$eval("#rules tbody tr", (rows) => rows.map((r) => r.cells[0].textContent));
+  check(rulesShown.includes("dot --> dot"), "per-rule metrics in the page");
+  const firstSvg = await (await fetch(url + "render.svg")).text();
+
+  // Edit on disk: the new picture appears by itself.
+  save(rules, good.replace("%param double max_radius = 3.0 in [0.5, 10];",
+                           "%param double max_radius = 6.0 in [0.5, 10];"));
+  rev = await waitShown(page, rev);
+  const editedSvg = await (await fetch(url + "render.svg")).text();
+  check(editedSvg !== firstSvg, "saving the rule file shows a new picture (revision " + rev + ")");
+  await shot(page, "preview-page.png");
+
+  // Broken: the diagnostic at its line, the last good picture still there.
+  save(rules, good.replace("    $$.sterile = 1;", "    $$.sterile = 1;\n    $7.radius = 2;"));
+  rev = await waitShown(page, rev, "error");
+  const diag = await page.$eval("#diagnostics", (d) => (d.hidden ? "" : d.textContent));
+  check(/bubbles\.acr:26:5: error: '\$7' refers to static child 7/.test(diag) &&
+        diag.includes("   26 |     $7.radius = 2;"), "the diagnostic at line 26, column 5, with its source line");
+  const stillShown = await page.$eval("#picture", (img) => img.complete && img.naturalWidth > 0 &&
+                                                           getComputedStyle(img).visibility !== "hidden");
+  check(stillShown, "the last good picture stays while the file is broken");
+  await shot(page, "preview-error.png");
+
+  // Fixed: back to a picture.
+  save(rules, good);
+  rev = await waitShown(page, rev);
+  check(await page.$eval("#diagnostics", (d) => d.hidden), "fixing the file clears the diagnostic");
+  const fixedSvg = await (await fetch(url + "render.svg")).text();
+
+  // A slider moved with the mouse: the program runs again with the new value.
+  const slider = await page.$("#params input[name=max_radius]");
+  const box = await slider.boundingBox();
+  await page.mouse.click(box.x + box.width * 0.1, box.y + box.height / 2);
+  rev = await waitShown(page, rev);
+  const s = await status(url);
+  const value = Number(s.settings.params.max_radius);
+  check(value > 0.5 && value < 3, "the slider set max_radius to " + value);
+  const sliderSvg = await (await fetch(url + "render.svg")).text();
+  check(sliderSvg !== fixedSvg, "moving the slider changes the picture");
+  check(s.command.includes("--param max_radius="), "the command line shows the parameter");
+  await page.close();
+}
+
+async function growthTools(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "arrangement.acr");
+  fs.copyFileSync(path.join(root, "rules", "arrangement.acr"), rules);
+  const { url } = await startServer(rules, ["--region", path.join(root, "examples/panels/rectangle.svg")], root);
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1280, height: 760 });
+  await page.goto(url);
+  let rev = await waitShown(page, 0);
+  check(await page.$eval("#modes button[data-mode=flow]", (b) => !b.hidden), "growth tools shown for a growth rule file");
+  await page.click("#modes button[data-mode=flow]");
+  const view = await (await page.$("#picture")).boundingBox();
+  const y = view.y + view.height * 0.5;
+  await page.mouse.move(view.x + view.width * 0.15, y + view.height * 0.2);
+  await page.mouse.down();
+  for (let i = 1; i <= 20; i += 1) {
+    const t = i / 20;
+    await page.mouse.move(view.x + view.width * (0.15 + 0.7 * t), y + view.height * 0.2 * Math.cos(Math.PI * t));
+  }
+  await page.mouse.up();
+  rev = await waitShown(page, rev, "ok", 120000);
+  const s = await status(url);
+  check(s.settings.params.growth_mode === "flow" && s.settings.params.growth_guides,
+        "a flow stroke sets growth_mode=flow and growth_guides");
+  const guides = await (await fetch(url + "guides.svg")).text();
+  check(/<polyline class="flow"/.test(guides), "the stroke is saved as a guides SVG with class flow");
+  check(s.command.includes("--param growth_guides=") && s.command.includes("--param growth_mode=flow"),
+        "the page shows the command that makes it again: " + s.command);
+  await shot(page, "preview-growth.png");
+  await page.close();
+}
+
+(async () => {
+  let browser;
+  const watchdog = setTimeout(() => { console.log("FAIL: the browser tests took over 8 minutes"); stopServers(); process.exit(1); }, 480000);
+  try {
+    browser = await puppeteer.launch({ executablePath: chromium, headless: "new",
+                                       args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"] });
+    await rulesAndSliders(browser);
+    await growthTools(browser);
+  } catch (e) {
+    console.log("FAIL: " + (e && e.stack ? e.stack : e));
+    failures += 1;
+  } finally {
+    if (browser) await browser.close();
+    stopServers();
+    clearTimeout(watchdog);
+  }
+  if (failures) console.log(failures + " check(s) failed");
+  process.exitCode = failures ? 1 : 0;
+})();

@@ -1,0 +1,139 @@
+"""`acanthus preview` without a browser: status.json, diagnostics of a broken file, the last
+good picture kept, a parameter change, an endless loop, what is refused.
+Usage: check_server.py ACANTHUS"""
+import http.client
+import os
+import shutil
+import sys
+import tempfile
+import threading
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from preview_server import PreviewServer  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+failures = []
+
+
+def check(condition, what):
+    print(("ok: " if condition else "FAIL: ") + what)
+    if not condition:
+        failures.append(what)
+
+
+def raw_get(url, path):
+    """A request whose path is sent exactly as written (no client-side normalisation)."""
+    host, port = url[len("http://"):].rstrip("/").split(":")
+    c = http.client.HTTPConnection(host, int(port), timeout=10)
+    c.request("GET", path)
+    r = c.getresponse()
+    r.read()
+    c.close()
+    return r.status
+
+
+def save(path, text):
+    with open(path + ".tmp", "w") as f:
+        f.write(text)
+    os.replace(path + ".tmp", path)
+
+
+def main():
+    acanthus = os.path.abspath(sys.argv[1])
+    work = tempfile.mkdtemp(prefix="acanthus-preview-test.")
+    try:
+        rules = os.path.join(work, "bubbles.acr")
+        good = open(os.path.join(HERE, "fixtures", "bubbles.acr")).read()
+        save(rules, good)
+        with PreviewServer(acanthus, rules, ["--region", "rect:80,50", "--body-time-limit", "2",
+                                             "--time-limit", "8"], cwd=work) as server:
+            s = server.wait_revision(0)
+            check(s["state"] == "ok" and s["elements"] > 10, "first render ok with elements")
+            check(s["params"][0] == {"name": "max_radius", "type": "double", "default": "3.0",
+                                     "range": ["0.5", "10"]}, "params with the declared range")
+            check([p["type"] for p in s["params"]] == ["double", "double", "bool"], "param types")
+            code, first_svg, ctype = server.get("/render.svg")
+            check(code == 200 and ctype.startswith("image/svg+xml") and b"<svg" in first_svg,
+                  "/render.svg serves the render")
+            rules_fired = {r["rule"]: r["successes"] for r in s["metrics"]["rules"]}
+            check(rules_fired.get("seed --> dot") == 1, "per-rule metrics")
+
+            # A broken file: the compiler's diagnostic at its line, the last good picture kept.
+            broken = good.replace("    $$.sterile = 1;", "    $$.sterile = 1;\n    $7.radius = 2;")
+            save(rules, broken)
+            s = server.wait_revision(s["revision"])
+            d = s["diagnostics"]
+            check(s["state"] == "error" and len(d) == 1 and d[0]["file"].endswith("bubbles.acr")
+                  and d[0]["line"] == 26 and d[0]["column"] == 5, "diagnostic at 26:5: %s" % d)
+            check("$7" in d[0]["message"] and "26 |     $7.radius = 2;" in s["output"],
+                  "message and source line as the compiler prints them")
+            check(server.get("/render.svg")[1] == first_svg, "last good picture kept")
+
+            # A C++ error in a body shows at the rule file's line.
+            save(rules, good.replace("    double r = min( max_radius, $goal.radius );",
+                                     "    double r = min( max_radius, $goal.radius ) oops;"))
+            s = server.wait_revision(s["revision"])
+            d = s["diagnostics"]
+            check(s["state"] == "error" and d and d[0]["file"].endswith("bubbles.acr") and
+                  d[0]["line"] == 34, "C++ error at the rule file's line 34: %s" % d)
+
+            # Fixed again, then a parameter moved: a new picture without recompiling.
+            save(rules, good)
+            s = server.wait_revision(s["revision"])
+            check(s["state"] == "ok", "fixed file renders again")
+            code, _ = server.post("/settings", {"params": {"max_radius": "1.5"}})
+            s = server.wait_revision(s["revision"])
+            check(code == 200 and s["state"] == "ok" and "--param max_radius=1.5" in s["command"],
+                  "parameter change re-renders: %s" % s["command"])
+            check(server.get("/render.svg")[1] != first_svg, "the picture changed")
+            code, _ = server.post("/settings", {"params": {"max_radius": "50"}})
+            s = server.wait_revision(s["revision"])
+            check(s["state"] == "error" and "outside the declared range [0.5, 10]" in s["output"],
+                  "a value outside the range is refused by the program")
+            server.post("/settings", {"params": {"max_radius": "3.0"}})
+            s = server.wait_revision(s["revision"])
+
+            # An endless loop: an error with the limit named; the server answers meanwhile.
+            save(rules, good.replace("    $$.sterile = 1;",
+                                     "    $$.sterile = 1;\n    for (volatile int i = 0;; ) { (void)i; }"))
+            answered = []
+
+            def poll():
+                end = time.monotonic() + 4
+                while time.monotonic() < end:
+                    answered.append(server.get("/status.json", timeout=2)[0])
+                    time.sleep(0.2)
+            t = threading.Thread(target=poll)
+            t.start()
+            s = server.wait_revision(s["revision"], limit=60)
+            t.join()
+            check(s["state"] == "error" and "still running after 2 s" in s["output"],
+                  "endless loop is an error: %s" % s["output"].strip())
+            check(answered and all(c == 200 for c in answered), "status answered during the loop")
+            check(server.get("/render.svg")[0] == 200, "render still served after the loop")
+
+            # Only the page, its assets and the renders.
+            for path in ["/../etc/passwd", "/..%2f..%2fetc%2fpasswd", "/panels/../README.md",
+                         "/panels/..%2F..%2Frules%2Fdots.acr", "/bubbles.acr", "/nothing",
+                         "/frames/../../bubbles.acr", "/preview/index.html", "/index.html/.."]:
+                code = raw_get(server.url, path)
+                check(code in (400, 404), "%s refused (%d)" % (path, code))
+            for path in ["/", "/preview.js", "/preview.css", "/panels.json", "/panels/heart.svg"]:
+                check(server.get(path)[0] == 200, "%s served" % path)
+            code, _ = server.post("/panel", b"<svg>" + b" " * (5 << 20), "image/svg+xml")
+            check(code == 413, "oversized body refused (%d)" % code)
+            code, _ = server.post("/settings", {"panel": "../../etc/passwd"})
+            check(code == 400, "unknown panel refused (%d)" % code)
+            code, _ = server.post("/settings", b"{not json")
+            check(code == 400, "malformed settings refused (%d)" % code)
+            rc = server.stop()
+            check(rc == 0, "Ctrl-C stops the server with status 0 (%s)" % rc)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    if failures:
+        print("%d check(s) failed" % len(failures))
+        sys.exit(1)
+
+
+main()
