@@ -45,7 +45,8 @@ class Hash {
     std::uint64_t state_ = 0xcbf29ce484222325ULL;
 };
 
-// Path, size and modification time: changes whenever the library is rebuilt.
+}  // namespace
+
 std::string file_identity(const std::string& path) {
     if (path.empty()) return "-";
     std::error_code ec;
@@ -55,13 +56,18 @@ std::string file_identity(const std::string& path) {
            std::to_string(time.time_since_epoch().count());
 }
 
-}  // namespace
+std::string cache_key(const std::vector<std::string>& parts) {
+    Hash hash;
+    for (const std::string& p : parts) hash.add(p);
+    return hash.hex();
+}
 
 std::vector<std::string> compiler_flags(const Toolchain& toolchain, const BuildOptions& options) {
     std::vector<std::string> cmd{compiler(toolchain, options), "-std=c++20",
                                  "-O" + options.optimization};
     cmd.insert(cmd.end(), toolchain.sanitize_flags.begin(), toolchain.sanitize_flags.end());
     for (const std::string& dir : toolchain.include_dirs) cmd.push_back("-I" + dir);
+    if (options.shared_library) cmd.push_back("-fPIC");
     return cmd;
 }
 
@@ -71,6 +77,11 @@ std::vector<std::string> compile_command(const Toolchain& toolchain, const Build
     if (!options.precompiled_header.empty())
         cmd.insert(cmd.end(), {"-include", options.precompiled_header});
     cmd.insert(cmd.end(), options.extra_flags.begin(), options.extra_flags.end());
+    if (options.shared_library) {
+        // The runtime comes from the program that loads it (preview_host).
+        cmd.insert(cmd.end(), {"-shared", source, "-o", executable});
+        return cmd;
+    }
     cmd.insert(cmd.end(), {source, "-o", executable, "-Wl,--start-group"});
     if (!toolchain.stdlib_library.empty()) cmd.push_back(toolchain.stdlib_library);
     cmd.push_back(toolchain.runtime_library);
@@ -153,7 +164,7 @@ bool cached_executable(const Toolchain& toolchain, const BuildOptions& options,
         error = "cannot create the cache directory '" + dir.string() + "': " + ec.message();
         return false;
     }
-    executable = (dir / (stem + "-" + hash.hex())).string();
+    executable = (dir / (stem + "-" + hash.hex() + (options.shared_library ? ".so" : ""))).string();
     if (access(executable.c_str(), X_OK) == 0) return true;
     return build_executable(toolchain, options, stem, cpp, executable, error);
 }

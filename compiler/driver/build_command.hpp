@@ -21,7 +21,14 @@ struct BuildOptions {
     // -fuse-ld=lld, all part of the cache key.
     std::string precompiled_header;
     std::vector<std::string> extra_flags;
+    // A shared library exporting acanthus_pattern() (`--no-main` code) instead of a program.
+    bool shared_library = false;
 };
+
+// A cache key from `parts` (FNV-1a, not a security boundary), 16 hex digits.
+std::string cache_key(const std::vector<std::string>& parts);
+// Path, size and modification time: changes whenever the file is rebuilt.
+std::string file_identity(const std::string& path);
 
 // The compiler, language level, optimization, sanitizer flags and include directories.
 std::vector<std::string> compiler_flags(const Toolchain& toolchain, const BuildOptions& options);
@@ -36,7 +43,8 @@ bool build_executable(const Toolchain& toolchain, const BuildOptions& options,
                       const std::string& stem, const std::string& cpp,
                       const std::string& executable, std::string& error);
 
-// The executable `run` uses for `cpp`: <cache>/<stem>-<hash>, built when missing.
+// The executable `run` uses for `cpp`: <cache>/<stem>-<hash>, built when missing (with
+// `options.shared_library`, <cache>/<stem>-<hash>.so).
 bool cached_executable(const Toolchain& toolchain, const BuildOptions& options,
                        const std::string& stem, const std::string& cpp, std::string& executable,
                        std::string& error);

@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
     preview->add_option("-I", includes, "Directory searched by %import (repeatable, in order)")
         ->allow_extra_args(false);
     preview->add_option("--cxx", build_options.cxx, "C++ compiler");
-    preview->add_option("-O", build_options.optimization, "Optimization level (default 1)");
+    preview->add_option("-O", build_options.optimization, "Optimization level (default 0: the quickest build)");
     preview->prefix_command();
     preview->footer(
         "Usage: acanthus preview [-I DIR]... [--cxx CXX] [-O LEVEL] FILE.acr [program options...] "
@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
     }
 
     // Previews favour a quick build over a fast program (docs/preview.md, bench/preview.sh).
-    if (preview->parsed() && preview->count("-O") == 0) build_options.optimization = "1";
+    if (preview->parsed() && preview->count("-O") == 0) build_options.optimization = "0";
     static const std::string levels[] = {"0", "1", "2", "3", "s", "g", "fast", "z"};
     if (std::find(std::begin(levels), std::end(levels), build_options.optimization) ==
         std::end(levels)) {

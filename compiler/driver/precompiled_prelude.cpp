@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <cstdint>
 #include <filesystem>
 
 #include <acanthus/output_file.hpp>
@@ -23,27 +22,6 @@ constexpr const char* kPrelude =
     "#include <string>\n"
     "#include <string_view>\n";
 
-std::string key(const std::vector<std::string>& parts) {
-    std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a: a cache key
-    for (const std::string& p : parts) {
-        for (char c : p + '\n') {
-            h ^= static_cast<unsigned char>(c);
-            h *= 0x100000001b3ULL;
-        }
-    }
-    char out[17];
-    std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
-    return out;
-}
-
-std::string identity(const std::string& path) {
-    std::error_code ec;
-    auto size = fs::file_size(path, ec);
-    auto time = fs::last_write_time(path, ec);
-    return path + ":" + std::to_string(size) + ":" +
-           std::to_string(time.time_since_epoch().count());
-}
-
 }  // namespace
 
 bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options,
@@ -52,11 +30,12 @@ bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options,
     plain.precompiled_header.clear();
     std::vector<std::string> flags = compiler_flags(toolchain, plain);
     std::vector<std::string> parts = flags;
+    parts.insert(parts.end(), options.extra_flags.begin(), options.extra_flags.end());
     parts.push_back(kPrelude);
     // The headers change with the library they come with.
-    parts.push_back(identity(toolchain.runtime_library));
-    parts.push_back(identity(toolchain.stdlib_library));
-    const fs::path dir = fs::path(cache_directory()) / ("prelude-" + key(parts));
+    parts.push_back(file_identity(toolchain.runtime_library));
+    parts.push_back(file_identity(toolchain.stdlib_library));
+    const fs::path dir = fs::path(cache_directory()) / ("prelude-" + cache_key(parts));
     const fs::path header = dir / "prelude.hpp";
     const fs::path gch = dir / "prelude.hpp.gch";
     std::error_code ec;

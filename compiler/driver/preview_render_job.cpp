@@ -9,6 +9,7 @@
 #include "compilation.hpp"
 #include "driver/precompiled_prelude.hpp"
 #include "driver/preview_child.hpp"
+#include "driver/preview_host.hpp"
 #include "driver/process.hpp"
 
 namespace acanthus {
@@ -123,11 +124,8 @@ std::string RenderJob::command_line(const PreviewSettings& s) const {
     return quote_command(cmd);
 }
 
-bool RenderJob::build(const std::string& stem, const std::string& cpp, std::string& executable) {
-    const std::string log = (fs::path(config_.work_dir) / "build.log").string();
-    BuildOptions options = config_.build;
-    bool cancelled = false;
-    options.runner = [&](const std::vector<std::string>& argv, std::string& error) {
+CommandRunner RenderJob::runner(const std::string& log, bool& cancelled) {
+    return [this, log, &cancelled](const std::vector<std::string>& argv, std::string& error) {
         ChildRun run;
         run.argv = argv;
         run.stdout_path = log + ".out";
@@ -140,6 +138,31 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, std::stri
         error = describe(end, run.deadline_seconds);
         return -1;
     };
+}
+
+bool RenderJob::prepare_host() {
+    if (!host_.empty() || host_failed_) return true;
+    status_.begin("preparing");
+    const std::string log = (fs::path(config_.work_dir) / "host.log").string();
+    bool cancelled = false;
+    BuildOptions options = config_.build;
+    options.runner = runner(log, cancelled);
+    std::string error;
+    if (!preview_host(config_.toolchain, options, host_, error)) {
+        host_.clear();
+        if (cancelled) return false;
+        host_failed_ = true;  // programs of their own from now on: only slower
+    }
+    return true;
+}
+
+bool RenderJob::build(const std::string& stem, const std::string& cpp,
+                      std::vector<std::string>& program) {
+    const std::string log = (fs::path(config_.work_dir) / "build.log").string();
+    BuildOptions options = config_.build;
+    bool cancelled = false;
+    options.runner = runner(log, cancelled);
+    options.shared_library = !host_.empty();
     std::error_code ec;
     fs::remove(log, ec);
     std::string error;
@@ -149,7 +172,12 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, std::stri
         options.precompiled_header.clear();
     }
     error.clear();
-    if (cached_executable(config_.toolchain, options, stem, cpp, executable, error)) return true;
+    std::string built;
+    if (cached_executable(config_.toolchain, options, stem, cpp, built, error)) {
+        program = host_.empty() ? std::vector<std::string>{built}
+                                : std::vector<std::string>{host_, built};
+        return true;
+    }
     if (cancelled) return false;
     std::string output = read_text(log, 1u << 20);
     if (output.empty()) output = "acanthus: error: " + error + "\n";
@@ -160,6 +188,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, std::stri
 void RenderJob::render(long generation) {
     const auto start = Clock::now();
     const PreviewSettings settings = this->settings();
+    if (!prepare_host()) return;
     status_.begin("compiling");
     status_.set_command(command_line(settings));
 
@@ -169,6 +198,7 @@ void RenderJob::render(long generation) {
     request.stdlib_dirs = config_.toolchain.stdlib_dirs;
     const std::string stem = stem_of(config_.input);
     request.generate.output_name = stem + ".cpp";
+    request.generate.emit_main = host_.empty();  // the host has main()
     std::string cpp;
     std::ostringstream diagnostics;
     std::vector<std::string> files;
@@ -186,8 +216,8 @@ void RenderJob::render(long generation) {
 
     status_.begin("building");
     const auto build_start = Clock::now();
-    std::string executable;
-    if (!build(stem, cpp, executable)) return;
+    std::vector<std::string> program;
+    if (!build(stem, cpp, program)) return;
     if (cancel_) return;
     status_.set_timing("build", seconds_since(build_start));
     const auto grow_start = Clock::now();
@@ -200,7 +230,7 @@ void RenderJob::render(long generation) {
     const std::string out = (dir / ("metrics-" + tag + ".json")).string();
     const std::string err = (dir / ("messages-" + tag + ".txt")).string();
     ChildRun run;
-    run.argv = {executable};
+    run.argv = program;
     std::vector<std::string> arguments = settings.arguments();
     run.argv.insert(run.argv.end(), arguments.begin(), arguments.end());
     run.argv.insert(run.argv.end(), {"-o", svg, "--json", tree, "--metrics", "--progress"});
@@ -233,7 +263,7 @@ void RenderJob::render(long generation) {
         }
         {
             std::lock_guard lock(mutex_);
-            good_executable_ = executable;
+            good_program_ = program;
             good_arguments_ = arguments;
         }
         status_.set_timing("grow", seconds_since(grow_start));
@@ -260,11 +290,11 @@ ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double dead
     ChildRun run;
     {
         std::lock_guard lock(mutex_);
-        if (good_executable_.empty()) {
+        if (good_program_.empty()) {
             result.message = "there is no good render yet";
             return result;
         }
-        run.argv = {good_executable_};
+        run.argv = good_program_;
         run.argv.insert(run.argv.end(), good_arguments_.begin(), good_arguments_.end());
     }
     run.argv.insert(run.argv.end(), extra.begin(), extra.end());

@@ -52,7 +52,11 @@ class RenderJob {
   private:
     void loop();
     void render(long generation);
-    bool build(const std::string& stem, const std::string& cpp, std::string& executable);
+    CommandRunner runner(const std::string& log, bool& cancelled);
+    bool prepare_host();  // false when cancelled
+    // The program to run (the host and the rule library, or an executable); false on failure
+    // (the status says why) or when cancelled.
+    bool build(const std::string& stem, const std::string& cpp, std::vector<std::string>& program);
     std::string command_line(const PreviewSettings& s) const;
 
     PreviewConfig config_;
@@ -65,7 +69,9 @@ class RenderJob {
     std::atomic<bool> cancel_{false};
     std::atomic<bool> stop_extras_{false};
     bool prelude_failed_ = false;
-    std::string good_executable_;
+    std::string host_;  // empty: not built yet, or failed
+    bool host_failed_ = false;
+    std::vector<std::string> good_program_;
     std::vector<std::string> good_arguments_;
     FileWatcher watcher_;
     std::thread thread_;

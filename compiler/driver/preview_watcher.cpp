@@ -50,7 +50,7 @@ void FileWatcher::watch(const std::vector<std::string>& paths) {
 
 void FileWatcher::loop() {
     while (!stopping_) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::this_thread::sleep_for(std::chrono::milliseconds(25));
         bool changed = false;
         {
             std::lock_guard lock(mutex_);
