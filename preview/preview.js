@@ -233,6 +233,8 @@ $("zoomfit").addEventListener("click", fit);
 let drag = null;
 $("view").addEventListener("pointerdown", (e) => {
   if (e.button !== 0) return;
+  e.preventDefault();  // no text selection or image drag while drawing
+
   $("view").setPointerCapture(e.pointerId);
   if (page.mode === "pan") drag = { kind: "pan", x: e.clientX, y: e.clientY, vx: page.view.x, vy: page.view.y };
   else if (page.mode === "seed") {
@@ -358,7 +360,7 @@ $("framepos").addEventListener("input", () => {
   const i = $("framepos").value;
   showFrame(`/frames/${i}.png`); $("frameinfo").textContent = `${i}/${page.frames}`;
 });
-function showDebug() { showFrame(`/debug-frame.png?iteration=${$("debugit").value}`); }
+function showDebug() { clearInterval(playTimer); showFrame(`/debug-frame.png?iteration=${$("debugit").value}`); }
 $("debugshow").addEventListener("click", showDebug);
 $("debugprev").addEventListener("click", () => { $("debugit").value = Math.max(1, Number($("debugit").value) - 1); showDebug(); });
 $("debugnext").addEventListener("click", () => { $("debugit").value = Number($("debugit").value) + 1; showDebug(); });

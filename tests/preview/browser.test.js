@@ -72,7 +72,7 @@ async function rulesAndSliders(browser) {
   const rules = path.join(work, "bubbles.acr");
   const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8");
   save(rules, good);
-  const { url } = await startServer(rules, ["--region", "rect:120,80"], work);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80"], work);
   const page = await browser.newPage();
   await page.setViewport({ width: 1280, height: 760 });
   await page.goto(url);
@@ -122,6 +122,23 @@ async function rulesAndSliders(browser) {
   const sliderSvg = await (await fetch(url + "render.svg")).text();
   check(sliderSvg !== fixedSvg, "moving the slider changes the picture");
   check(s.command.includes("--param max_radius="), "the command line shows the parameter");
+
+  // Growth animation: frames of the growth, then a debug frame (Figure 8) stepped to.
+  await page.click("#play");
+  await page.waitForFunction(() => /^\d+\/\d+$/.test(document.getElementById("frameinfo").textContent),
+                             { timeout: 60000, polling: 100 });
+  const frames = Number(await page.$eval("#framepos", (r) => r.max));
+  check(frames > 5, "growth played as " + frames + " frames");
+  await page.waitForFunction(() => { const f = document.getElementById("frame"); return !f.hidden && f.complete && f.naturalWidth > 0; },
+                             { timeout: 30000, polling: 100 });
+  await page.$eval("#debugit", (i) => { i.value = "59"; });
+  await page.click("#debugnext");
+  await page.waitForFunction(() => { const f = document.getElementById("frame");
+                                     return f.src.includes("iteration=60") && f.complete && f.naturalWidth > 0; },
+                             { timeout: 30000, polling: 100 });
+  check(true, "debug frame of iteration 60 shown");
+  await shot(page, "preview-debug-frame.png");
+  await page.click("#showrender");
   await page.close();
 }
 
@@ -134,6 +151,7 @@ async function growthTools(browser) {
   await page.setViewport({ width: 1280, height: 760 });
   await page.goto(url);
   let rev = await waitShown(page, 0);
+  const before = await (await fetch(url + "render.svg")).text();
   check(await page.$eval("#modes button[data-mode=flow]", (b) => !b.hidden), "growth tools shown for a growth rule file");
   await page.click("#modes button[data-mode=flow]");
   const view = await (await page.$("#picture")).boundingBox();
@@ -151,6 +169,7 @@ async function growthTools(browser) {
         "a flow stroke sets growth_mode=flow and growth_guides");
   const guides = await (await fetch(url + "guides.svg")).text();
   check(/<polyline class="flow"/.test(guides), "the stroke is saved as a guides SVG with class flow");
+  check((await (await fetch(url + "render.svg")).text()) !== before, "the flow stroke changes the picture");
   check(s.command.includes("--param growth_guides=") && s.command.includes("--param growth_mode=flow"),
         "the page shows the command that makes it again: " + s.command);
   await shot(page, "preview-growth.png");
