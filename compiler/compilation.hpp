@@ -20,9 +20,9 @@ struct CompileRequest {
 // A checked %param, as the preview shows it.
 struct ParamSummary {
     std::string name;
-    std::string type;           // "double", "std::string", ...
-    std::string default_text;   // as written
-    std::string low, high;      // `in [LO, HI]`, empty when not declared
+    std::string type;          // "double", "std::string", ...
+    std::string default_text;  // as written
+    std::string low, high;     // `in [LO, HI]`, empty when not declared
 };
 
 // True with `cpp` set when the rule file has no errors. `generate_code` false only checks.

@@ -1,10 +1,10 @@
 #include "param_type.hpp"
 
 #include <charconv>
-#include <cstdlib>
-#include <string>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <string>
 
 namespace acanthus {
 

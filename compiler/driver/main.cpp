@@ -143,7 +143,8 @@ int main(int argc, char** argv) {
     preview->add_option("-I", includes, "Directory searched by %import (repeatable, in order)")
         ->allow_extra_args(false);
     preview->add_option("--cxx", build_options.cxx, "C++ compiler");
-    preview->add_option("-O", build_options.optimization, "Optimization level (default 0: the quickest build)");
+    preview->add_option("-O", build_options.optimization,
+                        "Optimization level (default 0: the quickest build)");
     preview->prefix_command();
     preview->footer(
         "Usage: acanthus preview [-I DIR]... [--cxx CXX] [-O LEVEL] FILE.acr [program options...] "

@@ -2,9 +2,8 @@
 
 #include <unistd.h>
 
-#include <filesystem>
-
 #include <acanthus/output_file.hpp>
+#include <filesystem>
 
 #include "driver/process.hpp"
 
@@ -54,8 +53,8 @@ bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options,
     cmd.insert(cmd.end(), {"-x", "c++-header", header.string(), "-o", temp});
     int status = options.runner ? options.runner(cmd, error) : run_process(cmd, error);
     if (status != 0 || std::rename(temp.c_str(), gch.c_str()) != 0) {
-        if (status > 0) error = "precompiling the prelude failed (exit status " +
-                                std::to_string(status) + ")";
+        if (status > 0)
+            error = "precompiling the prelude failed (exit status " + std::to_string(status) + ")";
         remove_if_present(temp);
         return false;
     }

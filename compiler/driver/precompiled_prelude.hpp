@@ -12,7 +12,6 @@ namespace acanthus {
 
 // Sets `options.precompiled_header` to the cached prelude, building it when missing. False with
 // `error` set when it cannot be built (the caller may then build without it).
-bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options,
-                             std::string& error);
+bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options, std::string& error);
 
 }  // namespace acanthus

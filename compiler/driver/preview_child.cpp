@@ -41,8 +41,8 @@ class SpawnSetup {
         posix_spawnattr_setsigmask(&attr_, &empty);
         posix_spawnattr_setsigdefault(&attr_, &defaults);
         posix_spawnattr_setpgroup(&attr_, 0);
-        posix_spawnattr_setflags(&attr_,
-                                 POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+        posix_spawnattr_setflags(
+            &attr_, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
         posix_spawn_file_actions_addopen(&actions_, 0, "/dev/null", O_RDONLY, 0);
         open_output(1, run.stdout_path);
         open_output(2, run.stderr_path);

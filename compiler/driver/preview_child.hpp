@@ -12,8 +12,8 @@ namespace acanthus {
 
 struct ChildRun {
     std::vector<std::string> argv;
-    std::string stdout_path;  // empty: /dev/null
-    std::string stderr_path;  // empty: /dev/null
+    std::string stdout_path;                    // empty: /dev/null
+    std::string stderr_path;                    // empty: /dev/null
     double deadline_seconds = 0;                // 0: none
     const std::atomic<bool>* cancel = nullptr;  // set: kill the child and return
     std::function<void()> on_poll;              // called about ten times a second while it runs

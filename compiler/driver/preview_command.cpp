@@ -59,8 +59,7 @@ bool take_server_options(std::vector<std::string>& args, int& port, std::string&
             continue;
         }
         if (value.empty() || value.size() > 5 ||
-            value.find_first_not_of("0123456789") != std::string::npos ||
-            std::stoi(value) > 65535)
+            value.find_first_not_of("0123456789") != std::string::npos || std::stoi(value) > 65535)
             return error = "bad port '" + value + "' (0 to 65535; 0 picks a free one)", false;
         port = std::stoi(value);
     }
@@ -88,7 +87,8 @@ std::vector<std::string> list_panels(const std::string& dir) {
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
         const std::string name = entry.path().filename().string();
         if (entry.is_regular_file() && entry.path().extension() == ".svg" && name.size() <= 64 &&
-            name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") ==
+            name.find_first_not_of(
+                "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") ==
                 std::string::npos)
             names.push_back(name);
     }
@@ -148,11 +148,18 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
         server.new_task_queue = [] { return new httplib::ThreadPool(16); };
         RenderJob job(config, settings, status);
         std::string stem = fs::path(input).stem().string();
-        PreviewSite site{job,  status, toolchain.preview_dir, toolchain.panels_dir,
-                         list_panels(toolchain.panels_dir), work, stem, stopping};
+        PreviewSite site{job,
+                         status,
+                         toolchain.preview_dir,
+                         toolchain.panels_dir,
+                         list_panels(toolchain.panels_dir),
+                         work,
+                         stem,
+                         stopping};
         add_routes(server, site);
 
-        int bound = port == 0 ? server.bind_to_any_port(host) : (server.bind_to_port(host, port) ? port : -1);
+        int bound = port == 0 ? server.bind_to_any_port(host)
+                              : (server.bind_to_port(host, port) ? port : -1);
         if (bound < 0) {
             std::cerr << "acanthus: error: cannot listen on " << host << ":" << port
                       << " (in use? try --port N, or --port 0 for any free port)\n";

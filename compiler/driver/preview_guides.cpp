@@ -30,14 +30,15 @@ bool guides_svg(const nlohmann::json& body, std::string& svg, std::string& error
             width = stroke["width"].get<double>();
         }
         out << "  <polyline class=\"" << kind << "\" fill=\"none\" stroke=\""
-            << (kind == "flow" ? "#36c" : kind == "boundary" ? "#c33" : "#c63")
+            << (kind == "flow"       ? "#36c"
+                : kind == "boundary" ? "#c33"
+                                     : "#c63")
             << "\" stroke-width=\"" << width << "\" stroke-linecap=\"round\" points=\"";
         for (const auto& p : points) {
             if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
                 return error = "each point is [x, y]", false;
             const double x = p[0].get<double>(), y = p[1].get<double>();
-            if (!std::isfinite(x) || !std::isfinite(y) || std::fabs(x) > 1e9 ||
-                std::fabs(y) > 1e9)
+            if (!std::isfinite(x) || !std::isfinite(y) || std::fabs(x) > 1e9 || std::fabs(y) > 1e9)
                 return error = "a point's coordinates are finite and within 1e9", false;
             out << x << "," << y << " ";
         }
@@ -45,10 +46,11 @@ bool guides_svg(const nlohmann::json& body, std::string& svg, std::string& error
         ++count;
     }
     if (count == 0) return true;
-    svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-          "<!-- Guides drawn in acanthus preview: flow, boundary and spray strokes. -->\n"
-          "<svg xmlns=\"http://www.w3.org/2000/svg\">\n" +
-          out.str() + "</svg>\n";
+    svg =
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<!-- Guides drawn in acanthus preview: flow, boundary and spray strokes. -->\n"
+        "<svg xmlns=\"http://www.w3.org/2000/svg\">\n" +
+        out.str() + "</svg>\n";
     return true;
 }
 

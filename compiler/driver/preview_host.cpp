@@ -74,8 +74,8 @@ bool preview_host(const Toolchain& toolchain, const BuildOptions& options, std::
     cmd.insert(cmd.end(), toolchain.link_flags.begin(), toolchain.link_flags.end());
     int status = options.runner ? options.runner(cmd, error) : run_process(cmd, error);
     if (status != 0) {
-        if (status > 0) error = "building the preview host failed (exit status " +
-                                std::to_string(status) + ")";
+        if (status > 0)
+            error = "building the preview host failed (exit status " + std::to_string(status) + ")";
         remove_if_present(temp);
         return false;
     }

@@ -86,7 +86,7 @@ bool apply_settings(PreviewSite& site, const json& body, PreviewSettings& s, std
     }
     if (body.contains("rng_seed")) {
         const json& v = body["rng_seed"];
-        std::string seed = v.is_string() ? v.get<std::string>()
+        std::string seed = v.is_string()            ? v.get<std::string>()
                            : v.is_number_unsigned() ? std::to_string(v.get<unsigned long long>())
                                                     : "x";
         if (seed.size() > 20 || seed.find_first_not_of("0123456789") != std::string::npos)
@@ -128,9 +128,12 @@ void settings_json(const PreviewSettings& s, const PreviewSite& site, json& out)
     std::string panel;
     if (!s.region.empty()) {
         fs::path r(s.region);
-        if (r.parent_path() == fs::path(site.panels_dir)) panel = r.filename().string();
-        else if (r.parent_path() == fs::path(site.work_dir)) panel = "uploaded";
-        else panel = s.region;
+        if (r.parent_path() == fs::path(site.panels_dir))
+            panel = r.filename().string();
+        else if (r.parent_path() == fs::path(site.work_dir))
+            panel = "uploaded";
+        else
+            panel = s.region;
     }
     out["panel"] = panel;
     out["seeds"] = s.seeds;
@@ -200,8 +203,8 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
 
     server.Get("/debug-frame.png", [&site](const httplib::Request& req, httplib::Response& res) {
         const std::string it = req.get_param_value("iteration");
-        if (it.empty() || it.size() > 9 || it.find_first_not_of("0123456789") != std::string::npos ||
-            std::stol(it) < 1) {
+        if (it.empty() || it.size() > 9 ||
+            it.find_first_not_of("0123456789") != std::string::npos || std::stol(it) < 1) {
             bad_request(res, "iteration must be a positive integer");
             return;
         }
@@ -229,10 +232,9 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         const fs::path last = fs::path(site.work_dir) / "frames-final.svg";
         std::error_code ec;
         fs::remove_all(dir, ec);
-        ExtraRun run = site.job.run_again(
-            {"--frames", dir.string(), "--every", std::to_string(every), "-o", last.string(),
-             "--quiet"},
-            300);
+        ExtraRun run = site.job.run_again({"--frames", dir.string(), "--every",
+                                           std::to_string(every), "-o", last.string(), "--quiet"},
+                                          300);
         fs::remove(last, ec);
         if (!run.ok) {
             res.status = 409;
@@ -243,19 +245,19 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         for (const auto& entry : fs::directory_iterator(dir, ec)) count += entry.is_regular_file();
         res.set_content(json{{"count", count}}.dump(), "application/json");
     });
-    server.Get(R"(/frames/(\d{1,6})\.png)", [&site](const httplib::Request& req,
-                                                   httplib::Response& res) {
-        char name[32];
-        std::snprintf(name, sizeof name, "frame-%06ld.png", std::stol(req.matches[1].str()));
-        std::lock_guard lock(frames_mutex);
-        send_file(res, fs::path(site.work_dir) / "frames" / name, "image/png");
-    });
+    server.Get(
+        R"(/frames/(\d{1,6})\.png)", [&site](const httplib::Request& req, httplib::Response& res) {
+            char name[32];
+            std::snprintf(name, sizeof name, "frame-%06ld.png", std::stol(req.matches[1].str()));
+            std::lock_guard lock(frames_mutex);
+            send_file(res, fs::path(site.work_dir) / "frames" / name, "image/png");
+        });
 
     server.Get("/panels.json", [&site](const httplib::Request&, httplib::Response& res) {
         res.set_content(json(site.panels).dump(), "application/json");
     });
     server.Get(R"(/panels/([A-Za-z0-9_.-]{1,64}))", [&site](const httplib::Request& req,
-                                                          httplib::Response& res) {
+                                                            httplib::Response& res) {
         const std::string name = req.matches[1];
         if (std::find(site.panels.begin(), site.panels.end(), name) == site.panels.end()) {
             res.status = 404;

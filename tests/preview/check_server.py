@@ -94,6 +94,33 @@ def main():
             server.post("/settings", {"params": {"max_radius": "3.0"}})
             s = server.wait_revision(s["revision"])
 
+            # Downloads: the same render made again as PDF and PNG.
+            code, body, ctype = server.get("/render.pdf", timeout=60)
+            check(code == 200 and body.startswith(b"%PDF"), "/render.pdf is a PDF")
+            code, body, ctype = server.get("/render.png", timeout=60)
+            check(code == 200 and body.startswith(b"\x89PNG"), "/render.png is a PNG")
+
+            # rng seed, panel and seeds from the page; two quick changes: the later one wins
+            # (the render in progress is cancelled).
+            server.post("/settings", {"rng_seed": "7", "panel": "heart.svg"})
+            server.post("/settings", {"seeds": [[100, 80]]})
+            s = server.wait_revision(s["revision"])
+            while "--seed" not in s["command"]:
+                s = server.wait_revision(s["revision"])
+            check(s["state"] == "ok" and "--rng-seed 7" in s["command"] and "heart.svg" in
+                  s["command"] and "--seed 100,80" in s["command"], "rng seed, panel, seed: %s" %
+                  s["command"])
+            check(s["settings"]["panel"] == "heart.svg" and s["settings"]["seeds"] == ["100,80"],
+                  "settings in status.json")
+            code, _ = server.post("/panel", open(os.path.join(HERE, "..", "..", "examples",
+                                                              "panels", "star.svg"), "rb").read(),
+                                  "image/svg+xml")
+            s = server.wait_revision(s["revision"])
+            check(code == 200 and s["state"] == "ok" and s["settings"]["panel"] == "uploaded",
+                  "an uploaded panel is used")
+            server.post("/settings", {"panel": "", "rng_seed": "1", "seeds": []})
+            s = server.wait_revision(s["revision"])
+
             # An endless loop: an error with the limit named; the server answers meanwhile.
             save(rules, good.replace("    $$.sterile = 1;",
                                      "    $$.sterile = 1;\n    for (volatile int i = 0;; ) { (void)i; }"))
@@ -129,6 +156,21 @@ def main():
             check(code == 400, "malformed settings refused (%d)" % code)
             rc = server.stop()
             check(rc == 0, "Ctrl-C stops the server with status 0 (%s)" % rc)
+        # Saving an imported file re-renders too.
+        lib = os.path.join(work, "lib")
+        os.mkdir(lib)
+        save(os.path.join(lib, "extra.acr"), "%param double extra_one = 1.0;\n")
+        save(rules, '%import "extra"\n' + good)
+        with PreviewServer(acanthus, rules, ["--region", "rect:60,40"], cwd=work,
+                           before=["-I", lib]) as server:
+            s = server.wait_revision(0)
+            check(s["state"] == "ok" and "extra_one" in [p["name"] for p in s["params"]],
+                  "imported parameter listed")
+            save(os.path.join(lib, "extra.acr"),
+                 "%param double extra_one = 1.0;\n%param int extra_two = 2 in [0, 5];\n")
+            s = server.wait_revision(s["revision"])
+            check(s["state"] == "ok" and "extra_two" in [p["name"] for p in s["params"]],
+                  "saving an imported file re-renders")
     finally:
         shutil.rmtree(work, ignore_errors=True)
     if failures:

@@ -9,8 +9,8 @@ import urllib.request
 
 
 class PreviewServer:
-    def __init__(self, acanthus, rule_file, args=(), cwd=None):
-        self.command = [acanthus, "preview", rule_file, "--port", "0", *args]
+    def __init__(self, acanthus, rule_file, args=(), cwd=None, before=()):
+        self.command = [acanthus, "preview", *before, rule_file, "--port", "0", *args]
         self.cwd = cwd
         self.process = None
         self.url = None
