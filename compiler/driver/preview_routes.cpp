@@ -343,6 +343,18 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
             });
     });
 
+    // Another web site open in the same browser must not drive the preview: a POST carrying
+    // an Origin is accepted only from the page itself, whatever address the server listens on.
+    server.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+        if (req.method != "POST" || !req.has_header("Origin"))
+            return httplib::Server::HandlerResponse::Unhandled;
+        if (req.get_header_value("Origin") == "http://" + req.get_header_value("Host"))
+            return httplib::Server::HandlerResponse::Unhandled;
+        res.status = 403;
+        res.set_content("cross-origin request refused\n", "text/plain");
+        return httplib::Server::HandlerResponse::Handled;
+    });
+
     server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
         if (res.body.empty()) {
             res.set_content(res.status == 404   ? "not found\n"
