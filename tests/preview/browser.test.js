@@ -123,6 +123,22 @@ async function rulesAndSliders(browser) {
   check(sliderSvg !== fixedSvg, "moving the slider changes the picture");
   check(s.command.includes("--param max_radius="), "the command line shows the parameter");
 
+  // A seed placed by clicking, then the rng seed shuffled.
+  await page.click("#modes button[data-mode=seed]");
+  const pic = await (await page.$("#picture")).boundingBox();
+  await page.mouse.click(pic.x + pic.width * 0.3, pic.y + pic.height * 0.4);
+  rev = await waitShown(page, rev);
+  let after = await status(url);
+  const seed = (after.settings.seeds[0] || "").split(",").map(Number);
+  check(after.settings.seeds.length === 1 && seed[0] > 20 && seed[0] < 50 && seed[1] > 20 && seed[1] < 45,
+        "a click placed a seed at " + seed + " (region 120 x 80)");
+  await page.click("#modes button[data-mode=pan]");
+  await page.click("#shuffle");
+  rev = await waitShown(page, rev);
+  after = await status(url);
+  check(after.settings.rng_seed !== "" && after.command.includes("--rng-seed " + after.settings.rng_seed),
+        "shuffle set the rng seed to " + after.settings.rng_seed);
+
   // Growth animation: frames of the growth, then a debug frame (Figure 8) stepped to.
   await page.click("#play");
   await page.waitForFunction(() => /^\d+\/\d+$/.test(document.getElementById("frameinfo").textContent),
