@@ -56,6 +56,10 @@ function sendSettings(change) {  // coalesces quick changes (a slider being drag
 // --- status ---------------------------------------------------------------------------------
 function update(status) {
   page.status = status;
+  if (status.file && $("file").textContent !== status.file) {
+    $("file").textContent = status.file;
+    document.title = `${status.file.split("/").pop()} — acanthus preview`;
+  }
   const state = $("state");
   state.textContent = status.state === "running" ? status.phase : status.state;
   state.className = "badge " + status.state;

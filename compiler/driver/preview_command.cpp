@@ -154,6 +154,7 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
                          toolchain.panels_dir,
                          list_panels(toolchain.panels_dir),
                          work,
+                         input,
                          stem,
                          stopping};
         add_routes(server, site);

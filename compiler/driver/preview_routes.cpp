@@ -175,6 +175,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
     server.Get("/status.json", [&site](const httplib::Request&, httplib::Response& res) {
         json status = site.status.to_json();
         settings_json(site.job.settings(), site, status["settings"]);
+        status["file"] = site.file;
         res.set_header("Cache-Control", "no-store");
         res.set_content(status.dump(), "application/json");
     });
@@ -338,6 +339,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
                 json status = site.status.to_json();
                 *seen = status["version"].get<long>();
                 settings_json(site.job.settings(), site, status["settings"]);
+                status["file"] = site.file;
                 const std::string event = "data: " + status.dump() + "\n\n";
                 return sink.write(event.data(), event.size());
             });

@@ -23,6 +23,7 @@ struct PreviewSite {
     std::string panels_dir;           // examples/panels/
     std::vector<std::string> panels;  // the *.svg names in panels_dir, read once at start
     std::string work_dir;             // the server's temporary directory
+    std::string file;                 // the rule file, as given
     std::string stem;                 // the rule file's stem: names downloads
     const std::atomic<bool>& stopping;
 };
