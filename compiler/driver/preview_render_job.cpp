@@ -118,7 +118,7 @@ std::string RenderJob::command_line(const PreviewSettings& s) const {
     std::vector<std::string> cmd{"acanthus", "run"};
     for (const std::string& dir : config_.includes) cmd.insert(cmd.end(), {"-I", dir});
     cmd.push_back(config_.input);
-    std::vector<std::string> args = s.arguments();
+    std::vector<std::string> args = s.arguments(true);
     cmd.insert(cmd.end(), args.begin(), args.end());
     cmd.insert(cmd.end(), {"-o", stem_of(config_.input) + ".svg"});
     return quote_command(cmd);

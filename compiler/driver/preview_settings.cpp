@@ -15,13 +15,13 @@ std::string number_text(double v) {
 
 }  // namespace
 
-std::vector<std::string> PreviewSettings::arguments() const {
+std::vector<std::string> PreviewSettings::arguments(bool shown) const {
     std::vector<std::string> a = other;
     if (!region.empty()) a.insert(a.end(), {"--region", region});
     for (const std::string& s : seeds) a.insert(a.end(), {"--seed", s});
     if (!rng_seed.empty()) a.insert(a.end(), {"--rng-seed", rng_seed});
     for (const auto& [name, value] : params) a.insert(a.end(), {"--param", name + "=" + value});
-    a.insert(a.end(), {"--time-limit", number_text(time_limit)});
+    if (!shown || time_limit_given) a.insert(a.end(), {"--time-limit", number_text(time_limit)});
     return a;
 }
 
@@ -64,6 +64,7 @@ bool PreviewSettings::take(const std::vector<std::string>& args, std::string& er
             if (!next(v)) return false;
             char* end = nullptr;
             time_limit = std::strtod(v.c_str(), &end);
+            time_limit_given = true;
             if (v.empty() || *end != '\0' || !(time_limit > 0) || time_limit > 86400) {
                 error = "bad --time-limit '" + v + "' (seconds, more than 0)";
                 return false;
