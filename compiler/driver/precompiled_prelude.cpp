@@ -21,6 +21,16 @@ constexpr const char* kPrelude =
     "#include <string>\n"
     "#include <string_view>\n";
 
+// For rule code loaded by the preview host: the vectors every generated file uses are
+// instantiated once, in the host (preview_host.cpp), not again at every save.
+constexpr const char* kHostInstantiations =
+    "#include <vector>\n"
+    "extern template class std::vector<const acanthus::ElementType*>;\n"
+    "extern template class std::vector<acanthus::RuleInfo>;\n"
+    "extern template class std::vector<acanthus::ParamInfo>;\n"
+    "extern template class std::vector<acanthus::ProxyKind>;\n"
+    "extern template class std::vector<acanthus::Point>;\n";
+
 }  // namespace
 
 bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options,
@@ -28,9 +38,11 @@ bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options,
     BuildOptions plain = options;
     plain.precompiled_header.clear();
     std::vector<std::string> flags = compiler_flags(toolchain, plain);
+    std::string prelude = kPrelude;
+    if (options.shared_library) prelude += kHostInstantiations;
     std::vector<std::string> parts = flags;
     parts.insert(parts.end(), options.extra_flags.begin(), options.extra_flags.end());
-    parts.push_back(kPrelude);
+    parts.push_back(prelude);
     // The headers change with the library they come with.
     parts.push_back(file_identity(toolchain.runtime_library));
     parts.push_back(file_identity(toolchain.stdlib_library));
@@ -43,7 +55,7 @@ bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options,
         return true;
     }
     fs::create_directories(dir, ec);
-    if (ec || !write_file_atomically(header.string(), kPrelude, error)) {
+    if (ec || !write_file_atomically(header.string(), prelude, error)) {
         if (error.empty()) error = "cannot create '" + dir.string() + "'";
         return false;
     }

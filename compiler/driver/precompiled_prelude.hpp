@@ -10,7 +10,8 @@
 
 namespace acanthus {
 
-// Sets `options.precompiled_header` to the cached prelude, building it when missing. False with
+// Sets `options.precompiled_header` to the cached prelude, building it when missing. With
+// `options.shared_library` the prelude also declares the vectors the preview host instantiates. False with
 // `error` set when it cannot be built (the caller may then build without it).
 bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options, std::string& error);
 

@@ -18,7 +18,16 @@ constexpr const char* kHostSource = R"(// acanthus preview host: loads a rule fi
 #include <dlfcn.h>
 
 #include <acanthus/program.hpp>
+#include <acanthus/rules.hpp>
 #include <cstdio>
+#include <vector>
+
+// What the rule libraries' prelude declares extern (precompiled_prelude.cpp).
+template class std::vector<const acanthus::ElementType*>;
+template class std::vector<acanthus::RuleInfo>;
+template class std::vector<acanthus::ParamInfo>;
+template class std::vector<acanthus::ProxyKind>;
+template class std::vector<acanthus::Point>;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
