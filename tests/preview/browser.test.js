@@ -139,6 +139,21 @@ async function rulesAndSliders(browser) {
   check(after.settings.rng_seed !== "" && after.command.includes("--rng-seed " + after.settings.rng_seed),
         "shuffle set the rng seed to " + after.settings.rng_seed);
 
+  // The panel picker, then an SVG file dropped onto the picture.
+  await page.select("#panel", "heart.svg");
+  rev = await waitShown(page, rev);
+  after = await status(url);
+  check(after.settings.panel === "heart.svg" && after.command.includes("heart.svg"), "panel chosen from the list");
+  const star = fs.readFileSync(path.join(root, "examples/panels/star.svg"), "utf8");
+  await page.evaluate((text) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([text], "star.svg", { type: "image/svg+xml" }));
+    document.getElementById("view").dispatchEvent(new DragEvent("drop", { dataTransfer: dt, bubbles: true }));
+  }, star);
+  rev = await waitShown(page, rev);
+  after = await status(url);
+  check(after.settings.panel === "uploaded", "a dropped SVG becomes the panel");
+
   // Growth animation: frames of the growth, then a debug frame (Figure 8) stepped to.
   await page.click("#play");
   await page.waitForFunction(() => /^\d+\/\d+$/.test(document.getElementById("frameinfo").textContent),

@@ -140,6 +140,22 @@ def main():
             check(answered and all(c == 200 for c in answered), "status answered during the loop")
             check(server.get("/render.svg")[0] == 200, "render still served after the loop")
 
+            # A newer save cancels a render in progress: the looping program is killed, and
+            # only the newer render counts as a revision.
+            looping = s["revision"]
+            save(rules, good.replace("    $$.sterile = 1;",
+                                     "    $$.sterile = 1;\n    for (volatile int j = 0;; ) { (void)j; }"))
+            end = time.monotonic() + 60
+            while time.monotonic() < end:
+                now = server.status()
+                if now["state"] == "running" and now["phase"] == "growing":
+                    break
+                time.sleep(0.05)
+            save(rules, good)
+            s = server.wait_revision(looping)
+            check(s["state"] == "ok" and s["revision"] == looping + 1,
+                  "the stale render was cancelled (revision %d after %d)" % (s["revision"], looping))
+
             # Only the page, its assets and the renders.
             for path in ["/../etc/passwd", "/..%2f..%2fetc%2fpasswd", "/panels/../README.md",
                          "/panels/..%2F..%2Frules%2Fdots.acr", "/bubbles.acr", "/nothing",
