@@ -204,6 +204,19 @@ async function growthTools(browser) {
   check(s.command.includes("--param growth_guides=") && s.command.includes("--param growth_mode=flow"),
         "the page shows the command that makes it again: " + s.command);
   await shot(page, "preview-growth.png");
+
+  // Spray and boundary strokes join the same guides file.
+  for (const [tool, dy] of [["spray", -0.25], ["boundary", 0.3]]) {
+    await page.click(`#modes button[data-mode=${tool}]`);
+    await page.mouse.move(view.x + view.width * 0.2, y + view.height * dy);
+    await page.mouse.down();
+    for (let i = 1; i <= 10; i += 1) await page.mouse.move(view.x + view.width * (0.2 + 0.06 * i), y + view.height * dy);
+    await page.mouse.up();
+    rev = await waitShown(page, rev, "ok", 120000);
+  }
+  const all = await (await fetch(url + "guides.svg")).text();
+  check(/class="flow"/.test(all) && /class="spray"[^>]*stroke-width="(?!1")[0-9.]+"/.test(all) && /class="boundary"/.test(all),
+        "flow, spray (with its brush width) and boundary strokes in the guides");
   await page.close();
 }
 
