@@ -146,26 +146,26 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
         httplib::Server server;
         server.set_payload_max_length(kMaxRequestBody);
         server.new_task_queue = [] { return new httplib::ThreadPool(16); };
-        RenderJob job(config, settings, status);
-        std::string stem = fs::path(input).stem().string();
-        PreviewSite site{job,
-                         status,
-                         toolchain.preview_dir,
-                         toolchain.panels_dir,
-                         list_panels(toolchain.panels_dir),
-                         work,
-                         input,
-                         stem,
-                         stopping};
-        add_routes(server, site);
-
-        int bound = port == 0 ? server.bind_to_any_port(host)
-                              : (server.bind_to_port(host, port) ? port : -1);
+        // Bound before anything is compiled: a port in use costs nothing.
+        const int bound = port == 0 ? server.bind_to_any_port(host)
+                                    : (server.bind_to_port(host, port) ? port : -1);
         if (bound < 0) {
             std::cerr << "acanthus: error: cannot listen on " << host << ":" << port
                       << " (in use? try --port N, or --port 0 for any free port)\n";
             code = kBadInput;
         } else {
+            RenderJob job(config, settings, status);
+            const std::string stem = fs::path(input).stem().string();
+            PreviewSite site{job,
+                             status,
+                             toolchain.preview_dir,
+                             toolchain.panels_dir,
+                             list_panels(toolchain.panels_dir),
+                             work,
+                             input,
+                             stem,
+                             stopping};
+            add_routes(server, site);
             std::thread signals([&] {
                 timespec tick{0, 200'000'000};
                 while (!stopping) {
@@ -182,10 +182,9 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
             stopping = true;
             status.wake_all();
             signals.join();
+            job.stop();
             std::cout << "acanthus preview: stopped" << std::endl;
         }
-        stopping = true;
-        job.stop();
     }
     fs::remove_all(work, ec);
     return code;
