@@ -16,6 +16,7 @@ const page = {
   strokes: [],                         // {kind, width, points: [[x, y]...]} in region coordinates
   frames: 0,
   pictureUrl: null,
+  lastElements: 0,
 };
 
 // --- where the region lands on the page (runtime/src/output/page_layout.cpp) ---------------
@@ -66,8 +67,12 @@ function update(status) {
   $("phase").textContent = status.state === "running" ? "" : `${status.phase}`;
   const p = status.progress || {};
   const limit = (status.settings && status.settings.time_limit) || 20;
+  if (status.state === "ok") page.lastElements = status.elements;
   if (status.state === "running" && status.phase === "growing") {
-    $("progress").value = Math.min(1, (p.seconds || 0) / limit);
+    // Against the last picture's elements when there is one (the same file usually grows about
+    // as far), else against the time limit.
+    $("progress").value = page.lastElements ? Math.min(0.99, (p.elements || 0) / page.lastElements)
+                                            : Math.min(1, (p.seconds || 0) / limit);
     $("elements").textContent = `${p.elements || 0} elements`;
     $("seconds").textContent = `${(p.seconds || 0).toFixed(1)} s`;
   } else {

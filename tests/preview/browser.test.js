@@ -85,6 +85,16 @@ async function rulesAndSliders(browser) {
   const rulesShown = await page.$$eval("#rules tbody tr", (rows) => rows.map((r) => r.cells[0].textContent));
   check(rulesShown.includes("dot --> dot"), "per-rule metrics in the page");
   const firstSvg = await (await fetch(url + "render.svg")).text();
+  const scaleOf = () => page.$eval("#canvas", (c) => new DOMMatrix(getComputedStyle(c).transform).a);
+  const fitted = await scaleOf();
+  const vb = await (await page.$("#view")).boundingBox();
+  await page.mouse.move(vb.x + vb.width / 2, vb.y + vb.height / 2);
+  await page.mouse.wheel({ deltaY: -400 });
+  await page.waitForFunction((f) => new DOMMatrix(getComputedStyle(document.getElementById("canvas")).transform).a > f * 1.5,
+                             { timeout: 5000, polling: 50 }, fitted);
+  check(true, "the wheel zooms in");
+  await page.click("#zoomfit");
+  check(Math.abs((await scaleOf()) - fitted) < 1e-6, "Fit goes back");
 
   // Edit on disk: the new picture appears by itself.
   save(rules, good.replace("%param double max_radius = 3.0 in [0.5, 10];",
