@@ -233,7 +233,11 @@ void RenderJob::render(long generation) {
     run.argv = program;
     std::vector<std::string> arguments = settings.arguments();
     run.argv.insert(run.argv.end(), arguments.begin(), arguments.end());
-    run.argv.insert(run.argv.end(), {"-o", svg, "--json", tree, "--metrics", "--progress"});
+    run.argv.insert(run.argv.end(), {"-o", svg, "--metrics", "--progress"});
+    // The page needs the region's bounds (to place seeds and strokes); the element tree that
+    // carries them is large, so it is written only when the region changed.
+    const bool need_bounds = region_bounds_.is_null() || bounds_region_ != settings.region;
+    if (need_bounds) run.argv.insert(run.argv.end(), {"--json", tree});
     run.stdout_path = out;
     run.stderr_path = err;
     run.cancel = &cancel_;
@@ -257,8 +261,11 @@ void RenderJob::render(long generation) {
         PreviewStatus::json metrics = PreviewStatus::json::object();
         try {
             metrics = PreviewStatus::json::parse(read_text(out));
-            PreviewStatus::json t = PreviewStatus::json::parse(read_text(tree));
-            metrics["region"] = t.at("region");
+            if (need_bounds) {
+                region_bounds_ = PreviewStatus::json::parse(read_text(tree)).at("region");
+                bounds_region_ = settings.region;
+            }
+            metrics["region"] = region_bounds_;
         } catch (const std::exception&) {
         }
         {

@@ -55,6 +55,19 @@ bool parse_json(const httplib::Request& req, httplib::Response& res, json& out) 
     }
 }
 
+std::mutex upload_mutex;
+std::string upload_path;  // the latest panel dropped onto the page
+
+std::string latest_upload() {
+    std::lock_guard lock(upload_mutex);
+    return upload_path;
+}
+
+void set_latest_upload(const std::string& path) {
+    std::lock_guard lock(upload_mutex);
+    upload_path = path;
+}
+
 bool finite_number(const json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
 
 std::string coordinate(double v) {
@@ -99,9 +112,9 @@ bool apply_settings(PreviewSite& site, const json& body, PreviewSettings& s, std
         if (panel.empty()) {
             s.region.clear();
         } else if (panel == "uploaded") {
-            const fs::path up = fs::path(site.work_dir) / "uploaded.svg";
-            if (!fs::exists(up)) return error = "no panel was uploaded", false;
-            s.region = up.string();
+            const std::string up = latest_upload();
+            if (up.empty()) return error = "no panel was uploaded", false;
+            s.region = up;
         } else if (std::find(site.panels.begin(), site.panels.end(), panel) != site.panels.end()) {
             s.region = (fs::path(site.panels_dir) / panel).string();
         } else {
@@ -288,8 +301,12 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         }
         if (req.body.find("<svg") == std::string::npos)
             return bad_request(res, "the panel must be an SVG file");
-        const fs::path file = fs::path(site.work_dir) / "uploaded.svg";
+        // A new name for each upload: a render knows its panel by its path.
+        static std::atomic<long> uploads{0};
+        const fs::path file =
+            fs::path(site.work_dir) / ("uploaded-" + std::to_string(++uploads) + ".svg");
         std::ofstream(file, std::ios::binary) << req.body;
+        set_latest_upload(file.string());
         PreviewSettings s = site.job.settings();
         s.region = file.string();
         s.seeds.clear();
