@@ -5,6 +5,7 @@
 #include <acanthus/grid_frame.hpp>
 #include <cstdint>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "growth/distance_field.hpp"
@@ -59,7 +60,6 @@ class EmptyCircleFinder {
         return static_cast<int>(0xffffffffu - static_cast<std::uint32_t>(k));
     }
     static std::int64_t d2_of(Key k) { return static_cast<std::int64_t>(k >> 32); }
-    enum State : std::uint8_t { none = 0, candidate = 1, blocked = 2 };
     static constexpr int kTileShift = 3;  // 8 x 8 pixel tiles
 
     bool radius_ok(std::int64_t d2) const;
@@ -85,6 +85,7 @@ class EmptyCircleFinder {
     void refresh_bits(int tile, std::uint64_t bits);
     // The `bits` of an inner tile's pixels that could be candidates or are not in state none.
     std::uint64_t maybe_crests(int tile, std::uint64_t bits) const;
+    bool is_discarded(int pixel, std::int64_t d2) const;
     int tile_of(int pixel) const;
     int bit_of(int pixel) const;
     void mark_dirty(int tile);
@@ -110,14 +111,17 @@ class EmptyCircleFinder {
     int tiles_w_ = 0, tiles_h_ = 0;
     int offsets_[4] = {};  // pixel index steps along the four lines of the crest test
 
-    std::vector<std::uint8_t> state_;      // State per pixel, valid for state_d2_
-    std::vector<std::int32_t> state_d2_;   // d2 at which state_ was decided
-    std::vector<std::int32_t> discarded_;  // d2 at which the pixel was discarded, 0 none
+    // Pixel -> d2 at which it was discarded; few pixels ever are, so a map, not a grid.
+    std::unordered_map<int, std::int32_t> discarded_;
     std::vector<std::vector<std::pair<int, std::int32_t>>> blocked_;  // by exclude id: (pixel, d2)
     MaxTree tiles_;
     // Per 8 x 8 tile, one bit per pixel (bit 8 * row + column within the tile).
-    std::vector<std::uint64_t> candidates_;  // pixels in state candidate
-    std::vector<std::uint64_t> changed_;     // pixels changed since the last update()
+    // A pixel's state is in these masks: candidate, blocked (by an exclude point) or none. A
+    // pixel not in state none was decided at its current distance.
+    std::vector<std::uint64_t> candidates_;      // pixels in state candidate
+    std::vector<std::uint64_t> blocked_bits_;    // pixels in state blocked
+    std::vector<std::uint64_t> discarded_bits_;  // pixels with an entry in discarded_
+    std::vector<std::uint64_t> changed_;         // pixels changed since the last update()
     std::vector<int> changed_tiles_;
     std::vector<std::uint8_t> dirty_;
     std::vector<int> dirty_list_;

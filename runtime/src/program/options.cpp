@@ -207,7 +207,7 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
                    "Growth buffer pixels on the region's longer side")
         ->type_name("PX")
         ->capture_default_str()
-        ->check(at_least("--resolution", 16, 8192))
+        ->check(at_least("--resolution", 16, 16384))
         ->group(growth_group);
     app.add_option("--epsilon", o.growth.epsilon,
                    "Parent search distance around the empty circle (default: 2 pixels)")
