@@ -96,6 +96,21 @@ TEST(Growth, EnginesAgreeWithSeveralSeedsAndAMinimumRadius) {
     }
 }
 
+// The engines agree on a 2048 px buffer too (a long strip keeps the reference engine's whole
+// field per iteration cheap): about one unit per pixel, as on a poster.
+TEST(Growth, EnginesAgreeAt2048Pixels) {
+    const Region region = Region::from_spec("rect:2000,40");
+    GrowthOptions o;
+    o.resolution = 2048;
+    o.max_elements = 300;
+    const auto incremental = grow(dots::pattern(), region, o);
+    o.reference_engine = true;
+    const auto reference = grow(dots::pattern(), region, o);
+    ASSERT_EQ(incremental.size(), 300u);
+    ASSERT_EQ(incremental, reference);
+    expect_dots_fit(incremental, region);
+}
+
 TEST(Growth, SameInputsGiveTheSameTree) {
     const Region region = Region::from_spec("ellipse:50,30");
     EXPECT_EQ(grow(dots::pattern(), region, small_options()),

@@ -14,7 +14,6 @@ using namespace tile_masks;
 EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame& grid,
                                      double min_radius)
     : field_(field), grid_(grid), min_radius_(min_radius), inv_width_(1.0 / grid.width) {
-    const std::size_t n = static_cast<std::size_t>(grid.width) * grid.height;
     tiles_w_ = ((grid.width - 1) >> kTileShift) + 1;
     tiles_h_ = ((grid.height - 1) >> kTileShift) + 1;
     tiles_.reset(static_cast<std::size_t>(tiles_w_) * tiles_h_);
