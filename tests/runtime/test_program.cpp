@@ -192,6 +192,7 @@ TEST_F(Program, MalformedValuesAreUsageErrors) {
                                           {"--style", "dotted"},
                                           {"--resolution", "0"},
                                           {"--resolution", "16385"},
+                                          {"--distance", "taxicab"},
                                           {"--width", "-3"},
                                           {"--background", "notacolour"},
                                           {"--param", "dot_radius"},

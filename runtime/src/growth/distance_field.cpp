@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "growth/manhattan_transform.hpp"
+
 namespace acanthus::detail {
 namespace {
 
@@ -104,8 +106,8 @@ void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t*
 
 }  // namespace
 
-DistanceField::DistanceField(int width, int height, bool with_sites)
-    : width_(width), height_(height) {
+DistanceField::DistanceField(int width, int height, bool with_sites, DistanceMetric metric)
+    : width_(width), height_(height), metric_(metric) {
     // Squared distances must fit in 32 bits.
     if (width <= 0 || height <= 0 || width > 30000 || height > 30000)  // also packs in 16 bits
         throw std::invalid_argument("DistanceField: grid size out of range");
@@ -114,7 +116,7 @@ DistanceField::DistanceField(int width, int height, bool with_sites)
     dist2_.assign(n, kInfinite);
     boundary2_.assign(n, kInfinite);
     if (with_sites) site_.assign(n, -1);
-    visit_.assign(n, 0);
+    if (metric == DistanceMetric::euclidean) visit_.assign(n, 0);  // the brushfire needs none
 }
 
 double DistanceField::distance(int i, int j) const {
@@ -134,9 +136,16 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
     occ_ = occupancy;
     const int w = width_;
     const std::uint8_t* occ = occ_.data();
+    std::int32_t* site = site_.empty() ? nullptr : site_.data();
+    if (metric_ == DistanceMetric::manhattan) {
+        const auto boundary = static_cast<std::uint8_t>(ObstacleKind::boundary);
+        manhattan_transform(w, height_, occ, false, boundary, dist2_.data(), site);
+        manhattan_transform(w, height_, occ, true, boundary, boundary2_.data(), nullptr);
+        return;
+    }
     separable_edt(
         w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
-        dist2_.data(), site_.empty() ? nullptr : site_.data(), scratch_);
+        dist2_.data(), site, scratch_);
     separable_edt(
         w, height_,
         [&](int i, int j) {
@@ -157,6 +166,14 @@ void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
         fresh.push_back(p);
     }
     if (fresh.empty()) return;
+    if (metric_ == DistanceMetric::manhattan) {
+        manhattan_brushfire(width_, height_, fresh, dist2_.data(),
+                            site_.empty() ? nullptr : site_.data(), changed, queue_);
+        if (kind == ObstacleKind::boundary)
+            manhattan_brushfire(width_, height_, fresh, boundary2_.data(), nullptr, changed,
+                                queue_);
+        return;
+    }
     propagate(fresh, dist2_, site_.empty() ? nullptr : &site_, changed);
     if (kind == ObstacleKind::boundary) propagate(fresh, boundary2_, nullptr, changed);
 }

@@ -2,6 +2,7 @@
 // and kind; computed in full or updated incrementally (docs/engine.md, "The distance field").
 #pragma once
 
+#include <acanthus/distance_metric.hpp>
 #include <cstdint>
 #include <limits>
 #include <utility>
@@ -19,8 +20,11 @@ class DistanceField {
     static constexpr std::int32_t infinite = std::numeric_limits<std::int32_t>::max();
 
     // `with_sites`: keep the feature transform (nearest_site()); without it the field costs
-    // 4 bytes per pixel less (the growth engine never asks for it).
-    DistanceField(int width, int height, bool with_sites = true);
+    // 4 bytes per pixel less (the growth engine never asks for it). With the Manhattan metric
+    // the field holds the square of the city-block distance (so the same comparisons hold).
+    DistanceField(int width, int height, bool with_sites = true,
+                  DistanceMetric metric = DistanceMetric::euclidean);
+    DistanceMetric metric() const { return metric_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -67,6 +71,7 @@ class DistanceField {
 
     int width_;
     int height_;
+    DistanceMetric metric_;
     std::vector<std::uint8_t> occ_;
     std::vector<std::int32_t> dist2_;      // to the nearest site of any kind
     std::vector<std::int32_t> boundary2_;  // to the nearest boundary site
@@ -91,6 +96,7 @@ class DistanceField {
         std::int32_t site;
     };
     std::vector<Improvement> improved_;
+    std::vector<std::pair<int, std::int32_t>> queue_;  // brushfire: (pixel, city-block distance)
 };
 
 }  // namespace acanthus::detail

@@ -13,7 +13,11 @@ using namespace tile_masks;
 
 EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame& grid,
                                      double min_radius)
-    : field_(field), grid_(grid), min_radius_(min_radius), inv_width_(1.0 / grid.width) {
+    : field_(field),
+      grid_(grid),
+      min_radius_(min_radius),
+      inv_width_(1.0 / grid.width),
+      manhattan_(field.metric() == DistanceMetric::manhattan) {
     tiles_w_ = ((grid.width - 1) >> kTileShift) + 1;
     tiles_h_ = ((grid.height - 1) >> kTileShift) + 1;
     tiles_.reset(static_cast<std::size_t>(tiles_w_) * tiles_h_);
@@ -33,21 +37,29 @@ EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame
     if (want > 1e5) {  // beyond any squared distance of a grid
         min_d2_ = std::numeric_limits<std::int64_t>::max();
     } else {
-        std::int64_t t = std::max<std::int64_t>(1, static_cast<std::int64_t>(want * want) - 2);
+        const double scale = manhattan_ ? 2 : 1;  // city-block d covers a circle of d / sqrt 2
+        std::int64_t t =
+            std::max<std::int64_t>(1, static_cast<std::int64_t>(scale * want * want) - 2);
         while (!radius_ok(t)) ++t;
         while (t > 1 && radius_ok(t - 1)) --t;
         min_d2_ = t;
     }
 }
 
+double EmptyCircleFinder::radius_pixels(std::int64_t d2) const {
+    const double d = std::sqrt(static_cast<double>(d2));
+    // The nearest obstacle pixel centre at city-block distance d is at least d / sqrt 2 away.
+    return (manhattan_ ? d * M_SQRT1_2 : d) - kMargin;
+}
+
 Circle EmptyCircleFinder::circle_of(int pixel) const {
-    const double d = std::sqrt(static_cast<double>(field_.squared_distance(pixel)));
     const int j = row_of(pixel);
-    return {grid_.center_of(pixel - j * grid_.width, j), (d - kMargin) * grid_.pixel};
+    return {grid_.center_of(pixel - j * grid_.width, j),
+            radius_pixels(field_.squared_distance(pixel)) * grid_.pixel};
 }
 
 bool EmptyCircleFinder::radius_ok(std::int64_t d2) const {
-    const double r = (std::sqrt(static_cast<double>(d2)) - kMargin) * grid_.pixel;
+    const double r = radius_pixels(d2) * grid_.pixel;
     return r > 0 && r >= min_radius_;
 }
 
@@ -60,6 +72,12 @@ bool EmptyCircleFinder::bends(std::int64_t d, std::int64_t a, std::int64_t b) {
 bool EmptyCircleFinder::crest_at(int pixel, int i, int j, std::int64_t d) const {
     const int w = grid_.width, h = grid_.height;
     if (i > 0 && j > 0 && i < w - 1 && j < h - 1) return crest_inside(pixel, d);
+    if (manhattan_) {  // every 4-neighbour inside the grid at most as far
+        return (i == 0 || field_.squared_distance(pixel - 1) <= d) &&
+               (i == w - 1 || field_.squared_distance(pixel + 1) <= d) &&
+               (j == 0 || field_.squared_distance(pixel - w) <= d) &&
+               (j == h - 1 || field_.squared_distance(pixel + w) <= d);
+    }
     // At the edge of the grid only the lines with both neighbours inside are tested.
     static constexpr int kLine[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
     for (const auto& e : kLine) {
@@ -82,7 +100,7 @@ bool EmptyCircleFinder::on_medial_axis(int pixel) const {
 bool EmptyCircleFinder::shape_eligible(int pixel) const {
     const std::int64_t d2 = field_.squared_distance(pixel);
     if (d2 < min_d2_ || d2 == DistanceField::infinite) return false;
-    return on_medial_axis(pixel) && field_.nearest_kind(pixel) == ObstacleKind::element;
+    return on_medial_axis(pixel) && element_may_stop(pixel);
 }
 
 bool EmptyCircleFinder::is_discarded(int pixel, std::int64_t d2) const {
@@ -138,7 +156,7 @@ void EmptyCircleFinder::consider(int pixel, int i, int j, int tile, int bit) {
         eligible = eligible && crest_inside(pixel, d2);
     else
         eligible = eligible && crest_at(pixel, i, j, d2);
-    eligible = eligible && field_.nearest_kind(pixel) == ObstacleKind::element &&
+    eligible = eligible && element_may_stop(pixel) &&
                !((discarded_bits_[tile] & mask) && discarded_.at(pixel) == d2);
     candidates_[tile] = eligible ? candidates_[tile] | mask : candidates_[tile] & ~mask;
     blocked_bits_[tile] &= ~mask;

@@ -29,6 +29,9 @@ class EmptyCircleFinder {
     EmptyCircleFinder(const DistanceField& field, const GridFrame& grid, double min_radius);
 
     Circle circle_of(int pixel) const;
+    // Radius in pixels of the conservative circle of a field value (squared distance, or
+    // squared city-block distance with the Manhattan metric): it holds no obstacle.
+    double radius_pixels(std::int64_t d2) const;
     bool on_medial_axis(int pixel) const;
     // On the medial axis, nearest obstacle an element, radius at least the minimum.
     bool shape_eligible(int pixel) const;
@@ -63,6 +66,13 @@ class EmptyCircleFinder {
     static constexpr int kTileShift = 3;  // 8 x 8 pixel tiles
 
     bool radius_ok(std::int64_t d2) const;
+    // Whether an element may stop the pixel's circle. Euclidean: the nearest obstacle is an
+    // element. Manhattan: city-block ties are everywhere (whole plateaus), so as in the paper
+    // the circle's inflation decides (the engine's exact refinement discards it when the
+    // boundary is nearer).
+    bool element_may_stop(int pixel) const {
+        return manhattan_ || field_.nearest_kind(pixel) == ObstacleKind::element;
+    }
     // d2 of a pixel between neighbours of d2 a and b on a line: a crest that bends enough.
     static bool crest(std::int64_t d, std::int64_t a, std::int64_t b) {
         return a <= d && b <= d && bends(d, a, b);
@@ -73,6 +83,8 @@ class EmptyCircleFinder {
     // The same for a pixel with all 8 neighbours inside the grid.
     bool crest_inside(int pixel, std::int64_t d) const {
         const std::int32_t* d2 = field_.squared_distances() + pixel;
+        if (manhattan_)  // the paper's MAT: at least as far as each of the 4 neighbours
+            return d2[1] <= d && d2[-1] <= d && d2[offsets_[1]] <= d && d2[-offsets_[1]] <= d;
         for (const int off : offsets_)
             if (crest(d, d2[off], d2[-off])) return true;
         return false;
@@ -107,6 +119,7 @@ class EmptyCircleFinder {
     GridFrame grid_;
     double min_radius_;
     double inv_width_;
+    bool manhattan_;
     std::int64_t min_d2_ = 1;  // smallest d2 whose radius is at least min_radius_
     int tiles_w_ = 0, tiles_h_ = 0;
     int offsets_[4] = {};  // pixel index steps along the four lines of the crest test

@@ -66,7 +66,7 @@ struct GrowthEngine::Impl {
           region(r),
           options(std::move(o)),
           raster(region, options.resolution),
-          field(raster.grid().width, raster.grid().height, /*with_sites=*/false),
+          field(raster.grid().width, raster.grid().height, /*with_sites=*/false, options.distance),
           epsilon(options.epsilon < 0 ? 2 * raster.grid().pixel : options.epsilon),
           min_radius(options.min_radius < 0 ? raster.grid().pixel : options.min_radius),
           finder(field, raster.grid(), min_radius),
@@ -207,9 +207,7 @@ std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) const
     const double r = ornament.nearest(c.center, c.radius + 2 * raster.grid().pixel).second;
     if (!std::isfinite(r)) return std::nullopt;
     const double boundary_floor =
-        (std::sqrt(static_cast<double>(field.boundary_squared_distance(found.pixel))) -
-         EmptyCircleFinder::kMargin) *
-        raster.grid().pixel;
+        finder.radius_pixels(field.boundary_squared_distance(found.pixel)) * raster.grid().pixel;
     if (boundary_floor < r && region.distance_to_boundary(c.center) <= r) return std::nullopt;
     c.radius = r;
     return c;
