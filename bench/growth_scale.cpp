@@ -1,10 +1,11 @@
 // The growth loop at poster scale: Appendix A's dots filling a square of about one unit per
 // pixel at 1024, 2048 and 4096 px, each grown in a child process of its own so that its peak
-// memory is its own. Prints a table on stderr and, last, one JSON object with elements per
-// second and peak bytes per buffer pixel at each size and the ratio of cost per element at
-// 4096 px to 1024 px.
+// memory is its own; with the exact Euclidean field (the default), then with the paper's
+// Manhattan MAT (--distance manhattan). Prints a table on stderr and, last, one JSON object
+// with elements per second and peak bytes per buffer pixel at each size and the ratio of cost
+// per element at 4096 px to 1024 px, for each metric.
 //
-//   bench_growth_scale [--sizes 1024,2048,4096]
+//   bench_growth_scale [--sizes 1024,2048,4096] [--euclidean-only]
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -26,6 +27,7 @@ namespace {
 
 struct Result {
     int resolution = 0;
+    acanthus::DistanceMetric metric = acanthus::DistanceMetric::euclidean;
     long elements = 0;
     double seconds = 0;
     long pixels = 0;
@@ -57,13 +59,14 @@ std::uint64_t tree_hash(const std::vector<const acanthus::Element*>& elements) {
 }
 
 // Grows one size in this process and writes "elements seconds pixels hash" to fd.
-int grow_one(int resolution, int fd) {
+int grow_one(int resolution, acanthus::DistanceMetric metric, int fd) {
     const double side = 1000.0 * resolution / 1024;
     const acanthus::Pattern pattern = dots::pattern();
     const acanthus::Region region =
         acanthus::Region::from_spec("rect:" + std::to_string(side) + "," + std::to_string(side));
     acanthus::GrowthOptions options;
     options.resolution = resolution;
+    options.distance = metric;
     dots::dot_count = 0;
     acanthus::GrowthEngine engine(pattern, region, options);
     engine.run();
@@ -76,16 +79,17 @@ int grow_one(int resolution, int fd) {
     return write(fd, line.data(), line.size()) == static_cast<ssize_t>(line.size()) ? 0 : 1;
 }
 
-Result run_child(int resolution) {
+Result run_child(int resolution, acanthus::DistanceMetric metric) {
     Result r;
     r.resolution = resolution;
+    r.metric = metric;
     int fds[2];
     if (pipe(fds) != 0) return r;
     const pid_t pid = fork();
     if (pid < 0) return r;
     if (pid == 0) {
         close(fds[0]);
-        _exit(grow_one(resolution, fds[1]));
+        _exit(grow_one(resolution, metric, fds[1]));
     }
     close(fds[1]);
     std::string out;
@@ -104,48 +108,19 @@ Result run_child(int resolution) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    std::vector<int> sizes = {1024, 2048, 4096};
-    for (int k = 1; k < argc; ++k) {
-        const std::string arg = argv[k];
-        if (arg == "--sizes" && k + 1 < argc) {
-            sizes.clear();
-            std::istringstream in(argv[++k]);
-            for (std::string s; std::getline(in, s, ',');) sizes.push_back(std::atoi(s.c_str()));
-        } else {
-            std::fprintf(stderr, "usage: %s [--sizes 1024,2048,4096]\n", argv[0]);
-            return 2;
-        }
-    }
-
-    std::vector<Result> results;
-    std::fprintf(stderr, "%-22s %10s %9s %11s %10s %8s\n", "panel, resolution", "elements",
-                 "growth", "elements/s", "peak", "B/pixel");
-    bool ok = true;
-    for (int size : sizes) {
-        const Result r = run_child(size);
-        ok = ok && r.ok;
-        results.push_back(r);
-        if (!r.ok) {
-            std::fprintf(stderr, "%d px: the run failed\n", size);
-            continue;
-        }
-        const int side = static_cast<int>(1000.0 * size / 1024 + 0.5);
-        std::fprintf(stderr, "%5d^2, %5d px       %10ld %8.2fs %11.0f %7.0f MB %8.1f\n", side, size,
-                     r.elements, r.seconds, r.elements / r.seconds, r.peak_mb,
-                     r.peak_mb * 1024 * 1024 / static_cast<double>(r.pixels));
-    }
-
-    std::string json = "{\"benchmark\":\"growth-scale\",\"pattern\":\"dots\",\"sizes\":[";
+// The JSON array of one metric's results; sets the ratio of cost per element 4096 / 1024.
+std::string json_sizes(const std::vector<Result>& results, acanthus::DistanceMetric metric,
+                       double& ratio) {
+    std::string json = "[";
     double cost_first = -1, cost_last = -1;
-    for (std::size_t k = 0; k < results.size(); ++k) {
-        const Result& r = results[k];
+    for (const Result& r : results) {
+        if (r.metric != metric) continue;
         char buf[512];
         std::snprintf(buf, sizeof buf,
                       "%s{\"resolution\":%d,\"elements\":%ld,\"seconds\":%.3f,"
                       "\"elements_per_second\":%.1f,\"peak_rss_mb\":%.1f,\"bytes_per_pixel\":%.2f,"
                       "\"tree_hash\":\"%016llx\"}",
-                      k ? "," : "", r.resolution, r.elements, r.seconds,
+                      json.size() > 1 ? "," : "", r.resolution, r.elements, r.seconds,
                       r.ok ? r.elements / r.seconds : 0.0, r.peak_mb,
                       r.ok ? r.peak_mb * 1024 * 1024 / static_cast<double>(r.pixels) : 0.0,
                       static_cast<unsigned long long>(r.tree_hash));
@@ -153,10 +128,61 @@ int main(int argc, char** argv) {
         if (r.ok && r.resolution == 1024) cost_first = r.seconds / r.elements;
         if (r.ok && r.resolution == 4096) cost_last = r.seconds / r.elements;
     }
-    char tail[128];
-    std::snprintf(tail, sizeof tail, "],\"cost_per_element_ratio_4096_1024\":%.3f}",
-                  cost_first > 0 && cost_last > 0 ? cost_last / cost_first : -1.0);
-    json += tail;
-    std::printf("%s\n", json.c_str());
+    ratio = cost_first > 0 && cost_last > 0 ? cost_last / cost_first : -1.0;
+    return json + "]";
+}
+
+int main(int argc, char** argv) {
+    using acanthus::DistanceMetric;
+    std::vector<int> sizes = {1024, 2048, 4096};
+    std::vector<DistanceMetric> metrics = {DistanceMetric::euclidean, DistanceMetric::manhattan};
+    for (int k = 1; k < argc; ++k) {
+        const std::string arg = argv[k];
+        if (arg == "--sizes" && k + 1 < argc) {
+            sizes.clear();
+            std::istringstream in(argv[++k]);
+            for (std::string s; std::getline(in, s, ',');) sizes.push_back(std::atoi(s.c_str()));
+        } else if (arg == "--euclidean-only") {
+            metrics = {DistanceMetric::euclidean};
+        } else {
+            std::fprintf(stderr, "usage: %s [--sizes 1024,2048,4096] [--euclidean-only]\n",
+                         argv[0]);
+            return 2;
+        }
+    }
+
+    std::vector<Result> results;
+    std::fprintf(stderr, "%-10s %-18s %10s %9s %11s %10s %8s\n", "metric", "panel, resolution",
+                 "elements", "growth", "elements/s", "peak", "B/pixel");
+    bool ok = true;
+    for (DistanceMetric metric : metrics)
+        for (int size : sizes) {
+            const Result r = run_child(size, metric);
+            ok = ok && r.ok;
+            results.push_back(r);
+            const std::string name(acanthus::to_string(metric));
+            if (!r.ok) {
+                std::fprintf(stderr, "%-10s %d px: the run failed\n", name.c_str(), size);
+                continue;
+            }
+            const int side = static_cast<int>(1000.0 * size / 1024 + 0.5);
+            std::fprintf(stderr, "%-10s %5d^2, %5d px %10ld %8.2fs %11.0f %7.0f MB %8.1f\n",
+                         name.c_str(), side, size, r.elements, r.seconds, r.elements / r.seconds,
+                         r.peak_mb, r.peak_mb * 1024 * 1024 / static_cast<double>(r.pixels));
+        }
+
+    double ratio = -1, manhattan_ratio = -1;
+    std::string json = "{\"benchmark\":\"growth-scale\",\"pattern\":\"dots\",\"sizes\":" +
+                       json_sizes(results, DistanceMetric::euclidean, ratio);
+    char buf[160];
+    std::snprintf(buf, sizeof buf, ",\"cost_per_element_ratio_4096_1024\":%.3f", ratio);
+    json += buf;
+    if (metrics.size() > 1) {
+        json += ",\"manhattan\":" + json_sizes(results, DistanceMetric::manhattan, manhattan_ratio);
+        std::snprintf(buf, sizeof buf, ",\"manhattan_cost_per_element_ratio_4096_1024\":%.3f",
+                      manhattan_ratio);
+        json += buf;
+    }
+    std::printf("%s}\n", json.c_str());
     return ok ? 0 : 1;
 }
