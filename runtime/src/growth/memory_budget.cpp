@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace acanthus::detail {
 namespace {
@@ -23,6 +24,14 @@ std::optional<std::uint64_t> proc_field(const char* file, const std::string& key
         std::uint64_t kb = 0;
         if (fields >> kb) return kb * 1024;
     }
+    return std::nullopt;
+}
+
+// A number alone in a file (cgroup limits), or nothing ("max", missing).
+std::optional<std::uint64_t> file_number(const char* file) {
+    std::ifstream in(file);
+    std::uint64_t v = 0;
+    if (in >> v) return v;
     return std::nullopt;
 }
 
@@ -49,6 +58,18 @@ std::optional<std::uint64_t> available_memory() {
     };
     cap(RLIMIT_AS, "VmSize");
     cap(RLIMIT_DATA, "VmData");
+    // A container's memory limit (cgroup v2, then v1), less what the group uses already.
+    for (const auto& [limit_file, usage_file] :
+         {std::pair{"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory.current"},
+          std::pair{"/sys/fs/cgroup/memory/memory.limit_in_bytes",
+                    "/sys/fs/cgroup/memory/memory.usage_in_bytes"}}) {
+        const std::optional<std::uint64_t> limit = file_number(limit_file);
+        if (!limit || *limit >= (std::uint64_t{1} << 60)) continue;  // "max" or no limit
+        const std::uint64_t used = file_number(usage_file).value_or(0);
+        const std::uint64_t room = *limit > used ? *limit - used : 0;
+        out = out ? std::min(*out, room) : room;
+        break;
+    }
     return out;
 }
 

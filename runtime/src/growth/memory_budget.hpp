@@ -13,9 +13,9 @@ namespace acanthus::detail {
 // (2), tile masks and maxima (under 1), and room for the pixels the first placements change.
 inline constexpr double kGrowthBytesPerPixel = 16;
 
-// Bytes this process may still allocate: the smaller of the memory the system reports
-// available and the address-space and data limits (setrlimit) left above what it uses now.
-// Nothing when neither is known.
+// Bytes this process may still allocate: the smallest of the memory the system reports
+// available, the address-space and data limits (setrlimit) left above what it uses now, and
+// a container's cgroup memory limit left above its usage. Nothing when none is known.
 std::optional<std::uint64_t> available_memory();
 
 // Throws InputError when a buffer of this grid would not fit in available_memory(), with the
