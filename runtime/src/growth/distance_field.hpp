@@ -43,7 +43,6 @@ class DistanceField {
     std::int64_t boundary_squared_distance(int index) const { return boundary2_[index]; }
     // Index of the nearest site, or -1 when there is no site at all (or no feature transform).
     int nearest_site(int index) const { return site_.empty() ? -1 : site_[index]; }
-    bool has_sites() const { return !site_.empty(); }
     ObstacleKind nearest_kind(int index) const;
     ObstacleKind occupancy(int index) const { return static_cast<ObstacleKind>(occ_[index]); }
     const std::vector<std::uint8_t>& occupancy() const { return occ_; }
