@@ -96,6 +96,37 @@ TEST(Growth, EnginesAgreeWithSeveralSeedsAndAMinimumRadius) {
     }
 }
 
+// The engines agree on a 2048 px buffer too (a long strip keeps the reference engine's whole
+// field per iteration cheap): about one unit per pixel, as on a poster.
+TEST(Growth, EnginesAgreeAt2048Pixels) {
+    const Region region = Region::from_spec("rect:2000,40");
+    GrowthOptions o;
+    o.resolution = 2048;
+    o.max_elements = 300;
+    const auto incremental = grow(dots::pattern(), region, o);
+    o.reference_engine = true;
+    const auto reference = grow(dots::pattern(), region, o);
+    ASSERT_EQ(incremental.size(), 300u);
+    ASSERT_EQ(incremental, reference);
+    expect_dots_fit(incremental, region);
+}
+
+// The paper's Manhattan MAT (--distance manhattan): it grows a valid ornament, the same one on
+// every run and with the reference engine, and not the Euclidean one.
+TEST(Growth, ManhattanMetricGrowsDeterministicallyAndDiffersFromEuclidean) {
+    const Region region = region_named("hole");
+    GrowthOptions o = small_options();
+    o.distance = DistanceMetric::manhattan;
+    const auto manhattan = grow(dots::pattern(), region, o);
+    ASSERT_GT(manhattan.size(), 50u);
+    expect_valid_tree(manhattan);
+    expect_dots_fit(manhattan, region);
+    EXPECT_EQ(grow(dots::pattern(), region, o), manhattan);
+    o.reference_engine = true;
+    EXPECT_EQ(grow(dots::pattern(), region, o), manhattan);
+    EXPECT_NE(grow(dots::pattern(), region, small_options()), manhattan);
+}
+
 TEST(Growth, SameInputsGiveTheSameTree) {
     const Region region = Region::from_spec("ellipse:50,30");
     EXPECT_EQ(grow(dots::pattern(), region, small_options()),

@@ -1,6 +1,7 @@
 // run_program: the generated program's command line, exit codes, and "no partial output".
 // The pattern is written by hand the way the compiler generates one (dots of Appendix A).
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <acanthus/body.hpp>
@@ -190,6 +191,8 @@ TEST_F(Program, MalformedValuesAreUsageErrors) {
                                           {"--seed", "1,x"},
                                           {"--style", "dotted"},
                                           {"--resolution", "0"},
+                                          {"--resolution", "16385"},
+                                          {"--distance", "taxicab"},
                                           {"--width", "-3"},
                                           {"--background", "notacolour"},
                                           {"--param", "dot_radius"},
@@ -268,6 +271,29 @@ TEST_F(Program, SeedOutsideRegionIsBadInput) {
     Outcome o = run({"--region", "rect:100,50", "--seed", "150,20", "-o", path("out.svg")});
     EXPECT_EQ(o.code, 1);
     EXPECT_NE(o.err.find("150,20"), std::string::npos) << o.err;
+    EXPECT_TRUE(files().empty());
+}
+
+// A buffer larger than the memory the process may use is refused before it is allocated, with
+// the estimate: exit 1, no output. (The address-space limit is lowered for this run only.)
+TEST_F(Program, ResolutionTooLargeForMemoryIsBadInput) {
+    rlimit saved{};
+    ASSERT_EQ(getrlimit(RLIMIT_AS, &saved), 0);
+    std::ifstream status("/proc/self/status");
+    std::uint64_t vm_kb = 0;
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmSize:", 0) == 0) vm_kb = std::stoull(line.substr(7));
+    rlimit low = saved;
+    low.rlim_cur = vm_kb * 1024 + (512ull << 20);  // 512 MB of room; 16384 px needs ~4 GB
+    if (saved.rlim_cur != RLIM_INFINITY && saved.rlim_cur < low.rlim_cur)
+        low.rlim_cur = saved.rlim_cur;
+    ASSERT_EQ(setrlimit(RLIMIT_AS, &low), 0);
+    Outcome o = run({"--region", "rect:100,100", "--resolution", "16384", "-o", path("out.svg"),
+                     "--json", path("tree.json")});
+    ASSERT_EQ(setrlimit(RLIMIT_AS, &saved), 0);
+    EXPECT_EQ(o.code, 1) << o.err;
+    EXPECT_NE(o.err.find("--resolution 16384 needs about"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("use a lower --resolution"), std::string::npos) << o.err;
     EXPECT_TRUE(files().empty());
 }
 

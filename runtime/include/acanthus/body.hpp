@@ -9,6 +9,7 @@
 #include <acanthus/skeletal_stroke.hpp>
 #include <cmath>
 #include <type_traits>
+#include <vector>
 
 namespace acanthus::body {
 
@@ -19,6 +20,7 @@ using acanthus::Circle;
 using acanthus::CircleProxy;
 using acanthus::Color;
 using acanthus::CONTINUE;
+using acanthus::Corner;
 using acanthus::Direction;
 using acanthus::distance;
 using acanthus::Element;
@@ -50,6 +52,8 @@ bool inside(Point p);
 double distance_to_boundary(Point p);
 Element* nearest_element(Point p);
 void clear_exclude_list();
+// The panel's corners, its signal points (Region::corners): empty when there is no region.
+const std::vector<Corner>& corners();
 // Adds a dynamic child created with `new` during this rule call.
 void new_child(Element& e);
 void new_child(Element* e);

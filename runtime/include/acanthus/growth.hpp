@@ -1,6 +1,7 @@
 // The growth engine of Wong et al. section 4.1: largest empty circle, candidate parents, rules.
 #pragma once
 
+#include <acanthus/distance_metric.hpp>
 #include <acanthus/grid_frame.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/region.hpp>
@@ -20,7 +21,10 @@ struct GrowthOptions {
     long max_iterations = 10000000;
     double time_limit = 0;          // seconds of growth; 0 means none
     bool reference_engine = false;  // recompute the whole distance field every iteration
-    std::vector<Point> seeds;       // empty: centre of the largest inscribed circle
+    // Metric of the distance field and its medial axis: exact Euclidean, or the paper's
+    // Manhattan MAT (docs/engine.md, "The Manhattan option").
+    DistanceMetric distance = DistanceMetric::euclidean;
+    std::vector<Point> seeds;  // empty: centre of the largest inscribed circle
     std::uint64_t rng_seed = 1;
 };
 

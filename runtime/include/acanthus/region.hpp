@@ -2,6 +2,7 @@
 // Coordinates are SVG user units, y pointing down as in SVG.
 #pragma once
 
+#include <acanthus/corner.hpp>
 #include <acanthus/point.hpp>
 #include <memory>
 #include <string>
@@ -50,6 +51,9 @@ class Region {
     // The connected pieces of the region, each an outer boundary loop with the holes directly
     // inside it, in the order of their outer loops. A region in one piece gives one part.
     std::vector<Region> parts() const;
+    // The corners of the boundary, in path order: where it turns by at least `min_turn`
+    // radians at once (between two curves), convex or concave.
+    std::vector<Corner> corners(double min_turn = 0.35) const;
 
     const detail::RegionData& data() const { return *data_; }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "growth/manhattan_transform.hpp"
+
 namespace acanthus::detail {
 namespace {
 
@@ -15,34 +17,31 @@ constexpr std::int32_t kInfinite = DistanceField::infinite;
 template <class IsSite>
 void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t* site,
                    DistanceField::Scratch& s) {
-    const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
-    s.column_distance.resize(n);
-    s.column_site_row.resize(n);
-    std::int32_t* g = s.column_distance.data();
-    std::int32_t* row = s.column_site_row.data();
-
+    // Phase 1 keeps each pixel's column distance in d2 and, with a feature transform, that
+    // site's row in `site`; phase 2 copies one row of them at a time before overwriting it.
+    std::int32_t* g = d2;
+    std::int32_t* row = site;
     // Phase 1, row by row for cache friendliness: nearest site above, then below.
     s.last.assign(w, -1);
     for (int j = 0; j < h; ++j) {
         std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
-        std::int32_t* rj = row + static_cast<std::size_t>(j) * w;
         for (int i = 0; i < w; ++i) {
             if (is_site(i, j)) s.last[i] = j;
             const int l = s.last[i];
             gj[i] = l >= 0 ? j - l : kInfinite;
-            rj[i] = l;
         }
+        if (row) std::copy(s.last.begin(), s.last.end(), row + static_cast<std::size_t>(j) * w);
     }
     s.last.assign(w, -1);
     for (int j = h - 1; j >= 0; --j) {
         std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
-        std::int32_t* rj = row + static_cast<std::size_t>(j) * w;
+        std::int32_t* rj = row ? row + static_cast<std::size_t>(j) * w : nullptr;
         for (int i = 0; i < w; ++i) {
             if (gj[i] == 0) {
                 s.last[i] = j;
             } else if (s.last[i] >= 0 && s.last[i] - j < gj[i]) {
                 gj[i] = s.last[i] - j;
-                rj[i] = s.last[i];
+                if (rj) rj[i] = s.last[i];
             }
         }
     }
@@ -53,13 +52,18 @@ void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t*
     s.hull_f.resize(w);
     s.hull_num.resize(w);
     s.hull_den.resize(w);
+    s.column_distance.resize(w);
+    s.column_site_row.resize(row ? w : 0);
     int* v = s.hull_column.data();
     std::int64_t* f = s.hull_f.data();
     std::int64_t* num = s.hull_num.data();
     std::int64_t* den = s.hull_den.data();
     for (int j = 0; j < h; ++j) {
         const std::size_t base = static_cast<std::size_t>(j) * w;
-        const std::int32_t* gj = g + base;
+        std::copy(g + base, g + base + w, s.column_distance.begin());
+        if (row) std::copy(row + base, row + base + w, s.column_site_row.begin());
+        const std::int32_t* gj = s.column_distance.data();
+        const std::int32_t* rj = s.column_site_row.data();
         int k = -1;
         for (int q = 0; q < w; ++q) {
             if (gj[q] == kInfinite) continue;
@@ -95,14 +99,15 @@ void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t*
             const std::int64_t dx = x - c;
             const std::int64_t gc = gj[c];
             d2[base + x] = static_cast<std::int32_t>(dx * dx + gc * gc);
-            if (site) site[base + x] = row[base + c] * w + c;
+            if (site) site[base + x] = rj[c] * w + c;
         }
     }
 }
 
 }  // namespace
 
-DistanceField::DistanceField(int width, int height) : width_(width), height_(height) {
+DistanceField::DistanceField(int width, int height, bool with_sites, DistanceMetric metric)
+    : width_(width), height_(height), metric_(metric) {
     // Squared distances must fit in 32 bits.
     if (width <= 0 || height <= 0 || width > 30000 || height > 30000)  // also packs in 16 bits
         throw std::invalid_argument("DistanceField: grid size out of range");
@@ -110,8 +115,8 @@ DistanceField::DistanceField(int width, int height) : width_(width), height_(hei
     occ_.assign(n, 0);
     dist2_.assign(n, kInfinite);
     boundary2_.assign(n, kInfinite);
-    site_.assign(n, -1);
-    visit_.assign(n, 0);
+    if (with_sites) site_.assign(n, -1);
+    if (metric == DistanceMetric::euclidean) visit_.assign(n, 0);  // the brushfire needs none
 }
 
 double DistanceField::distance(int i, int j) const {
@@ -131,9 +136,16 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
     occ_ = occupancy;
     const int w = width_;
     const std::uint8_t* occ = occ_.data();
+    std::int32_t* site = site_.empty() ? nullptr : site_.data();
+    if (metric_ == DistanceMetric::manhattan) {
+        const auto boundary = static_cast<std::uint8_t>(ObstacleKind::boundary);
+        manhattan_transform(w, height_, occ, false, boundary, dist2_.data(), site);
+        manhattan_transform(w, height_, occ, true, boundary, boundary2_.data(), nullptr);
+        return;
+    }
     separable_edt(
         w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
-        dist2_.data(), site_.data(), scratch_);
+        dist2_.data(), site, scratch_);
     separable_edt(
         w, height_,
         [&](int i, int j) {
@@ -154,7 +166,15 @@ void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
         fresh.push_back(p);
     }
     if (fresh.empty()) return;
-    propagate(fresh, dist2_, &site_, changed);
+    if (metric_ == DistanceMetric::manhattan) {
+        manhattan_brushfire(width_, height_, fresh, dist2_.data(),
+                            site_.empty() ? nullptr : site_.data(), changed, queue_);
+        if (kind == ObstacleKind::boundary)
+            manhattan_brushfire(width_, height_, fresh, boundary2_.data(), nullptr, changed,
+                                queue_);
+        return;
+    }
+    propagate(fresh, dist2_, site_.empty() ? nullptr : &site_, changed);
     if (kind == ObstacleKind::boundary) propagate(fresh, boundary2_, nullptr, changed);
 }
 
@@ -198,18 +218,18 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
                               Measurable measurable) {
     const int w = width_, h = height_;
     // visit_ == base: evaluated, outside; base + 1: inside; base + 2: inside, its row span filled.
-    if (stamp_ > std::numeric_limits<std::uint32_t>::max() - 4) {
+    if (stamp_ > std::numeric_limits<std::uint16_t>::max() - 4) {
         std::fill(visit_.begin(), visit_.end(), 0);
         stamp_ = 0;
     }
-    const std::uint32_t base = stamp_ + 1;
-    stamp_ += 3;
-    std::uint32_t* visit = visit_.data();
+    const std::uint16_t base = static_cast<std::uint16_t>(stamp_ + 1);
+    stamp_ = static_cast<std::uint16_t>(stamp_ + 3);
+    std::uint16_t* visit = visit_.data();
     std::int32_t* d2 = d2v.data();
     improved_.clear();
     stack_.clear();
     for (int p : sites) {
-        visit[p] = base + 1;
+        visit[p] = static_cast<std::uint16_t>(base + 1);
         if constexpr (kCommit) {
             d2[p] = 0;
             if (site) site[p] = p;
@@ -244,11 +264,11 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
             const std::int64_t t = m - old - 1;  // sqrt(m) < sqrt(old) + 1
             in = t < 0 || t * t < 4 * old;
         }
-        visit[r] = base + (in ? 1 : 0);
+        visit[r] = static_cast<std::uint16_t>(base + (in ? 1 : 0));
         return in;
     };
     auto inside = [&](auto& line, int i, int j, int r) {
-        const std::uint32_t v = visit[r];
+        const std::uint16_t v = visit[r];
         if (v >= base) return v > base;
         return evaluate(line, i, j, r);
     };
@@ -262,7 +282,7 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
         auto line = measure.row(nj, x0);
         bool run = false;
         for (int x = x0; x <= x1; ++x) {
-            const std::uint32_t v = visit[nrow + x];
+            const std::uint16_t v = visit[nrow + x];
             bool in;
             if (v >= base) {
                 in = v > base;
@@ -288,7 +308,7 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
             while (xr < w - 1 && inside(line, xr + 1, j, row + xr + 1)) ++xr;
         }
         if (escaped) break;
-        for (int x = xl; x <= xr; ++x) visit[row + x] = base + 2;
+        for (int x = xl; x <= xr; ++x) visit[row + x] = static_cast<std::uint16_t>(base + 2);
         if (seed.dir == 0) {
             scan(j - 1, xl - 1, xr + 1, j, xl, xr);
             scan(j + 1, xl - 1, xr + 1, j, xl, xr);

@@ -2,6 +2,7 @@
 // and kind; computed in full or updated incrementally (docs/engine.md, "The distance field").
 #pragma once
 
+#include <acanthus/distance_metric.hpp>
 #include <cstdint>
 #include <limits>
 #include <utility>
@@ -18,7 +19,12 @@ class DistanceField {
     // Squared distance of a pixel when there is no site at all.
     static constexpr std::int32_t infinite = std::numeric_limits<std::int32_t>::max();
 
-    DistanceField(int width, int height);
+    // `with_sites`: keep the feature transform (nearest_site()); without it the field costs
+    // 4 bytes per pixel less (the growth engine never asks for it). With the Manhattan metric
+    // the field holds the square of the city-block distance (so the same comparisons hold).
+    DistanceField(int width, int height, bool with_sites = true,
+                  DistanceMetric metric = DistanceMetric::euclidean);
+    DistanceMetric metric() const { return metric_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -35,17 +41,18 @@ class DistanceField {
     double distance(int i, int j) const;
     // Squared distance from pixel index to its nearest boundary site.
     std::int64_t boundary_squared_distance(int index) const { return boundary2_[index]; }
-    // Index of the nearest site, or -1 when there is no site at all.
-    int nearest_site(int index) const { return site_[index]; }
+    // Index of the nearest site, or -1 when there is no site at all (or no feature transform).
+    int nearest_site(int index) const { return site_.empty() ? -1 : site_[index]; }
     ObstacleKind nearest_kind(int index) const;
     ObstacleKind occupancy(int index) const { return static_cast<ObstacleKind>(occ_[index]); }
     const std::vector<std::uint8_t>& occupancy() const { return occ_; }
 
     // Buffers reused by the separable transform (exposed for the implementation only).
+    // Phase 1 writes its column distances and site rows into the output arrays; phase 2 copies
+    // one row of them at a time, so the transform needs no grid-sized scratch.
     struct Scratch {
-        std::vector<std::int32_t>
-            column_distance;  // phase 1: distance to the nearest site in the column
-        std::vector<std::int32_t> column_site_row;  // phase 1: row of that site
+        std::vector<std::int32_t> column_distance;  // phase 2: row j of phase 1's distances
+        std::vector<std::int32_t> column_site_row;  // phase 2: row j of phase 1's site rows
         std::vector<int> last;                      // per column, last site row seen
         std::vector<int> hull_column;               // phase 2: lower envelope of parabolas
         std::vector<std::int64_t> hull_f, hull_num, hull_den;
@@ -63,14 +70,16 @@ class DistanceField {
 
     int width_;
     int height_;
+    DistanceMetric metric_;
     std::vector<std::uint8_t> occ_;
     std::vector<std::int32_t> dist2_;      // to the nearest site of any kind
     std::vector<std::int32_t> boundary2_;  // to the nearest boundary site
-    std::vector<std::int32_t> site_;
+    std::vector<std::int32_t> site_;       // empty without a feature transform
 
-    // Incremental update state.
-    std::vector<std::uint32_t> visit_;  // fill state per pixel, relative to stamp_
-    std::uint32_t stamp_ = 0;
+    // Incremental update state: 16-bit stamps (cleared every ~21,000 fills) keep it at 2 bytes
+    // per pixel.
+    std::vector<std::uint16_t> visit_;  // fill state per pixel, relative to stamp_
+    std::uint16_t stamp_ = 0;
     // A fill seed: pixel (x, y) reached from the span [pl, pr] of row y - dir (dir 0: a site).
     struct Seed {
         int x, y, dir, pl, pr;
@@ -86,6 +95,7 @@ class DistanceField {
         std::int32_t site;
     };
     std::vector<Improvement> improved_;
+    std::vector<std::pair<int, std::int32_t>> queue_;  // brushfire: (pixel, city-block distance)
 };
 
 }  // namespace acanthus::detail

@@ -13,16 +13,18 @@ using namespace tile_masks;
 
 EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame& grid,
                                      double min_radius)
-    : field_(field), grid_(grid), min_radius_(min_radius), inv_width_(1.0 / grid.width) {
-    const std::size_t n = static_cast<std::size_t>(grid.width) * grid.height;
-    state_.assign(n, none);
-    state_d2_.assign(n, 0);
-    discarded_.assign(n, 0);
+    : field_(field),
+      grid_(grid),
+      min_radius_(min_radius),
+      inv_width_(1.0 / grid.width),
+      manhattan_(field.metric() == DistanceMetric::manhattan) {
     tiles_w_ = ((grid.width - 1) >> kTileShift) + 1;
     tiles_h_ = ((grid.height - 1) >> kTileShift) + 1;
     tiles_.reset(static_cast<std::size_t>(tiles_w_) * tiles_h_);
     dirty_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
     candidates_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    blocked_bits_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    discarded_bits_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
     changed_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
     const int w = grid.width;
     offsets_[0] = 1;
@@ -35,21 +37,29 @@ EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame
     if (want > 1e5) {  // beyond any squared distance of a grid
         min_d2_ = std::numeric_limits<std::int64_t>::max();
     } else {
-        std::int64_t t = std::max<std::int64_t>(1, static_cast<std::int64_t>(want * want) - 2);
+        const double scale = manhattan_ ? 2 : 1;  // city-block d covers a circle of d / sqrt 2
+        std::int64_t t =
+            std::max<std::int64_t>(1, static_cast<std::int64_t>(scale * want * want) - 2);
         while (!radius_ok(t)) ++t;
         while (t > 1 && radius_ok(t - 1)) --t;
         min_d2_ = t;
     }
 }
 
+double EmptyCircleFinder::radius_pixels(std::int64_t d2) const {
+    const double d = std::sqrt(static_cast<double>(d2));
+    // The nearest obstacle pixel centre at city-block distance d is at least d / sqrt 2 away.
+    return (manhattan_ ? d * M_SQRT1_2 : d) - kMargin;
+}
+
 Circle EmptyCircleFinder::circle_of(int pixel) const {
-    const double d = std::sqrt(static_cast<double>(field_.squared_distance(pixel)));
     const int j = row_of(pixel);
-    return {grid_.center_of(pixel - j * grid_.width, j), (d - kMargin) * grid_.pixel};
+    return {grid_.center_of(pixel - j * grid_.width, j),
+            radius_pixels(field_.squared_distance(pixel)) * grid_.pixel};
 }
 
 bool EmptyCircleFinder::radius_ok(std::int64_t d2) const {
-    const double r = (std::sqrt(static_cast<double>(d2)) - kMargin) * grid_.pixel;
+    const double r = radius_pixels(d2) * grid_.pixel;
     return r > 0 && r >= min_radius_;
 }
 
@@ -62,6 +72,12 @@ bool EmptyCircleFinder::bends(std::int64_t d, std::int64_t a, std::int64_t b) {
 bool EmptyCircleFinder::crest_at(int pixel, int i, int j, std::int64_t d) const {
     const int w = grid_.width, h = grid_.height;
     if (i > 0 && j > 0 && i < w - 1 && j < h - 1) return crest_inside(pixel, d);
+    if (manhattan_) {  // every 4-neighbour inside the grid at most as far
+        return (i == 0 || field_.squared_distance(pixel - 1) <= d) &&
+               (i == w - 1 || field_.squared_distance(pixel + 1) <= d) &&
+               (j == 0 || field_.squared_distance(pixel - w) <= d) &&
+               (j == h - 1 || field_.squared_distance(pixel + w) <= d);
+    }
     // At the edge of the grid only the lines with both neighbours inside are tested.
     static constexpr int kLine[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
     for (const auto& e : kLine) {
@@ -84,7 +100,12 @@ bool EmptyCircleFinder::on_medial_axis(int pixel) const {
 bool EmptyCircleFinder::shape_eligible(int pixel) const {
     const std::int64_t d2 = field_.squared_distance(pixel);
     if (d2 < min_d2_ || d2 == DistanceField::infinite) return false;
-    return on_medial_axis(pixel) && field_.nearest_kind(pixel) == ObstacleKind::element;
+    return on_medial_axis(pixel) && element_may_stop(pixel);
+}
+
+bool EmptyCircleFinder::is_discarded(int pixel, std::int64_t d2) const {
+    const auto it = discarded_.find(pixel);
+    return it != discarded_.end() && it->second == d2;
 }
 
 int EmptyCircleFinder::tile_of(int pixel) const {
@@ -111,7 +132,7 @@ void EmptyCircleFinder::rescan(int tile) {
     for (std::uint64_t bits = candidates_[tile]; bits; bits &= bits - 1) {
         const int b = std::countr_zero(bits);
         const int p = (j0 + (b >> kTileShift)) * grid_.width + i0 + (b & 7);
-        best = std::max(best, key_of(p, state_d2_[p]));
+        best = std::max(best, key_of(p, field_.squared_distance(p)));
     }
     tiles_.set(static_cast<std::size_t>(tile), best);
 }
@@ -119,22 +140,26 @@ void EmptyCircleFinder::rescan(int tile) {
 template <bool kInside>
 void EmptyCircleFinder::consider(int pixel, int i, int j, int tile, int bit) {
     const std::int32_t d2 = field_.squared_distances()[pixel];
-    const std::uint8_t old = state_[pixel];
-    if (d2 < min_d2_ && old == none) return;  // too small to matter, already none
+    const std::uint64_t mask = std::uint64_t{1} << bit;
+    const bool changed = (changed_[tile] & mask) != 0;
+    if (changed && (discarded_bits_[tile] & mask)) {  // a discard holds for its distance only
+        discarded_.erase(pixel);
+        discarded_bits_[tile] &= ~mask;
+    }
+    const bool was_none = ((candidates_[tile] | blocked_bits_[tile]) & mask) == 0;
+    if (d2 < min_d2_ && was_none) return;  // too small to matter, already none
     // Same distance: a candidate stays one (neighbours only get lower), a blocked one stays
     // blocked; a non-candidate may have become one.
-    if (old != none && state_d2_[pixel] == d2) return;
+    if (!was_none && !changed) return;
     bool eligible = d2 >= min_d2_ && d2 != DistanceField::infinite;
     if constexpr (kInside)
         eligible = eligible && crest_inside(pixel, d2);
     else
         eligible = eligible && crest_at(pixel, i, j, d2);
-    eligible =
-        eligible && field_.nearest_kind(pixel) == ObstacleKind::element && discarded_[pixel] != d2;
-    state_[pixel] = eligible ? candidate : none;
-    state_d2_[pixel] = d2;
-    const std::uint64_t mask = std::uint64_t{1} << bit;
+    eligible = eligible && element_may_stop(pixel) &&
+               !((discarded_bits_[tile] & mask) && discarded_.at(pixel) == d2);
     candidates_[tile] = eligible ? candidates_[tile] | mask : candidates_[tile] & ~mask;
+    blocked_bits_[tile] &= ~mask;
 }
 
 template <bool kInside>
@@ -162,9 +187,11 @@ std::uint64_t EmptyCircleFinder::maybe_crests(int tile, std::uint64_t bits) cons
         if (((bits >> (8 * r)) & 0xff) == 0) continue;
         const int p0 = ((tj << kTileShift) + r) * w + (ti << kTileShift);
         const std::int32_t* mid = d2 + p0;
-        const std::uint32_t row = crest_lanes(mid - w, mid, mid + w, min_d2) |
-                                  (crest_lanes(mid - w + 4, mid + 4, mid + w + 4, min_d2) << 4) |
-                                  nonzero_bytes(state_.data() + p0);
+        const std::uint32_t row =
+            crest_lanes(mid - w, mid, mid + w, min_d2) |
+            (crest_lanes(mid - w + 4, mid + 4, mid + w + 4, min_d2) << 4) |
+            static_cast<std::uint32_t>(((candidates_[tile] | blocked_bits_[tile]) >> (8 * r)) &
+                                       0xff);
         out |= static_cast<std::uint64_t>(row) << (8 * r);
     }
     return out & bits;
@@ -184,8 +211,8 @@ void EmptyCircleFinder::refresh(int tile, std::uint64_t bits) {
 
 void EmptyCircleFinder::rebuild() {
     blocked_.clear();
-    std::fill(state_.begin(), state_.end(), none);
     std::fill(candidates_.begin(), candidates_.end(), 0);
+    std::fill(blocked_bits_.begin(), blocked_bits_.end(), 0);
     for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t, ~std::uint64_t{0});
 }
 
@@ -253,10 +280,12 @@ void EmptyCircleFinder::release(const std::vector<int>& removed_ids) {
     for (int id : removed_ids) {
         if (id < 0 || static_cast<std::size_t>(id) >= blocked_.size()) continue;
         for (const auto& [p, d2] : blocked_[id]) {
-            if (state_[p] != blocked || state_d2_[p] != d2) continue;  // changed since
-            state_[p] = candidate;
             const int t = tile_of(p);
-            candidates_[t] |= std::uint64_t{1} << bit_of(p);
+            const std::uint64_t mask = std::uint64_t{1} << bit_of(p);
+            // Its distance changed since (distances only decrease), or it is no longer blocked.
+            if (!(blocked_bits_[t] & mask) || field_.squared_distance(p) != d2) continue;
+            blocked_bits_[t] &= ~mask;
+            candidates_[t] |= mask;
             tiles_.set(static_cast<std::size_t>(t),
                        std::max(tiles_.get(static_cast<std::size_t>(t)), key_of(p, d2)));
         }
@@ -280,8 +309,9 @@ std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
         const Circle c = circle_of(p);
         const int id = exclude.find_inside(c);
         if (id < 0) return EmptyCircle{p, d2, c};
-        state_[p] = blocked;
-        candidates_[tile_of(p)] &= ~(std::uint64_t{1} << bit_of(p));
+        const std::uint64_t mask = std::uint64_t{1} << bit_of(p);
+        blocked_bits_[tile_of(p)] |= mask;
+        candidates_[tile_of(p)] &= ~mask;
         if (static_cast<std::size_t>(id) >= blocked_.size()) blocked_.resize(id + 1);
         blocked_[id].emplace_back(p, static_cast<std::int32_t>(d2));
         rescan(tile_of(p));
@@ -289,12 +319,13 @@ std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
 }
 
 void EmptyCircleFinder::discard(const EmptyCircle& c) {
+    const int t = tile_of(c.pixel);
+    const std::uint64_t mask = std::uint64_t{1} << bit_of(c.pixel);
     discarded_[c.pixel] = static_cast<std::int32_t>(c.d2);
-    if (state_[c.pixel] == candidate) {
-        state_[c.pixel] = none;
-        state_d2_[c.pixel] = static_cast<std::int32_t>(c.d2);
-        candidates_[tile_of(c.pixel)] &= ~(std::uint64_t{1} << bit_of(c.pixel));
-        rescan(tile_of(c.pixel));
+    discarded_bits_[t] |= mask;
+    if (candidates_[t] & mask) {
+        candidates_[t] &= ~mask;
+        rescan(t);
     }
 }
 
@@ -307,7 +338,7 @@ std::optional<EmptyCircle> EmptyCircleFinder::find_by_scan(const ExcludeList& ex
         if (d2 == DistanceField::infinite || field_.occupancy(p) != ObstacleKind::none) continue;
         const Key k = key_of(p, d2);
         if (found && k < best) continue;
-        if (discarded_[p] == d2 || !shape_eligible(p) || exclude.any_inside(circle_of(p))) continue;
+        if (is_discarded(p, d2) || !shape_eligible(p) || exclude.any_inside(circle_of(p))) continue;
         best = k;
         found = true;
     }

@@ -5,6 +5,7 @@
 #include <acanthus/grid_frame.hpp>
 #include <cstdint>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "growth/distance_field.hpp"
@@ -28,6 +29,9 @@ class EmptyCircleFinder {
     EmptyCircleFinder(const DistanceField& field, const GridFrame& grid, double min_radius);
 
     Circle circle_of(int pixel) const;
+    // Radius in pixels of the conservative circle of a field value (squared distance, or
+    // squared city-block distance with the Manhattan metric): it holds no obstacle.
+    double radius_pixels(std::int64_t d2) const;
     bool on_medial_axis(int pixel) const;
     // On the medial axis, nearest obstacle an element, radius at least the minimum.
     bool shape_eligible(int pixel) const;
@@ -59,10 +63,16 @@ class EmptyCircleFinder {
         return static_cast<int>(0xffffffffu - static_cast<std::uint32_t>(k));
     }
     static std::int64_t d2_of(Key k) { return static_cast<std::int64_t>(k >> 32); }
-    enum State : std::uint8_t { none = 0, candidate = 1, blocked = 2 };
     static constexpr int kTileShift = 3;  // 8 x 8 pixel tiles
 
     bool radius_ok(std::int64_t d2) const;
+    // Whether an element may stop the pixel's circle. Euclidean: the nearest obstacle is an
+    // element. Manhattan: city-block ties are everywhere (whole plateaus), so as in the paper
+    // the circle's inflation decides (the engine's exact refinement discards it when the
+    // boundary is nearer).
+    bool element_may_stop(int pixel) const {
+        return manhattan_ || field_.nearest_kind(pixel) == ObstacleKind::element;
+    }
     // d2 of a pixel between neighbours of d2 a and b on a line: a crest that bends enough.
     static bool crest(std::int64_t d, std::int64_t a, std::int64_t b) {
         return a <= d && b <= d && bends(d, a, b);
@@ -73,6 +83,8 @@ class EmptyCircleFinder {
     // The same for a pixel with all 8 neighbours inside the grid.
     bool crest_inside(int pixel, std::int64_t d) const {
         const std::int32_t* d2 = field_.squared_distances() + pixel;
+        if (manhattan_)  // the paper's MAT: at least as far as each of the 4 neighbours
+            return d2[1] <= d && d2[-1] <= d && d2[offsets_[1]] <= d && d2[-offsets_[1]] <= d;
         for (const int off : offsets_)
             if (crest(d, d2[off], d2[-off])) return true;
         return false;
@@ -85,6 +97,7 @@ class EmptyCircleFinder {
     void refresh_bits(int tile, std::uint64_t bits);
     // The `bits` of an inner tile's pixels that could be candidates or are not in state none.
     std::uint64_t maybe_crests(int tile, std::uint64_t bits) const;
+    bool is_discarded(int pixel, std::int64_t d2) const;
     int tile_of(int pixel) const;
     int bit_of(int pixel) const;
     void mark_dirty(int tile);
@@ -106,18 +119,22 @@ class EmptyCircleFinder {
     GridFrame grid_;
     double min_radius_;
     double inv_width_;
+    bool manhattan_;
     std::int64_t min_d2_ = 1;  // smallest d2 whose radius is at least min_radius_
     int tiles_w_ = 0, tiles_h_ = 0;
     int offsets_[4] = {};  // pixel index steps along the four lines of the crest test
 
-    std::vector<std::uint8_t> state_;      // State per pixel, valid for state_d2_
-    std::vector<std::int32_t> state_d2_;   // d2 at which state_ was decided
-    std::vector<std::int32_t> discarded_;  // d2 at which the pixel was discarded, 0 none
+    // Pixel -> d2 at which it was discarded; few pixels ever are, so a map, not a grid.
+    std::unordered_map<int, std::int32_t> discarded_;
     std::vector<std::vector<std::pair<int, std::int32_t>>> blocked_;  // by exclude id: (pixel, d2)
     MaxTree tiles_;
     // Per 8 x 8 tile, one bit per pixel (bit 8 * row + column within the tile).
-    std::vector<std::uint64_t> candidates_;  // pixels in state candidate
-    std::vector<std::uint64_t> changed_;     // pixels changed since the last update()
+    // A pixel's state is in these masks: candidate, blocked (by an exclude point) or none. A
+    // pixel not in state none was decided at its current distance.
+    std::vector<std::uint64_t> candidates_;      // pixels in state candidate
+    std::vector<std::uint64_t> blocked_bits_;    // pixels in state blocked
+    std::vector<std::uint64_t> discarded_bits_;  // pixels with an entry in discarded_
+    std::vector<std::uint64_t> changed_;         // pixels changed since the last update()
     std::vector<int> changed_tiles_;
     std::vector<std::uint8_t> dirty_;
     std::vector<int> dirty_list_;

@@ -24,6 +24,7 @@
 #include "growth/empty_circle_finder.hpp"
 #include "growth/engine_environment.hpp"
 #include "growth/exclude_list.hpp"
+#include "growth/memory_budget.hpp"
 #include "growth/ornament.hpp"
 #include "growth/raster_buffer.hpp"
 #include "pattern/running_body.hpp"
@@ -48,6 +49,15 @@ std::string format_number(double v) {
     return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
 }
 
+// The options, once the buffer they ask for is known to fit in memory (nothing is allocated
+// before): UsageError for a resolution out of range, InputError when too large for memory.
+const GrowthOptions& checked(const Region& region, const GrowthOptions& options) {
+    const int r = options.resolution;
+    if (r >= RasterBuffer::kMinResolution && r <= RasterBuffer::kMaxResolution)
+        check_growth_memory(RasterBuffer::grid_for(region.bounds(), r), r);
+    return options;  // RasterBuffer refuses a resolution out of range
+}
+
 }  // namespace
 
 struct GrowthEngine::Impl {
@@ -56,7 +66,7 @@ struct GrowthEngine::Impl {
           region(r),
           options(std::move(o)),
           raster(region, options.resolution),
-          field(raster.grid().width, raster.grid().height),
+          field(raster.grid().width, raster.grid().height, /*with_sites=*/false, options.distance),
           epsilon(options.epsilon < 0 ? 2 * raster.grid().pixel : options.epsilon),
           min_radius(options.min_radius < 0 ? raster.grid().pixel : options.min_radius),
           finder(field, raster.grid(), min_radius),
@@ -197,9 +207,7 @@ std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) const
     const double r = ornament.nearest(c.center, c.radius + 2 * raster.grid().pixel).second;
     if (!std::isfinite(r)) return std::nullopt;
     const double boundary_floor =
-        (std::sqrt(static_cast<double>(field.boundary_squared_distance(found.pixel))) -
-         EmptyCircleFinder::kMargin) *
-        raster.grid().pixel;
+        finder.radius_pixels(field.boundary_squared_distance(found.pixel)) * raster.grid().pixel;
     if (boundary_floor < r && region.distance_to_boundary(c.center) <= r) return std::nullopt;
     c.radius = r;
     return c;
@@ -350,7 +358,7 @@ void GrowthEngine::Impl::grow() {
 }
 
 GrowthEngine::GrowthEngine(const Pattern& pattern, const Region& region, GrowthOptions options)
-    : impl_(std::make_unique<Impl>(pattern, region, std::move(options))) {}
+    : impl_(std::make_unique<Impl>(pattern, region, checked(region, options))) {}
 
 GrowthEngine::~GrowthEngine() = default;
 

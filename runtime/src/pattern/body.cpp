@@ -1,6 +1,7 @@
 // Support functions for rule bodies: forward to the environment the engine installed.
 #include <acanthus/body.hpp>
 #include <stdexcept>
+#include <vector>
 
 namespace acanthus::body {
 namespace {
@@ -27,6 +28,29 @@ bool inside(Point p) { return env().inside(p); }
 double distance_to_boundary(Point p) { return env().distance_to_boundary(p); }
 Element* nearest_element(Point p) { return env().nearest_element(p); }
 void clear_exclude_list() { env().clear_exclude_list(); }
+
+const std::vector<Corner>& corners() {
+    // Asked for in rule bodies, once per candidate: found once per region (a later region may
+    // reuse an address, so its bounds and area tell them apart too).
+    struct Key {
+        const Region* region = nullptr;
+        Rect bounds;
+        double area = 0;
+        bool operator==(const Key& o) const {
+            return region == o.region && bounds.x0 == o.bounds.x0 && bounds.y0 == o.bounds.y0 &&
+                   bounds.x1 == o.bounds.x1 && bounds.y1 == o.bounds.y1 && area == o.area;
+        }
+    };
+    static Key of;
+    static std::vector<Corner> found;
+    const Region* region = env().region();
+    const Key key = region ? Key{region, region->bounds(), region->area()} : Key{};
+    if (!(key == of)) {
+        found = region ? region->corners() : std::vector<Corner>{};
+        of = key;
+    }
+    return found;
+}
 
 void new_child(Element& e) { call("new_child()").add_dynamic(e); }
 void new_child(Element* e) {

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <acanthus/canvas.hpp>
+#include <acanthus/distance_metric.hpp>
 #include <acanthus/error.hpp>
 #include <algorithm>
 #include <charconv>
@@ -93,6 +94,11 @@ std::string check_style(const std::string& s) {
     for (const char* known : {"drawn", "outline", "filled", "order", "overlay"})
         if (s == known) return {};
     return "--style must be drawn, outline, filled, order or overlay, not '" + s + "'";
+}
+
+std::string check_distance(const std::string& s) {
+    if (distance_metric_named(s)) return {};
+    return "--distance must be euclidean or manhattan, not '" + s + "'";
 }
 
 std::string footer(const Pattern& pattern, const std::string& program) {
@@ -207,7 +213,7 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
                    "Growth buffer pixels on the region's longer side")
         ->type_name("PX")
         ->capture_default_str()
-        ->check(at_least("--resolution", 16, 8192))
+        ->check(at_least("--resolution", 16, 16384))
         ->group(growth_group);
     app.add_option("--epsilon", o.growth.epsilon,
                    "Parent search distance around the empty circle (default: 2 pixels)")
@@ -242,6 +248,14 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->group(growth_group);
     app.add_flag("--reference-engine", o.growth.reference_engine,
                  "Recompute the whole distance field each iteration (slow, same result)")
+        ->group(growth_group);
+    app.add_option_function<std::string>(
+           "--distance",
+           [&o](const std::string& s) { o.growth.distance = *distance_metric_named(s); },
+           "Metric of the distance field: euclidean (exact, the default) or manhattan (the "
+           "paper's MAT; a different ornament)")
+        ->type_name("METRIC")
+        ->check(check_distance)
         ->group(growth_group);
 
     const char* output_group = "Output";

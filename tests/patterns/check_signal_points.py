@@ -1,0 +1,42 @@
+#!/usr/bin/env python3
+"""Motifs at signal points (Wong et al. section 2.1.3), measured from the element tree (--json):
+in the hierarchical pattern, at least three quarters of the sharp corners of a panel (the
+frame's eight, the heart's tip and cleft) have a flower whose rim comes within 4 units of the
+corner. Corners are written here from the panels' own path data.
+
+usage: check_signal_points.py WORK EXAMPLES_PANELS_DIR -- PROGRAM"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+NEAR = 4.0
+SHARE = 0.75
+CORNERS = {
+    "frame": [(0, 0), (160, 0), (160, 160), (0, 160), (30, 30), (130, 30), (130, 130), (30, 130)],
+    "heart": [(80, 146), (80, 38)],
+}
+
+work, panels_dir = sys.argv[1], sys.argv[2]
+program = sys.argv[sys.argv.index("--") + 1]
+os.makedirs(work, exist_ok=True)
+
+failures = []
+for name, corners in CORNERS.items():
+    tree_path = os.path.join(work, f"{name}.json")
+    subprocess.run([program, "--region", os.path.join(panels_dir, f"{name}.svg"), "--rng-seed",
+                    "1", "--quiet", "--json", tree_path, "-o", os.path.join(work, f"{name}.svg")],
+                   check=True, timeout=600)
+    with open(tree_path) as f:
+        flowers = [e["proxies"][0] for e in json.load(f)["elements"] if e["type"] == "flower"]
+    gaps = [min(math.dist(c, f["center"]) - f["radius"] for f in flowers) for c in corners]
+    held = sum(1 for g in gaps if g <= NEAR)
+    print(f"{name}: {held} of {len(corners)} corners hold a flower "
+          f"(rim to corner: {', '.join(f'{g:.1f}' for g in gaps)})")
+    if held < SHARE * len(corners):
+        failures.append(f"{name}: only {held} of {len(corners)} corners hold a flower")
+
+for f in failures:
+    print("FAIL:", f)
+sys.exit(1 if failures else 0)

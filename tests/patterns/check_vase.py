@@ -1,0 +1,68 @@
+#!/usr/bin/env python3
+"""The Chinese vase pattern's balance, measured from the element tree (--json):
+- flowers keep at least 0.9 grid apart, also across the parts of a panel in several pieces
+  (each part lays its own grid from its own seed);
+- the filler keeps clear of the flowers: no hook or drop comes within 1 unit of a flower's rim
+  (but a hook growing out of a flower, in its first half, near that flower).
+
+usage: check_vase.py WORK PANEL... -- PROGRAM"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+GRID = 34.0  # rules/chinese_vase.acr's default
+CLEAR = 1.0
+
+work = sys.argv[1]
+split = sys.argv.index("--")
+panels, program = sys.argv[2:split], sys.argv[split + 1]
+os.makedirs(work, exist_ok=True)
+
+
+def bezier(c, t):
+    u = 1 - t
+    return [u ** 3 * c[0][i] + 3 * u * u * t * c[1][i] + 3 * u * t * t * c[2][i] + t ** 3 * c[3][i]
+            for i in (0, 1)]
+
+
+failures = []
+for panel in panels:
+    name = os.path.splitext(os.path.basename(panel))[0]
+    tree_path = os.path.join(work, f"{name}.json")
+    subprocess.run([program, "--region", panel, "--rng-seed", "1", "--quiet", "--json", tree_path,
+                    "-o", os.path.join(work, f"{name}.svg")], check=True, timeout=600)
+    with open(tree_path) as f:
+        elements = json.load(f)["elements"]
+    flower_elements = [e for e in elements if e["type"] == "flower"]
+    flowers = [e["proxies"][0] for e in flower_elements]
+    closest = min((math.dist(a["center"], b["center"]), i, j)
+                  for i, a in enumerate(flowers) for j, b in enumerate(flowers) if i < j)
+    if closest[0] < 0.9 * GRID:
+        failures.append(f"{name}: flowers {closest[1]} and {closest[2]} are "
+                        f"{closest[0] / GRID:.2f} grid apart")
+    parts = {e["fields"].get("part", 0) for e in elements if e["type"] == "flower"}
+    nearest = math.inf
+    for e in elements:
+        if e["type"] == "hook":
+            c = e["proxies"][0]["c"]
+            points = [bezier(c, k / 16) for k in range(17)]
+            reach = 0.0
+        elif e["type"] == "drop":
+            points = [e["proxies"][0]["center"]]
+            reach = e["proxies"][0]["radius"]
+        else:
+            continue
+        for fe, f in zip(flower_elements, flowers):
+            grows_out = e["type"] == "hook" and e["parent"] == fe["id"]
+            for p in points[8:] if grows_out else points:
+                nearest = min(nearest, math.dist(p, f["center"]) - f["radius"] - reach)
+    if nearest < CLEAR:
+        failures.append(f"{name}: the filler comes {nearest:.2f} units from a flower's rim")
+    print(f"{name}: {len(flowers)} flowers in {len(parts)} grids, closest "
+          f"{closest[0] / GRID:.2f} grid apart; filler {nearest:.2f} units from the flowers")
+
+for f in failures:
+    print("FAIL:", f)
+sys.exit(1 if failures else 0)
