@@ -95,15 +95,15 @@ Pattern make_pattern() {
     p.params.push_back(
         ParamInfo{"dot_radius", "double", "3.0", 2,
                   [](std::string_view t, std::string& e) { return assign(dot_radius, t, e); },
-                  [] { return format_param(dot_radius); }});
+                  [] { return format_param(dot_radius); }, "", ""});
     p.params.push_back(
         ParamInfo{"explode", "bool", "false", 3,
                   [](std::string_view t, std::string& e) { return assign(explode, t, e); },
-                  [] { return format_param(explode); }});
+                  [] { return format_param(explode); }, "", ""});
     p.params.push_back(
         ParamInfo{"limit", "int", "1000", 4,
                   [](std::string_view t, std::string& e) { return assign(limit, t, e); },
-                  [] { return format_param(limit); }});
+                  [] { return format_param(limit); }, "", ""});
     return p;
 }
 
