@@ -21,7 +21,7 @@ constexpr const char* kPrelude =
     "#include <string>\n"
     "#include <string_view>\n";
 
-// For rule code loaded by the preview host: the vectors every generated file uses are
+// For rule code loaded by the preview host: the vectors generated files use most are
 // instantiated once, in the host (preview_host.cpp), not again at every save.
 constexpr const char* kHostInstantiations =
     "#include <vector>\n"
@@ -29,7 +29,11 @@ constexpr const char* kHostInstantiations =
     "extern template class std::vector<acanthus::RuleInfo>;\n"
     "extern template class std::vector<acanthus::ParamInfo>;\n"
     "extern template class std::vector<acanthus::ProxyKind>;\n"
-    "extern template class std::vector<acanthus::Point>;\n";
+    "extern template class std::vector<acanthus::Point>;\n"
+    "extern template class std::vector<acanthus::Circle>;\n"
+    "extern template class std::vector<acanthus::Element*>;\n"
+    "extern template class std::vector<double>;\n"
+    "extern template class std::vector<int>;\n";
 
 }  // namespace
 
