@@ -51,7 +51,8 @@ def measure(acanthus, root, rule):
         shutil.copy(rule, path)
         original = open(path).read()
         # The rule files' own relative paths (references, facades) are relative to the root.
-        server = subprocess.Popen([acanthus, "preview", path, "--port", "0"], cwd=root,
+        extra = os.environ.get("ACANTHUS_BENCH_PREVIEW_OPTIONS", "").split()  # e.g. "-O 1"
+        server = subprocess.Popen([acanthus, "preview", *extra, path, "--port", "0"], cwd=root,
                                   stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
         line = server.stdout.readline()
         url = line[line.index("http://"):].split()[0]
