@@ -138,7 +138,8 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
     // (bench/preview.sh). Both use the same libstdc++ as the runtime.
     BuildOptions fast = build;
     const bool chosen = !fast.cxx.empty() || std::getenv("CXX");
-    if (!chosen && on_path("clang++")) fast.cxx = "clang++";
+    // (Not for a sanitized runtime: its sanitizer runtime is g++'s.)
+    if (!chosen && toolchain.sanitize_flags.empty() && on_path("clang++")) fast.cxx = "clang++";
     if (!chosen && on_path("ld.lld")) fast.extra_flags.push_back("-fuse-ld=lld");
 
     int code = 0;
