@@ -168,6 +168,8 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
                              work,
                              input,
                              stem,
+                             host,
+                             (fs::path(input).parent_path() / (stem + ".guides.svg")).string(),
                              stopping};
             add_routes(server, site);
             std::thread signals([&] {

@@ -39,6 +39,23 @@ void send_file(httplib::Response& res, const fs::path& path, const char* type) {
     res.set_content(body, type);
 }
 
+// Writes `text` to a temporary name beside `path`, then renames it over `path`.
+bool write_whole_file(const fs::path& path, const std::string& text) {
+    const fs::path partial = path.string() + ".partial";
+    {
+        std::ofstream out(partial, std::ios::binary);
+        if (!(out << text) || !out.flush()) {
+            std::error_code ec;
+            fs::remove(partial, ec);
+            return false;
+        }
+    }
+    std::error_code ec;
+    fs::rename(partial, path, ec);
+    if (ec) fs::remove(partial, ec);
+    return !ec;
+}
+
 void bad_request(httplib::Response& res, const std::string& message) {
     res.status = 400;
     res.set_content(json{{"error", message}}.dump(), "application/json");
@@ -66,6 +83,35 @@ std::string latest_upload() {
 void set_latest_upload(const std::string& path) {
     std::lock_guard lock(upload_mutex);
     upload_path = path;
+}
+
+// The Host header's name (no port, no brackets) is an IP address, localhost or `listen_host`.
+bool served_host(const std::string& host_header, const std::string& listen_host) {
+    std::string name = host_header;
+    if (!name.empty() && name.front() == '[') {
+        const std::size_t close = name.find(']');
+        if (close == std::string::npos) return false;
+        name = name.substr(1, close - 1);
+        return !name.empty() && name.find_first_not_of("0123456789abcdefABCDEF:.") ==
+                                    std::string::npos;  // an IPv6 literal
+    }
+    const std::size_t colon = name.rfind(':');
+    if (colon != std::string::npos) name.resize(colon);
+    if (name.empty()) return false;
+    if (name == "localhost" || name == listen_host) return true;
+    return name.find_first_not_of("0123456789.") == std::string::npos;  // an IPv4 literal
+}
+
+std::string guides_path;  // the guides file this server wrote last
+
+std::string latest_guides() {
+    std::lock_guard lock(upload_mutex);
+    return guides_path;
+}
+
+void set_latest_guides(const std::string& path) {
+    std::lock_guard lock(upload_mutex);
+    guides_path = path;
 }
 
 bool finite_number(const json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
@@ -320,15 +366,22 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         if (!parse_json(req, res, body)) return;
         std::string svg, error;
         if (!guides_svg(body, svg, error)) return bad_request(res, error);
-        const fs::path file = fs::path(site.work_dir) / "guides.svg";
+        // Beside the rule file, so that the command the page shows still works after the
+        // preview stops; in the server's own folder when that one cannot be written.
+        fs::path file = site.guides_file;
         PreviewSettings s = site.job.settings();
         if (svg.empty()) {
-            std::error_code ec;
-            fs::remove(file, ec);
             s.params.erase("growth_guides");
         } else {
-            std::ofstream(file, std::ios::binary) << svg;
+            if (!write_whole_file(file, svg)) file = fs::path(site.work_dir) / "guides.svg";
+            if (!write_whole_file(file, svg)) {
+                res.status = 500;
+                res.set_content(json{{"error", "cannot write " + file.string()}}.dump(),
+                                "application/json");
+                return;
+            }
             s.params["growth_guides"] = file.string();
+            set_latest_guides(file.string());
         }
         if (body.contains("mode") && body["mode"].is_string())
             s.params["growth_mode"] = body["mode"].get<std::string>();
@@ -337,7 +390,13 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
                         "application/json");
     });
     server.Get("/guides.svg", [&site](const httplib::Request&, httplib::Response& res) {
-        send_file(res, fs::path(site.work_dir) / "guides.svg", "image/svg+xml");
+        // Only the file this server wrote, whatever growth_guides the settings name.
+        const std::string written = latest_guides();
+        if (written.empty()) {
+            res.status = 404;
+            return;
+        }
+        send_file(res, written, "image/svg+xml");
         res.set_header("Content-Disposition", "attachment; filename=\"guides.svg\"");
     });
 
@@ -362,9 +421,16 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
             });
     });
 
-    // Another web site open in the same browser must not drive the preview: a POST carrying
-    // an Origin is accepted only from the page itself, whatever address the server listens on.
-    server.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+    // Another web site open in the same browser must not read or drive the preview. A site
+    // that rebinds its own name to 127.0.0.1 sends that name as Host: only an address,
+    // localhost or the --host name is served. A POST carrying an Origin is accepted only from
+    // the page itself, whatever address the server listens on.
+    server.set_pre_routing_handler([&site](const httplib::Request& req, httplib::Response& res) {
+        if (!served_host(req.get_header_value("Host"), site.listen_host)) {
+            res.status = 403;
+            res.set_content("requests must name the server by its address\n", "text/plain");
+            return httplib::Server::HandlerResponse::Handled;
+        }
         if (req.method != "POST" || !req.has_header("Origin"))
             return httplib::Server::HandlerResponse::Unhandled;
         if (req.get_header_value("Origin") == "http://" + req.get_header_value("Host"))

@@ -25,6 +25,8 @@ struct PreviewSite {
     std::string work_dir;             // the server's temporary directory
     std::string file;                 // the rule file, as given
     std::string stem;                 // the rule file's stem: names downloads
+    std::string listen_host;          // --host: a name requests may use besides an address
+    std::string guides_file;          // beside the rule file: NAME.guides.svg
     const std::atomic<bool>& stopping;
 };
 

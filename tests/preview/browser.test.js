@@ -210,6 +210,9 @@ async function growthTools(browser) {
         "a flow stroke sets growth_mode=flow and growth_guides");
   const guides = await (await fetch(url + "guides.svg")).text();
   check(/<polyline class="flow"/.test(guides), "the stroke is saved as a guides SVG with class flow");
+  const beside = path.join(work, "arrangement.guides.svg");
+  check(s.settings.params.growth_guides === beside && fs.readFileSync(beside, "utf8") === guides,
+        "the guides are saved beside the rule file, where the command shown finds them");
   check((await (await fetch(url + "render.svg")).text()) !== before, "the flow stroke changes the picture");
   check(s.command.includes("--param growth_guides=") && s.command.includes("--param growth_mode=flow"),
         "the page shows the command that makes it again: " + s.command);

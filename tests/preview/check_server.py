@@ -176,6 +176,14 @@ def main():
             r.read()
             c.close()
             check(r.status == 403, "a POST from another origin refused (%d)" % r.status)
+            for name, want in [("rebound.example:%s" % port, 403), ("localhost:%s" % port, 200),
+                               ("127.0.0.1:%s" % port, 200), ("[::1]:%s" % port, 200)]:
+                c = http.client.HTTPConnection(host, int(port), timeout=10)
+                c.request("GET", "/status.json", headers={"Host": name})
+                r = c.getresponse()
+                r.read()
+                c.close()
+                check(r.status == want, "GET with Host %s: %d (%d)" % (name, want, r.status))
             code, _ = server.post("/settings", b"{not json")
             check(code == 400, "malformed settings refused (%d)" % code)
             rc = server.stop()
