@@ -257,3 +257,60 @@ TEST(DistanceField, IncrementalFindsDisconnectedVoronoiPixels) {
         }
     }
 }
+
+// The lazy far field: values are upper bounds everywhere, exact in trusted blocks and their
+// one-pixel rings, and exact everywhere once every block is settled.
+TEST(DistanceField, LazyFieldIsExactWhereTrustedAndAfterSettling) {
+    Random rng(77);
+    const int w = 330, h = 230;  // blocks of 64 pixels, the last ones partial
+    std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 0);
+    for (int i = 0; i < w; ++i) occ[i] = occ[(h - 1) * w + i] = 1;
+    for (int j = 0; j < h; ++j) occ[j * w] = occ[j * w + w - 1] = 1;
+    DistanceField lazy(w, h, /*with_sites=*/false);
+    lazy.set_lazy(true);
+    ASSERT_TRUE(lazy.lazy());
+    lazy.compute(occ);
+    auto& far = lazy.far_blocks();
+    long untrusted_pixels = 0;
+    for (int step = 0; step < 120; ++step) {
+        // A dot of radius 0..3 pixels, as the growth engine places them.
+        const int ci = static_cast<int>(rng.uniform_int(2, w - 3));
+        const int cj = static_cast<int>(rng.uniform_int(2, h - 3));
+        const int r = static_cast<int>(rng.uniform_int(0, 3));
+        std::vector<int> dot;
+        for (int j = std::max(1, cj - r); j <= std::min(h - 2, cj + r); ++j)
+            for (int i = std::max(1, ci - r); i <= std::min(w - 2, ci + r); ++i)
+                if (sq(i - ci) + sq(j - cj) <= sq(r)) dot.push_back(j * w + i);
+        lazy.add_sites(dot, ObstacleKind::element, nullptr);
+        for (int p : dot) occ[p] = occ[p] ? occ[p] : 2;
+        if (step % 7 == 3)
+            lazy.settle(static_cast<int>(rng.uniform_int(0, far.count() - 1)), nullptr);
+        DistanceField full(w, h, /*with_sites=*/false);
+        full.compute(occ);
+        for (int p = 0; p < w * h; ++p) {
+            ASSERT_GE(lazy.squared_distance(p), full.squared_distance(p)) << "step " << step;
+            if (!far.trusted(far.block_of(p))) {
+                ++untrusted_pixels;
+                continue;
+            }
+            const int i = p % w, j = p / w;
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di) {
+                    const int a = i + di, b = j + dj;
+                    if (a < 0 || b < 0 || a >= w || b >= h) continue;
+                    ASSERT_EQ(lazy.squared_distance(b * w + a), full.squared_distance(b * w + a))
+                        << "step " << step << " trusted pixel " << i << "," << j;
+                }
+        }
+    }
+    EXPECT_GT(untrusted_pixels, 0) << "the far field was never left pending";
+    std::vector<int> changed;
+    for (int b = 0; b < far.count(); ++b)
+        if (!far.trusted(b)) lazy.settle(b, &changed);
+    DistanceField full(w, h, /*with_sites=*/false);
+    full.compute(occ);
+    for (int p = 0; p < w * h; ++p) {
+        ASSERT_EQ(lazy.squared_distance(p), full.squared_distance(p)) << "pixel " << p;
+        ASSERT_EQ(lazy.nearest_kind(p), full.nearest_kind(p)) << "pixel " << p;
+    }
+}

@@ -146,6 +146,7 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
     separable_edt(
         w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
         dist2_.data(), site, scratch_);
+    if (lazy_) far_.reset(w, height_, dist2_.data());
     separable_edt(
         w, height_,
         [&](int i, int j) {
@@ -244,6 +245,10 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
     // it is inside.
     auto evaluate = [&](auto& line, int i, int j, int r) {
         if (!measurable(i, j)) {
+            if constexpr (kCommit) {  // beyond a lazy fill's clip: its blocks keep the sites
+                visit[r] = base;
+                return false;
+            }
             escaped = true;
             return false;
         }
@@ -329,6 +334,14 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
     std::int32_t* site_data = site ? site->data() : nullptr;
     blob_.reset(sites, w, h);
     if (blob_.columns() <= kDirectColumns) {
+        if (lazy_ && &d2 == &dist2_) {
+            // Exact near the sites; the blocks beyond keep them pending.
+            const PendingBlocks::Rect near = far_.near_rect(sites);
+            wavefront<true>(sites, d2, site_data, out, blob_,
+                            [&](int i, int j) { return near.contains(i, j); });
+            far_.defer(sites, near);
+            return;
+        }
         wavefront<true>(sites, d2, site_data, out, blob_, [](int, int) { return true; });
         return;
     }

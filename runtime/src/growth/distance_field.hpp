@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "growth/pending_blocks.hpp"
 #include "growth/site_blob.hpp"
 
 namespace acanthus::detail {
@@ -34,6 +35,21 @@ class DistanceField {
     // Marks free pixels (indices j*width+i) as sites of `kind` and updates the field.
     // Pixels whose distance changed are appended to `changed` when it is not null.
     void add_sites(const std::vector<int>& pixels, ObstacleKind kind, std::vector<int>* changed);
+
+    // Lazy far field (docs/engine.md, "Scale"): element sites added later lower the field
+    // exactly only near them; beyond, whole blocks keep them pending and hold upper bounds
+    // (distances only decrease) until settle(). Set before compute(); Euclidean, no feature
+    // transform. Off by default: every value is exact after add_sites().
+    void set_lazy(bool lazy) {
+        lazy_ = lazy && metric_ == DistanceMetric::euclidean && site_.empty();
+    }
+    bool lazy() const { return lazy_; }
+    PendingBlocks& far_blocks() { return far_; }
+    const PendingBlocks& far_blocks() const { return far_; }
+    // Makes the block and its one-pixel ring exact; appends lowered pixels to `changed`.
+    void settle(int block, std::vector<int>* changed) {
+        far_.settle(block, dist2_.data(), changed);
+    }
 
     // Squared distance in pixels from pixel index to its nearest site (0 on a site).
     std::int64_t squared_distance(int index) const { return dist2_[index]; }
@@ -71,6 +87,8 @@ class DistanceField {
     int width_;
     int height_;
     DistanceMetric metric_;
+    bool lazy_ = false;
+    PendingBlocks far_;
     std::vector<std::uint8_t> occ_;
     std::vector<std::int32_t> dist2_;      // to the nearest site of any kind
     std::vector<std::int32_t> boundary2_;  // to the nearest boundary site

@@ -11,8 +11,7 @@ namespace acanthus::detail {
 
 using namespace tile_masks;
 
-EmptyCircleFinder::EmptyCircleFinder(const DistanceField& field, const GridFrame& grid,
-                                     double min_radius)
+EmptyCircleFinder::EmptyCircleFinder(DistanceField& field, const GridFrame& grid, double min_radius)
     : field_(field),
       grid_(grid),
       min_radius_(min_radius),
@@ -214,6 +213,32 @@ void EmptyCircleFinder::rebuild() {
     std::fill(candidates_.begin(), candidates_.end(), 0);
     std::fill(blocked_bits_.begin(), blocked_bits_.end(), 0);
     for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t, ~std::uint64_t{0});
+    blocks_.reset(field_.lazy() ? static_cast<std::size_t>(field_.far_blocks().count()) : 0);
+    if (field_.lazy()) field_.far_blocks().clear_raised();
+}
+
+void EmptyCircleFinder::distrust_new_blocks() {
+    if (!field_.lazy()) return;
+    PendingBlocks& far = field_.far_blocks();
+    for (int b : far.raised()) {
+        // Settling the block changes only candidates of squared distance up to its reach; the
+        // low word names the block.
+        if (!far.trusted(b)) blocks_.set(static_cast<std::size_t>(b), key_of(b, far.reach(b)));
+    }
+    far.clear_raised();
+}
+
+void EmptyCircleFinder::settle(int block) {
+    settled_.clear();
+    field_.settle(block, &settled_);
+    blocks_.set(static_cast<std::size_t>(block), 0);
+    update(settled_);
+}
+
+void EmptyCircleFinder::settle_all() {
+    if (!field_.lazy()) return;
+    for (int b = 0; b < field_.far_blocks().count(); ++b)
+        if (!field_.far_blocks().trusted(b)) settle(b);
 }
 
 std::uint64_t EmptyCircleFinder::near_changes(int tile) const {
@@ -274,6 +299,7 @@ void EmptyCircleFinder::update(const std::vector<int>& changed) {
     dirty_list_.clear();
     for (int t : changed_tiles_) changed_[t] = 0;
     changed_tiles_.clear();
+    distrust_new_blocks();
 }
 
 void EmptyCircleFinder::release(const std::vector<int>& removed_ids) {
@@ -303,8 +329,18 @@ void EmptyCircleFinder::release_all() {
 std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
     for (;;) {
         const Key k = tiles_.max();
+        const Key b = blocks_.max();
+        if (b != 0 && (k == 0 || d2_of(b) >= d2_of(k))) {
+            // A block not trusted may hold a candidate as good: make it exact first.
+            settle(pixel_of(b));
+            continue;
+        }
         if (k == 0) return std::nullopt;
         const int p = pixel_of(k);
+        if (field_.lazy() && !field_.far_blocks().trusted(field_.far_blocks().block_of(p))) {
+            settle(field_.far_blocks().block_of(p));  // its key may rest on a stale distance
+            continue;
+        }
         const std::int64_t d2 = d2_of(k);
         const Circle c = circle_of(p);
         const int id = exclude.find_inside(c);

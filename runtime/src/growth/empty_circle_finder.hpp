@@ -25,8 +25,8 @@ class EmptyCircleFinder {
     static constexpr double kMargin = 0.75;  // pixels, >= sqrt(1/2) + PixelCover::kFlatten
     static constexpr double kBend = 0.5;     // pixels: smallest bend of a medial-axis crest
 
-    // `min_radius` in user units.
-    EmptyCircleFinder(const DistanceField& field, const GridFrame& grid, double min_radius);
+    // `min_radius` in user units. With a lazy field, find() settles the blocks it must trust.
+    EmptyCircleFinder(DistanceField& field, const GridFrame& grid, double min_radius);
 
     Circle circle_of(int pixel) const;
     // Radius in pixels of the conservative circle of a field value (squared distance, or
@@ -42,6 +42,8 @@ class EmptyCircleFinder {
     void update(const std::vector<int>& changed);
     void release(const std::vector<int>& removed_ids);
     void release_all();
+    // Settles every block of a lazy field (for scans such as best_candidates()).
+    void settle_all();
     std::optional<EmptyCircle> find(const ExcludeList& exclude);
     // Drops a candidate found by find() or find_by_scan() (the engine found the boundary nearer
     // than every element when measured exactly). It stays dropped, in both searches, until its
@@ -105,6 +107,9 @@ class EmptyCircleFinder {
     std::uint64_t near_changes(int tile) const;
     void rescan(int tile);                       // tile maximum from the candidate bits
     void refresh(int tile, std::uint64_t bits);  // re-decides those pixels, then rescans
+    // Lazy field: bounds of the blocks that stopped being trusted enter blocks_.
+    void distrust_new_blocks();
+    void settle(int block);
     // Row of a pixel index without a division (a multiply and a correction).
     int row_of(int pixel) const {
         int j = static_cast<int>(pixel * inv_width_);
@@ -115,7 +120,7 @@ class EmptyCircleFinder {
         return j;
     }
 
-    const DistanceField& field_;
+    DistanceField& field_;
     GridFrame grid_;
     double min_radius_;
     double inv_width_;
@@ -128,6 +133,9 @@ class EmptyCircleFinder {
     std::unordered_map<int, std::int32_t> discarded_;
     std::vector<std::vector<std::pair<int, std::int32_t>>> blocked_;  // by exclude id: (pixel, d2)
     MaxTree tiles_;
+    // Lazy field: per block not trusted, a key above every candidate it may hold; 0 otherwise.
+    MaxTree blocks_;
+    std::vector<int> settled_;  // pixels lowered by settle()
     // Per 8 x 8 tile, one bit per pixel (bit 8 * row + column within the tile).
     // A pixel's state is in these masks: candidate, blocked (by an exclude point) or none. A
     // pixel not in state none was decided at its current distance.

@@ -72,6 +72,8 @@ struct GrowthEngine::Impl {
           finder(field, raster.grid(), min_radius),
           ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
           env(region, ornament, exclude, options.rng_seed) {
+        // The incremental engine needs exact distances only where they may decide C.
+        field.set_lazy(!options.reference_engine);
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
@@ -260,6 +262,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         frame.grid = raster.grid();
         frame.occupancy = raster.occupancy();
         std::vector<Circle> circles;
+        if (!options.reference_engine) finder.settle_all();  // the scan reads every pixel
         for (int p : finder.best_candidates(kDebugCandidates))
             circles.push_back(finder.circle_of(p));
         for (const Circle& c : detail::distinct_circles(std::move(circles)))
