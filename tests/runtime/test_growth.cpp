@@ -69,6 +69,10 @@ TEST_P(EnginesAgree, IncrementalAndReferenceGiveIdenticalTrees) {
     EXPECT_EQ(inc_stats.exclude_points, ref_stats.exclude_points);
     expect_valid_tree(incremental);
     expect_dots_fit(incremental, region);
+    // The lazy far field (on by default only for large buffers) grows the same tree.
+    GrowthOptions lazy = small_options(false);
+    lazy.lazy_field_pixels = 0;
+    EXPECT_EQ(grow(dots::pattern(), region, lazy), reference);
 }
 
 INSTANTIATE_TEST_SUITE_P(Regions, EnginesAgree,
@@ -109,6 +113,9 @@ TEST(Growth, EnginesAgreeAt2048Pixels) {
     ASSERT_EQ(incremental.size(), 300u);
     ASSERT_EQ(incremental, reference);
     expect_dots_fit(incremental, region);
+    o.reference_engine = false;
+    o.lazy_field_pixels = 0;
+    EXPECT_EQ(grow(dots::pattern(), region, o), reference);
 }
 
 // The paper's Manhattan MAT (--distance manhattan): it grows a valid ornament, the same one on

@@ -72,8 +72,11 @@ struct GrowthEngine::Impl {
           finder(field, raster.grid(), min_radius),
           ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
           env(region, ornament, exclude, options.rng_seed) {
-        // The incremental engine needs exact distances only where they may decide C.
-        field.set_lazy(!options.reference_engine);
+        // The incremental engine needs exact distances only where they may decide C; below
+        // options.lazy_field_pixels the eager field is faster.
+        field.set_lazy(!options.reference_engine &&
+                       static_cast<long long>(raster.grid().width) * raster.grid().height >=
+                           options.lazy_field_pixels);
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
