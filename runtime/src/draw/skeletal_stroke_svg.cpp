@@ -108,7 +108,7 @@ SkeletalStroke SkeletalStroke::from_svg_file(const std::string& path) {
     while (!stack.empty()) {
         auto [node, parent] = stack.back();
         stack.pop_back();
-        std::string label = "<" + std::string(node.name()) + "> (line " +
+        std::string label = std::string("<").append(node.name()) + "> (line " +
                             std::to_string(line_of(node.offset_debug())) + ")";
         Geom::Affine here = parent;
         if (auto t = node.attribute("transform")) {

@@ -19,13 +19,15 @@ bool parse_integer(std::string_view text, Int& out, std::string& error, const ch
     auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
     if (!digits.empty() && ec == std::errc::result_out_of_range &&
         ptr == digits.data() + digits.size()) {
-        error = "'" + std::string(text) + "' is out of range for " + type + " (" +
+        // Built by appending: GCC 12 warns falsely (-Wrestrict, bug 105329) on "lit" + string&&.
+        error = std::string("'").append(text) + "' is out of range for " + type + " (" +
                 std::to_string(std::numeric_limits<Int>::min()) + " to " +
                 std::to_string(std::numeric_limits<Int>::max()) + ")";
         return false;
     }
     if (digits.empty() || ec != std::errc() || ptr != digits.data() + digits.size()) {
-        error = "'" + std::string(text) + "' is not " + (type[0] == 'i' ? "an " : "a ") + type;
+        error =
+            std::string("'").append(text) + "' is not " + (type[0] == 'i' ? "an " : "a ") + type;
         return false;
     }
     out = v;
@@ -78,7 +80,7 @@ bool parse_param(std::string_view text, bool& out, std::string& error) {
     } else if (text == "false" || text == "0" || text == "no" || text == "off") {
         out = false;
     } else {
-        error = "'" + std::string(text) + "' is not a bool (true/false, 1/0, yes/no, on/off)";
+        error = std::string("'").append(text) + "' is not a bool (true/false, 1/0, yes/no, on/off)";
         return false;
     }
     return true;

@@ -19,8 +19,10 @@ std::pair<std::size_t, std::size_t> SvgSource::position(std::ptrdiff_t offset) c
 }
 
 std::string SvgSource::label(pugi::xml_node node) {
-    std::string s = "<" + std::string(node.name());
-    if (const char* id = node.attribute("id").value(); *id) s += " id=\"" + std::string(id) + "\"";
+    // Built by appending: GCC 12 warns falsely (-Wrestrict, bug 105329) on "lit" + string&&.
+    std::string s = std::string("<").append(node.name());
+    if (const char* id = node.attribute("id").value(); *id)
+        s.append(" id=\"").append(id).append("\"");
     return s + ">";
 }
 
