@@ -72,18 +72,25 @@ bool parse_json(const httplib::Request& req, httplib::Response& res, json& out) 
     }
 }
 
-std::mutex upload_mutex;
-std::string upload_path;  // the latest panel dropped onto the page
+// A file the server wrote last, read and replaced by the request threads.
+class LatestFile {
+  public:
+    std::string get() const {
+        std::lock_guard lock(mutex_);
+        return path_;
+    }
+    void set(const std::string& path) {
+        std::lock_guard lock(mutex_);
+        path_ = path;
+    }
 
-std::string latest_upload() {
-    std::lock_guard lock(upload_mutex);
-    return upload_path;
-}
+  private:
+    mutable std::mutex mutex_;
+    std::string path_;
+};
 
-void set_latest_upload(const std::string& path) {
-    std::lock_guard lock(upload_mutex);
-    upload_path = path;
-}
+LatestFile latest_upload;  // the latest panel dropped onto the page
+LatestFile latest_guides;  // the guides file written last
 
 // The Host header's name (no port, no brackets) is an IP address, localhost or `listen_host`.
 bool served_host(const std::string& host_header, const std::string& listen_host) {
@@ -100,18 +107,6 @@ bool served_host(const std::string& host_header, const std::string& listen_host)
     if (name.empty()) return false;
     if (name == "localhost" || name == listen_host) return true;
     return name.find_first_not_of("0123456789.") == std::string::npos;  // an IPv4 literal
-}
-
-std::string guides_path;  // the guides file this server wrote last
-
-std::string latest_guides() {
-    std::lock_guard lock(upload_mutex);
-    return guides_path;
-}
-
-void set_latest_guides(const std::string& path) {
-    std::lock_guard lock(upload_mutex);
-    guides_path = path;
 }
 
 bool finite_number(const json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
@@ -158,7 +153,7 @@ bool apply_settings(PreviewSite& site, const json& body, PreviewSettings& s, std
         if (panel.empty()) {
             s.region.clear();
         } else if (panel == "uploaded") {
-            const std::string up = latest_upload();
+            const std::string up = latest_upload.get();
             if (up.empty()) return error = "no panel was uploaded", false;
             s.region = up;
         } else if (std::find(site.panels.begin(), site.panels.end(), panel) != site.panels.end()) {
@@ -352,7 +347,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         const fs::path file =
             fs::path(site.work_dir) / ("uploaded-" + std::to_string(++uploads) + ".svg");
         std::ofstream(file, std::ios::binary) << req.body;
-        set_latest_upload(file.string());
+        latest_upload.set(file.string());
         PreviewSettings s = site.job.settings();
         s.region = file.string();
         s.seeds.clear();
@@ -381,7 +376,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
                 return;
             }
             s.params["growth_guides"] = file.string();
-            set_latest_guides(file.string());
+            latest_guides.set(file.string());
         }
         if (body.contains("mode") && body["mode"].is_string())
             s.params["growth_mode"] = body["mode"].get<std::string>();
@@ -391,7 +386,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
     });
     server.Get("/guides.svg", [&site](const httplib::Request&, httplib::Response& res) {
         // Only the file this server wrote, whatever growth_guides the settings name.
-        const std::string written = latest_guides();
+        const std::string written = latest_guides.get();
         if (written.empty()) {
             res.status = 404;
             return;

@@ -6,11 +6,11 @@
 - flowers are not all alike: their radii and petal turns vary.
 
 usage: check_flowers.py WORK PANEL... -- PROGRAM"""
-import json
 import math
 import os
-import subprocess
 import sys
+
+from pattern_tree import grow_tree
 
 WIDTH = 600
 MARGIN = 0.02  # runtime/src/output/page_layout.cpp
@@ -29,11 +29,7 @@ def key(p):
 failures = []
 for panel in panels:
     name = os.path.splitext(os.path.basename(panel))[0]
-    tree_path = os.path.join(work, f"{name}.json")
-    subprocess.run([program, "--region", panel, "--rng-seed", "1", "--quiet", "--json", tree_path,
-                    "-o", os.path.join(work, f"{name}.svg")], check=True, timeout=600)
-    with open(tree_path) as f:
-        tree = json.load(f)
+    tree = grow_tree(program, panel, work)
     x0, y0, x1, y1 = tree["region"]["bounds"]
     margin = MARGIN * max(x1 - x0, y1 - y0)
     px = WIDTH / (x1 - x0 + 2 * margin)  # output pixels per unit at the gallery width

@@ -7,11 +7,11 @@ cusps). Measured from the Bézier proxies themselves, not from the patterns' own
 usage: check_junctions.py TYPE WORK PANEL... -- PROGRAM
   TYPE  the curve element type (its first child of the same type starting off the parent's
         end is a branch; spirals mark their first segment with the field index == 0)"""
-import json
 import math
 import os
-import subprocess
 import sys
+
+from pattern_tree import bezier_point, grow_tree
 
 LIMIT = 35.0
 
@@ -19,12 +19,6 @@ kind, work = sys.argv[1], sys.argv[2]
 split = sys.argv.index("--")
 panels, program = sys.argv[3:split], sys.argv[split + 1]
 os.makedirs(work, exist_ok=True)
-
-
-def point(c, t):
-    u = 1 - t
-    return [u ** 3 * c[0][i] + 3 * u * u * t * c[1][i] + 3 * u * t * t * c[2][i] + t ** 3 * c[3][i]
-            for i in (0, 1)]
 
 
 def tangent(c, t):
@@ -45,11 +39,7 @@ failures = []
 total = 0
 for panel in panels:
     name = os.path.splitext(os.path.basename(panel))[0]
-    tree_path = os.path.join(work, f"{name}.json")
-    subprocess.run([program, "--region", panel, "--rng-seed", "1", "--quiet", "--json", tree_path,
-                    "-o", os.path.join(work, f"{name}.svg")], check=True, timeout=600)
-    with open(tree_path) as f:
-        elements = json.load(f)["elements"]
+    elements = grow_tree(program, panel, work)["elements"]
     by_id = {e["id"]: e for e in elements}
     angles = []
     for e in elements:
@@ -62,7 +52,7 @@ for panel in panels:
         if math.dist(c[0], pc[3]) < 1e-6:
             continue  # a continuation, not a branch
         # the branch point: the parent's point nearest the branch's start
-        t = min(range(401), key=lambda k: math.dist(point(pc, k / 400), c[0])) / 400
+        t = min(range(401), key=lambda k: math.dist(bezier_point(pc, k / 400), c[0])) / 400
         angles.append((degrees(tangent(pc, t), tangent(c, 0.0)), e["id"]))
     total += len(angles)
     if not angles:

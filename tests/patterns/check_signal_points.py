@@ -5,11 +5,11 @@ frame's eight, the heart's tip and cleft) have a flower whose rim comes within 4
 corner. Corners are written here from the panels' own path data.
 
 usage: check_signal_points.py WORK EXAMPLES_PANELS_DIR -- PROGRAM"""
-import json
 import math
 import os
-import subprocess
 import sys
+
+from pattern_tree import grow_tree
 
 NEAR = 4.0
 SHARE = 0.75
@@ -24,12 +24,8 @@ os.makedirs(work, exist_ok=True)
 
 failures = []
 for name, corners in CORNERS.items():
-    tree_path = os.path.join(work, f"{name}.json")
-    subprocess.run([program, "--region", os.path.join(panels_dir, f"{name}.svg"), "--rng-seed",
-                    "1", "--quiet", "--json", tree_path, "-o", os.path.join(work, f"{name}.svg")],
-                   check=True, timeout=600)
-    with open(tree_path) as f:
-        flowers = [e["proxies"][0] for e in json.load(f)["elements"] if e["type"] == "flower"]
+    tree = grow_tree(program, os.path.join(panels_dir, f"{name}.svg"), work)
+    flowers = [e["proxies"][0] for e in tree["elements"] if e["type"] == "flower"]
     gaps = [min(math.dist(c, f["center"]) - f["radius"] for f in flowers) for c in corners]
     held = sum(1 for g in gaps if g <= NEAR)
     print(f"{name}: {held} of {len(corners)} corners hold a flower "

@@ -6,11 +6,11 @@
   (but a hook growing out of a flower, in its first half, near that flower).
 
 usage: check_vase.py WORK PANEL... -- PROGRAM"""
-import json
 import math
 import os
-import subprocess
 import sys
+
+from pattern_tree import bezier_point, grow_tree
 
 GRID = 34.0  # rules/chinese_vase.acr's default
 CLEAR = 1.0
@@ -21,20 +21,10 @@ panels, program = sys.argv[2:split], sys.argv[split + 1]
 os.makedirs(work, exist_ok=True)
 
 
-def bezier(c, t):
-    u = 1 - t
-    return [u ** 3 * c[0][i] + 3 * u * u * t * c[1][i] + 3 * u * t * t * c[2][i] + t ** 3 * c[3][i]
-            for i in (0, 1)]
-
-
 failures = []
 for panel in panels:
     name = os.path.splitext(os.path.basename(panel))[0]
-    tree_path = os.path.join(work, f"{name}.json")
-    subprocess.run([program, "--region", panel, "--rng-seed", "1", "--quiet", "--json", tree_path,
-                    "-o", os.path.join(work, f"{name}.svg")], check=True, timeout=600)
-    with open(tree_path) as f:
-        elements = json.load(f)["elements"]
+    elements = grow_tree(program, panel, work)["elements"]
     flower_elements = [e for e in elements if e["type"] == "flower"]
     flowers = [e["proxies"][0] for e in flower_elements]
     closest = min((math.dist(a["center"], b["center"]), i, j)
@@ -47,7 +37,7 @@ for panel in panels:
     for e in elements:
         if e["type"] == "hook":
             c = e["proxies"][0]["c"]
-            points = [bezier(c, k / 16) for k in range(17)]
+            points = [bezier_point(c, k / 16) for k in range(17)]
             reach = 0.0
         elif e["type"] == "drop":
             points = [e["proxies"][0]["center"]]
