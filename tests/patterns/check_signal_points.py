@@ -4,7 +4,7 @@ in the hierarchical pattern, at least three quarters of the sharp corners of a p
 frame's eight, the heart's tip and cleft) have a flower whose rim comes within 4 units of the
 corner. Corners are written here from the panels' own path data.
 
-usage: check_signal_points.py WORK EXAMPLES_PANELS_DIR -- PROGRAM"""
+usage: check_signal_points.py WORK PANEL... -- PROGRAM (panels among those of CORNERS)"""
 import math
 import os
 import sys
@@ -18,13 +18,16 @@ CORNERS = {
     "heart": [(80, 146), (80, 38)],
 }
 
-work, panels_dir = sys.argv[1], sys.argv[2]
-program = sys.argv[sys.argv.index("--") + 1]
+work = sys.argv[1]
+split = sys.argv.index("--")
+panels, program = sys.argv[2:split], sys.argv[split + 1]
 os.makedirs(work, exist_ok=True)
 
 failures = []
-for name, corners in CORNERS.items():
-    tree = grow_tree(program, os.path.join(panels_dir, f"{name}.svg"), work)
+for panel in panels:
+    name = os.path.splitext(os.path.basename(panel))[0]
+    corners = CORNERS[name]
+    tree = grow_tree(program, panel, work)
     flowers = [e["proxies"][0] for e in tree["elements"] if e["type"] == "flower"]
     gaps = [min(math.dist(c, f["center"]) - f["radius"] for f in flowers) for c in corners]
     held = sum(1 for g in gaps if g <= NEAR)
