@@ -40,7 +40,7 @@ void check_bounds(SpatialIndex::Entry e, Rect bounds) {
 }  // namespace
 
 struct SpatialIndex::Tree {
-    bgi::rtree<Value, bgi::rstar<16>> rtree;
+    bgi::rtree<Value, bgi::quadratic<16>> rtree;
 };
 
 SpatialIndex::SpatialIndex() : tree_(std::make_unique<Tree>()) {}
@@ -52,7 +52,7 @@ SpatialIndex::SpatialIndex(const std::vector<std::pair<Entry, Rect>>& entries) {
         check_bounds(entry, bounds);
         values.emplace_back(to_box(bounds), entry);
     }
-    tree_ = std::make_unique<Tree>(Tree{bgi::rtree<Value, bgi::rstar<16>>(values)});
+    tree_ = std::make_unique<Tree>(Tree{bgi::rtree<Value, bgi::quadratic<16>>(values)});
 }
 SpatialIndex::SpatialIndex(SpatialIndex&&) noexcept = default;
 SpatialIndex& SpatialIndex::operator=(SpatialIndex&&) noexcept = default;
