@@ -258,8 +258,8 @@ TEST(DistanceField, IncrementalFindsDisconnectedVoronoiPixels) {
     }
 }
 
-// The lazy far field: values are upper bounds everywhere, exact in trusted blocks and their
-// one-pixel rings, and exact everywhere once every block is settled.
+// The lazy far field: values are upper bounds everywhere, exact in trusted tiles and their
+// one-pixel rings, and exact everywhere once every block is tightened to 0.
 TEST(DistanceField, LazyFieldIsExactWhereTrustedAndAfterSettling) {
     Random rng(77);
     const int w = 330, h = 230;  // blocks of 64 pixels, the last ones partial
@@ -283,13 +283,25 @@ TEST(DistanceField, LazyFieldIsExactWhereTrustedAndAfterSettling) {
                 if (sq(i - ci) + sq(j - cj) <= sq(r)) dot.push_back(j * w + i);
         lazy.add_sites(dot, ObstacleKind::element, nullptr);
         for (int p : dot) occ[p] = occ[p] ? occ[p] : 2;
-        if (step % 7 == 3)
-            lazy.settle(static_cast<int>(rng.uniform_int(0, far.count() - 1)), nullptr);
+        if (step % 7 == 3) {
+            const int p = static_cast<int>(rng.uniform_int(0, w * h - 1));
+            lazy.trust_tile(far.tile_of(p), nullptr);
+            EXPECT_TRUE(far.tile_trusted(far.tile_of(p)));
+        }
+        if (step % 11 == 5) {
+            // Tightening a block to a threshold leaves it trusted or with a smaller reach.
+            const int b = static_cast<int>(rng.uniform_int(0, far.count() - 1));
+            const std::int64_t threshold = rng.uniform_int(1, 2000);
+            lazy.tighten(b, threshold, nullptr);
+            if (!far.trusted(b)) {
+                EXPECT_LT(far.reach(b), threshold);
+            }
+        }
         DistanceField full(w, h, /*with_sites=*/false);
         full.compute(occ);
         for (int p = 0; p < w * h; ++p) {
             ASSERT_GE(lazy.squared_distance(p), full.squared_distance(p)) << "step " << step;
-            if (!far.trusted(far.block_of(p))) {
+            if (!far.tile_trusted(far.tile_of(p))) {
                 ++untrusted_pixels;
                 continue;
             }
@@ -306,7 +318,7 @@ TEST(DistanceField, LazyFieldIsExactWhereTrustedAndAfterSettling) {
     EXPECT_GT(untrusted_pixels, 0) << "the far field was never left pending";
     std::vector<int> changed;
     for (int b = 0; b < far.count(); ++b)
-        if (!far.trusted(b)) lazy.settle(b, &changed);
+        if (!far.trusted(b)) lazy.tighten(b, 0, &changed);
     DistanceField full(w, h, /*with_sites=*/false);
     full.compute(occ);
     for (int p = 0; p < w * h; ++p) {

@@ -116,7 +116,6 @@ DistanceField::DistanceField(int width, int height, bool with_sites, DistanceMet
     dist2_.assign(n, kInfinite);
     boundary2_.assign(n, kInfinite);
     if (with_sites) site_.assign(n, -1);
-    if (metric == DistanceMetric::euclidean) visit_.assign(n, 0);  // the brushfire needs none
 }
 
 double DistanceField::distance(int i, int j) const {
@@ -175,6 +174,15 @@ void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
                                 queue_);
         return;
     }
+    if (lazy_ && kind == ObstacleKind::element) {
+        // Measured when a tile that may need them is trusted.
+        for (int p : fresh) {
+            dist2_[p] = 0;
+            if (changed) changed->push_back(p);
+        }
+        far_.defer(fresh);
+        return;
+    }
     propagate(fresh, dist2_, site_.empty() ? nullptr : &site_, changed);
     if (kind == ObstacleKind::boundary) propagate(fresh, boundary2_, nullptr, changed);
 }
@@ -219,6 +227,9 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
                               Measurable measurable) {
     const int w = width_, h = height_;
     // visit_ == base: evaluated, outside; base + 1: inside; base + 2: inside, its row span filled.
+    // Allocated on the first fill: a lazy field (element sites deferred) may never need it.
+    const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+    if (visit_.size() != n) visit_.assign(n, 0);
     if (stamp_ > std::numeric_limits<std::uint16_t>::max() - 4) {
         std::fill(visit_.begin(), visit_.end(), 0);
         stamp_ = 0;
@@ -245,10 +256,6 @@ bool DistanceField::wavefront(const std::vector<int>& sites, std::vector<std::in
     // it is inside.
     auto evaluate = [&](auto& line, int i, int j, int r) {
         if (!measurable(i, j)) {
-            if constexpr (kCommit) {  // beyond a lazy fill's clip: its blocks keep the sites
-                visit[r] = base;
-                return false;
-            }
             escaped = true;
             return false;
         }
@@ -334,14 +341,6 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
     std::int32_t* site_data = site ? site->data() : nullptr;
     blob_.reset(sites, w, h);
     if (blob_.columns() <= kDirectColumns) {
-        if (lazy_ && &d2 == &dist2_) {
-            // Exact near the sites; the blocks beyond keep them pending.
-            const PendingBlocks::Rect near = far_.near_rect(sites);
-            wavefront<true>(sites, d2, site_data, out, blob_,
-                            [&](int i, int j) { return near.contains(i, j); });
-            far_.defer(sites, near);
-            return;
-        }
         wavefront<true>(sites, d2, site_data, out, blob_, [](int, int) { return true; });
         return;
     }

@@ -36,19 +36,23 @@ class DistanceField {
     // Pixels whose distance changed are appended to `changed` when it is not null.
     void add_sites(const std::vector<int>& pixels, ObstacleKind kind, std::vector<int>* changed);
 
-    // Lazy far field (docs/engine.md, "Scale"): element sites added later lower the field
-    // exactly only near them; beyond, whole blocks keep them pending and hold upper bounds
-    // (distances only decrease) until settle(). Set before compute(); Euclidean, no feature
-    // transform. Off by default: every value is exact after add_sites().
+    // Lazy far field (docs/engine.md, "Scale"): element sites added later are not measured
+    // when added; every block they may lower keeps them pending, and its values are upper
+    // bounds (distances only decrease) until a tile of it is trusted. Set before compute();
+    // Euclidean, no feature transform. Off by default: every value is exact after add_sites().
     void set_lazy(bool lazy) {
         lazy_ = lazy && metric_ == DistanceMetric::euclidean && site_.empty();
     }
     bool lazy() const { return lazy_; }
     PendingBlocks& far_blocks() { return far_; }
     const PendingBlocks& far_blocks() const { return far_; }
-    // Makes the block and its one-pixel ring exact; appends lowered pixels to `changed`.
-    void settle(int block, std::vector<int>* changed) {
-        far_.settle(block, dist2_.data(), changed);
+    // Makes the 8 x 8 tile and its 8 neighbours exact; appends lowered pixels to `changed`.
+    void trust_tile(int tile, std::vector<int>* changed) {
+        far_.trust_tile(tile, dist2_.data(), changed);
+    }
+    // PendingBlocks::tighten() on this field.
+    void tighten(int block, std::int64_t threshold, std::vector<int>* changed) {
+        far_.tighten(block, threshold, dist2_.data(), changed);
     }
 
     // Squared distance in pixels from pixel index to its nearest site (0 on a site).

@@ -11,6 +11,8 @@ namespace acanthus::detail {
 
 using namespace tile_masks;
 
+static_assert(PendingBlocks::kTileShift == 3, "the lazy field trusts the finder's tiles");
+
 EmptyCircleFinder::EmptyCircleFinder(DistanceField& field, const GridFrame& grid, double min_radius)
     : field_(field),
       grid_(grid),
@@ -223,40 +225,38 @@ void EmptyCircleFinder::distrust_new_blocks() {
     for (int b : far.raised()) {
         // Settling the block changes only candidates of squared distance up to its reach; the
         // low word names the block.
-        if (!far.trusted(b)) blocks_.set(static_cast<std::size_t>(b), key_of(b, far.reach(b)));
+        if (!far.trusted(b) && far.reach(b) >= min_d2_)
+            blocks_.set(static_cast<std::size_t>(b), key_of(b, far.reach(b)));
     }
     far.clear_raised();
 }
 
-void EmptyCircleFinder::settle(int block) {
+void EmptyCircleFinder::tighten(int block, std::int64_t threshold) {
     settled_.clear();
-    field_.settle(block, &settled_);
-    blocks_.set(static_cast<std::size_t>(block), 0);
+    field_.tighten(block, threshold, &settled_);
+    const PendingBlocks& far = field_.far_blocks();
+    // A block whose reach is below the smallest candidate's distance can hold none.
+    const bool none = far.trusted(block) || far.reach(block) < min_d2_;
+    blocks_.set(static_cast<std::size_t>(block), none ? 0 : key_of(block, far.reach(block)));
+    update(settled_);
+}
+
+void EmptyCircleFinder::trust_tile(int tile) {
+    settled_.clear();
+    field_.trust_tile(tile, &settled_);
     update(settled_);
 }
 
 void EmptyCircleFinder::settle_all() {
     if (!field_.lazy()) return;
     for (int b = 0; b < field_.far_blocks().count(); ++b)
-        if (!field_.far_blocks().trusted(b)) settle(b);
+        if (!field_.far_blocks().trusted(b)) tighten(b, 0);
 }
 
 std::uint64_t EmptyCircleFinder::near_changes(int tile) const {
-    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
-    auto at = [&](int di, int dj) -> std::uint64_t {
-        const int a = ti + di, b = tj + dj;
-        if (a < 0 || b < 0 || a >= tiles_w_ || b >= tiles_h_) return 0;
-        return changed_[static_cast<std::size_t>(b * tiles_w_ + a)];
-    };
-    const std::uint64_t m = changed_[tile];
-    // Within the tile's rows: left and right neighbours, then up and down.
-    std::uint64_t near = m | ((m << 1) & ~kColumn0) | ((m >> 1) & ~kColumn7) |
-                         ((at(-1, 0) & kColumn7) >> 7) | ((at(1, 0) & kColumn0) << 7);
-    near |= (near << 8) | (near >> 8);
-    // The last row of the tile above and the first row of the tile below, with the corners.
-    near |= dilate_row(at(0, -1) >> 56, (at(-1, -1) >> 63) & 1, (at(1, -1) >> 56) & 1);
-    near |= dilate_row(at(0, 1) & kRow0, (at(-1, 1) >> 7) & 1, at(1, 1) & 1) << 56;
-    return near;
+    return dilate_in_grid(tile % tiles_w_, tile / tiles_w_, tiles_w_, tiles_h_, [&](int a, int b) {
+        return changed_[static_cast<std::size_t>(b) * tiles_w_ + a];
+    });
 }
 
 void EmptyCircleFinder::update(const std::vector<int>& changed) {
@@ -331,14 +331,14 @@ std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
         const Key k = tiles_.max();
         const Key b = blocks_.max();
         if (b != 0 && (k == 0 || d2_of(b) >= d2_of(k))) {
-            // A block not trusted may hold a candidate as good: make it exact first.
-            settle(pixel_of(b));
+            // A block not trusted may hold a candidate as good: trust the tiles that may.
+            tighten(pixel_of(b), k == 0 ? min_d2_ : d2_of(k));
             continue;
         }
         if (k == 0) return std::nullopt;
         const int p = pixel_of(k);
-        if (field_.lazy() && !field_.far_blocks().trusted(field_.far_blocks().block_of(p))) {
-            settle(field_.far_blocks().block_of(p));  // its key may rest on a stale distance
+        if (field_.lazy() && !field_.far_blocks().tile_trusted(tile_of(p))) {
+            trust_tile(tile_of(p));  // its key may rest on a stale distance
             continue;
         }
         const std::int64_t d2 = d2_of(k);

@@ -25,7 +25,7 @@ class EmptyCircleFinder {
     static constexpr double kMargin = 0.75;  // pixels, >= sqrt(1/2) + PixelCover::kFlatten
     static constexpr double kBend = 0.5;     // pixels: smallest bend of a medial-axis crest
 
-    // `min_radius` in user units. With a lazy field, find() settles the blocks it must trust.
+    // `min_radius` in user units. With a lazy field, find() trusts the tiles it must.
     EmptyCircleFinder(DistanceField& field, const GridFrame& grid, double min_radius);
 
     Circle circle_of(int pixel) const;
@@ -42,7 +42,7 @@ class EmptyCircleFinder {
     void update(const std::vector<int>& changed);
     void release(const std::vector<int>& removed_ids);
     void release_all();
-    // Settles every block of a lazy field (for scans such as best_candidates()).
+    // Trusts every tile of a lazy field (for scans such as best_candidates()).
     void settle_all();
     std::optional<EmptyCircle> find(const ExcludeList& exclude);
     // Drops a candidate found by find() or find_by_scan() (the engine found the boundary nearer
@@ -109,7 +109,9 @@ class EmptyCircleFinder {
     void refresh(int tile, std::uint64_t bits);  // re-decides those pixels, then rescans
     // Lazy field: bounds of the blocks that stopped being trusted enter blocks_.
     void distrust_new_blocks();
-    void settle(int block);
+    // Lazy field: trusts the block's tiles that may hold a candidate of at least `threshold`.
+    void tighten(int block, std::int64_t threshold);
+    void trust_tile(int tile);
     // Row of a pixel index without a division (a multiply and a correction).
     int row_of(int pixel) const {
         int j = static_cast<int>(pixel * inv_width_);
@@ -135,7 +137,7 @@ class EmptyCircleFinder {
     MaxTree tiles_;
     // Lazy field: per block not trusted, a key above every candidate it may hold; 0 otherwise.
     MaxTree blocks_;
-    std::vector<int> settled_;  // pixels lowered by settle()
+    std::vector<int> settled_;  // pixels lowered by tighten() and trust_tile()
     // Per 8 x 8 tile, one bit per pixel (bit 8 * row + column within the tile).
     // A pixel's state is in these masks: candidate, blocked (by an exclude point) or none. A
     // pixel not in state none was decided at its current distance.

@@ -1,37 +1,72 @@
 #include "growth/pending_blocks.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 
+#include "growth/tile_masks.hpp"
+
 namespace acanthus::detail {
+
+static_assert(PendingBlocks::kShift - PendingBlocks::kTileShift == 3,
+              "8 x 8 tiles a block: one bit each in a 64-bit mask");
 
 void PendingBlocks::reset(int width, int height, const std::int32_t* d2) {
     width_ = width;
     height_ = height;
     blocks_w_ = ((width - 1) >> kShift) + 1;
     blocks_h_ = ((height - 1) >> kShift) + 1;
+    tiles_w_ = ((width - 1) >> kTileShift) + 1;
+    tiles_h_ = ((height - 1) >> kTileShift) + 1;
     const std::size_t n = static_cast<std::size_t>(blocks_w_) * blocks_h_;
     pending_.assign(n, {});
     bound_.assign(n, 0);
+    inexact_.assign(n, 0);
     untrusted_.assign(n, 0);
     reach_.assign(n, 0);
     in_raised_.assign(n, 0);
     raised_.clear();
     blobs_.clear();
     free_blobs_.clear();
-    for (int b = 0; b < count(); ++b) bound_[b] = max_over(rect_of(b), d2);
+    const std::size_t tiles = static_cast<std::size_t>(tiles_w_) * tiles_h_;
+    absorbed_.assign(tiles, 0);
+    tile_bound_.resize(tiles);
+    for (std::size_t t = 0; t < tiles; ++t)
+        tile_bound_[t] = max_over(tile_rect(static_cast<int>(t)), d2);
     groups_w_ = ((blocks_w_ - 1) >> kGroupShift) + 1;
     groups_h_ = ((blocks_h_ - 1) >> kGroupShift) + 1;
     group_bound_.assign(static_cast<std::size_t>(groups_w_) * groups_h_, 0);
-    for (int g = 0; g < groups_w_ * groups_h_; ++g) update_group(g);
+    for (int b = 0; b < count(); ++b) update_bound(b);
 }
 
-PendingBlocks::Rect PendingBlocks::rect_of(int block) const {
+PendingBlocks::Rect PendingBlocks::block_rect(int block) const {
     const int bi = block % blocks_w_, bj = block / blocks_w_;
     return {bi << kShift, bj << kShift, std::min(width_, (bi + 1) << kShift) - 1,
             std::min(height_, (bj + 1) << kShift) - 1};
+}
+
+PendingBlocks::Rect PendingBlocks::tile_rect(int tile) const {
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    return {ti << kTileShift, tj << kTileShift, std::min(width_, (ti + 1) << kTileShift) - 1,
+            std::min(height_, (tj + 1) << kTileShift) - 1};
+}
+
+std::uint64_t PendingBlocks::tiles_in(int block) const {
+    const int bi = block % blocks_w_, bj = block / blocks_w_;
+    const int cols = std::min(8, tiles_w_ - (bi << 3)), rows = std::min(8, tiles_h_ - (bj << 3));
+    const std::uint64_t row = (std::uint64_t{1} << cols) - 1;
+    std::uint64_t m = 0;
+    for (int r = 0; r < rows; ++r) m |= row << (8 * r);
+    return m;
+}
+
+std::uint64_t PendingBlocks::untrusted_tiles(int block) const {
+    const std::uint64_t near = tile_masks::dilate_in_grid(
+        block % blocks_w_, block / blocks_w_, blocks_w_, blocks_h_,
+        [&](int a, int b) { return inexact_[static_cast<std::size_t>(b) * blocks_w_ + a]; });
+    return near & tiles_in(block);
 }
 
 std::int32_t PendingBlocks::max_over(const Rect& r, const std::int32_t* d2) const {
@@ -43,6 +78,16 @@ std::int32_t PendingBlocks::max_over(const Rect& r, const std::int32_t* d2) cons
     return m;
 }
 
+void PendingBlocks::update_bound(int block) {
+    std::int32_t m = 0;
+    for (std::uint64_t bits = tiles_in(block); bits; bits &= bits - 1)
+        m = std::max(m, tile_bound_[tile_at(block, std::countr_zero(bits))]);
+    bound_[block] = m;
+    const int group =
+        (block / blocks_w_ >> kGroupShift) * groups_w_ + (block % blocks_w_ >> kGroupShift);
+    update_group(group);
+}
+
 void PendingBlocks::update_group(int group) {
     const int gi = group % groups_w_, gj = group / groups_w_;
     std::int32_t m = 0;
@@ -50,23 +95,6 @@ void PendingBlocks::update_group(int group) {
         for (int bi = gi << kGroupShift; bi < std::min(blocks_w_, (gi + 1) << kGroupShift); ++bi)
             m = std::max(m, bound_[static_cast<std::size_t>(bj) * blocks_w_ + bi]);
     group_bound_[group] = m;
-}
-
-PendingBlocks::Rect PendingBlocks::near_rect(const std::vector<int>& sites) const {
-    int x0 = width_, y0 = height_, x1 = -1, y1 = -1;
-    for (int p : sites) {
-        const int i = p % width_, j = p / width_;
-        x0 = std::min(x0, i);
-        x1 = std::max(x1, i);
-        y0 = std::min(y0, j);
-        y1 = std::max(y1, j);
-    }
-    // Whole blocks, so that a block is either inside (exact) or beyond (pending).
-    const int bx0 = std::max(0, (x0 >> kShift) - 1), by0 = std::max(0, (y0 >> kShift) - 1);
-    const int bx1 = std::min(blocks_w_ - 1, (x1 >> kShift) + 1);
-    const int by1 = std::min(blocks_h_ - 1, (y1 >> kShift) + 1);
-    return {bx0 << kShift, by0 << kShift, std::min(width_, (bx1 + 1) << kShift) - 1,
-            std::min(height_, (by1 + 1) << kShift) - 1};
 }
 
 // Squared distance from the blob's bounding box to the rectangle's pixel centres: no pixel of
@@ -81,7 +109,7 @@ void PendingBlocks::distrust(int block, const Blob& blob) {
     // A pixel the blob lowers gets at most its squared distance to the blob's first site; a
     // neighbour of it at most (that + sqrt 2)^2 (distances are 1-Lipschitz). Over the block
     // and its ring, with a margin for rounding; never above the block's own bound.
-    const Rect r = rect_of(block);
+    const Rect r = block_rect(block);
     const int s = blob.sites.front(), si = s % width_, sj = s / width_;
     const double dx = std::max(std::abs(r.x0 - 1 - si), std::abs(r.x1 + 1 - si));
     const double dy = std::max(std::abs(r.y0 - 1 - sj), std::abs(r.y1 + 1 - sj));
@@ -98,8 +126,9 @@ void PendingBlocks::distrust(int block, const Blob& blob) {
     }
 }
 
-void PendingBlocks::defer(const std::vector<int>& sites, const Rect& near) {
-    Blob blob{{}, width_, height_, -1, -1, 0};
+void PendingBlocks::defer(const std::vector<int>& sites) {
+    if (sites.empty()) return;
+    Blob blob{{}, {}, width_, height_, -1, -1, 0, 0};
     for (int p : sites) {
         const int i = p % width_, j = p / width_;
         blob.x0 = std::min(blob.x0, i);
@@ -119,9 +148,26 @@ void PendingBlocks::defer(const std::vector<int>& sites, const Rect& near) {
         for (int bj = by0; bj <= by1; ++bj) {
             for (int bi = bx0; bi <= bx1; ++bi) {
                 const int b = bj * blocks_w_ + bi;
-                const Rect r = rect_of(b);
-                if (near.contains(r.x0, r.y0) && near.contains(r.x1, r.y1)) continue;
+                const Rect r = block_rect(b);
                 if (gap2(blob, r) >= bound_[b]) continue;
+                // The tiles it may lower: the gap to a tile is separable in tile columns and
+                // rows.
+                std::int64_t gx[8], gy[8];
+                for (int c = 0; c < 8; ++c) {
+                    const int x0 = r.x0 + (c << kTileShift), x1 = x0 + (1 << kTileShift) - 1;
+                    const std::int64_t dx = std::max({0, x0 - blob.x1, blob.x0 - x1});
+                    gx[c] = dx * dx;
+                    const int y0 = r.y0 + (c << kTileShift), y1 = y0 + (1 << kTileShift) - 1;
+                    const std::int64_t dy = std::max({0, y0 - blob.y1, blob.y0 - y1});
+                    gy[c] = dy * dy;
+                }
+                std::uint64_t lower = 0;
+                for (std::uint64_t bits = tiles_in(b); bits; bits &= bits - 1) {
+                    const int bit = std::countr_zero(bits);
+                    if (gx[bit & 7] + gy[bit >> 3] < tile_bound_[tile_at(b, bit)])
+                        lower |= std::uint64_t{1} << bit;
+                }
+                if (lower == 0) continue;
                 if (id < 0) {
                     if (!free_blobs_.empty()) {
                         id = free_blobs_.back();
@@ -131,18 +177,41 @@ void PendingBlocks::defer(const std::vector<int>& sites, const Rect& near) {
                         blobs_.emplace_back();
                     }
                     blob.sites = sites;
-                    // In the order SiteBlob::reset() wants them, once.
                     std::sort(blob.sites.begin(), blob.sites.end(), [this](int a, int b) {
                         return a % width_ != b % width_ ? a % width_ < b % width_ : a < b;
                     });
+                    for (int p : blob.sites) {
+                        const int c = p % width_, row = p / width_;
+                        if (!blob.runs.empty() && blob.runs.back().column == c &&
+                            blob.runs.back().hi + 1 == row)
+                            blob.runs.back().hi = row;
+                        else
+                            blob.runs.push_back({c, row, row});
+                    }
+                    blob.serial = ++serial_;
                     blobs_[id] = std::move(blob);
                 }
-                pending_[b].push_back(id);
+                Pending& p = pending_[b];
+                // Tiles that were exact wait from this entry on; the others keep their place.
+                for (std::uint64_t bits = lower & ~inexact_[b]; bits; bits &= bits - 1)
+                    absorbed_[tile_at(b, std::countr_zero(bits))] = p.end();
+                inexact_[b] |= lower;
+                p.blobs.push_back(id);
                 ++blobs_[id].refs;
-                // The block's pixels may lower, and with them its neighbours' rings.
-                for (int nj = std::max(0, bj - 1); nj <= std::min(blocks_h_ - 1, bj + 1); ++nj)
-                    for (int ni = std::max(0, bi - 1); ni <= std::min(blocks_w_ - 1, bi + 1); ++ni)
-                        distrust(nj * blocks_w_ + ni, blobs_[id]);
+                // The tiles it may lower are no longer trusted, nor the tiles round them.
+                distrust(b, blobs_[id]);
+                const bool left = bi > 0 && (lower & tile_masks::kColumn0);
+                const bool right = bi < blocks_w_ - 1 && (lower & tile_masks::kColumn7);
+                const bool up = bj > 0 && (lower & tile_masks::kRow0);
+                const bool down = bj < blocks_h_ - 1 && (lower & tile_masks::kRow7);
+                if (left) distrust(b - 1, blobs_[id]);
+                if (right) distrust(b + 1, blobs_[id]);
+                if (up) distrust(b - blocks_w_, blobs_[id]);
+                if (down) distrust(b + blocks_w_, blobs_[id]);
+                if (left && up && (lower & 1)) distrust(b - blocks_w_ - 1, blobs_[id]);
+                if (right && up && (lower & 0x80)) distrust(b - blocks_w_ + 1, blobs_[id]);
+                if (left && down && (lower >> 56 & 1)) distrust(b + blocks_w_ - 1, blobs_[id]);
+                if (right && down && (lower >> 63)) distrust(b + blocks_w_ + 1, blobs_[id]);
             }
         }
     }
@@ -150,50 +219,55 @@ void PendingBlocks::defer(const std::vector<int>& sites, const Rect& near) {
 
 void PendingBlocks::release(int k) {
     if (--blobs_[k].refs > 0) return;
-    blobs_[k].sites.clear();
-    blobs_[k].sites.shrink_to_fit();
+    std::vector<int>().swap(blobs_[k].sites);
+    std::vector<Run>().swap(blobs_[k].runs);
     free_blobs_.push_back(k);
+}
+
+bool PendingBlocks::tile_trusted(int tile) const {
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    for (int nj = std::max(0, tj - 1); nj <= std::min(tiles_h_ - 1, tj + 1); ++nj)
+        for (int ni = std::max(0, ti - 1); ni <= std::min(tiles_w_ - 1, ti + 1); ++ni)
+            if (!exact(ni, nj)) return false;
+    return true;
+}
+
+void PendingBlocks::trust_tile(int tile, std::int32_t* d2, std::vector<int>* changed) {
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    for (int nj = std::max(0, tj - 1); nj <= std::min(tiles_h_ - 1, tj + 1); ++nj)
+        for (int ni = std::max(0, ti - 1); ni <= std::min(tiles_w_ - 1, ti + 1); ++ni)
+            if (!exact(ni, nj)) settle_tile(nj * tiles_w_ + ni, d2, changed);
 }
 
 std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, std::int32_t* d2,
                                     std::vector<int>* changed) {
     const Blob& b = blobs_[k];
-    blob_.reset(b.sites, width_, height_);
     std::int32_t top = 0;
     for (int j = r.y0; j <= r.y1; ++j) {
         std::int32_t* line = d2 + static_cast<std::size_t>(j) * width_;
-        const std::int64_t dy = std::max({0, b.y0 - j, j - b.y1});
-        // Only pixels nearer to the bounding box than `limit` (>= every value over r) can
-        // change: a span of the row around the box.
-        int x0 = r.x0, x1 = r.x1;
+        const std::int32_t dy = std::max({0, b.y0 - j, j - b.y1});
+        // Only rows nearer to the bounding box than `limit` (>= every value over r) can change.
         if (dy * dy >= limit) {
-            x1 = x0 - 1;
-        } else {
-            const int reach = static_cast<int>(std::sqrt(static_cast<double>(limit - dy * dy))) + 1;
-            x0 = std::max(x0, b.x0 - reach);
-            x1 = std::min(x1, b.x1 + reach);
+            for (int i = r.x0; i <= r.x1; ++i) top = std::max(top, line[i]);
+            continue;
         }
-        for (int i = r.x0; i < x0; ++i) top = std::max(top, line[i]);
-        for (int i = x1 + 1; i <= r.x1; ++i) top = std::max(top, line[i]);
-        SiteBlob::Row row;
-        bool built = false;
-        for (int i = x0; i <= x1; ++i) {
+        for (int i = r.x0; i <= r.x1; ++i) {
             // The distance to the blob's bounding box is a lower bound of the distance to its
-            // sites: most pixels are settled by it, without the envelope.
-            const std::int64_t dx = std::max({0, b.x0 - i, i - b.x1});
-            if (dx * dx + dy * dy >= line[i]) {
-                top = std::max(top, line[i]);
-                continue;
-            }
-            if (!built) {
-                row = blob_.row(j, i);
-                built = true;
-            }
-            int nearest;
-            const std::int64_t m = row.at(i, nearest);
-            if (m < line[i]) {
-                line[i] = static_cast<std::int32_t>(m);
-                if (changed) changed->push_back(j * width_ + i);
+            // sites: most pixels are settled by it.
+            const std::int32_t dx = std::max({0, b.x0 - i, i - b.x1});
+            if (dx * dx + dy * dy < line[i]) {
+                // The nearest of the blob's column runs, tried one by one: a placed element
+                // spans a few columns. Squares of grid sizes fit in 32 bits.
+                std::int32_t m = std::numeric_limits<std::int32_t>::max();
+                for (const Run& run : b.runs) {
+                    const std::int32_t cx = i - run.column;
+                    const std::int32_t g = std::max({0, run.lo - j, j - run.hi});
+                    m = std::min(m, cx * cx + g * g);
+                }
+                if (m < line[i]) {
+                    line[i] = m;
+                    if (changed) changed->push_back(j * width_ + i);
+                }
             }
             top = std::max(top, line[i]);
         }
@@ -201,40 +275,68 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
     return top;
 }
 
-void PendingBlocks::settle(int block, std::int32_t* d2, std::vector<int>* changed) {
-    const Rect r = rect_of(block);
-    std::vector<int>& own = pending_[block];
-    // Nearest blobs first: each lowers the block's maximum, and a blob no nearer than that
+void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* changed) {
+    const int block = block_of_tile(tile);
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    const std::uint64_t bit = std::uint64_t{1} << bit_of_tile(ti, tj);
+    if (!(inexact_[block] & bit)) return;
+    Pending& p = pending_[block];
+    const Rect r = tile_rect(tile);
+    // Nearest blobs first: each lowers the tile's maximum, and a blob no nearer than that
     // lowers nothing.
-    std::sort(own.begin(), own.end(), [&](int a, int b) {
-        const std::int64_t ga = gap2(blobs_[a], r), gb = gap2(blobs_[b], r);
-        return ga != gb ? ga < gb : a < b;
-    });
-    for (int k : own) {
-        if (gap2(blobs_[k], r) < bound_[block])
-            bound_[block] = measure(k, r, bound_[block], d2, changed);
-        release(k);
+    std::int64_t limit = tile_bound_[tile];
+    order_.clear();
+    for (int a = absorbed_[tile]; a < p.end(); ++a) {
+        const std::int64_t g = gap2(blobs_[p.blobs[a - p.base]], r);
+        if (g < limit) order_.emplace_back(g, a);
     }
-    own.clear();
-    bound_[block] = max_over(r, d2);
-    update_group((block / blocks_w_ >> kGroupShift) * groups_w_ +
-                 (block % blocks_w_ >> kGroupShift));
-    // The ring: each neighbour's pending sites over the pixels of the ring in that neighbour.
-    const int bi = block % blocks_w_, bj = block / blocks_w_;
-    for (int nj = std::max(0, bj - 1); nj <= std::min(blocks_h_ - 1, bj + 1); ++nj) {
-        for (int ni = std::max(0, bi - 1); ni <= std::min(blocks_w_ - 1, bi + 1); ++ni) {
-            const int n = nj * blocks_w_ + ni;
-            if (n == block || pending_[n].empty()) continue;
-            const Rect nr = rect_of(n);
-            const Rect ring{std::max(nr.x0, r.x0 - 1), std::max(nr.y0, r.y0 - 1),
-                            std::min(nr.x1, r.x1 + 1), std::min(nr.y1, r.y1 + 1)};
-            std::int32_t limit = max_over(ring, d2);
-            for (int k : pending_[n])
-                if (gap2(blobs_[k], ring) < limit) limit = measure(k, ring, limit, d2, changed);
-        }
+    std::sort(order_.begin(), order_.end());
+    for (const auto& [g, a] : order_) {
+        if (g >= limit) break;
+        limit = measure(p.blobs[a - p.base], r, limit, d2, changed);
     }
-    untrusted_[block] = 0;
-    reach_[block] = 0;
+    tile_bound_[tile] = static_cast<std::int32_t>(limit);
+    inexact_[block] &= ~bit;
+}
+
+void PendingBlocks::compact(int block) {
+    Pending& p = pending_[block];
+    if (p.blobs.empty()) return;
+    int lo = p.end();
+    for (std::uint64_t bits = inexact_[block]; bits; bits &= bits - 1) {
+        const int bit = std::countr_zero(bits);
+        const int t = tile_at(block, bit);
+        // Blobs no nearer to the tile than its bound lower nothing in it.
+        const Rect r = tile_rect(t);
+        int& a = absorbed_[t];
+        while (a < p.end() && gap2(blobs_[p.blobs[a - p.base]], r) >= tile_bound_[t]) ++a;
+        if (a == p.end())
+            inexact_[block] &= ~(std::uint64_t{1} << bit);
+        else
+            lo = std::min(lo, a);
+    }
+    const int drop = lo - p.base;
+    if (drop == 0 || 2 * drop < static_cast<int>(p.blobs.size())) return;
+    for (int k = 0; k < drop; ++k) release(p.blobs[k]);
+    p.blobs.erase(p.blobs.begin(), p.blobs.begin() + drop);
+    p.base = lo;
+}
+
+void PendingBlocks::tighten(int block, std::int64_t threshold, std::int32_t* d2,
+                            std::vector<int>* changed) {
+    compact(block);
+    for (std::uint64_t bits = untrusted_tiles(block); bits; bits &= bits - 1) {
+        const int t = tile_at(block, std::countr_zero(bits));
+        if (tile_bound_[t] >= threshold) trust_tile(t, d2, changed);
+    }
+    const std::uint64_t left = untrusted_tiles(block);
+    std::int64_t top = 0;
+    for (std::uint64_t bits = left; bits; bits &= bits - 1)
+        top = std::max<std::int64_t>(top, tile_bound_[tile_at(block, std::countr_zero(bits))]);
+    untrusted_[block] = left != 0;
+    reach_[block] = left != 0 ? std::min(reach_[block], top) : 0;
+    update_bound(block);
+    compact(block);
 }
 
 }  // namespace acanthus::detail

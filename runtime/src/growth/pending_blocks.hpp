@@ -1,84 +1,129 @@
-// The far field of a lazy DistanceField: 64 x 64 pixel blocks that new sites may still lower,
-// each with the sites not yet measured over it and an upper bound of its squared distances
-// (docs/engine.md, "Scale").
+// The far field of a lazy DistanceField: new sites are not measured when they are added. Each
+// 64 x 64 pixel block keeps the sites that may lower it pending, and each 8 x 8 tile of it
+// measures them only when FindEmptyCircle needs that tile exact (docs/engine.md, "Scale").
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
-
-#include "growth/site_blob.hpp"
 
 namespace acanthus::detail {
 
 class PendingBlocks {
   public:
-    static constexpr int kShift = 6;  // 64 x 64 pixel blocks
-    static constexpr int kSize = 1 << kShift;
+    static constexpr int kShift = 6;      // 64 x 64 pixel blocks hold the pending sites
+    static constexpr int kTileShift = 3;  // 8 x 8 pixel tiles measure them (the finder's tiles)
 
-    // All blocks exact; their bounds from the field `d2` (width x height).
+    // All tiles exact; their bounds from the field `d2` (width x height).
     void reset(int width, int height, const std::int32_t* d2);
 
     int count() const { return blocks_w_ * blocks_h_; }
     int block_of(int pixel) const {
         return (pixel / width_ >> kShift) * blocks_w_ + (pixel % width_ >> kShift);
     }
-    // The pixel rectangle a fill of `sites` keeps exact: the blocks within one block of them.
-    struct Rect {
-        int x0, y0, x1, y1;  // inclusive
-        bool contains(int i, int j) const { return i >= x0 && i <= x1 && j >= y0 && j <= y1; }
-    };
-    Rect near_rect(const std::vector<int>& sites) const;
-    // After an exact fill of `sites` over `near`: the blocks beyond it that the sites may lower
-    // (nearer to them than their bound) keep them pending.
-    void defer(const std::vector<int>& sites, const Rect& near);
+    int tile_of(int pixel) const {
+        return (pixel / width_ >> kTileShift) * tiles_w_ + (pixel % width_ >> kTileShift);
+    }
 
-    // A block is trusted when its pixels and their 8 neighbours hold exact distances.
+    // Keeps `sites` pending in every block they may lower (nearer to them than its bound).
+    void defer(const std::vector<int>& sites);
+
+    // A tile is trusted when it and its 8 neighbours hold exact distances: every pixel of it
+    // and the pixels round it.
+    bool tile_trusted(int tile) const;
+    // Makes the tile trusted; lowered pixels are appended to `changed`.
+    void trust_tile(int tile, std::int32_t* d2, std::vector<int>* changed);
+
+    // A block is trusted when all its tiles are.
     bool trusted(int block) const { return !untrusted_[block]; }
-    // Of a block not trusted: no pixel that settle() could lower, nor any of its neighbours,
-    // has an exact squared distance above this.
+    // Of a block not trusted: no pixel of it whose state measuring could change (it or a
+    // neighbour lowered) has an exact squared distance above this.
     std::int64_t reach(int block) const { return reach_[block]; }
+    // Trusts every tile of the block that may hold a squared distance of at least `threshold`;
+    // after, the block is trusted or its reach is below `threshold`.
+    void tighten(int block, std::int64_t threshold, std::int32_t* d2, std::vector<int>* changed);
     // Blocks not trusted whose reach rose since the last call (each once).
     const std::vector<int>& raised() const { return raised_; }
     void clear_raised() {
         for (int b : raised_) in_raised_[b] = 0;
         raised_.clear();
     }
-    // Measures the block's pending sites over it and its neighbours' over its one-pixel ring,
-    // lowering `d2`; lowered pixels are appended to `changed`. The block is trusted after.
-    void settle(int block, std::int32_t* d2, std::vector<int>* changed);
 
   private:
-    struct Blob {
-        std::vector<int> sites;
-        int x0, y0, x1, y1;  // bounding box
-        int refs;            // blocks holding it pending
+    // Columns of a blob's sites: in column `column`, rows lo..hi are sites.
+    struct Run {
+        int column, lo, hi;
     };
-    Rect rect_of(int block) const;
+    struct Blob {
+        std::vector<int> sites;  // sorted by column, then row (SiteBlob::reset()'s order)
+        std::vector<Run> runs;   // by column, then row
+        int x0, y0, x1, y1;      // bounding box
+        int refs;                // blocks holding it pending
+        std::uint64_t serial;    // tells a reused id from its former blob
+    };
+    struct Rect {
+        int x0, y0, x1, y1;  // inclusive
+    };
+    // Per block: the blobs deferred to it in order; entry k has the number base + k.
+    struct Pending {
+        std::vector<int> blobs;
+        int base = 0;
+        int end() const { return base + static_cast<int>(blobs.size()); }
+    };
+
+    Rect block_rect(int block) const;
+    Rect tile_rect(int tile) const;
+    int block_of_tile(int tile) const {
+        return (tile / tiles_w_ >> (kShift - kTileShift)) * blocks_w_ +
+               (tile % tiles_w_ >> (kShift - kTileShift));
+    }
+    static int bit_of_tile(int ti, int tj) { return ((tj & 7) << 3) | (ti & 7); }
+    bool exact(int ti, int tj) const {
+        const int b = (tj >> (kShift - kTileShift)) * blocks_w_ + (ti >> (kShift - kTileShift));
+        return ((inexact_[b] >> bit_of_tile(ti, tj)) & 1) == 0;
+    }
+    // The tiles of the block (bits) that exist: a block at the grid's edge may have fewer.
+    std::uint64_t tiles_in(int block) const;
+    // The block's tiles that are not trusted.
+    std::uint64_t untrusted_tiles(int block) const;
+    int tile_at(int block, int bit) const {
+        const int bi = block % blocks_w_, bj = block / blocks_w_;
+        return ((bj << 3) + (bit >> 3)) * tiles_w_ + (bi << 3) + (bit & 7);
+    }
     static std::int64_t gap2(const Blob& b, const Rect& r);
-    // Lowers d2 over r to the distances to blob k's sites.
-    // Returns the largest squared distance over r after.
-    // `limit`: no value over r is above it.
+    // Lowers d2 over the tile r to the distances to blob k's sites. Returns the largest squared
+    // distance over r after. `limit`: no value over r is above it.
     std::int32_t measure(int k, const Rect& r, std::int64_t limit, std::int32_t* d2,
                          std::vector<int>* changed);
+    // Measures the tile's pending blobs, nearest first.
+    void settle_tile(int tile, std::int32_t* d2, std::vector<int>* changed);
+    // Skips the pending blobs that lower nothing in a tile and releases the blobs every tile
+    // of the block has measured.
+    void compact(int block);
     void release(int k);
     void distrust(int block, const Blob& blob);
     std::int32_t max_over(const Rect& r, const std::int32_t* d2) const;
+    void update_bound(int block);
     void update_group(int group);
 
-    int width_ = 0, height_ = 0, blocks_w_ = 0, blocks_h_ = 0;
-    std::vector<std::vector<int>> pending_;  // per block: blob ids
-    std::vector<std::int32_t> bound_;        // per block: >= every squared distance in it
-    std::vector<std::uint8_t> untrusted_;
+    int width_ = 0, height_ = 0, blocks_w_ = 0, blocks_h_ = 0, tiles_w_ = 0, tiles_h_ = 0;
+    std::vector<Pending> pending_;         // per block
+    std::vector<std::int32_t> bound_;      // per block: >= every squared distance in it
+    std::vector<std::uint64_t> inexact_;   // per block: its tiles with blobs to measure
+    std::vector<std::uint8_t> untrusted_;  // per block
     std::vector<std::int64_t> reach_;      // per block not trusted
     std::vector<std::uint8_t> in_raised_;  // per block: listed in raised_
     std::vector<int> raised_;
+    std::vector<std::int32_t> tile_bound_;  // per tile: >= every squared distance in it
+    std::vector<int> absorbed_;  // per inexact tile: the number of its first unmeasured entry
     // Groups of 8 x 8 blocks with the largest bound among them, to skip far groups at once.
     static constexpr int kGroupShift = 3;
     int groups_w_ = 0, groups_h_ = 0;
     std::vector<std::int32_t> group_bound_;
     std::vector<Blob> blobs_;
     std::vector<int> free_blobs_;  // ids of released blobs, reused
-    SiteBlob blob_;
+    std::uint64_t serial_ = 0;
+    std::vector<std::pair<std::int64_t, int>> order_;  // settle_tile() scratch: (gap, entry)
 };
 
 }  // namespace acanthus::detail

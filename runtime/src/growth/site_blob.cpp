@@ -11,9 +11,7 @@ void SiteBlob::reset(const std::vector<int>& sites, int width, int height) {
     const auto by_column = [width](int a, int b) {
         return a % width != b % width ? a % width < b % width : a < b;
     };
-    // Sites kept pending by a lazy field come sorted already (PendingBlocks sorts them once).
-    if (!std::is_sorted(sorted_.begin(), sorted_.end(), by_column))
-        std::sort(sorted_.begin(), sorted_.end(), by_column);
+    std::sort(sorted_.begin(), sorted_.end(), by_column);
     columns_.clear();
     run_start_.clear();
     runs_.clear();

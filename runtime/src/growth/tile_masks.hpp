@@ -22,6 +22,32 @@ inline std::uint64_t dilate_row(std::uint64_t row, bool left_corner, bool right_
            0xff;
 }
 
+// The centre of a 3 x 3 neighbourhood of tile masks (at[dj + 1][di + 1]) dilated by one bit in
+// the 8-neighbourhood, with the bits its neighbours' edges lend it.
+inline std::uint64_t dilate(const std::uint64_t (&at)[3][3]) {
+    const std::uint64_t m = at[1][1];
+    // Within the rows: left and right neighbours, then up and down.
+    std::uint64_t near = m | ((m << 1) & ~kColumn0) | ((m >> 1) & ~kColumn7) |
+                         ((at[1][0] & kColumn7) >> 7) | ((at[1][2] & kColumn0) << 7);
+    near |= (near << 8) | (near >> 8);
+    // The last row of the mask above and the first row of the mask below, with the corners.
+    near |= dilate_row(at[0][1] >> 56, (at[0][0] >> 63) & 1, (at[0][2] >> 56) & 1);
+    near |= dilate_row(at[2][1] & kRow0, (at[2][0] >> 7) & 1, at[2][2] & 1) << 56;
+    return near;
+}
+
+// dilate() of the mask at (i, j) in a w x h grid of masks; mask_at(a, b) gives each.
+template <class MaskAt>
+std::uint64_t dilate_in_grid(int i, int j, int w, int h, MaskAt mask_at) {
+    std::uint64_t at[3][3];
+    for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+            const int a = i + di, b = j + dj;
+            at[dj + 1][di + 1] = a < 0 || b < 0 || a >= w || b >= h ? 0 : mask_at(a, b);
+        }
+    return dilate(at);
+}
+
 // Bit x set when byte x of the 8 at p is not zero.
 inline std::uint32_t nonzero_bytes(const std::uint8_t* p) {
     if constexpr (std::endian::native == std::endian::little) {
