@@ -157,7 +157,8 @@ void EmptyCircleFinder::consider(int pixel, int i, int j, int tile, int bit) {
         eligible = eligible && crest_inside(pixel, d2);
     else
         eligible = eligible && crest_at(pixel, i, j, d2);
-    eligible = eligible && element_may_stop(pixel) &&
+    // Nearer than the tile's nearest boundary pixel: the nearest obstacle is an element.
+    eligible = eligible && (d2 < boundary_floor_[tile] || element_may_stop(pixel)) &&
                !((discarded_bits_[tile] & mask) && discarded_.at(pixel) == d2);
     candidates_[tile] = eligible ? candidates_[tile] | mask : candidates_[tile] & ~mask;
     blocked_bits_[tile] &= ~mask;
@@ -188,9 +189,10 @@ std::uint64_t EmptyCircleFinder::maybe_crests(int tile, std::uint64_t bits) cons
         if (((bits >> (8 * r)) & 0xff) == 0) continue;
         const int p0 = ((tj << kTileShift) + r) * w + (ti << kTileShift);
         const std::int32_t* mid = d2 + p0;
+        const std::uint64_t want = (bits >> (8 * r)) & 0xff;
         const std::uint32_t row =
-            crest_lanes(mid - w, mid, mid + w, min_d2) |
-            (crest_lanes(mid - w + 4, mid + 4, mid + w + 4, min_d2) << 4) |
+            ((want & 0x0f) ? crest_lanes(mid - w, mid, mid + w, min_d2) : 0u) |
+            ((want & 0xf0) ? crest_lanes(mid - w + 4, mid + 4, mid + w + 4, min_d2) << 4 : 0u) |
             static_cast<std::uint32_t>(((candidates_[tile] | blocked_bits_[tile]) >> (8 * r)) &
                                        0xff);
         out |= static_cast<std::uint64_t>(row) << (8 * r);
@@ -203,17 +205,28 @@ void EmptyCircleFinder::refresh(int tile, std::uint64_t bits) {
     // a pixel in state none that has no line with both neighbours at most as far as itself
     // (or is too near an obstacle) stays none: only the others are re-decided.
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    const std::uint64_t before = candidates_[tile];
     if (ti > 0 && tj > 0 && ti < tiles_w_ - 1 && tj < tiles_h_ - 1)
         refresh_bits<true>(tile, maybe_crests(tile, bits));
     else
         refresh_bits<false>(tile, bits);
-    rescan(tile);
+    // The tile's best key moves only with its candidates or their distances.
+    if (candidates_[tile] != before || (before & changed_[tile]) != 0) rescan(tile);
 }
 
 void EmptyCircleFinder::rebuild() {
     blocked_.clear();
     std::fill(candidates_.begin(), candidates_.end(), 0);
     std::fill(blocked_bits_.begin(), blocked_bits_.end(), 0);
+    tiles_.reset(static_cast<std::size_t>(tiles_w_) * tiles_h_);
+    boundary_floor_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_,
+                           std::numeric_limits<std::int32_t>::max());
+    for (int j = 0; j < grid_.height; ++j)
+        for (int i = 0; i < grid_.width; ++i) {
+            std::int32_t& f = boundary_floor_[(j >> kTileShift) * tiles_w_ + (i >> kTileShift)];
+            f = static_cast<std::int32_t>(
+                std::min<std::int64_t>(f, field_.boundary_squared_distance(j * grid_.width + i)));
+        }
     for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t, ~std::uint64_t{0});
     blocks_.reset(field_.lazy() ? static_cast<std::size_t>(field_.far_blocks().count()) : 0);
     if (field_.lazy()) field_.far_blocks().clear_raised();

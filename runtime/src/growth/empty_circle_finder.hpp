@@ -145,6 +145,9 @@ class EmptyCircleFinder {
     std::vector<std::uint64_t> blocked_bits_;    // pixels in state blocked
     std::vector<std::uint64_t> discarded_bits_;  // pixels with an entry in discarded_
     std::vector<std::uint64_t> changed_;         // pixels changed since the last update()
+    // Per tile, the smallest squared distance to a boundary pixel (boundary sites all come
+    // before rebuild()): below it, the nearest obstacle is an element.
+    std::vector<std::int32_t> boundary_floor_;
     std::vector<int> changed_tiles_;
     std::vector<std::uint8_t> dirty_;
     std::vector<int> dirty_list_;

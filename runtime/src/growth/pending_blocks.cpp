@@ -242,6 +242,11 @@ void PendingBlocks::trust_tile(int tile, std::int32_t* d2, std::vector<int>* cha
 std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, std::int32_t* d2,
                                     std::vector<int>* changed) {
     const Blob& b = blobs_[k];
+    const std::size_t runs = b.runs.size();
+    if (g2_.size() < runs) {
+        g2_.resize(runs);
+        column_.resize(runs);
+    }
     std::int32_t top = 0;
     for (int j = r.y0; j <= r.y1; ++j) {
         std::int32_t* line = d2 + static_cast<std::size_t>(j) * width_;
@@ -251,18 +256,27 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
             for (int i = r.x0; i <= r.x1; ++i) top = std::max(top, line[i]);
             continue;
         }
+        bool rows = false;
         for (int i = r.x0; i <= r.x1; ++i) {
             // The distance to the blob's bounding box is a lower bound of the distance to its
             // sites: most pixels are settled by it.
             const std::int32_t dx = std::max({0, b.x0 - i, i - b.x1});
             if (dx * dx + dy * dy < line[i]) {
+                if (!rows) {  // each run's squared row distance to row j, once a row
+                    for (std::size_t q = 0; q < runs; ++q) {
+                        const Run& run = b.runs[q];
+                        const std::int32_t g = std::max({0, run.lo - j, j - run.hi});
+                        column_[q] = run.column;
+                        g2_[q] = g * g;
+                    }
+                    rows = true;
+                }
                 // The nearest of the blob's column runs, tried one by one: a placed element
                 // spans a few columns. Squares of grid sizes fit in 32 bits.
                 std::int32_t m = std::numeric_limits<std::int32_t>::max();
-                for (const Run& run : b.runs) {
-                    const std::int32_t cx = i - run.column;
-                    const std::int32_t g = std::max({0, run.lo - j, j - run.hi});
-                    m = std::min(m, cx * cx + g * g);
+                for (std::size_t q = 0; q < runs; ++q) {
+                    const std::int32_t cx = i - column_[q];
+                    m = std::min(m, cx * cx + g2_[q]);
                 }
                 if (m < line[i]) {
                     line[i] = m;

@@ -124,6 +124,7 @@ class PendingBlocks {
     std::vector<int> free_blobs_;  // ids of released blobs, reused
     std::uint64_t serial_ = 0;
     std::vector<std::pair<std::int64_t, int>> order_;  // settle_tile() scratch: (gap, entry)
+    std::vector<std::int32_t> column_, g2_;            // measure() scratch: per run
 };
 
 }  // namespace acanthus::detail
