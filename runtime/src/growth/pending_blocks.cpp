@@ -82,10 +82,14 @@ void PendingBlocks::update_bound(int block) {
     std::int32_t m = 0;
     for (std::uint64_t bits = tiles_in(block); bits; bits &= bits - 1)
         m = std::max(m, tile_bound_[tile_at(block, std::countr_zero(bits))]);
+    const std::int32_t old = bound_[block];
     bound_[block] = m;
     const int group =
         (block / blocks_w_ >> kGroupShift) * groups_w_ + (block % blocks_w_ >> kGroupShift);
-    update_group(group);
+    if (m > group_bound_[group])
+        group_bound_[group] = m;
+    else if (m < old && old == group_bound_[group])  // it may have been the group's largest
+        update_group(group);
 }
 
 void PendingBlocks::update_group(int group) {
@@ -152,20 +156,25 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                 if (gap2(blob, r) >= bound_[b]) continue;
                 // The tiles it may lower: the gap to a tile is separable in tile columns and
                 // rows.
-                std::int64_t gx[8], gy[8];
+                std::int32_t gx[8], gy[8];  // squares of grid sizes fit in 32 bits
                 for (int c = 0; c < 8; ++c) {
                     const int x0 = r.x0 + (c << kTileShift), x1 = x0 + (1 << kTileShift) - 1;
-                    const std::int64_t dx = std::max({0, x0 - blob.x1, blob.x0 - x1});
+                    const std::int32_t dx = std::max({0, x0 - blob.x1, blob.x0 - x1});
                     gx[c] = dx * dx;
                     const int y0 = r.y0 + (c << kTileShift), y1 = y0 + (1 << kTileShift) - 1;
-                    const std::int64_t dy = std::max({0, y0 - blob.y1, blob.y0 - y1});
+                    const std::int32_t dy = std::max({0, y0 - blob.y1, blob.y0 - y1});
                     gy[c] = dy * dy;
                 }
                 std::uint64_t lower = 0;
-                for (std::uint64_t bits = tiles_in(b); bits; bits &= bits - 1) {
-                    const int bit = std::countr_zero(bits);
-                    if (gx[bit & 7] + gy[bit >> 3] < tile_bound_[tile_at(b, bit)])
-                        lower |= std::uint64_t{1} << bit;
+                const int cols = std::min(8, tiles_w_ - (bi << 3));
+                const int rows = std::min(8, tiles_h_ - (bj << 3));
+                const std::int32_t* bound =
+                    tile_bound_.data() + static_cast<std::size_t>(bj << 3) * tiles_w_ + (bi << 3);
+                for (int row = 0; row < rows; ++row, bound += tiles_w_) {
+                    std::uint64_t bits = 0;
+                    for (int c = 0; c < cols; ++c)
+                        bits |= static_cast<std::uint64_t>(gx[c] + gy[row] < bound[c]) << c;
+                    lower |= bits << (8 * row);
                 }
                 if (lower == 0) continue;
                 if (id < 0) {
