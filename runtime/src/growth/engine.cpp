@@ -73,7 +73,7 @@ struct GrowthEngine::Impl {
           ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
           env(region, ornament, exclude, options.rng_seed) {
         // The incremental engine needs exact distances only where they may decide C; below
-        // options.lazy_field_pixels the eager field is faster.
+        // options.lazy_field_pixels the eager field is as fast.
         field.set_lazy(!options.reference_engine &&
                        static_cast<long long>(raster.grid().width) * raster.grid().height >=
                            options.lazy_field_pixels);
