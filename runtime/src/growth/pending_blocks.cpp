@@ -32,6 +32,8 @@ void PendingBlocks::reset(int width, int height, const std::int32_t* d2) {
     free_blobs_.clear();
     const std::size_t tiles = static_cast<std::size_t>(tiles_w_) * tiles_h_;
     absorbed_.assign(tiles, 0);
+    witness_.assign(n, -1);
+    witness_d2_.assign(n, 0);
     tile_bound_.resize(tiles);
     for (std::size_t t = 0; t < tiles; ++t)
         tile_bound_[t] = max_over(tile_rect(static_cast<int>(t)), d2);
@@ -130,6 +132,28 @@ void PendingBlocks::distrust(int block, const Blob& blob) {
     }
 }
 
+bool PendingBlocks::farther_than_witness(const Blob& blob, int witness, const Rect& r) const {
+    // Every pixel of r at least as near to the witness (a site) as to the blob: the blob
+    // lowers nothing there, now or after the sites r waits for are measured.
+    const std::int64_t wi = witness % width_, wj = witness / width_;
+    const std::int64_t fx = std::max(std::abs(r.x0 - wi), std::abs(r.x1 - wi));
+    const std::int64_t fy = std::max(std::abs(r.y0 - wj), std::abs(r.y1 - wj));
+    if (fx * fx + fy * fy <= gap2(blob, r)) return true;
+    // Else: no site of the blob is nearer to a pixel p than |p - centre| - R (R the half
+    // diagonal of its box), and the pixels with |p - centre| - |p - witness| >= R form a convex
+    // set (inside one branch of a hyperbola): testing r's corners is enough.
+    const double cx = 0.5 * (blob.x0 + blob.x1), cy = 0.5 * (blob.y0 + blob.y1);
+    const double R = 0.5 * std::hypot(blob.x1 - blob.x0, blob.y1 - blob.y0);
+    for (const int x : {r.x0, r.x1})
+        for (const int y : {r.y0, r.y1}) {
+            const double to_blob = std::hypot(x - cx, y - cy);
+            const double to_witness =
+                std::hypot(static_cast<double>(x - wi), static_cast<double>(y - wj));
+            if (to_blob - to_witness - R < 1e-6) return false;
+        }
+    return true;
+}
+
 void PendingBlocks::defer(const std::vector<int>& sites) {
     if (sites.empty()) return;
     Blob blob{{}, {}, width_, height_, -1, -1, 0, 0};
@@ -140,6 +164,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
         blob.y0 = std::min(blob.y0, j);
         blob.y1 = std::max(blob.y1, j);
     }
+    const int si = sites.front() % width_, sj = sites.front() / width_;
     int id = -1;
     for (int g = 0; g < groups_w_ * groups_h_; ++g) {
         const int gi = g % groups_w_, gj = g / groups_w_;
@@ -154,6 +179,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                 const int b = bj * blocks_w_ + bi;
                 const Rect r = block_rect(b);
                 if (gap2(blob, r) >= bound_[b]) continue;
+                if (witness_[b] >= 0 && farther_than_witness(blob, witness_[b], r)) continue;
                 // The tiles it may lower: the gap to a tile is separable in tile columns and
                 // rows.
                 std::int32_t gx[8], gy[8];  // squares of grid sizes fit in 32 bits
@@ -209,6 +235,15 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                 ++blobs_[id].refs;
                 // The tiles it may lower are no longer trusted, nor the tiles round them.
                 distrust(b, blobs_[id]);
+                // The site nearest to the block's centre is its best witness.
+                {
+                    const std::int64_t cx = 2 * si - (r.x0 + r.x1), cy = 2 * sj - (r.y0 + r.y1);
+                    const std::int64_t dc = cx * cx + cy * cy;
+                    if (witness_[b] < 0 || dc < witness_d2_[b]) {
+                        witness_[b] = sites.front();
+                        witness_d2_[b] = dc;
+                    }
+                }
                 const bool left = bi > 0 && (lower & tile_masks::kColumn0);
                 const bool right = bi < blocks_w_ - 1 && (lower & tile_masks::kColumn7);
                 const bool up = bj > 0 && (lower & tile_masks::kRow0);

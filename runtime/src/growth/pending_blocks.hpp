@@ -102,6 +102,7 @@ class PendingBlocks {
     void compact(int block);
     void release(int k);
     void distrust(int block, const Blob& blob);
+    bool farther_than_witness(const Blob& blob, int witness, const Rect& r) const;
     std::int32_t max_over(const Rect& r, const std::int32_t* d2) const;
     void update_bound(int block);
     void update_group(int group);
@@ -116,6 +117,10 @@ class PendingBlocks {
     std::vector<int> raised_;
     std::vector<std::int32_t> tile_bound_;  // per tile: >= every squared distance in it
     std::vector<int> absorbed_;  // per inexact tile: the number of its first unmeasured entry
+    // Per block: a site near it (-1: none yet) and 4 x its squared distance to the centre. A
+    // new blob no nearer than it to every pixel of the block lowers nothing there.
+    std::vector<int> witness_;
+    std::vector<std::int64_t> witness_d2_;
     // Groups of 8 x 8 blocks with the largest bound among them, to skip far groups at once.
     static constexpr int kGroupShift = 3;
     int groups_w_ = 0, groups_h_ = 0;
