@@ -143,13 +143,15 @@ bool PendingBlocks::farther_than_witness(const Blob& blob, int witness, const Re
     // diagonal of its box), and the pixels with |p - centre| - |p - witness| >= R form a convex
     // set (inside one branch of a hyperbola): testing r's corners is enough.
     const double cx = 0.5 * (blob.x0 + blob.x1), cy = 0.5 * (blob.y0 + blob.y1);
-    const double R = 0.5 * std::hypot(blob.x1 - blob.x0, blob.y1 - blob.y0);
+    const double bx = blob.x1 - blob.x0, by = blob.y1 - blob.y0;
+    const double R = 0.5 * std::sqrt(bx * bx + by * by);
     for (const int x : {r.x0, r.x1})
         for (const int y : {r.y0, r.y1}) {
-            const double to_blob = std::hypot(x - cx, y - cy);
-            const double to_witness =
-                std::hypot(static_cast<double>(x - wi), static_cast<double>(y - wj));
-            if (to_blob - to_witness - R < 1e-6) return false;
+            const double ux = x - cx, uy = y - cy;
+            const double vx = static_cast<double>(x - wi), vy = static_cast<double>(y - wj);
+            // A margin far above the rounding of these square roots.
+            if (std::sqrt(ux * ux + uy * uy) - std::sqrt(vx * vx + vy * vy) - R < 1e-6)
+                return false;
         }
     return true;
 }
