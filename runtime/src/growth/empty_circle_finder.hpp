@@ -79,7 +79,7 @@ class EmptyCircleFinder {
     static bool crest(std::int64_t d, std::int64_t a, std::int64_t b) {
         return a <= d && b <= d && bends(d, a, b);
     }
-    static bool bends(std::int64_t d, std::int64_t a, std::int64_t b);
+    static bool bends(std::int64_t d, std::int64_t a, std::int64_t b);  // a, b <= d
     // on_medial_axis() of pixel (i, j) of squared distance d > 0.
     bool crest_at(int pixel, int i, int j, std::int64_t d) const;
     // The same for a pixel with all 8 neighbours inside the grid.
