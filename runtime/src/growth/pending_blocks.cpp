@@ -116,7 +116,7 @@ void PendingBlocks::distrust(int block, const Blob& blob) {
     // neighbour of it at most (that + sqrt 2)^2 (distances are 1-Lipschitz). Over the block
     // and its ring, with a margin for rounding; never above the block's own bound.
     const Rect r = block_rect(block);
-    const int s = blob.sites.front(), si = s % width_, sj = s / width_;
+    const int si = blob.first % width_, sj = blob.first / width_;
     const double dx = std::max(std::abs(r.x0 - 1 - si), std::abs(r.x1 + 1 - si));
     const double dy = std::max(std::abs(r.y0 - 1 - sj), std::abs(r.y1 + 1 - sj));
     const double far = std::sqrt(dx * dx + dy * dy) + 1.5;
@@ -158,7 +158,7 @@ bool PendingBlocks::farther_than_witness(const Blob& blob, int witness, const Re
 
 void PendingBlocks::defer(const std::vector<int>& sites) {
     if (sites.empty()) return;
-    Blob blob{{}, {}, width_, height_, -1, -1, 0, 0};
+    Blob blob{{}, width_, height_, -1, -1, sites.front(), 0};
     for (int p : sites) {
         const int i = p % width_, j = p / width_;
         blob.x0 = std::min(blob.x0, i);
@@ -213,11 +213,11 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                         id = static_cast<int>(blobs_.size());
                         blobs_.emplace_back();
                     }
-                    blob.sites = sites;
-                    std::sort(blob.sites.begin(), blob.sites.end(), [this](int a, int b) {
+                    sorted_.assign(sites.begin(), sites.end());
+                    std::sort(sorted_.begin(), sorted_.end(), [this](int a, int b) {
                         return a % width_ != b % width_ ? a % width_ < b % width_ : a < b;
                     });
-                    for (int p : blob.sites) {
+                    for (int p : sorted_) {
                         const int c = p % width_, row = p / width_;
                         if (!blob.runs.empty() && blob.runs.back().column == c &&
                             blob.runs.back().hi + 1 == row)
@@ -225,7 +225,6 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                         else
                             blob.runs.push_back({c, row, row});
                     }
-                    blob.serial = ++serial_;
                     blobs_[id] = std::move(blob);
                 }
                 Pending& p = pending_[b];
@@ -265,7 +264,6 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
 
 void PendingBlocks::release(int k) {
     if (--blobs_[k].refs > 0) return;
-    std::vector<int>().swap(blobs_[k].sites);
     std::vector<Run>().swap(blobs_[k].runs);
     free_blobs_.push_back(k);
 }

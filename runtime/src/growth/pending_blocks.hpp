@@ -55,11 +55,10 @@ class PendingBlocks {
         int column, lo, hi;
     };
     struct Blob {
-        std::vector<int> sites;  // sorted by column, then row (SiteBlob::reset()'s order)
-        std::vector<Run> runs;   // by column, then row
-        int x0, y0, x1, y1;      // bounding box
-        int refs;                // blocks holding it pending
-        std::uint64_t serial;    // tells a reused id from its former blob
+        std::vector<Run> runs;  // by column, then row
+        int x0, y0, x1, y1;     // bounding box
+        int first;              // one of its sites
+        int refs;               // blocks holding it pending
     };
     struct Rect {
         int x0, y0, x1, y1;  // inclusive
@@ -126,9 +125,9 @@ class PendingBlocks {
     int groups_w_ = 0, groups_h_ = 0;
     std::vector<std::int32_t> group_bound_;
     std::vector<Blob> blobs_;
-    std::vector<int> free_blobs_;  // ids of released blobs, reused
-    std::uint64_t serial_ = 0;
+    std::vector<int> free_blobs_;                      // ids of released blobs, reused
     std::vector<std::pair<std::int64_t, int>> order_;  // settle_tile() scratch: (gap, entry)
+    std::vector<int> sorted_;                          // defer() scratch: sites by column
     std::vector<std::int32_t> column_, g2_;            // measure() scratch: per run
 };
 
