@@ -225,7 +225,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                         else
                             blob.runs.push_back({c, row, row});
                     }
-                    blobs_[id] = std::move(blob);
+                    blobs_[id] = std::move(blob);  // its box stays readable for the tests above
                 }
                 Pending& p = pending_[b];
                 // Tiles that were exact wait from this entry on; the others keep their place.
