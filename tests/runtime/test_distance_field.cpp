@@ -259,14 +259,16 @@ TEST(DistanceField, IncrementalFindsDisconnectedVoronoiPixels) {
 }
 
 // The lazy far field: values are upper bounds everywhere, exact in trusted tiles and their
-// one-pixel rings, and exact everywhere once every block is tightened to 0.
-TEST(DistanceField, LazyFieldIsExactWhereTrustedAndAfterSettling) {
+// one-pixel rings, and exact everywhere once every block is tightened to 0; in both metrics.
+class LazyField : public ::testing::TestWithParam<acanthus::DistanceMetric> {};
+
+TEST_P(LazyField, IsExactWhereTrustedAndAfterSettling) {
     Random rng(77);
     const int w = 330, h = 230;  // blocks of 64 pixels, the last ones partial
     std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 0);
     for (int i = 0; i < w; ++i) occ[i] = occ[(h - 1) * w + i] = 1;
     for (int j = 0; j < h; ++j) occ[j * w] = occ[j * w + w - 1] = 1;
-    DistanceField lazy(w, h, /*with_sites=*/false);
+    DistanceField lazy(w, h, /*with_sites=*/false, GetParam());
     lazy.set_lazy(true);
     ASSERT_TRUE(lazy.lazy());
     lazy.compute(occ);
@@ -297,7 +299,7 @@ TEST(DistanceField, LazyFieldIsExactWhereTrustedAndAfterSettling) {
                 EXPECT_LT(far.reach(b), threshold);
             }
         }
-        DistanceField full(w, h, /*with_sites=*/false);
+        DistanceField full(w, h, /*with_sites=*/false, GetParam());
         full.compute(occ);
         for (int p = 0; p < w * h; ++p) {
             ASSERT_GE(lazy.squared_distance(p), full.squared_distance(p)) << "step " << step;
@@ -319,10 +321,18 @@ TEST(DistanceField, LazyFieldIsExactWhereTrustedAndAfterSettling) {
     std::vector<int> changed;
     for (int b = 0; b < far.count(); ++b)
         if (!far.trusted(b)) lazy.tighten(b, 0, &changed);
-    DistanceField full(w, h, /*with_sites=*/false);
+    DistanceField full(w, h, /*with_sites=*/false, GetParam());
     full.compute(occ);
     for (int p = 0; p < w * h; ++p) {
         ASSERT_EQ(lazy.squared_distance(p), full.squared_distance(p)) << "pixel " << p;
         ASSERT_EQ(lazy.nearest_kind(p), full.nearest_kind(p)) << "pixel " << p;
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Metrics, LazyField,
+                         ::testing::Values(acanthus::DistanceMetric::euclidean,
+                                           acanthus::DistanceMetric::manhattan),
+                         [](const auto& info) {
+                             return info.param == acanthus::DistanceMetric::euclidean ? "Euclidean"
+                                                                                      : "Manhattan";
+                         });

@@ -129,6 +129,9 @@ TEST(Growth, ManhattanMetricGrowsDeterministicallyAndDiffersFromEuclidean) {
     expect_valid_tree(manhattan);
     expect_dots_fit(manhattan, region);
     EXPECT_EQ(grow(dots::pattern(), region, o), manhattan);
+    GrowthOptions lazy = o;  // the lazy field with the city-block metric
+    lazy.lazy_field_pixels = 0;
+    EXPECT_EQ(grow(dots::pattern(), region, lazy), manhattan);
     o.reference_engine = true;
     EXPECT_EQ(grow(dots::pattern(), region, o), manhattan);
     EXPECT_NE(grow(dots::pattern(), region, small_options()), manhattan);

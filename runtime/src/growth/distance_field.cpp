@@ -140,12 +140,13 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
         const auto boundary = static_cast<std::uint8_t>(ObstacleKind::boundary);
         manhattan_transform(w, height_, occ, false, boundary, dist2_.data(), site);
         manhattan_transform(w, height_, occ, true, boundary, boundary2_.data(), nullptr);
+        if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
         return;
     }
     separable_edt(
         w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
         dist2_.data(), site, scratch_);
-    if (lazy_) far_.reset(w, height_, dist2_.data());
+    if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
     separable_edt(
         w, height_,
         [&](int i, int j) {
@@ -166,14 +167,6 @@ void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
         fresh.push_back(p);
     }
     if (fresh.empty()) return;
-    if (metric_ == DistanceMetric::manhattan) {
-        manhattan_brushfire(width_, height_, fresh, dist2_.data(),
-                            site_.empty() ? nullptr : site_.data(), changed, queue_);
-        if (kind == ObstacleKind::boundary)
-            manhattan_brushfire(width_, height_, fresh, boundary2_.data(), nullptr, changed,
-                                queue_);
-        return;
-    }
     if (lazy_ && kind == ObstacleKind::element) {
         // Measured when a tile that may need them is trusted.
         for (int p : fresh) {
@@ -181,6 +174,14 @@ void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
             if (changed) changed->push_back(p);
         }
         far_.defer(fresh);
+        return;
+    }
+    if (metric_ == DistanceMetric::manhattan) {
+        manhattan_brushfire(width_, height_, fresh, dist2_.data(),
+                            site_.empty() ? nullptr : site_.data(), changed, queue_);
+        if (kind == ObstacleKind::boundary)
+            manhattan_brushfire(width_, height_, fresh, boundary2_.data(), nullptr, changed,
+                                queue_);
         return;
     }
     propagate(fresh, dist2_, site_.empty() ? nullptr : &site_, changed);

@@ -39,10 +39,9 @@ class DistanceField {
     // Lazy far field (docs/engine.md, "Scale"): element sites added later are not measured
     // when added; every block they may lower keeps them pending, and its values are upper
     // bounds (distances only decrease) until a tile of it is trusted. Set before compute();
-    // Euclidean, no feature transform. Off by default: every value is exact after add_sites().
-    void set_lazy(bool lazy) {
-        lazy_ = lazy && metric_ == DistanceMetric::euclidean && site_.empty();
-    }
+    // Either metric, no feature transform. Off by default: every value is exact after
+    // add_sites().
+    void set_lazy(bool lazy) { lazy_ = lazy && site_.empty(); }
     bool lazy() const { return lazy_; }
     PendingBlocks& far_blocks() { return far_; }
     const PendingBlocks& far_blocks() const { return far_; }

@@ -13,7 +13,8 @@ namespace acanthus::detail {
 static_assert(PendingBlocks::kShift - PendingBlocks::kTileShift == 3,
               "8 x 8 tiles a block: one bit each in a 64-bit mask");
 
-void PendingBlocks::reset(int width, int height, const std::int32_t* d2) {
+void PendingBlocks::reset(int width, int height, const std::int32_t* d2, DistanceMetric metric) {
+    manhattan_ = metric == DistanceMetric::manhattan;
     width_ = width;
     height_ = height;
     blocks_w_ = ((width - 1) >> kShift) + 1;
@@ -104,7 +105,8 @@ void PendingBlocks::update_group(int group) {
 }
 
 // Squared distance from the blob's bounding box to the rectangle's pixel centres: no pixel of
-// the rectangle is nearer to a site of the blob.
+// the rectangle is nearer to a site of the blob (in either metric: a city-block distance is
+// never below the Euclidean one).
 std::int64_t PendingBlocks::gap2(const Blob& b, const Rect& r) {
     const std::int64_t dx = std::max({0, r.x0 - b.x1, b.x0 - r.x1});
     const std::int64_t dy = std::max({0, r.y0 - b.y1, b.y0 - r.y1});
@@ -119,7 +121,8 @@ void PendingBlocks::distrust(int block, const Blob& blob) {
     const int si = blob.first % width_, sj = blob.first / width_;
     const double dx = std::max(std::abs(r.x0 - 1 - si), std::abs(r.x1 + 1 - si));
     const double dy = std::max(std::abs(r.y0 - 1 - sj), std::abs(r.y1 + 1 - sj));
-    const double far = std::sqrt(dx * dx + dy * dy) + 1.5;
+    // City-block: the far corner at dx + dy, a diagonal neighbour 2 farther.
+    const double far = manhattan_ ? dx + dy + 2.5 : std::sqrt(dx * dx + dy * dy) + 1.5;
     const std::int64_t reach =
         std::min<std::int64_t>(static_cast<std::int64_t>(std::ceil(far * far)) + 2, bound_[block]);
     const bool raise = !untrusted_[block] || reach > reach_[block];
@@ -181,7 +184,8 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                 const int b = bj * blocks_w_ + bi;
                 const Rect r = block_rect(b);
                 if (gap2(blob, r) >= bound_[b]) continue;
-                if (witness_[b] >= 0 && farther_than_witness(blob, witness_[b], r)) continue;
+                if (!manhattan_ && witness_[b] >= 0 && farther_than_witness(blob, witness_[b], r))
+                    continue;
                 // The tiles it may lower: the gap to a tile is separable in tile columns and
                 // rows.
                 std::int32_t gx[8], gy[8];  // squares of grid sizes fit in 32 bits
@@ -305,22 +309,28 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
             // The distance to the blob's bounding box is a lower bound of the distance to its
             // sites: most pixels are settled by it.
             const std::int32_t dx = std::max({0, b.x0 - i, i - b.x1});
-            if (dx * dx + dy * dy < line[i]) {
+            if ((manhattan_ ? (dx + dy) * (dx + dy) : dx * dx + dy * dy) < line[i]) {
                 if (!rows) {  // each run's squared row distance to row j, once a row
                     for (std::size_t q = 0; q < runs; ++q) {
                         const Run& run = b.runs[q];
                         const std::int32_t g = std::max({0, run.lo - j, j - run.hi});
                         column_[q] = run.column;
-                        g2_[q] = g * g;
+                        g2_[q] = manhattan_ ? g : g * g;
                     }
                     rows = true;
                 }
                 // The nearest of the blob's column runs, tried one by one: a placed element
                 // spans a few columns. Squares of grid sizes fit in 32 bits.
                 std::int32_t m = std::numeric_limits<std::int32_t>::max();
-                for (std::size_t q = 0; q < runs; ++q) {
-                    const std::int32_t cx = i - column_[q];
-                    m = std::min(m, cx * cx + g2_[q]);
+                if (manhattan_) {  // (|dx| + |dy|)^2, of the nearest run in |dx| + |dy|
+                    for (std::size_t q = 0; q < runs; ++q)
+                        m = std::min(m, std::abs(i - column_[q]) + g2_[q]);
+                    m *= m;
+                } else {
+                    for (std::size_t q = 0; q < runs; ++q) {
+                        const std::int32_t cx = i - column_[q];
+                        m = std::min(m, cx * cx + g2_[q]);
+                    }
                 }
                 if (m < line[i]) {
                     line[i] = m;

@@ -3,6 +3,7 @@
 // measures them only when FindEmptyCircle needs that tile exact (docs/engine.md, "Scale").
 #pragma once
 
+#include <acanthus/distance_metric.hpp>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -14,8 +15,9 @@ class PendingBlocks {
     static constexpr int kShift = 6;      // 64 x 64 pixel blocks hold the pending sites
     static constexpr int kTileShift = 3;  // 8 x 8 pixel tiles measure them (the finder's tiles)
 
-    // All tiles exact; their bounds from the field `d2` (width x height).
-    void reset(int width, int height, const std::int32_t* d2);
+    // All tiles exact; their bounds from the field `d2` (width x height) of squared distances
+    // in `metric` (city-block distances squared for Manhattan).
+    void reset(int width, int height, const std::int32_t* d2, DistanceMetric metric);
 
     int count() const { return blocks_w_ * blocks_h_; }
     int block_of(int pixel) const {
@@ -107,6 +109,7 @@ class PendingBlocks {
     void update_group(int group);
 
     int width_ = 0, height_ = 0, blocks_w_ = 0, blocks_h_ = 0, tiles_w_ = 0, tiles_h_ = 0;
+    bool manhattan_ = false;
     std::vector<Pending> pending_;         // per block
     std::vector<std::int32_t> bound_;      // per block: >= every squared distance in it
     std::vector<std::uint64_t> inexact_;   // per block: its tiles with blobs to measure
