@@ -8,18 +8,14 @@
 usage: check_flowers.py WORK PANEL... -- PROGRAM"""
 import math
 import os
-import sys
 
-from pattern_tree import grow_tree
+from pattern_tree import arguments, finish, grow_tree
 
 WIDTH = 600
 MARGIN = 0.02  # runtime/src/output/page_layout.cpp
 PETAL_REACH = 1.02
 
-work = sys.argv[1]
-split = sys.argv.index("--")
-panels, program = sys.argv[2:split], sys.argv[split + 1]
-os.makedirs(work, exist_ok=True)
+(work, *panels), command = arguments()
 
 
 def key(p):
@@ -29,7 +25,7 @@ def key(p):
 failures = []
 for panel in panels:
     name = os.path.splitext(os.path.basename(panel))[0]
-    tree = grow_tree(program, panel, work)
+    tree = grow_tree(command, panel, work)
     x0, y0, x1, y1 = tree["region"]["bounds"]
     margin = MARGIN * max(x1 - x0, y1 - y0)
     px = WIDTH / (x1 - x0 + 2 * margin)  # output pixels per unit at the gallery width
@@ -106,6 +102,4 @@ for panel in panels:
           f"{len(leaves)} leaves, {pairs} successive pairs, {same} on the same side, "
           f"{len(radii)} radii")
 
-for f in failures:
-    print("FAIL:", f)
-sys.exit(1 if failures else 0)
+finish(failures)

@@ -9,16 +9,12 @@ usage: check_junctions.py TYPE WORK PANEL... -- PROGRAM
         end is a branch; spirals mark their first segment with the field index == 0)"""
 import math
 import os
-import sys
 
-from pattern_tree import bezier_point, grow_tree
+from pattern_tree import arguments, bezier_point, finish, grow_tree
 
 LIMIT = 35.0
 
-kind, work = sys.argv[1], sys.argv[2]
-split = sys.argv.index("--")
-panels, program = sys.argv[3:split], sys.argv[split + 1]
-os.makedirs(work, exist_ok=True)
+(kind, work, *panels), command = arguments()
 
 
 def tangent(c, t):
@@ -39,7 +35,7 @@ failures = []
 total = 0
 for panel in panels:
     name = os.path.splitext(os.path.basename(panel))[0]
-    elements = grow_tree(program, panel, work)["elements"]
+    elements = grow_tree(command, panel, work)["elements"]
     by_id = {e["id"]: e for e in elements}
     angles = []
     for e in elements:
@@ -65,7 +61,5 @@ for panel in panels:
     if worst[0] >= LIMIT:
         failures.append(f"{name}: element {worst[1]} branches {worst[0]:.1f} deg off its parent")
 
-for f in failures:
-    print("FAIL:", f)
 print(f"{total} junctions over {len(panels)} panels")
-sys.exit(1 if failures else 0)
+finish(failures)

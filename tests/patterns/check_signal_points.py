@@ -7,9 +7,8 @@ corner. Corners are written here from the panels' own path data.
 usage: check_signal_points.py WORK PANEL... -- PROGRAM (panels among those of CORNERS)"""
 import math
 import os
-import sys
 
-from pattern_tree import grow_tree
+from pattern_tree import arguments, finish, grow_tree
 
 NEAR = 4.0
 SHARE = 0.75
@@ -18,16 +17,13 @@ CORNERS = {
     "heart": [(80, 146), (80, 38)],
 }
 
-work = sys.argv[1]
-split = sys.argv.index("--")
-panels, program = sys.argv[2:split], sys.argv[split + 1]
-os.makedirs(work, exist_ok=True)
+(work, *panels), command = arguments()
 
 failures = []
 for panel in panels:
     name = os.path.splitext(os.path.basename(panel))[0]
     corners = CORNERS[name]
-    tree = grow_tree(program, panel, work)
+    tree = grow_tree(command, panel, work)
     flowers = [e["proxies"][0] for e in tree["elements"] if e["type"] == "flower"]
     gaps = [min(math.dist(c, f["center"]) - f["radius"] for f in flowers) for c in corners]
     held = sum(1 for g in gaps if g <= NEAR)
@@ -36,6 +32,4 @@ for panel in panels:
     if held < SHARE * len(corners):
         failures.append(f"{name}: only {held} of {len(corners)} corners hold a flower")
 
-for f in failures:
-    print("FAIL:", f)
-sys.exit(1 if failures else 0)
+finish(failures)

@@ -8,15 +8,14 @@ import math
 import os
 import re
 import subprocess
-import sys
 import xml.etree.ElementTree as ET
+
+from pattern_tree import arguments, finish
 
 THINNEST = 0.75
 WIDTH = 600
 
-work = sys.argv[1]
-split = sys.argv.index("--")
-panels, program = sys.argv[2:split], sys.argv[split + 1:]
+(work, *panels), program = arguments()
 os.makedirs(work, exist_ok=True)
 
 
@@ -77,6 +76,4 @@ for panel in panels:
     if thinnest < THINNEST - 1e-3:
         failures.append(f"{name}: a stroke {thinnest:.3f} px wide at {WIDTH} px")
 
-for f in failures:
-    print("FAIL:", f)
-sys.exit(1 if failures else 0)
+finish(failures)

@@ -8,23 +8,19 @@
 usage: check_vase.py WORK PANEL... -- PROGRAM"""
 import math
 import os
-import sys
 
-from pattern_tree import bezier_point, grow_tree
+from pattern_tree import arguments, bezier_point, finish, grow_tree
 
 GRID = 34.0  # rules/chinese_vase.acr's default
 CLEAR = 1.0
 
-work = sys.argv[1]
-split = sys.argv.index("--")
-panels, program = sys.argv[2:split], sys.argv[split + 1]
-os.makedirs(work, exist_ok=True)
+(work, *panels), command = arguments()
 
 
 failures = []
 for panel in panels:
     name = os.path.splitext(os.path.basename(panel))[0]
-    elements = grow_tree(program, panel, work)["elements"]
+    elements = grow_tree(command, panel, work)["elements"]
     flower_elements = [e for e in elements if e["type"] == "flower"]
     flowers = [e["proxies"][0] for e in flower_elements]
     closest = min((math.dist(a["center"], b["center"]), i, j)
@@ -53,6 +49,4 @@ for panel in panels:
     print(f"{name}: {len(flowers)} flowers in {len(parts)} grids, closest "
           f"{closest[0] / GRID:.2f} grid apart; filler {nearest:.2f} units from the flowers")
 
-for f in failures:
-    print("FAIL:", f)
-sys.exit(1 if failures else 0)
+finish(failures)
