@@ -20,9 +20,6 @@ class PendingBlocks {
     void reset(int width, int height, const std::int32_t* d2, DistanceMetric metric);
 
     int count() const { return blocks_w_ * blocks_h_; }
-    int block_of(int pixel) const {
-        return (pixel / width_ >> kShift) * blocks_w_ + (pixel % width_ >> kShift);
-    }
     int tile_of(int pixel) const {
         return (pixel / width_ >> kTileShift) * tiles_w_ + (pixel % width_ >> kTileShift);
     }
