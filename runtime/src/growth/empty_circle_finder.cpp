@@ -21,7 +21,8 @@ EmptyCircleFinder::EmptyCircleFinder(DistanceField& field, const GridFrame& grid
       manhattan_(field.metric() == DistanceMetric::manhattan) {
     tiles_w_ = ((grid.width - 1) >> kTileShift) + 1;
     tiles_h_ = ((grid.height - 1) >> kTileShift) + 1;
-    tiles_.reset(static_cast<std::size_t>(tiles_w_) * tiles_h_);
+    blocks_w_ = ((tiles_w_ - 1) >> 3) + 1;
+    tiles_.reset(slot_of(tiles_w_ * tiles_h_ - 1) + 1);
     dirty_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
     candidates_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
     blocked_bits_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
@@ -135,13 +136,17 @@ void EmptyCircleFinder::mark_dirty(int tile) {
 void EmptyCircleFinder::rescan(int tile) {
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
     const int i0 = ti << kTileShift, j0 = tj << kTileShift;
+    // A lazy tile's bound may be below distances it has not measured yet: those are stale.
+    const std::int32_t bound = field_.lazy() ? field_.far_blocks().tile_bound(tile)
+                                             : std::numeric_limits<std::int32_t>::max();
     Key best = 0;
     for (std::uint64_t bits = candidates_[tile]; bits; bits &= bits - 1) {
         const int b = std::countr_zero(bits);
         const int p = (j0 + (b >> kTileShift)) * grid_.width + i0 + (b & 7);
-        best = std::max(best, key_of(p, field_.squared_distance(p)));
+        const std::int32_t d2 = field_.squared_distances()[p];
+        if (d2 <= bound) best = std::max(best, key_of(p, d2));
     }
-    tiles_.set(static_cast<std::size_t>(tile), best);
+    tiles_.set(slot_of(tile), best);
 }
 
 template <bool kInside>
@@ -224,7 +229,7 @@ void EmptyCircleFinder::rebuild() {
     blocked_.clear();
     std::fill(candidates_.begin(), candidates_.end(), 0);
     std::fill(blocked_bits_.begin(), blocked_bits_.end(), 0);
-    tiles_.reset(static_cast<std::size_t>(tiles_w_) * tiles_h_);
+    tiles_.reset(slot_of(tiles_w_ * tiles_h_ - 1) + 1);
     boundary_floor_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_,
                            std::numeric_limits<std::int32_t>::max());
     for (int j = 0; j < grid_.height; ++j)
@@ -253,7 +258,10 @@ void EmptyCircleFinder::distrust_new_blocks() {
 void EmptyCircleFinder::tighten(int block, std::int64_t threshold) {
     settled_.clear();
     field_.tighten(block, threshold, &settled_);
-    const PendingBlocks& far = field_.far_blocks();
+    PendingBlocks& far = field_.far_blocks();
+    // Tiles whose bound fell below candidates they still hold: those are stale.
+    for (int t : far.capped()) rescan(t);
+    far.clear_capped();
     // A block whose reach is below the smallest candidate's distance can hold none.
     const bool none = far.trusted(block) || far.reach(block) < min_d2_;
     blocks_.set(static_cast<std::size_t>(block), none ? 0 : key_of(block, far.reach(block)));
@@ -331,8 +339,7 @@ void EmptyCircleFinder::release(const std::vector<int>& removed_ids) {
             if (!(blocked_bits_[t] & mask) || field_.squared_distance(p) != d2) continue;
             blocked_bits_[t] &= ~mask;
             candidates_[t] |= mask;
-            tiles_.set(static_cast<std::size_t>(t),
-                       std::max(tiles_.get(static_cast<std::size_t>(t)), key_of(p, d2)));
+            tiles_.set(slot_of(t), std::max(tiles_.get(slot_of(t)), key_of(p, d2)));
         }
         blocked_[id].clear();
         blocked_[id].shrink_to_fit();

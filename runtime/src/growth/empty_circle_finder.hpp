@@ -101,6 +101,13 @@ class EmptyCircleFinder {
     std::uint64_t maybe_crests(int tile, std::uint64_t bits) const;
     bool is_discarded(int pixel, std::int64_t d2) const;
     int tile_of(int pixel) const;
+    // The tile's slot in tiles_: the 64 tiles of a 64 x 64 pixel block side by side, so that
+    // the tiles a placement changes share cache lines and subtrees.
+    std::size_t slot_of(int tile) const {
+        const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+        return (static_cast<std::size_t>(tj >> 3) * blocks_w_ + (ti >> 3)) << 6 |
+               static_cast<std::size_t>((tj & 7) << 3 | (ti & 7));
+    }
     int bit_of(int pixel) const;
     void mark_dirty(int tile);
     // Bits of the pixels of a tile whose 3 x 3 neighbourhood holds a changed pixel.
@@ -128,7 +135,7 @@ class EmptyCircleFinder {
     double inv_width_;
     bool manhattan_;
     std::int64_t min_d2_ = 1;  // smallest d2 whose radius is at least min_radius_
-    int tiles_w_ = 0, tiles_h_ = 0;
+    int tiles_w_ = 0, tiles_h_ = 0, blocks_w_ = 0;
     int offsets_[4] = {};  // pixel index steps along the four lines of the crest test
 
     // Pixel -> d2 at which it was discarded; few pixels ever are, so a map, not a grid.

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 
 #include "growth/tile_masks.hpp"
@@ -33,6 +34,7 @@ void PendingBlocks::reset(int width, int height, const std::int32_t* d2, Distanc
     free_blobs_.clear();
     const std::size_t tiles = static_cast<std::size_t>(tiles_w_) * tiles_h_;
     absorbed_.assign(tiles, 0);
+    capped_to_.assign(tiles, 0);
     witness_.assign(n, -1);
     witness_d2_.assign(n, 0);
     tile_bound_.resize(tiles);
@@ -102,15 +104,6 @@ void PendingBlocks::update_group(int group) {
         for (int bi = gi << kGroupShift; bi < std::min(blocks_w_, (gi + 1) << kGroupShift); ++bi)
             m = std::max(m, bound_[static_cast<std::size_t>(bj) * blocks_w_ + bi]);
     group_bound_[group] = m;
-}
-
-// Squared distance from the blob's bounding box to the rectangle's pixel centres: no pixel of
-// the rectangle is nearer to a site of the blob (in either metric: a city-block distance is
-// never below the Euclidean one).
-std::int64_t PendingBlocks::gap2(const Blob& b, const Rect& r) {
-    const std::int64_t dx = std::max({0, r.x0 - b.x1, b.x0 - r.x1});
-    const std::int64_t dy = std::max({0, r.y0 - b.y1, b.y0 - r.y1});
-    return dx * dx + dy * dy;
 }
 
 void PendingBlocks::distrust(int block, const Blob& blob) {
@@ -236,7 +229,11 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                 for (std::uint64_t bits = lower & ~inexact_[b]; bits; bits &= bits - 1)
                     absorbed_[tile_at(b, std::countr_zero(bits))] = p.end();
                 inexact_[b] |= lower;
-                p.blobs.push_back(id);
+                p.entries.push_back({id, static_cast<std::int16_t>(blobs_[id].x0),
+                                     static_cast<std::int16_t>(blobs_[id].y0),
+                                     static_cast<std::int16_t>(blobs_[id].x1),
+                                     static_cast<std::int16_t>(blobs_[id].y1),
+                                     static_cast<std::int16_t>(si), static_cast<std::int16_t>(sj)});
                 ++blobs_[id].refs;
                 // The tiles it may lower are no longer trusted, nor the tiles round them.
                 distrust(b, blobs_[id]);
@@ -287,60 +284,86 @@ void PendingBlocks::trust_tile(int tile, std::int32_t* d2, std::vector<int>* cha
             if (!exact(ni, nj)) settle_tile(nj * tiles_w_ + ni, d2, changed);
 }
 
+void PendingBlocks::prefetch(int tile, const std::int32_t* d2) const {
+    // A tile's rows lie far apart in the field: fetched together, before they are measured.
+    const Rect r = tile_rect(tile);
+    for (int j = r.y0; j <= r.y1; ++j)
+        __builtin_prefetch(d2 + static_cast<std::size_t>(j) * width_ + r.x0, 1);
+}
+
 std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, std::int32_t* d2,
                                     std::vector<int>* changed) {
+    // A tile row is 8 pixels, two vectors of 4 lanes; an edge tile's missing pixels read as 0,
+    // which nothing lowers.
     const Blob& b = blobs_[k];
+    const int n = r.x1 - r.x0 + 1;
     const std::size_t runs = b.runs.size();
-    if (g2_.size() < runs) {
-        g2_.resize(runs);
-        column_.resize(runs);
-    }
-    std::int32_t top = 0;
-    for (int j = r.y0; j <= r.y1; ++j) {
-        std::int32_t* line = d2 + static_cast<std::size_t>(j) * width_;
-        const std::int32_t dy = std::max({0, b.y0 - j, j - b.y1});
-        // Only rows nearer to the bounding box than `limit` (>= every value over r) can change.
-        if (dy * dy >= limit) {
-            for (int i = r.x0; i <= r.x1; ++i) top = std::max(top, line[i]);
-            continue;
+    // Per run, the column term of each lane: squared (Euclidean) or absolute (Manhattan).
+    if (columns_.size() < 2 * runs) columns_.resize(2 * runs);
+    for (std::size_t q = 0; q < runs; ++q)
+        for (int l = 0; l < 8; ++l) {
+            const std::int32_t cx = std::abs(r.x0 + l - b.runs[q].column);
+            columns_[2 * q + (l >> 2)][l & 3] = manhattan_ ? cx : cx * cx;
         }
-        bool rows = false;
-        for (int i = r.x0; i <= r.x1; ++i) {
-            // The distance to the blob's bounding box is a lower bound of the distance to its
-            // sites: most pixels are settled by it.
-            const std::int32_t dx = std::max({0, b.x0 - i, i - b.x1});
-            if ((manhattan_ ? (dx + dy) * (dx + dy) : dx * dx + dy * dy) < line[i]) {
-                if (!rows) {  // each run's squared row distance to row j, once a row
-                    for (std::size_t q = 0; q < runs; ++q) {
-                        const Run& run = b.runs[q];
-                        const std::int32_t g = std::max({0, run.lo - j, j - run.hi});
-                        column_[q] = run.column;
-                        g2_[q] = manhattan_ ? g : g * g;
-                    }
-                    rows = true;
-                }
-                // The nearest of the blob's column runs, tried one by one: a placed element
-                // spans a few columns. Squares of grid sizes fit in 32 bits.
-                std::int32_t m = std::numeric_limits<std::int32_t>::max();
-                if (manhattan_) {  // (|dx| + |dy|)^2, of the nearest run in |dx| + |dy|
-                    for (std::size_t q = 0; q < runs; ++q)
-                        m = std::min(m, std::abs(i - column_[q]) + g2_[q]);
-                    m *= m;
-                } else {
-                    for (std::size_t q = 0; q < runs; ++q) {
-                        const std::int32_t cx = i - column_[q];
-                        m = std::min(m, cx * cx + g2_[q]);
-                    }
-                }
-                if (m < line[i]) {
-                    line[i] = m;
-                    if (changed) changed->push_back(j * width_ + i);
+    Lanes box[2];  // the column term of the distance to the blob's bounding box
+    for (int l = 0; l < 8; ++l) {
+        const std::int32_t dx = std::max({0, b.x0 - r.x0 - l, r.x0 + l - b.x1});
+        box[l >> 2][l & 3] = dx;
+    }
+    const Lanes zero = {0, 0, 0, 0};
+    Lanes top = zero;
+    for (int j = r.y0; j <= r.y1; ++j) {
+        std::int32_t* line = d2 + static_cast<std::size_t>(j) * width_ + r.x0;
+        std::int32_t row[8] = {};
+        const std::int32_t* from = line;
+        if (n < 8) {
+            for (int l = 0; l < n; ++l) row[l] = line[l];
+            from = row;
+        }
+        Lanes v[2] = {load_lanes(from), load_lanes(from + 4)};
+        const std::int32_t dy = std::max({0, b.y0 - j, j - b.y1});
+        // Only rows nearer to the bounding box than `limit` (>= every value over r) can change,
+        // and only pixels nearer to the box than their value (it bounds the sites' distance).
+        bool near = false;
+        if (static_cast<std::int64_t>(dy) * dy < limit) {
+            for (int h = 0; h < 2; ++h) {
+                const Lanes g =
+                    manhattan_ ? (box[h] + dy) * (box[h] + dy) : box[h] * box[h] + dy * dy;
+                const Lanes below = g < v[h];
+                near = near || (below[0] | below[1] | below[2] | below[3]) != 0;
+            }
+        }
+        if (near) {
+            // The nearest of the blob's column runs: a placed element spans a few columns.
+            // Squares of grid sizes fit in 32 bits.
+            const std::int32_t big = std::numeric_limits<std::int32_t>::max();
+            Lanes m[2] = {{big, big, big, big}, {big, big, big, big}};
+            for (std::size_t q = 0; q < runs; ++q) {
+                const Run& run = b.runs[q];
+                const std::int32_t g = std::max({0, run.lo - j, j - run.hi});
+                const std::int32_t gq = manhattan_ ? g : g * g;
+                for (int h = 0; h < 2; ++h) {
+                    const Lanes c = columns_[2 * q + h] + gq;
+                    m[h] = c < m[h] ? c : m[h];
                 }
             }
-            top = std::max(top, line[i]);
+            unsigned lowered = 0;
+            for (int h = 0; h < 2; ++h) {
+                if (manhattan_) m[h] *= m[h];  // (|dx| + |dy|)^2 of the nearest run
+                const Lanes lower = m[h] < v[h];
+                v[h] = lower ? m[h] : v[h];
+                for (int l = 0; l < 4; ++l) lowered |= (lower[l] & 1u) << (4 * h + l);
+            }
+            if (lowered) {
+                for (int l = 0; l < n; ++l) line[l] = v[l >> 2][l & 3];
+                if (changed)
+                    for (unsigned bits = lowered; bits; bits &= bits - 1)
+                        changed->push_back(j * width_ + r.x0 + std::countr_zero(bits));
+            }
         }
+        for (int h = 0; h < 2; ++h) top = v[h] > top ? v[h] : top;
     }
-    return top;
+    return std::max({top[0], top[1], top[2], top[3]});
 }
 
 void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* changed) {
@@ -350,18 +373,20 @@ void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* ch
     if (!(inexact_[block] & bit)) return;
     Pending& p = pending_[block];
     const Rect r = tile_rect(tile);
+    prefetch(tile, d2);
     // Nearest blobs first: each lowers the tile's maximum, and a blob no nearer than that
     // lowers nothing.
     std::int64_t limit = tile_bound_[tile];
     order_.clear();
     for (int a = absorbed_[tile]; a < p.end(); ++a) {
-        const std::int64_t g = gap2(blobs_[p.blobs[a - p.base]], r);
+        const std::int64_t g = gap2(p.at(a), r);
         if (g < limit) order_.emplace_back(g, a);
     }
     std::sort(order_.begin(), order_.end());
     for (const auto& [g, a] : order_) {
         if (g >= limit) break;
-        limit = measure(p.blobs[a - p.base], r, limit, d2, changed);
+        // A capped bound may lie below the values not measured yet.
+        limit = std::min<std::int64_t>(limit, measure(p.at(a).blob, r, limit, d2, changed));
     }
     tile_bound_[tile] = static_cast<std::int32_t>(limit);
     inexact_[block] &= ~bit;
@@ -369,7 +394,7 @@ void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* ch
 
 void PendingBlocks::compact(int block) {
     Pending& p = pending_[block];
-    if (p.blobs.empty()) return;
+    if (p.entries.empty()) return;
     int lo = p.end();
     for (std::uint64_t bits = inexact_[block]; bits; bits &= bits - 1) {
         const int bit = std::countr_zero(bits);
@@ -377,25 +402,51 @@ void PendingBlocks::compact(int block) {
         // Blobs no nearer to the tile than its bound lower nothing in it.
         const Rect r = tile_rect(t);
         int& a = absorbed_[t];
-        while (a < p.end() && gap2(blobs_[p.blobs[a - p.base]], r) >= tile_bound_[t]) ++a;
+        while (a < p.end() && gap2(p.at(a), r) >= tile_bound_[t]) ++a;
         if (a == p.end())
             inexact_[block] &= ~(std::uint64_t{1} << bit);
         else
             lo = std::min(lo, a);
     }
     const int drop = lo - p.base;
-    if (drop == 0 || 2 * drop < static_cast<int>(p.blobs.size())) return;
-    for (int k = 0; k < drop; ++k) release(p.blobs[k]);
-    p.blobs.erase(p.blobs.begin(), p.blobs.begin() + drop);
+    if (drop == 0 || 2 * drop < static_cast<int>(p.entries.size())) return;
+    for (int k = 0; k < drop; ++k) release(p.entries[k].blob);
+    p.entries.erase(p.entries.begin(), p.entries.begin() + drop);
     p.base = lo;
+}
+
+bool PendingBlocks::cap(int tile, std::int64_t threshold) {
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    if (exact(ti, tj)) return false;
+    const Pending& p = pending_[block_of_tile(tile)];
+    const Rect r = tile_rect(tile);
+    // The bound holds the blobs capped with before.
+    std::int64_t far = tile_bound_[tile];
+    const int from = std::max(absorbed_[tile], capped_to_[tile]);
+    capped_to_[tile] = p.end();
+    for (int a = from; a < p.end(); ++a) {
+        const Entry& e = p.at(a);
+        const std::int64_t dx = std::max(std::abs(r.x0 - e.si), std::abs(r.x1 - e.si));
+        const std::int64_t dy = std::max(std::abs(r.y0 - e.sj), std::abs(r.y1 - e.sj));
+        far = std::min(far, manhattan_ ? (dx + dy) * (dx + dy) : dx * dx + dy * dy);
+    }
+    // One above: a blob as near as the bound may still be the nearest to a pixel (the bound is
+    // a strict limit for the blobs measure() skips).
+    if (far + 1 >= tile_bound_[tile]) return false;
+    tile_bound_[tile] = static_cast<std::int32_t>(far + 1);
+    capped_.push_back(tile);
+    return far + 1 < threshold;
 }
 
 void PendingBlocks::tighten(int block, std::int64_t threshold, std::int32_t* d2,
                             std::vector<int>* changed) {
-    compact(block);
+    bool trusted_any = false;
     for (std::uint64_t bits = untrusted_tiles(block); bits; bits &= bits - 1) {
         const int t = tile_at(block, std::countr_zero(bits));
-        if (tile_bound_[t] >= threshold) trust_tile(t, d2, changed);
+        if (tile_bound_[t] >= threshold && !cap(t, threshold)) {
+            trust_tile(t, d2, changed);
+            trusted_any = true;
+        }
     }
     const std::uint64_t left = untrusted_tiles(block);
     std::int64_t top = 0;
@@ -404,7 +455,8 @@ void PendingBlocks::tighten(int block, std::int64_t threshold, std::int32_t* d2,
     untrusted_[block] = left != 0;
     reach_[block] = left != 0 ? std::min(reach_[block], top) : 0;
     update_bound(block);
-    compact(block);
+    // Only measuring frees entries often enough to be worth the scan.
+    if (trusted_any) compact(block);
 }
 
 }  // namespace acanthus::detail

@@ -4,9 +4,12 @@
 #pragma once
 
 #include <acanthus/distance_metric.hpp>
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
+
+#include "growth/lanes.hpp"
 
 namespace acanthus::detail {
 
@@ -41,6 +44,11 @@ class PendingBlocks {
     // Trusts every tile of the block that may hold a squared distance of at least `threshold`;
     // after, the block is trusted or its reach is below `threshold`.
     void tighten(int block, std::int64_t threshold, std::int32_t* d2, std::vector<int>* changed);
+    // >= every squared distance the tile will hold once measured.
+    std::int32_t tile_bound(int tile) const { return tile_bound_[tile]; }
+    // Tiles whose bound tighten() lowered without measuring them, since clear_capped().
+    const std::vector<int>& capped() const { return capped_; }
+    void clear_capped() { capped_.clear(); }
     // Blocks not trusted whose reach rose since the last call (each once).
     const std::vector<int>& raised() const { return raised_; }
     void clear_raised() {
@@ -62,11 +70,19 @@ class PendingBlocks {
     struct Rect {
         int x0, y0, x1, y1;  // inclusive
     };
+    // A blob deferred to a block, with its bounding box: the gaps to tiles are read in order,
+    // without visiting the blobs.
+    struct Entry {
+        int blob;
+        std::int16_t x0, y0, x1, y1;
+        std::int16_t si, sj;  // one of its sites
+    };
     // Per block: the blobs deferred to it in order; entry k has the number base + k.
     struct Pending {
-        std::vector<int> blobs;
+        std::vector<Entry> entries;
         int base = 0;
-        int end() const { return base + static_cast<int>(blobs.size()); }
+        int end() const { return base + static_cast<int>(entries.size()); }
+        const Entry& at(int number) const { return entries[number - base]; }
     };
 
     Rect block_rect(int block) const;
@@ -88,11 +104,21 @@ class PendingBlocks {
         const int bi = block % blocks_w_, bj = block / blocks_w_;
         return ((bj << 3) + (bit >> 3)) * tiles_w_ + (bi << 3) + (bit & 7);
     }
-    static std::int64_t gap2(const Blob& b, const Rect& r);
+    // Squared distance from a bounding box (a Blob or an Entry) to the rectangle's pixels.
+    template <class Box>
+    static std::int64_t gap2(const Box& b, const Rect& r) {
+        const std::int64_t dx = std::max({0, r.x0 - b.x1, b.x0 - r.x1});
+        const std::int64_t dy = std::max({0, r.y0 - b.y1, b.y0 - r.y1});
+        return dx * dx + dy * dy;
+    }
     // Lowers d2 over the tile r to the distances to blob k's sites. Returns the largest squared
     // distance over r after. `limit`: no value over r is above it.
     std::int32_t measure(int k, const Rect& r, std::int64_t limit, std::int32_t* d2,
                          std::vector<int>* changed);
+    void prefetch(int tile, const std::int32_t* d2) const;
+    // Lowers the bound of an inexact tile to its farthest pixel's distance to a site of a
+    // blob it waits for; true when that is below `threshold`.
+    bool cap(int tile, std::int64_t threshold);
     // Measures the tile's pending blobs, nearest first.
     void settle_tile(int tile, std::int32_t* d2, std::vector<int>* changed);
     // Skips the pending blobs that lower nothing in a tile and releases the blobs every tile
@@ -114,8 +140,10 @@ class PendingBlocks {
     std::vector<std::int64_t> reach_;      // per block not trusted
     std::vector<std::uint8_t> in_raised_;  // per block: listed in raised_
     std::vector<int> raised_;
+    std::vector<int> capped_;
     std::vector<std::int32_t> tile_bound_;  // per tile: >= every squared distance in it
-    std::vector<int> absorbed_;  // per inexact tile: the number of its first unmeasured entry
+    std::vector<int> absorbed_;   // per inexact tile: the number of its first unmeasured entry
+    std::vector<int> capped_to_;  // per tile: the number of the first entry cap() has not seen
     // Per block: a site near it (-1: none yet) and 4 x its squared distance to the centre. A
     // new blob no nearer than it to every pixel of the block lowers nothing there.
     std::vector<int> witness_;
@@ -128,7 +156,7 @@ class PendingBlocks {
     std::vector<int> free_blobs_;                      // ids of released blobs, reused
     std::vector<std::pair<std::int64_t, int>> order_;  // settle_tile() scratch: (gap, entry)
     std::vector<int> sorted_;                          // defer() scratch: sites by column
-    std::vector<std::int32_t> column_, g2_;            // measure() scratch: per run
+    std::vector<Lanes> columns_;                       // measure() scratch: 2 per run
 };
 
 }  // namespace acanthus::detail

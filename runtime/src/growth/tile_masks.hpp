@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "growth/distance_field.hpp"
+#include "growth/lanes.hpp"
 
 namespace acanthus::detail::tile_masks {
 
@@ -63,24 +64,15 @@ inline std::uint32_t nonzero_bytes(const std::uint8_t* p) {
     }
 }
 
-// Four lanes of int32: the crest prefilter runs on four pixels at a time.
-using Lanes = std::int32_t __attribute__((vector_size(16)));
-
-inline Lanes load(const std::int32_t* p) {
-    Lanes v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-
 // Bit x (0..3) set when pixel x of `mid` has a line with both neighbours at most as far, and
 // a squared distance in [min_d2, infinite).
 inline std::uint32_t crest_lanes(const std::int32_t* up, const std::int32_t* mid,
                                  const std::int32_t* down, std::int32_t min_d2) {
-    const Lanes d = load(mid);
-    const Lanes line = ((load(mid - 1) <= d) & (load(mid + 1) <= d)) |
-                       ((load(up) <= d) & (load(down) <= d)) |
-                       ((load(up - 1) <= d) & (load(down + 1) <= d)) |
-                       ((load(up + 1) <= d) & (load(down - 1) <= d));
+    const Lanes d = load_lanes(mid);
+    const Lanes line = ((load_lanes(mid - 1) <= d) & (load_lanes(mid + 1) <= d)) |
+                       ((load_lanes(up) <= d) & (load_lanes(down) <= d)) |
+                       ((load_lanes(up - 1) <= d) & (load_lanes(down + 1) <= d)) |
+                       ((load_lanes(up + 1) <= d) & (load_lanes(down - 1) <= d));
     const Lanes lo = {min_d2, min_d2, min_d2, min_d2};
     const Lanes inf = {DistanceField::infinite, DistanceField::infinite, DistanceField::infinite,
                        DistanceField::infinite};
