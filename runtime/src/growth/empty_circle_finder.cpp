@@ -258,10 +258,7 @@ void EmptyCircleFinder::distrust_new_blocks() {
 void EmptyCircleFinder::tighten(int block, std::int64_t threshold) {
     settled_.clear();
     field_.tighten(block, threshold, &settled_);
-    PendingBlocks& far = field_.far_blocks();
-    // Tiles whose bound fell below candidates they still hold: those are stale.
-    for (int t : far.capped()) rescan(t);
-    far.clear_capped();
+    const PendingBlocks& far = field_.far_blocks();
     // A block whose reach is below the smallest candidate's distance can hold none.
     const bool none = far.trusted(block) || far.reach(block) < min_d2_;
     blocks_.set(static_cast<std::size_t>(block), none ? 0 : key_of(block, far.reach(block)));
@@ -364,7 +361,11 @@ std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
         if (k == 0) return std::nullopt;
         const int p = pixel_of(k);
         if (field_.lazy() && !field_.far_blocks().tile_trusted(tile_of(p))) {
-            trust_tile(tile_of(p));  // its key may rest on a stale distance
+            // Its key may rest on a stale distance: above the tile's bound it does.
+            if (d2_of(k) > field_.far_blocks().tile_bound(tile_of(p)))
+                rescan(tile_of(p));
+            else
+                trust_tile(tile_of(p));
             continue;
         }
         const std::int64_t d2 = d2_of(k);

@@ -34,7 +34,6 @@ void PendingBlocks::reset(int width, int height, const std::int32_t* d2, Distanc
     free_blobs_.clear();
     const std::size_t tiles = static_cast<std::size_t>(tiles_w_) * tiles_h_;
     absorbed_.assign(tiles, 0);
-    capped_to_.assign(tiles, 0);
     witness_.assign(n, -1);
     witness_d2_.assign(n, 0);
     tile_bound_.resize(tiles);
@@ -181,26 +180,44 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                     continue;
                 // The tiles it may lower: the gap to a tile is separable in tile columns and
                 // rows.
-                std::int32_t gx[8], gy[8];  // squares of grid sizes fit in 32 bits
+                // So is the distance from its first site to a tile's farthest pixel: one above
+                // it bounds the tile once the blob is measured (a blob exactly as near as a
+                // bound may still be a pixel's nearest, and bounds are strict limits for the
+                // blobs settle_tile() and measure() skip).
+                std::int32_t gx[8], gy[8], fx[8], fy[8];  // squares of grid sizes fit in 32 bits
                 for (int c = 0; c < 8; ++c) {
                     const int x0 = r.x0 + (c << kTileShift), x1 = x0 + (1 << kTileShift) - 1;
                     const std::int32_t dx = std::max({0, x0 - blob.x1, blob.x0 - x1});
-                    gx[c] = dx * dx;
+                    const std::int32_t ex =
+                        std::max(std::abs(x0 - si), std::abs(std::min(x1, width_ - 1) - si));
                     const int y0 = r.y0 + (c << kTileShift), y1 = y0 + (1 << kTileShift) - 1;
                     const std::int32_t dy = std::max({0, y0 - blob.y1, blob.y0 - y1});
+                    const std::int32_t ey =
+                        std::max(std::abs(y0 - sj), std::abs(std::min(y1, height_ - 1) - sj));
+                    gx[c] = dx * dx;
                     gy[c] = dy * dy;
+                    fx[c] = manhattan_ ? ex : ex * ex;
+                    fy[c] = manhattan_ ? ey : ey * ey;
                 }
                 std::uint64_t lower = 0;
+                bool capped = false;
                 const int cols = std::min(8, tiles_w_ - (bi << 3));
                 const int rows = std::min(8, tiles_h_ - (bj << 3));
-                const std::int32_t* bound =
+                std::int32_t* bound =
                     tile_bound_.data() + static_cast<std::size_t>(bj << 3) * tiles_w_ + (bi << 3);
                 for (int row = 0; row < rows; ++row, bound += tiles_w_) {
                     std::uint64_t bits = 0;
-                    for (int c = 0; c < cols; ++c)
+                    for (int c = 0; c < cols; ++c) {
                         bits |= static_cast<std::uint64_t>(gx[c] + gy[row] < bound[c]) << c;
+                        const std::int32_t far =
+                            (manhattan_ ? (fx[c] + fy[row]) * (fx[c] + fy[row]) : fx[c] + fy[row]) +
+                            1;
+                        capped |= far < bound[c];
+                        bound[c] = std::min(bound[c], far);
+                    }
                     lower |= bits << (8 * row);
                 }
+                if (capped) update_bound(b);
                 if (lower == 0) continue;
                 if (id < 0) {
                     if (!free_blobs_.empty()) {
@@ -232,8 +249,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                 p.entries.push_back({id, static_cast<std::int16_t>(blobs_[id].x0),
                                      static_cast<std::int16_t>(blobs_[id].y0),
                                      static_cast<std::int16_t>(blobs_[id].x1),
-                                     static_cast<std::int16_t>(blobs_[id].y1),
-                                     static_cast<std::int16_t>(si), static_cast<std::int16_t>(sj)});
+                                     static_cast<std::int16_t>(blobs_[id].y1)});
                 ++blobs_[id].refs;
                 // The tiles it may lower are no longer trusted, nor the tiles round them.
                 distrust(b, blobs_[id]);
@@ -385,7 +401,7 @@ void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* ch
     std::sort(order_.begin(), order_.end());
     for (const auto& [g, a] : order_) {
         if (g >= limit) break;
-        // A capped bound may lie below the values not measured yet.
+        // The bound may lie below values not measured yet (see defer()).
         limit = std::min<std::int64_t>(limit, measure(p.at(a).blob, r, limit, d2, changed));
     }
     tile_bound_[tile] = static_cast<std::int32_t>(limit);
@@ -415,35 +431,12 @@ void PendingBlocks::compact(int block) {
     p.base = lo;
 }
 
-bool PendingBlocks::cap(int tile, std::int64_t threshold) {
-    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
-    if (exact(ti, tj)) return false;
-    const Pending& p = pending_[block_of_tile(tile)];
-    const Rect r = tile_rect(tile);
-    // The bound holds the blobs capped with before.
-    std::int64_t far = tile_bound_[tile];
-    const int from = std::max(absorbed_[tile], capped_to_[tile]);
-    capped_to_[tile] = p.end();
-    for (int a = from; a < p.end(); ++a) {
-        const Entry& e = p.at(a);
-        const std::int64_t dx = std::max(std::abs(r.x0 - e.si), std::abs(r.x1 - e.si));
-        const std::int64_t dy = std::max(std::abs(r.y0 - e.sj), std::abs(r.y1 - e.sj));
-        far = std::min(far, manhattan_ ? (dx + dy) * (dx + dy) : dx * dx + dy * dy);
-    }
-    // One above: a blob as near as the bound may still be the nearest to a pixel (the bound is
-    // a strict limit for the blobs measure() skips).
-    if (far + 1 >= tile_bound_[tile]) return false;
-    tile_bound_[tile] = static_cast<std::int32_t>(far + 1);
-    capped_.push_back(tile);
-    return far + 1 < threshold;
-}
-
 void PendingBlocks::tighten(int block, std::int64_t threshold, std::int32_t* d2,
                             std::vector<int>* changed) {
     bool trusted_any = false;
     for (std::uint64_t bits = untrusted_tiles(block); bits; bits &= bits - 1) {
         const int t = tile_at(block, std::countr_zero(bits));
-        if (tile_bound_[t] >= threshold && !cap(t, threshold)) {
+        if (tile_bound_[t] >= threshold) {
             trust_tile(t, d2, changed);
             trusted_any = true;
         }

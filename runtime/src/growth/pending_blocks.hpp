@@ -46,9 +46,6 @@ class PendingBlocks {
     void tighten(int block, std::int64_t threshold, std::int32_t* d2, std::vector<int>* changed);
     // >= every squared distance the tile will hold once measured.
     std::int32_t tile_bound(int tile) const { return tile_bound_[tile]; }
-    // Tiles whose bound tighten() lowered without measuring them, since clear_capped().
-    const std::vector<int>& capped() const { return capped_; }
-    void clear_capped() { capped_.clear(); }
     // Blocks not trusted whose reach rose since the last call (each once).
     const std::vector<int>& raised() const { return raised_; }
     void clear_raised() {
@@ -75,7 +72,6 @@ class PendingBlocks {
     struct Entry {
         int blob;
         std::int16_t x0, y0, x1, y1;
-        std::int16_t si, sj;  // one of its sites
     };
     // Per block: the blobs deferred to it in order; entry k has the number base + k.
     struct Pending {
@@ -116,9 +112,6 @@ class PendingBlocks {
     std::int32_t measure(int k, const Rect& r, std::int64_t limit, std::int32_t* d2,
                          std::vector<int>* changed);
     void prefetch(int tile, const std::int32_t* d2) const;
-    // Lowers the bound of an inexact tile to its farthest pixel's distance to a site of a
-    // blob it waits for; true when that is below `threshold`.
-    bool cap(int tile, std::int64_t threshold);
     // Measures the tile's pending blobs, nearest first.
     void settle_tile(int tile, std::int32_t* d2, std::vector<int>* changed);
     // Skips the pending blobs that lower nothing in a tile and releases the blobs every tile
@@ -140,10 +133,10 @@ class PendingBlocks {
     std::vector<std::int64_t> reach_;      // per block not trusted
     std::vector<std::uint8_t> in_raised_;  // per block: listed in raised_
     std::vector<int> raised_;
-    std::vector<int> capped_;
-    std::vector<std::int32_t> tile_bound_;  // per tile: >= every squared distance in it
-    std::vector<int> absorbed_;   // per inexact tile: the number of its first unmeasured entry
-    std::vector<int> capped_to_;  // per tile: the number of the first entry cap() has not seen
+    // Per tile: above every squared distance it will hold once measured, or equal to the
+    // largest; pixels not measured yet may hold more.
+    std::vector<std::int32_t> tile_bound_;
+    std::vector<int> absorbed_;  // per inexact tile: the number of its first unmeasured entry
     // Per block: a site near it (-1: none yet) and 4 x its squared distance to the centre. A
     // new blob no nearer than it to every pixel of the block lowers nothing there.
     std::vector<int> witness_;
