@@ -24,10 +24,7 @@ EmptyCircleFinder::EmptyCircleFinder(DistanceField& field, const GridFrame& grid
     blocks_w_ = ((tiles_w_ - 1) >> 3) + 1;
     tiles_.reset(slot_of(tiles_w_ * tiles_h_ - 1) + 1);
     dirty_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
-    candidates_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
-    blocked_bits_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
-    discarded_bits_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
-    changed_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    masks_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, TileMasks{});
     const int w = grid.width;
     offsets_[0] = 1;
     offsets_[1] = w;
@@ -140,7 +137,7 @@ void EmptyCircleFinder::rescan(int tile) {
     const std::int32_t bound = field_.lazy() ? field_.far_blocks().tile_bound(tile)
                                              : std::numeric_limits<std::int32_t>::max();
     Key best = 0;
-    for (std::uint64_t bits = candidates_[tile]; bits; bits &= bits - 1) {
+    for (std::uint64_t bits = masks_[tile].candidates; bits; bits &= bits - 1) {
         const int b = std::countr_zero(bits);
         const int p = (j0 + (b >> kTileShift)) * grid_.width + i0 + (b & 7);
         const std::int32_t d2 = field_.squared_distances()[p];
@@ -153,12 +150,13 @@ template <bool kInside>
 void EmptyCircleFinder::consider(int pixel, int i, int j, int tile, int bit) {
     const std::int32_t d2 = field_.squared_distances()[pixel];
     const std::uint64_t mask = std::uint64_t{1} << bit;
-    const bool changed = (changed_[tile] & mask) != 0;
-    if (changed && (discarded_bits_[tile] & mask)) {  // a discard holds for its distance only
+    TileMasks& m = masks_[tile];
+    const bool changed = (m.changed & mask) != 0;
+    if (changed && (m.discarded & mask)) {  // a discard holds for its distance only
         discarded_.erase(pixel);
-        discarded_bits_[tile] &= ~mask;
+        m.discarded &= ~mask;
     }
-    const bool was_none = ((candidates_[tile] | blocked_bits_[tile]) & mask) == 0;
+    const bool was_none = ((m.candidates | m.blocked) & mask) == 0;
     if (d2 < min_d2_ && was_none) return;  // too small to matter, already none
     // Same distance: a candidate stays one (neighbours only get lower), a blocked one stays
     // blocked; a non-candidate may have become one.
@@ -170,9 +168,9 @@ void EmptyCircleFinder::consider(int pixel, int i, int j, int tile, int bit) {
         eligible = eligible && crest_at(pixel, i, j, d2);
     // Nearer than the tile's nearest boundary pixel: the nearest obstacle is an element.
     eligible = eligible && (d2 < boundary_floor_[tile] || element_may_stop(pixel)) &&
-               !((discarded_bits_[tile] & mask) && discarded_.at(pixel) == d2);
-    candidates_[tile] = eligible ? candidates_[tile] | mask : candidates_[tile] & ~mask;
-    blocked_bits_[tile] &= ~mask;
+               !((m.discarded & mask) && discarded_.at(pixel) == d2);
+    m.candidates = eligible ? m.candidates | mask : m.candidates & ~mask;
+    m.blocked &= ~mask;
 }
 
 template <bool kInside>
@@ -204,8 +202,8 @@ std::uint64_t EmptyCircleFinder::maybe_crests(int tile, std::uint64_t bits) cons
         const std::uint32_t row =
             ((want & 0x0f) ? crest_lanes(mid - w, mid, mid + w, min_d2) : 0u) |
             ((want & 0xf0) ? crest_lanes(mid - w + 4, mid + 4, mid + w + 4, min_d2) << 4 : 0u) |
-            static_cast<std::uint32_t>(((candidates_[tile] | blocked_bits_[tile]) >> (8 * r)) &
-                                       0xff);
+            static_cast<std::uint32_t>(
+                ((masks_[tile].candidates | masks_[tile].blocked) >> (8 * r)) & 0xff);
         out |= static_cast<std::uint64_t>(row) << (8 * r);
     }
     return out & bits;
@@ -216,19 +214,18 @@ void EmptyCircleFinder::refresh(int tile, std::uint64_t bits) {
     // a pixel in state none that has no line with both neighbours at most as far as itself
     // (or is too near an obstacle) stays none: only the others are re-decided.
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
-    const std::uint64_t before = candidates_[tile];
+    const std::uint64_t before = masks_[tile].candidates;
     if (ti > 0 && tj > 0 && ti < tiles_w_ - 1 && tj < tiles_h_ - 1)
         refresh_bits<true>(tile, maybe_crests(tile, bits));
     else
         refresh_bits<false>(tile, bits);
     // The tile's best key moves only with its candidates or their distances.
-    if (candidates_[tile] != before || (before & changed_[tile]) != 0) rescan(tile);
+    if (masks_[tile].candidates != before || (before & masks_[tile].changed) != 0) rescan(tile);
 }
 
 void EmptyCircleFinder::rebuild() {
     blocked_.clear();
-    std::fill(candidates_.begin(), candidates_.end(), 0);
-    std::fill(blocked_bits_.begin(), blocked_bits_.end(), 0);
+    for (TileMasks& m : masks_) m.candidates = m.blocked = 0;
     tiles_.reset(slot_of(tiles_w_ * tiles_h_ - 1) + 1);
     boundary_floor_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_,
                            std::numeric_limits<std::int32_t>::max());
@@ -279,7 +276,7 @@ void EmptyCircleFinder::settle_all() {
 
 std::uint64_t EmptyCircleFinder::near_changes(int tile) const {
     return dilate_in_grid(tile % tiles_w_, tile / tiles_w_, tiles_w_, tiles_h_, [&](int a, int b) {
-        return changed_[static_cast<std::size_t>(b) * tiles_w_ + a];
+        return masks_[static_cast<std::size_t>(b) * tiles_w_ + a].changed;
     });
 }
 
@@ -296,14 +293,14 @@ void EmptyCircleFinder::update(const std::vector<int>& changed) {
         std::size_t len = 1;
         while (len < room && k + len < n && c[k + len] == p + static_cast<int>(len)) ++len;
         const int t = (j >> kTileShift) * tiles_w_ + (i >> kTileShift);
-        if (changed_[t] == 0) changed_tiles_.push_back(t);
-        changed_[t] |= ((std::uint64_t{1} << len) - 1)
-                       << (((j & kMask) << kTileShift) | (i & kMask));
+        if (masks_[t].changed == 0) changed_tiles_.push_back(t);
+        masks_[t].changed |= ((std::uint64_t{1} << len) - 1)
+                             << (((j & kMask) << kTileShift) | (i & kMask));
         k += len;
     }
     // A changed pixel can change its own state and its 8 neighbours': the tiles holding them.
     for (int t : changed_tiles_) {
-        const std::uint64_t m = changed_[t];
+        const std::uint64_t m = masks_[t].changed;
         const int ti = t % tiles_w_, tj = t / tiles_w_;
         const bool left = ti > 0, right = ti<tiles_w_ - 1, up = tj> 0, down = tj < tiles_h_ - 1;
         mark_dirty(t);
@@ -321,7 +318,7 @@ void EmptyCircleFinder::update(const std::vector<int>& changed) {
         refresh(t, near_changes(t));
     }
     dirty_list_.clear();
-    for (int t : changed_tiles_) changed_[t] = 0;
+    for (int t : changed_tiles_) masks_[t].changed = 0;
     changed_tiles_.clear();
     distrust_new_blocks();
 }
@@ -333,9 +330,9 @@ void EmptyCircleFinder::release(const std::vector<int>& removed_ids) {
             const int t = tile_of(p);
             const std::uint64_t mask = std::uint64_t{1} << bit_of(p);
             // Its distance changed since (distances only decrease), or it is no longer blocked.
-            if (!(blocked_bits_[t] & mask) || field_.squared_distance(p) != d2) continue;
-            blocked_bits_[t] &= ~mask;
-            candidates_[t] |= mask;
+            if (!(masks_[t].blocked & mask) || field_.squared_distance(p) != d2) continue;
+            masks_[t].blocked &= ~mask;
+            masks_[t].candidates |= mask;
             tiles_.set(slot_of(t), std::max(tiles_.get(slot_of(t)), key_of(p, d2)));
         }
         blocked_[id].clear();
@@ -373,8 +370,8 @@ std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
         const int id = exclude.find_inside(c);
         if (id < 0) return EmptyCircle{p, d2, c};
         const std::uint64_t mask = std::uint64_t{1} << bit_of(p);
-        blocked_bits_[tile_of(p)] |= mask;
-        candidates_[tile_of(p)] &= ~mask;
+        masks_[tile_of(p)].blocked |= mask;
+        masks_[tile_of(p)].candidates &= ~mask;
         if (static_cast<std::size_t>(id) >= blocked_.size()) blocked_.resize(id + 1);
         blocked_[id].emplace_back(p, static_cast<std::int32_t>(d2));
         rescan(tile_of(p));
@@ -385,9 +382,9 @@ void EmptyCircleFinder::discard(const EmptyCircle& c) {
     const int t = tile_of(c.pixel);
     const std::uint64_t mask = std::uint64_t{1} << bit_of(c.pixel);
     discarded_[c.pixel] = static_cast<std::int32_t>(c.d2);
-    discarded_bits_[t] |= mask;
-    if (candidates_[t] & mask) {
-        candidates_[t] &= ~mask;
+    masks_[t].discarded |= mask;
+    if (masks_[t].candidates & mask) {
+        masks_[t].candidates &= ~mask;
         rescan(t);
     }
 }

@@ -148,10 +148,14 @@ class EmptyCircleFinder {
     // Per 8 x 8 tile, one bit per pixel (bit 8 * row + column within the tile).
     // A pixel's state is in these masks: candidate, blocked (by an exclude point) or none. A
     // pixel not in state none was decided at its current distance.
-    std::vector<std::uint64_t> candidates_;      // pixels in state candidate
-    std::vector<std::uint64_t> blocked_bits_;    // pixels in state blocked
-    std::vector<std::uint64_t> discarded_bits_;  // pixels with an entry in discarded_
-    std::vector<std::uint64_t> changed_;         // pixels changed since the last update()
+    // Side by side: a refresh reads them together.
+    struct TileMasks {
+        std::uint64_t candidates = 0;  // pixels in state candidate
+        std::uint64_t blocked = 0;     // pixels in state blocked
+        std::uint64_t discarded = 0;   // pixels with an entry in discarded_
+        std::uint64_t changed = 0;     // pixels changed since the last update()
+    };
+    std::vector<TileMasks> masks_;
     // Per tile, the smallest squared distance to a boundary pixel (boundary sites all come
     // before rebuild()): below it, the nearest obstacle is an element.
     std::vector<std::int32_t> boundary_floor_;
