@@ -86,6 +86,10 @@ void PendingBlocks::update_bound(int block) {
     std::int32_t m = 0;
     for (std::uint64_t bits = tiles_in(block); bits; bits &= bits - 1)
         m = std::max(m, tile_bound_[tile_at(block, std::countr_zero(bits))]);
+    set_bound(block, m);
+}
+
+void PendingBlocks::set_bound(int block, std::int32_t m) {
     const std::int32_t old = bound_[block];
     bound_[block] = m;
     const int group =
@@ -201,6 +205,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                 }
                 std::uint64_t lower = 0;
                 bool capped = false;
+                std::int32_t top = 0;
                 const int cols = std::min(8, tiles_w_ - (bi << 3));
                 const int rows = std::min(8, tiles_h_ - (bj << 3));
                 std::int32_t* bound =
@@ -214,10 +219,11 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                             1;
                         capped |= far < bound[c];
                         bound[c] = std::min(bound[c], far);
+                        top = std::max(top, bound[c]);
                     }
                     lower |= bits << (8 * row);
                 }
-                if (capped) update_bound(b);
+                if (capped) set_bound(b, top);
                 if (lower == 0) continue;
                 if (id < 0) {
                     if (!free_blobs_.empty()) {
@@ -227,12 +233,14 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                         id = static_cast<int>(blobs_.size());
                         blobs_.emplace_back();
                     }
-                    sorted_.assign(sites.begin(), sites.end());
-                    std::sort(sorted_.begin(), sorted_.end(), [this](int a, int b) {
-                        return a % width_ != b % width_ ? a % width_ < b % width_ : a < b;
-                    });
-                    for (int p : sorted_) {
-                        const int c = p % width_, row = p / width_;
+                    // By column, then row: (column, row) in one integer each.
+                    sorted_.clear();
+                    for (int p : sites)
+                        sorted_.push_back(static_cast<std::int64_t>(p % width_) << 32 | p / width_);
+                    std::sort(sorted_.begin(), sorted_.end());
+                    for (const std::int64_t key : sorted_) {
+                        const int c = static_cast<int>(key >> 32);
+                        const int row = static_cast<int>(key & 0xffffffff);
                         if (!blob.runs.empty() && blob.runs.back().column == c &&
                             blob.runs.back().hi + 1 == row)
                             blob.runs.back().hi = row;

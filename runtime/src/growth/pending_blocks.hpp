@@ -122,6 +122,7 @@ class PendingBlocks {
     bool farther_than_witness(const Blob& blob, int witness, const Rect& r) const;
     std::int32_t max_over(const Rect& r, const std::int32_t* d2) const;
     void update_bound(int block);
+    void set_bound(int block, std::int32_t bound);  // of its tiles' bounds, the largest
     void update_group(int group);
 
     int width_ = 0, height_ = 0, blocks_w_ = 0, blocks_h_ = 0, tiles_w_ = 0, tiles_h_ = 0;
@@ -148,7 +149,7 @@ class PendingBlocks {
     std::vector<Blob> blobs_;
     std::vector<int> free_blobs_;                      // ids of released blobs, reused
     std::vector<std::pair<std::int64_t, int>> order_;  // settle_tile() scratch: (gap, entry)
-    std::vector<int> sorted_;                          // defer() scratch: sites by column
+    std::vector<std::int64_t> sorted_;                 // defer() scratch: sites by column
     std::vector<Lanes> columns_;                       // measure() scratch: 2 per run
 };
 
