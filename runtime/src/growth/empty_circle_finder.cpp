@@ -23,7 +23,6 @@ EmptyCircleFinder::EmptyCircleFinder(DistanceField& field, const GridFrame& grid
     tiles_h_ = ((grid.height - 1) >> kTileShift) + 1;
     blocks_w_ = ((tiles_w_ - 1) >> 3) + 1;
     tiles_.reset(slot_of(tiles_w_ * tiles_h_ - 1) + 1);
-    dirty_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
     masks_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, TileMasks{});
     const int w = grid.width;
     offsets_[0] = 1;
@@ -124,10 +123,9 @@ int EmptyCircleFinder::bit_of(int pixel) const {
     return ((j & kMask) << kTileShift) | (i & kMask);
 }
 
-void EmptyCircleFinder::mark_dirty(int tile) {
-    if (dirty_[tile]) return;
-    dirty_[tile] = 1;
-    dirty_list_.push_back(tile);
+void EmptyCircleFinder::mark_near(int tile, std::uint64_t bits) {
+    if (masks_[tile].near == 0) dirty_list_.push_back(tile);
+    masks_[tile].near |= bits;
 }
 
 void EmptyCircleFinder::rescan(int tile) {
@@ -143,6 +141,9 @@ void EmptyCircleFinder::rescan(int tile) {
         const std::int32_t d2 = field_.squared_distances()[p];
         if (d2 <= bound) best = std::max(best, key_of(p, d2));
     }
+    // The tree's leaf lies far from the masks: touched only when the key moves.
+    if (masks_[tile].key == best) return;
+    masks_[tile].key = best;
     tiles_.set(slot_of(tile), best);
 }
 
@@ -225,7 +226,10 @@ void EmptyCircleFinder::refresh(int tile, std::uint64_t bits) {
 
 void EmptyCircleFinder::rebuild() {
     blocked_.clear();
-    for (TileMasks& m : masks_) m.candidates = m.blocked = 0;
+    for (TileMasks& m : masks_) {
+        m.candidates = m.blocked = 0;
+        m.key = 0;
+    }
     tiles_.reset(slot_of(tiles_w_ * tiles_h_ - 1) + 1);
     boundary_floor_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_,
                            std::numeric_limits<std::int32_t>::max());
@@ -274,12 +278,6 @@ void EmptyCircleFinder::settle_all() {
         if (!field_.far_blocks().trusted(b)) tighten(b, 0);
 }
 
-std::uint64_t EmptyCircleFinder::near_changes(int tile) const {
-    return dilate_in_grid(tile % tiles_w_, tile / tiles_w_, tiles_w_, tiles_h_, [&](int a, int b) {
-        return masks_[static_cast<std::size_t>(b) * tiles_w_ + a].changed;
-    });
-}
-
 void EmptyCircleFinder::update(const std::vector<int>& changed) {
     constexpr int kMask = (1 << kTileShift) - 1;
     // Changed pixels come mostly in runs along rows: marked a tile row segment at a time.
@@ -298,24 +296,29 @@ void EmptyCircleFinder::update(const std::vector<int>& changed) {
                              << (((j & kMask) << kTileShift) | (i & kMask));
         k += len;
     }
-    // A changed pixel can change its own state and its 8 neighbours': the tiles holding them.
+    // A changed pixel can change its own state and its 8 neighbours': each tile gathers the
+    // pixels next to a change, its own and its neighbours'.
     for (int t : changed_tiles_) {
         const std::uint64_t m = masks_[t].changed;
         const int ti = t % tiles_w_, tj = t / tiles_w_;
         const bool left = ti > 0, right = ti<tiles_w_ - 1, up = tj> 0, down = tj < tiles_h_ - 1;
-        mark_dirty(t);
-        if (left && (m & kColumn0)) mark_dirty(t - 1);
-        if (right && (m & kColumn7)) mark_dirty(t + 1);
-        if (up && (m & kRow0)) mark_dirty(t - tiles_w_);
-        if (down && (m & kRow7)) mark_dirty(t + tiles_w_);
-        if (left && up && (m & 1)) mark_dirty(t - tiles_w_ - 1);
-        if (right && up && (m & 0x80)) mark_dirty(t - tiles_w_ + 1);
-        if (left && down && (m & (std::uint64_t{1} << 56))) mark_dirty(t + tiles_w_ - 1);
-        if (right && down && (m >> 63)) mark_dirty(t + tiles_w_ + 1);
+        std::uint64_t own = m | ((m << 1) & ~kColumn0) | ((m >> 1) & ~kColumn7);
+        mark_near(t, own | (own << 8) | (own >> 8));
+        const auto column = [](std::uint64_t c) { return c | (c << 8) | (c >> 8); };
+        const auto row = [](std::uint64_t r) { return (r | ((r << 1) & 0xfe) | (r >> 1)) & 0xff; };
+        if (left && (m & kColumn0)) mark_near(t - 1, column((m & kColumn0) << 7));
+        if (right && (m & kColumn7)) mark_near(t + 1, column((m & kColumn7) >> 7));
+        if (up && (m & kRow0)) mark_near(t - tiles_w_, row(m & kRow0) << 56);
+        if (down && (m & kRow7)) mark_near(t + tiles_w_, row(m >> 56));
+        if (left && up && (m & 1)) mark_near(t - tiles_w_ - 1, std::uint64_t{1} << 63);
+        if (right && up && (m & 0x80)) mark_near(t - tiles_w_ + 1, std::uint64_t{1} << 56);
+        if (left && down && (m & (std::uint64_t{1} << 56))) mark_near(t + tiles_w_ - 1, 0x80);
+        if (right && down && (m >> 63)) mark_near(t + tiles_w_ + 1, 1);
     }
     for (int t : dirty_list_) {
-        dirty_[t] = 0;
-        refresh(t, near_changes(t));
+        const std::uint64_t near = masks_[t].near;
+        masks_[t].near = 0;
+        refresh(t, near);
     }
     dirty_list_.clear();
     for (int t : changed_tiles_) masks_[t].changed = 0;
@@ -333,7 +336,8 @@ void EmptyCircleFinder::release(const std::vector<int>& removed_ids) {
             if (!(masks_[t].blocked & mask) || field_.squared_distance(p) != d2) continue;
             masks_[t].blocked &= ~mask;
             masks_[t].candidates |= mask;
-            tiles_.set(slot_of(t), std::max(tiles_.get(slot_of(t)), key_of(p, d2)));
+            masks_[t].key = std::max(masks_[t].key, key_of(p, d2));
+            tiles_.set(slot_of(t), masks_[t].key);
         }
         blocked_[id].clear();
         blocked_[id].shrink_to_fit();

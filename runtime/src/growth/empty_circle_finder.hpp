@@ -109,9 +109,8 @@ class EmptyCircleFinder {
                static_cast<std::size_t>((tj & 7) << 3 | (ti & 7));
     }
     int bit_of(int pixel) const;
-    void mark_dirty(int tile);
-    // Bits of the pixels of a tile whose 3 x 3 neighbourhood holds a changed pixel.
-    std::uint64_t near_changes(int tile) const;
+    // Adds pixels of the tile to re-decide at the end of update().
+    void mark_near(int tile, std::uint64_t bits);
     void rescan(int tile);                       // tile maximum from the candidate bits
     void refresh(int tile, std::uint64_t bits);  // re-decides those pixels, then rescans
     // Lazy field: bounds of the blocks that stopped being trusted enter blocks_.
@@ -154,14 +153,15 @@ class EmptyCircleFinder {
         std::uint64_t blocked = 0;     // pixels in state blocked
         std::uint64_t discarded = 0;   // pixels with an entry in discarded_
         std::uint64_t changed = 0;     // pixels changed since the last update()
+        Key key = 0;                   // the tile's key in tiles_
+        std::uint64_t near = 0;        // pixels next to a change, in update()
     };
     std::vector<TileMasks> masks_;
     // Per tile, the smallest squared distance to a boundary pixel (boundary sites all come
     // before rebuild()): below it, the nearest obstacle is an element.
     std::vector<std::int32_t> boundary_floor_;
     std::vector<int> changed_tiles_;
-    std::vector<std::uint8_t> dirty_;
-    std::vector<int> dirty_list_;
+    std::vector<int> dirty_list_;  // tiles with pixels near a change, in update()
 };
 
 }  // namespace acanthus::detail
