@@ -90,7 +90,7 @@ struct GrowthEngine::Impl {
     void place_seeds();
     void grow();
     std::optional<EmptyCircle> find();
-    std::optional<Circle> refine(const EmptyCircle& found) const;
+    std::optional<Circle> refine(const EmptyCircle& found);
     std::optional<Circle> find_goal();
     void iterate(const Circle& goal);
     void commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
@@ -116,6 +116,9 @@ struct GrowthEngine::Impl {
     long seen_clears = 0;
     bool ran = false;
     std::vector<int> fresh, changed;
+    // The elements refine() found near the goal's centre, by (distance, id), within this radius.
+    std::vector<std::pair<Element*, double>> near_goal;
+    double near_goal_radius = 0;
 
     long debug_iteration = 0;
     std::function<void(const DebugFrame&)> debug_callback;
@@ -210,10 +213,14 @@ std::optional<EmptyCircle> GrowthEngine::Impl::find() {
 // The chosen circle, grown to the exact distance from its centre to the nearest element (the
 // raster circle is a lower bound of it, within about a pixel). Nothing when, measured exactly,
 // the boundary is at least as near: the paper discards circles stopped by the boundary.
-std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) const {
+std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     Circle c = found.circle;
-    // The raster radius is within about 1.5 pixels below the exact one.
-    const double r = ornament.nearest(c.center, c.radius + 2 * raster.grid().pixel).second;
+    // The raster radius is within about 1.5 pixels below the exact one; iterate() wants the
+    // elements within epsilon of the exact circle too.
+    near_goal = ornament.nearest_within(c.center, c.radius + 2 * raster.grid().pixel + epsilon,
+                                        &near_goal_radius);
+    if (near_goal.empty()) return std::nullopt;
+    const double r = near_goal.front().second;
     if (!std::isfinite(r)) return std::nullopt;
     const double boundary_floor =
         finder.radius_pixels(field.boundary_squared_distance(found.pixel)) * raster.grid().pixel;
@@ -259,8 +266,14 @@ Flow GrowthEngine::Impl::call_exhausted() {
 void GrowthEngine::Impl::iterate(const Circle& goal) {
     env.set_goal(goal);
     std::vector<Element*> parents;
-    for (const auto& [e, d] : ornament.within(goal.center, goal.radius + epsilon))
-        if (!e->sterile) parents.push_back(e);
+    const double reach = goal.radius + epsilon;
+    if (near_goal_radius >= reach) {  // refine() found them all
+        for (const auto& [e, d] : near_goal)
+            if (d <= reach && !e->sterile) parents.push_back(e);
+    } else {
+        for (const auto& [e, d] : ornament.within(goal.center, reach))
+            if (!e->sterile) parents.push_back(e);
+    }
 
     const bool debugging = debug_callback && stats.iterations == debug_iteration;
     DebugFrame frame;

@@ -29,7 +29,16 @@ std::vector<const Element*> Ornament::view() const {
 }
 
 std::pair<Element*, double> Ornament::nearest(Point p, double hint) const {
-    if (elements_.empty() || !p.finite()) return {nullptr, std::numeric_limits<double>::infinity()};
+    double covered = 0;
+    const auto hits = nearest_within(p, hint, &covered);
+    if (hits.empty()) return {nullptr, std::numeric_limits<double>::infinity()};
+    return hits.front();
+}
+
+std::vector<std::pair<Element*, double>> Ornament::nearest_within(Point p, double hint,
+                                                                  double* covered) const {
+    *covered = 0;
+    if (elements_.empty() || !p.finite()) return {};
     // Any proxy nearer than the best one found within r has bounds within r too, so the first
     // radius that holds a proxy at most r away decides. (The index's k-nearest query costs far
     // more per call on large trees than these box queries.)
@@ -39,8 +48,11 @@ std::pair<Element*, double> Ornament::nearest(Point p, double hint) const {
         size + acanthus::distance(p, b.center()) + 1;  // beyond this, every bound is in
     double r = hint > 0 ? hint : size / 256;
     for (;;) {
-        const auto hits = within(p, r);
-        if (!hits.empty()) return hits.front();
+        auto hits = within(p, r);
+        if (!hits.empty()) {
+            *covered = r;
+            return hits;
+        }
         if (r > reach) break;
         r *= 4;
     }
@@ -48,8 +60,8 @@ std::pair<Element*, double> Ornament::nearest(Point p, double hint) const {
     const auto hit = index_.nearest_entry(p, [&](detail::SpatialIndex::Entry en) {
         return distance_to(at(en.element).proxy(static_cast<std::size_t>(en.proxy)), p);
     });
-    if (!hit) return {nullptr, std::numeric_limits<double>::infinity()};
-    return {&at(hit->entry.element), hit->distance};
+    if (!hit) return {};
+    return {{&at(hit->entry.element), hit->distance}};
 }
 
 std::vector<std::pair<Element*, double>> Ornament::within(Point p, double radius) const {

@@ -30,6 +30,10 @@ class Ornament {
     // Placed element nearest to p and its distance (ties to the smallest id), or null. The
     // search looks within `hint` first and widens fourfold until it finds one.
     std::pair<Element*, double> nearest(Point p, double hint = 0) const;
+    // The same search, returning every element within the radius that found one, by
+    // (distance, id), and that radius in `covered` (0 when none did: the nearest alone).
+    std::vector<std::pair<Element*, double>> nearest_within(Point p, double hint,
+                                                            double* covered) const;
     // Placed elements within `radius` of p with their distances, by (distance, id).
     std::vector<std::pair<Element*, double>> within(Point p, double radius) const;
 

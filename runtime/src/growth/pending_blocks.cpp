@@ -420,11 +420,16 @@ void PendingBlocks::compact(int block) {
     Pending& p = pending_[block];
     if (p.entries.empty()) return;
     int lo = p.end();
+    const Rect br = block_rect(block);
+    const int t0 = (br.y0 >> kTileShift) * tiles_w_ + (br.x0 >> kTileShift);
     for (std::uint64_t bits = inexact_[block]; bits; bits &= bits - 1) {
         const int bit = std::countr_zero(bits);
-        const int t = tile_at(block, bit);
+        const int col = bit & 7, row = bit >> 3;
+        const int t = t0 + row * tiles_w_ + col;
         // Blobs no nearer to the tile than its bound lower nothing in it.
-        const Rect r = tile_rect(t);
+        const int x0 = br.x0 + (col << kTileShift), y0 = br.y0 + (row << kTileShift);
+        const Rect r{x0, y0, std::min(br.x1, x0 + (1 << kTileShift) - 1),
+                     std::min(br.y1, y0 + (1 << kTileShift) - 1)};
         int& a = absorbed_[t];
         while (a < p.end() && gap2(p.at(a), r) >= tile_bound_[t]) ++a;
         if (a == p.end())
