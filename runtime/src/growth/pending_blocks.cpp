@@ -419,6 +419,7 @@ void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* ch
 void PendingBlocks::compact(int block) {
     Pending& p = pending_[block];
     if (p.entries.empty()) return;
+    p.compacted = p.end();
     int lo = p.end();
     const Rect br = block_rect(block);
     const int t0 = (br.y0 >> kTileShift) * tiles_w_ + (br.x0 >> kTileShift);
@@ -462,7 +463,7 @@ void PendingBlocks::tighten(int block, std::int64_t threshold, std::int32_t* d2,
     reach_[block] = left != 0 ? std::min(reach_[block], top) : 0;
     update_bound(block);
     // Only measuring frees entries often enough to be worth the scan.
-    if (trusted_any) compact(block);
+    if (trusted_any && pending_[block].end() >= pending_[block].compacted + 4) compact(block);
 }
 
 }  // namespace acanthus::detail

@@ -77,6 +77,7 @@ class PendingBlocks {
     struct Pending {
         std::vector<Entry> entries;
         int base = 0;
+        int compacted = 0;  // end() at the last compact()
         int end() const { return base + static_cast<int>(entries.size()); }
         const Entry& at(int number) const { return entries[number - base]; }
     };
