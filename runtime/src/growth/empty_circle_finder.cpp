@@ -224,6 +224,15 @@ void EmptyCircleFinder::refresh(int tile, std::uint64_t bits) {
     if (masks_[tile].candidates != before || (before & masks_[tile].changed) != 0) rescan(tile);
 }
 
+void EmptyCircleFinder::prefetch(int tile) const {
+    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    const int j0 = std::max(0, (tj << kTileShift) - 1);
+    const int j1 = std::min(grid_.height - 1, (tj << kTileShift) + (1 << kTileShift));
+    const std::int32_t* d2 = field_.squared_distances() + (ti << kTileShift);
+    for (int j = j0; j <= j1; ++j)
+        __builtin_prefetch(d2 + static_cast<std::size_t>(j) * grid_.width);
+}
+
 void EmptyCircleFinder::rebuild() {
     blocked_.clear();
     for (TileMasks& m : masks_) {
@@ -315,7 +324,12 @@ void EmptyCircleFinder::update(const std::vector<int>& changed) {
         if (left && down && (m & (std::uint64_t{1} << 56))) mark_near(t + tiles_w_ - 1, 0x80);
         if (right && down && (m >> 63)) mark_near(t + tiles_w_ + 1, 1);
     }
-    for (int t : dirty_list_) {
+    // The tiles' rows lie far apart in the field: each fetched two tiles ahead.
+    const std::size_t dirty = dirty_list_.size();
+    for (std::size_t k = 0; k < std::min<std::size_t>(2, dirty); ++k) prefetch(dirty_list_[k]);
+    for (std::size_t k = 0; k < dirty; ++k) {
+        const int t = dirty_list_[k];
+        if (k + 2 < dirty) prefetch(dirty_list_[k + 2]);
         const std::uint64_t near = masks_[t].near;
         masks_[t].near = 0;
         refresh(t, near);

@@ -111,6 +111,7 @@ class EmptyCircleFinder {
     int bit_of(int pixel) const;
     // Adds pixels of the tile to re-decide at the end of update().
     void mark_near(int tile, std::uint64_t bits);
+    void prefetch(int tile) const;               // the field's rows a refresh of the tile reads
     void rescan(int tile);                       // tile maximum from the candidate bits
     void refresh(int tile, std::uint64_t bits);  // re-decides those pixels, then rescans
     // Lazy field: bounds of the blocks that stopped being trusted enter blocks_.
