@@ -463,7 +463,7 @@ void PendingBlocks::tighten(int block, std::int64_t threshold, std::int32_t* d2,
     reach_[block] = left != 0 ? std::min(reach_[block], top) : 0;
     update_bound(block);
     // Only measuring frees entries often enough to be worth the scan.
-    if (trusted_any && pending_[block].end() >= pending_[block].compacted + 4) compact(block);
+    if (trusted_any && pending_[block].end() >= pending_[block].compacted + 16) compact(block);
 }
 
 }  // namespace acanthus::detail
