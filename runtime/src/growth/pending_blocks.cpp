@@ -175,10 +175,17 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
         const Rect gr{bx0 << kShift, by0 << kShift, std::min(width_, (bx1 + 1) << kShift) - 1,
                       std::min(height_, (by1 + 1) << kShift) - 1};
         if (gap2(blob, gr) >= group_bound_[g]) continue;  // lowers nothing there
-        for (int bj = by0; bj <= by1; ++bj) {
-            for (int bi = bx0; bi <= bx1; ++bi) {
+        // Only blocks nearer to the blob than the group's largest bound: a band round its box.
+        const int reach = static_cast<int>(std::sqrt(static_cast<double>(group_bound_[g]))) + 1;
+        const int ix0 = std::max(bx0, (blob.x0 - reach) >> kShift);
+        const int ix1 = std::min(bx1, (blob.x1 + reach) >> kShift);
+        const int jy0 = std::max(by0, (blob.y0 - reach) >> kShift);
+        const int jy1 = std::min(by1, (blob.y1 + reach) >> kShift);
+        for (int bj = jy0; bj <= jy1; ++bj) {
+            for (int bi = ix0; bi <= ix1; ++bi) {
                 const int b = bj * blocks_w_ + bi;
-                const Rect r = block_rect(b);
+                const Rect r{bi << kShift, bj << kShift, std::min(width_, (bi + 1) << kShift) - 1,
+                             std::min(height_, (bj + 1) << kShift) - 1};
                 if (gap2(blob, r) >= bound_[b]) continue;
                 if (!manhattan_ && witness_[b] >= 0 && farther_than_witness(blob, witness_[b], r))
                     continue;
