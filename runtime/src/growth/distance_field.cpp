@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unordered_set>
 
 #include "growth/manhattan_transform.hpp"
 
@@ -112,7 +113,6 @@ DistanceField::DistanceField(int width, int height, bool with_sites, DistanceMet
     if (width <= 0 || height <= 0 || width > 30000 || height > 30000)  // also packs in 16 bits
         throw std::invalid_argument("DistanceField: grid size out of range");
     const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    occ_.assign(n, 0);
     dist2_.assign(n, kInfinite);
     boundary2_.assign(n, kInfinite);
     if (with_sites) site_.assign(n, -1);
@@ -130,11 +130,10 @@ ObstacleKind DistanceField::nearest_kind(int index) const {
 }
 
 void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
-    if (occupancy.size() != occ_.size())
+    if (occupancy.size() != dist2_.size())
         throw std::invalid_argument("DistanceField::compute: occupancy size mismatch");
-    occ_ = occupancy;
     const int w = width_;
-    const std::uint8_t* occ = occ_.data();
+    const std::uint8_t* occ = occupancy.data();
     std::int32_t* site = site_.empty() ? nullptr : site_.data();
     if (metric_ == DistanceMetric::manhattan) {
         const auto boundary = static_cast<std::uint8_t>(ObstacleKind::boundary);
@@ -156,16 +155,31 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
         boundary2_.data(), nullptr, scratch_);
 }
 
+// Keeps the first of equal pixels, in order: the order breaks ties of the feature transform.
+// (The render buffer sends each pixel once.)
+static void drop_duplicates(std::vector<int>& pixels) {
+    if (std::is_sorted(pixels.begin(), pixels.end())) {
+        pixels.erase(std::unique(pixels.begin(), pixels.end()), pixels.end());
+        return;
+    }
+    std::vector<int> sorted = pixels;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) return;
+    std::unordered_set<int> seen;
+    std::erase_if(pixels, [&](int p) { return !seen.insert(p).second; });
+}
+
 void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
                               std::vector<int>* changed) {
     if (kind == ObstacleKind::none) return;
     std::vector<int> fresh;
     fresh.reserve(pixels.size());
     for (int p : pixels) {
-        if (p < 0 || static_cast<std::size_t>(p) >= occ_.size() || occ_[p] != 0) continue;
-        occ_[p] = static_cast<std::uint8_t>(kind);  // also drops duplicates
+        // A site already (distance 0) keeps its kind.
+        if (p < 0 || static_cast<std::size_t>(p) >= dist2_.size() || dist2_[p] == 0) continue;
         fresh.push_back(p);
     }
+    drop_duplicates(fresh);
     if (fresh.empty()) return;
     if (lazy_ && kind == ObstacleKind::element) {
         // Measured when a tile that may need them is trusted.

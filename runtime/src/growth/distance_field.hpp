@@ -63,8 +63,11 @@ class DistanceField {
     // Index of the nearest site, or -1 when there is no site at all (or no feature transform).
     int nearest_site(int index) const { return site_.empty() ? -1 : site_[index]; }
     ObstacleKind nearest_kind(int index) const;
-    ObstacleKind occupancy(int index) const { return static_cast<ObstacleKind>(occ_[index]); }
-    const std::vector<std::uint8_t>& occupancy() const { return occ_; }
+    // The kind of site at the pixel (a site is at distance 0), or none.
+    ObstacleKind occupancy(int index) const {
+        if (dist2_[index] != 0) return ObstacleKind::none;
+        return boundary2_[index] == 0 ? ObstacleKind::boundary : ObstacleKind::element;
+    }
 
     // Buffers reused by the separable transform (exposed for the implementation only).
     // Phase 1 writes its column distances and site rows into the output arrays; phase 2 copies
@@ -92,7 +95,6 @@ class DistanceField {
     DistanceMetric metric_;
     bool lazy_ = false;
     PendingBlocks far_;
-    std::vector<std::uint8_t> occ_;
     std::vector<std::int32_t> dist2_;      // to the nearest site of any kind
     std::vector<std::int32_t> boundary2_;  // to the nearest boundary site
     std::vector<std::int32_t> site_;       // empty without a feature transform
