@@ -73,13 +73,9 @@ struct GrowthEngine::Impl {
           ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
           env(region, ornament, exclude, options.rng_seed) {
         // The incremental engine needs exact distances only where they may decide C; below
-        // options.lazy_field_pixels the eager field is as fast. The city-block brushfire is
-        // cheaper than the Euclidean fill: the lazy field pays only from 32 times as many
-        // pixels (docs/engine.md, "Scale").
+        // options.lazy_field_pixels the eager field is as fast (docs/engine.md, "Scale").
         const long long pixels = static_cast<long long>(raster.grid().width) * raster.grid().height;
-        const long long lazy_from = options.distance == DistanceMetric::manhattan
-                                        ? options.lazy_field_pixels * 32
-                                        : options.lazy_field_pixels;
+        const long long lazy_from = options.lazy_field_pixels;
         field.set_lazy(!options.reference_engine && pixels >= lazy_from);
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
