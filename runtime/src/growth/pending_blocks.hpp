@@ -109,10 +109,10 @@ class PendingBlocks {
         return dx * dx + dy * dy;
     }
     // Lowers d2 over the tile r to the distances to blob k's sites. Returns the largest squared
-    // distance over r after. `limit`: no value over r is above it.
+    // distance over r after. `limit`: a bound of r, as tile_bound_ is of a tile.
     std::int32_t measure(int k, const Rect& r, std::int64_t limit, std::int32_t* d2,
                          std::vector<int>* changed);
-    void prefetch(int tile, const std::int32_t* d2) const;
+    void prefetch(int tile, const std::int32_t* d2) const;  // the tile's rows of the field
     // Measures the tile's pending blobs, nearest first.
     void settle_tile(int tile, std::int32_t* d2, std::vector<int>* changed);
     // Skips the pending blobs that lower nothing in a tile and releases the blobs every tile
