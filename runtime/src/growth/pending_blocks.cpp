@@ -250,9 +250,11 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                         const int row = static_cast<int>(key & 0xffffffff);
                         if (!blob.runs.empty() && blob.runs.back().column == c &&
                             blob.runs.back().hi + 1 == row)
-                            blob.runs.back().hi = row;
+                            blob.runs.back().hi = static_cast<std::int16_t>(row);
                         else
-                            blob.runs.push_back({c, row, row});
+                            blob.runs.push_back({static_cast<std::int16_t>(c),
+                                                 static_cast<std::int16_t>(row),
+                                                 static_cast<std::int16_t>(row)});
                     }
                     blobs_[id] = std::move(blob);  // its box stays readable for the tests above
                 }
@@ -296,7 +298,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
 
 void PendingBlocks::release(int k) {
     if (--blobs_[k].refs > 0) return;
-    std::vector<Run>().swap(blobs_[k].runs);
+    blobs_[k].runs.clear();
     free_blobs_.push_back(k);
 }
 

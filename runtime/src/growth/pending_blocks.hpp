@@ -54,15 +54,45 @@ class PendingBlocks {
     }
 
   private:
-    // Columns of a blob's sites: in column `column`, rows lo..hi are sites.
+    // Columns of a blob's sites: in column `column`, rows lo..hi are sites (grids are at most
+    // 30,000 pixels a side).
     struct Run {
-        int column, lo, hi;
+        std::int16_t column, lo, hi;
+    };
+    // A blob's runs: a placed element spans a few columns, kept inline so that measuring reads
+    // them with the blob.
+    class Runs {
+      public:
+        static constexpr int kInline = 8;
+        bool empty() const { return size_ == 0; }
+        std::size_t size() const { return static_cast<std::size_t>(size_); }
+        const Run& operator[](std::size_t k) const { return data()[k]; }
+        Run& back() { return (more_.empty() ? inline_ : more_.data())[size_ - 1]; }
+        void push_back(const Run& r) {
+            if (more_.empty() && size_ < kInline) {
+                inline_[size_++] = r;
+                return;
+            }
+            if (more_.empty()) more_.assign(inline_, inline_ + size_);
+            more_.push_back(r);
+            ++size_;
+        }
+        void clear() {
+            std::vector<Run>().swap(more_);
+            size_ = 0;
+        }
+
+      private:
+        const Run* data() const { return more_.empty() ? inline_ : more_.data(); }
+        Run inline_[kInline];
+        std::vector<Run> more_;
+        int size_ = 0;
     };
     struct Blob {
-        std::vector<Run> runs;  // by column, then row
-        int x0, y0, x1, y1;     // bounding box
-        int first;              // one of its sites
-        int refs;               // blocks holding it pending
+        Runs runs;           // by column, then row
+        int x0, y0, x1, y1;  // bounding box
+        int first;           // one of its sites
+        int refs;            // blocks holding it pending
     };
     struct Rect {
         int x0, y0, x1, y1;  // inclusive
