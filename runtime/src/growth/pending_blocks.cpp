@@ -355,7 +355,7 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
         }
         Lanes v[2] = {load_lanes(from), load_lanes(from + 4)};
         const std::int32_t dy = std::max({0, b.y0 - j, j - b.y1});
-        // Only rows nearer to the bounding box than `limit` (>= every value over r) can change,
+        // Only rows nearer to the bounding box than `limit` (a bound of r) can change,
         // and only pixels nearer to the box than their value (it bounds the sites' distance).
         bool near = false;
         if (static_cast<std::int64_t>(dy) * dy < limit) {
