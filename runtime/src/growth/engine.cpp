@@ -75,8 +75,7 @@ struct GrowthEngine::Impl {
         // The incremental engine needs exact distances only where they may decide C; below
         // options.lazy_field_pixels the eager field is as fast (docs/engine.md, "Scale").
         const long long pixels = static_cast<long long>(raster.grid().width) * raster.grid().height;
-        const long long lazy_from = options.lazy_field_pixels;
-        field.set_lazy(!options.reference_engine && pixels >= lazy_from);
+        field.set_lazy(!options.reference_engine && pixels >= options.lazy_field_pixels);
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));

@@ -45,16 +45,17 @@ void PendingBlocks::reset(int width, int height, const std::int32_t* d2, Distanc
     for (int b = 0; b < count(); ++b) update_bound(b);
 }
 
+PendingBlocks::Rect PendingBlocks::square_at(int x0, int y0, int shift) const {
+    return {x0, y0, std::min(width_, x0 + (1 << shift)) - 1,
+            std::min(height_, y0 + (1 << shift)) - 1};
+}
+
 PendingBlocks::Rect PendingBlocks::block_rect(int block) const {
-    const int bi = block % blocks_w_, bj = block / blocks_w_;
-    return {bi << kShift, bj << kShift, std::min(width_, (bi + 1) << kShift) - 1,
-            std::min(height_, (bj + 1) << kShift) - 1};
+    return square_at(block % blocks_w_ << kShift, block / blocks_w_ << kShift, kShift);
 }
 
 PendingBlocks::Rect PendingBlocks::tile_rect(int tile) const {
-    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
-    return {ti << kTileShift, tj << kTileShift, std::min(width_, (ti + 1) << kTileShift) - 1,
-            std::min(height_, (tj + 1) << kTileShift) - 1};
+    return square_at(tile % tiles_w_ << kTileShift, tile / tiles_w_ << kTileShift, kTileShift);
 }
 
 std::uint64_t PendingBlocks::tiles_in(int block) const {
@@ -172,8 +173,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
         const int bx0 = gi << kGroupShift, by0 = gj << kGroupShift;
         const int bx1 = std::min(blocks_w_, bx0 + (1 << kGroupShift)) - 1;
         const int by1 = std::min(blocks_h_, by0 + (1 << kGroupShift)) - 1;
-        const Rect gr{bx0 << kShift, by0 << kShift, std::min(width_, (bx1 + 1) << kShift) - 1,
-                      std::min(height_, (by1 + 1) << kShift) - 1};
+        const Rect gr = square_at(bx0 << kShift, by0 << kShift, kShift + kGroupShift);
         if (gap2(blob, gr) >= group_bound_[g]) continue;  // lowers nothing there
         // Only blocks nearer to the blob than the group's largest bound: a band round its box.
         const int reach = static_cast<int>(std::sqrt(static_cast<double>(group_bound_[g]))) + 1;
@@ -184,8 +184,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
         for (int bj = jy0; bj <= jy1; ++bj) {
             for (int bi = ix0; bi <= ix1; ++bi) {
                 const int b = bj * blocks_w_ + bi;
-                const Rect r{bi << kShift, bj << kShift, std::min(width_, (bi + 1) << kShift) - 1,
-                             std::min(height_, (bj + 1) << kShift) - 1};
+                const Rect r = square_at(bi << kShift, bj << kShift, kShift);
                 if (gap2(blob, r) >= bound_[b]) continue;
                 if (!manhattan_ && witness_[b] >= 0 && farther_than_witness(blob, witness_[b], r))
                     continue;
@@ -437,9 +436,8 @@ void PendingBlocks::compact(int block) {
         const int col = bit & 7, row = bit >> 3;
         const int t = t0 + row * tiles_w_ + col;
         // Blobs no nearer to the tile than its bound lower nothing in it.
-        const int x0 = br.x0 + (col << kTileShift), y0 = br.y0 + (row << kTileShift);
-        const Rect r{x0, y0, std::min(br.x1, x0 + (1 << kTileShift) - 1),
-                     std::min(br.y1, y0 + (1 << kTileShift) - 1)};
+        const Rect r =
+            square_at(br.x0 + (col << kTileShift), br.y0 + (row << kTileShift), kTileShift);
         int& a = absorbed_[t];
         while (a < p.end() && gap2(p.at(a), r) >= tile_bound_[t]) ++a;
         if (a == p.end())

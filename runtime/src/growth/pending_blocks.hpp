@@ -112,6 +112,8 @@ class PendingBlocks {
         const Entry& at(int number) const { return entries[number - base]; }
     };
 
+    // The square of side 2^shift at (x0, y0), clipped to the grid.
+    Rect square_at(int x0, int y0, int shift) const;
     Rect block_rect(int block) const;
     Rect tile_rect(int tile) const;
     int block_of_tile(int tile) const {
