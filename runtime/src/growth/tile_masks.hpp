@@ -1,5 +1,6 @@
-// 8 x 8 pixel tiles as 64-bit masks (bit 8 * row + column): the bit tricks of the
-// EmptyCircleFinder's incremental refresh, and its crest prefilter on four pixels at a time.
+// 8 x 8 grids as 64-bit masks (bit 8 * row + column): the EmptyCircleFinder's pixel masks
+// per tile, with its crest prefilter on four pixels at a time, and the lazy field's tile masks
+// per block (dilate(): the tiles next to one not exact).
 #pragma once
 
 #include <bit>
