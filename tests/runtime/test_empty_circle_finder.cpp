@@ -201,3 +201,59 @@ TEST(EmptyCircleFinder, IncrementalFindMatchesScan) {
         }
     }
 }
+
+// With a lazy field the finder puts off re-deciding the tiles it does not trust yet; it still
+// finds what a full scan of the exact field finds, in both metrics.
+TEST(EmptyCircleFinder, LazyFieldFindMatchesScanOfExactField) {
+    for (const auto metric :
+         {acanthus::DistanceMetric::euclidean, acanthus::DistanceMetric::manhattan}) {
+        acanthus::Random rng(metric == acanthus::DistanceMetric::euclidean ? 5 : 6);
+        for (int scene = 0; scene < 3; ++scene) {
+            const int w = static_cast<int>(rng.uniform_int(130, 260));
+            const int h = static_cast<int>(rng.uniform_int(130, 260));
+            auto occ = framed(w, h);
+            occ[(h / 2) * w + w / 2] = 2;
+            DistanceField lazy(w, h, /*with_sites=*/false, metric);
+            lazy.set_lazy(true);
+            lazy.compute(occ);
+            DistanceField exact(w, h, /*with_sites=*/true, metric);
+            exact.compute(occ);
+            const double min_radius = rng.uniform(0, 1.5);
+            EmptyCircleFinder finder(lazy, grid(w, h), min_radius);
+            EmptyCircleFinder scan(exact, grid(w, h), min_radius);
+            finder.rebuild();
+            scan.rebuild();
+            ExcludeList exclude;
+            for (int step = 0; step < 400; ++step) {
+                const auto inc = finder.find(exclude);
+                ASSERT_TRUE(same(inc, scan.find_by_scan(exclude)))
+                    << "scene " << scene << " step " << step;
+                if (!inc) break;
+                if (rng.uniform() < 0.85) {
+                    // A dot against the circle's edge, as the dots pattern places them.
+                    const int ci = inc->pixel % w, cj = inc->pixel / w;
+                    const double a = rng.uniform(0, 6.283), reach = std::sqrt(double(inc->d2));
+                    const int di = static_cast<int>(std::lround(std::cos(a) * reach * 0.8));
+                    const int dj = static_cast<int>(std::lround(std::sin(a) * reach * 0.8));
+                    const int r = static_cast<int>(rng.uniform_int(0, 3));
+                    std::vector<int> dot;
+                    for (int j = cj + dj - r; j <= cj + dj + r; ++j)
+                        for (int i = ci + di - r; i <= ci + di + r; ++i)
+                            if (i > 0 && j > 0 && i < w - 1 && j < h - 1 &&
+                                (i - ci - di) * (i - ci - di) + (j - cj - dj) * (j - cj - dj) <=
+                                    r * r)
+                                dot.push_back(j * w + i);
+                    std::vector<int> changed;
+                    lazy.add_sites(dot, ObstacleKind::element, &changed);
+                    finder.update(changed);
+                    exact.add_sites(dot, ObstacleKind::element, nullptr);
+                    std::vector<int> removed;
+                    exclude.remove_within(inc->circle.center, rng.uniform(0, 3), &removed);
+                    finder.release(removed);
+                } else {
+                    exclude.add(inc->circle.center);  // "failure"
+                }
+            }
+        }
+    }
+}

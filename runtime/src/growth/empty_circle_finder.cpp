@@ -24,6 +24,7 @@ EmptyCircleFinder::EmptyCircleFinder(DistanceField& field, const GridFrame& grid
     blocks_w_ = ((tiles_w_ - 1) >> 3) + 1;
     tiles_.reset(slot_of(tiles_w_ * tiles_h_ - 1) + 1);
     masks_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, TileMasks{});
+    deferred_.assign(static_cast<std::size_t>(blocks_w_) * (((tiles_h_ - 1) >> 3) + 1), 0);
     const int w = grid.width;
     offsets_[0] = 1;
     offsets_[1] = w;
@@ -238,7 +239,9 @@ void EmptyCircleFinder::rebuild() {
     for (TileMasks& m : masks_) {
         m.candidates = m.blocked = 0;
         m.key = 0;
+        m.pending = m.stale = 0;
     }
+    std::fill(deferred_.begin(), deferred_.end(), 0);
     tiles_.reset(slot_of(tiles_w_ * tiles_h_ - 1) + 1);
     boundary_floor_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_,
                            std::numeric_limits<std::int32_t>::max());
@@ -250,7 +253,10 @@ void EmptyCircleFinder::rebuild() {
         }
     for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t, ~std::uint64_t{0});
     blocks_.reset(field_.lazy() ? static_cast<std::size_t>(field_.far_blocks().count()) : 0);
-    if (field_.lazy()) field_.far_blocks().clear_raised();
+    if (field_.lazy()) {
+        field_.far_blocks().clear_raised();
+        field_.far_blocks().clear_made_exact();
+    }
 }
 
 void EmptyCircleFinder::distrust_new_blocks() {
@@ -324,6 +330,27 @@ void EmptyCircleFinder::update(const std::vector<int>& changed) {
         if (left && down && (m & (std::uint64_t{1} << 56))) mark_near(t + tiles_w_ - 1, 0x80);
         if (right && down && (m >> 63)) mark_near(t + tiles_w_ + 1, 1);
     }
+    if (field_.lazy()) {
+        wake_trusted();
+        // A tile not trusted keeps its pixels to re-decide: find() uses no candidate of it
+        // before it is trusted, and its block's reach covers the candidates it may gain.
+        const PendingBlocks& far = field_.far_blocks();
+        std::size_t kept = 0;
+        for (const int t : dirty_list_) {
+            const int ti = t % tiles_w_, tj = t / tiles_w_;
+            if (far.tile_trusted(ti, tj)) {
+                dirty_list_[kept++] = t;
+                continue;
+            }
+            TileMasks& m = masks_[t];
+            m.pending |= m.near;
+            m.stale |= m.changed;
+            m.near = 0;
+            const std::size_t slot = slot_at(ti, tj);
+            deferred_[slot >> 6] |= std::uint64_t{1} << (slot & 63);
+        }
+        dirty_list_.resize(kept);
+    }
     // The tiles' rows lie far apart in the field: each fetched two tiles ahead.
     const std::size_t dirty = dirty_list_.size();
     for (std::size_t k = 0; k < std::min<std::size_t>(2, dirty); ++k) prefetch(dirty_list_[k]);
@@ -338,6 +365,28 @@ void EmptyCircleFinder::update(const std::vector<int>& changed) {
     for (int t : changed_tiles_) masks_[t].changed = 0;
     changed_tiles_.clear();
     distrust_new_blocks();
+}
+
+void EmptyCircleFinder::wake_trusted() {
+    PendingBlocks& far = field_.far_blocks();
+    for (const int s : far.made_exact()) {
+        const int ti = s % tiles_w_, tj = s / tiles_w_;
+        for (int nj = std::max(0, tj - 1); nj <= std::min(tiles_h_ - 1, tj + 1); ++nj)
+            for (int ni = std::max(0, ti - 1); ni <= std::min(tiles_w_ - 1, ti + 1); ++ni) {
+                const std::size_t slot = slot_at(ni, nj);
+                std::uint64_t& deferred = deferred_[slot >> 6];
+                const std::uint64_t bit = std::uint64_t{1} << (slot & 63);
+                if (!(deferred & bit) || !far.tile_trusted(ni, nj)) continue;
+                const int u = nj * tiles_w_ + ni;
+                deferred &= ~bit;
+                TileMasks& m = masks_[u];
+                if (m.changed == 0) changed_tiles_.push_back(u);
+                m.changed |= m.stale;
+                mark_near(u, m.pending);
+                m.pending = m.stale = 0;
+            }
+    }
+    far.clear_made_exact();
 }
 
 void EmptyCircleFinder::release(const std::vector<int>& removed_ids) {

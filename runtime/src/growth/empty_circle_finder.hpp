@@ -103,8 +103,8 @@ class EmptyCircleFinder {
     int tile_of(int pixel) const;
     // The tile's slot in tiles_: the 64 tiles of a 64 x 64 pixel block side by side, so that
     // the tiles a placement changes share cache lines and subtrees.
-    std::size_t slot_of(int tile) const {
-        const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    std::size_t slot_of(int tile) const { return slot_at(tile % tiles_w_, tile / tiles_w_); }
+    std::size_t slot_at(int ti, int tj) const {
         return (static_cast<std::size_t>(tj >> 3) * blocks_w_ + (ti >> 3)) << 6 |
                static_cast<std::size_t>((tj & 7) << 3 | (ti & 7));
     }
@@ -114,6 +114,8 @@ class EmptyCircleFinder {
     void prefetch(int tile) const;               // the field's rows a refresh of the tile reads
     void rescan(int tile);                       // tile maximum from the candidate bits
     void refresh(int tile, std::uint64_t bits);  // re-decides those pixels, then rescans
+    // Lazy field: the tiles trusted since the last update() mark what they put off.
+    void wake_trusted();
     // Lazy field: bounds of the blocks that stopped being trusted enter blocks_.
     void distrust_new_blocks();
     // Lazy field: trusts the block's tiles that may hold a candidate of at least `threshold`.
@@ -156,8 +158,13 @@ class EmptyCircleFinder {
         std::uint64_t changed = 0;     // pixels changed since the last update()
         Key key = 0;                   // the tile's key in tiles_
         std::uint64_t near = 0;        // pixels next to a change, in update()
+        // Lazy field: a tile not trusted puts off re-deciding its pixels until it is.
+        std::uint64_t pending = 0;  // pixels to re-decide then
+        std::uint64_t stale = 0;    // of those, the pixels whose distance changed
     };
     std::vector<TileMasks> masks_;
+    // Lazy field, per 64 x 64 pixel block: its tiles with pixels to re-decide once trusted.
+    std::vector<std::uint64_t> deferred_;
     // Per tile, the smallest squared distance to a boundary pixel (boundary sites all come
     // before rebuild()): below it, the nearest obstacle is an element.
     std::vector<std::int32_t> boundary_floor_;

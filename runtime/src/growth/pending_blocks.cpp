@@ -30,6 +30,7 @@ void PendingBlocks::reset(int width, int height, const std::int32_t* d2, Distanc
     reach_.assign(n, 0);
     in_raised_.assign(n, 0);
     raised_.clear();
+    made_exact_.clear();
     blobs_.clear();
     free_blobs_.clear();
     const std::size_t tiles = static_cast<std::size_t>(tiles_w_) * tiles_h_;
@@ -301,8 +302,12 @@ void PendingBlocks::release(int k) {
     free_blobs_.push_back(k);
 }
 
-bool PendingBlocks::tile_trusted(int tile) const {
-    const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+bool PendingBlocks::tile_trusted(int ti, int tj) const {
+    const int b = (tj >> (kShift - kTileShift)) * blocks_w_ + (ti >> (kShift - kTileShift));
+    if (!untrusted_[b]) return true;  // distrust() marks the blocks round a lowered tile too
+    const int c = ti & 7, r = tj & 7;
+    if (c > 0 && c < 7 && r > 0 && r < 7)  // its 3 x 3 tiles within the block
+        return (inexact_[b] & (std::uint64_t{0x070707} << ((r - 1) * 8 + c - 1))) == 0;
     for (int nj = std::max(0, tj - 1); nj <= std::min(tiles_h_ - 1, tj + 1); ++nj)
         for (int ni = std::max(0, ti - 1); ni <= std::min(tiles_w_ - 1, ti + 1); ++ni)
             if (!exact(ni, nj)) return false;
@@ -422,6 +427,7 @@ void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* ch
     }
     tile_bound_[tile] = static_cast<std::int32_t>(limit);
     inexact_[block] &= ~bit;
+    made_exact_.push_back(tile);
 }
 
 void PendingBlocks::compact(int block) {
@@ -440,9 +446,10 @@ void PendingBlocks::compact(int block) {
             square_at(br.x0 + (col << kTileShift), br.y0 + (row << kTileShift), kTileShift);
         int& a = absorbed_[t];
         while (a < p.end() && gap2(p.at(a), r) >= tile_bound_[t]) ++a;
-        if (a == p.end())
+        if (a == p.end()) {
             inexact_[block] &= ~(std::uint64_t{1} << bit);
-        else
+            made_exact_.push_back(t);
+        } else
             lo = std::min(lo, a);
     }
     const int drop = lo - p.base;

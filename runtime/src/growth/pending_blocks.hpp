@@ -32,7 +32,8 @@ class PendingBlocks {
 
     // A tile is trusted when it and its 8 neighbours hold exact distances: every pixel of it
     // and the pixels round it.
-    bool tile_trusted(int tile) const;
+    bool tile_trusted(int tile) const { return tile_trusted(tile % tiles_w_, tile / tiles_w_); }
+    bool tile_trusted(int ti, int tj) const;  // the tile in column ti, row tj
     // Makes the tile trusted; lowered pixels are appended to `changed`.
     void trust_tile(int tile, std::int32_t* d2, std::vector<int>* changed);
 
@@ -46,6 +47,10 @@ class PendingBlocks {
     void tighten(int block, std::int64_t threshold, std::int32_t* d2, std::vector<int>* changed);
     // >= every squared distance the tile will hold once measured.
     std::int32_t tile_bound(int tile) const { return tile_bound_[tile]; }
+    // Tiles that became exact since the last call (a tile trusted since is among them or
+    // next to one of them).
+    const std::vector<int>& made_exact() const { return made_exact_; }
+    void clear_made_exact() { made_exact_.clear(); }
     // Blocks not trusted whose reach rose since the last call (each once).
     const std::vector<int>& raised() const { return raised_; }
     void clear_raised() {
@@ -167,6 +172,7 @@ class PendingBlocks {
     std::vector<std::int64_t> reach_;      // per block not trusted
     std::vector<std::uint8_t> in_raised_;  // per block: listed in raised_
     std::vector<int> raised_;
+    std::vector<int> made_exact_;
     // Per tile: above every squared distance it will hold once measured, or equal to the
     // largest; pixels not measured yet may hold more.
     std::vector<std::int32_t> tile_bound_;
