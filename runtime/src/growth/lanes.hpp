@@ -4,6 +4,9 @@
 
 #include <cstdint>
 #include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace acanthus::detail {
 
@@ -13,6 +16,18 @@ inline Lanes load_lanes(const std::int32_t* p) {
     Lanes v;
     std::memcpy(&v, p, sizeof v);
     return v;
+}
+
+inline void store_lanes(std::int32_t* p, Lanes v) { std::memcpy(p, &v, sizeof v); }
+
+// Bit l set when lane l of a comparison's result is true (all ones).
+inline unsigned lane_mask(Lanes m) {
+#if defined(__SSE2__)
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps((__m128i)m)));
+#else
+    const Lanes bits = m & Lanes{1, 2, 4, 8};
+    return static_cast<unsigned>(bits[0] | bits[1] | bits[2] | bits[3]);
+#endif
 }
 
 }  // namespace acanthus::detail

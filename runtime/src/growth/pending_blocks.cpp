@@ -337,17 +337,20 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
     const std::size_t runs = b.runs.size();
     // Per run, the column term of each lane: squared (Euclidean) or absolute (Manhattan).
     if (columns_.size() < 2 * runs) columns_.resize(2 * runs);
+    const Lanes zero = {0, 0, 0, 0};
+    const Lanes lane[2] = {{0, 1, 2, 3}, {4, 5, 6, 7}};
     for (std::size_t q = 0; q < runs; ++q)
-        for (int l = 0; l < 8; ++l) {
-            const std::int32_t cx = std::abs(r.x0 + l - b.runs[q].column);
-            columns_[2 * q + (l >> 2)][l & 3] = manhattan_ ? cx : cx * cx;
+        for (int h = 0; h < 2; ++h) {
+            const Lanes dx = lane[h] + (r.x0 - b.runs[q].column);
+            const Lanes cx = dx < zero ? -dx : dx;
+            columns_[2 * q + h] = manhattan_ ? cx : cx * cx;
         }
     Lanes box[2];  // the column term of the distance to the blob's bounding box
-    for (int l = 0; l < 8; ++l) {
-        const std::int32_t dx = std::max({0, b.x0 - r.x0 - l, r.x0 + l - b.x1});
-        box[l >> 2][l & 3] = dx;
+    for (int h = 0; h < 2; ++h) {
+        const Lanes x = lane[h] + r.x0;
+        const Lanes left = b.x0 - x, right = x - b.x1;
+        box[h] = left > zero ? left : right > zero ? right : zero;
     }
-    const Lanes zero = {0, 0, 0, 0};
     Lanes top = zero;
     for (int j = r.y0; j <= r.y1; ++j) {
         std::int32_t* line = d2 + static_cast<std::size_t>(j) * width_ + r.x0;
@@ -366,8 +369,7 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
             for (int h = 0; h < 2; ++h) {
                 const Lanes g =
                     manhattan_ ? (box[h] + dy) * (box[h] + dy) : box[h] * box[h] + dy * dy;
-                const Lanes below = g < v[h];
-                near = near || (below[0] | below[1] | below[2] | below[3]) != 0;
+                near = near || lane_mask(g < v[h]) != 0;
             }
         }
         if (near) {
@@ -389,10 +391,15 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
                 if (manhattan_) m[h] *= m[h];  // (|dx| + |dy|)^2 of the nearest run
                 const Lanes lower = m[h] < v[h];
                 v[h] = lower ? m[h] : v[h];
-                for (int l = 0; l < 4; ++l) lowered |= (lower[l] & 1u) << (4 * h + l);
+                lowered |= lane_mask(lower) << (4 * h);
             }
             if (lowered) {
-                for (int l = 0; l < n; ++l) line[l] = v[l >> 2][l & 3];
+                if (n == 8) {
+                    store_lanes(line, v[0]);
+                    store_lanes(line + 4, v[1]);
+                } else {
+                    for (int l = 0; l < n; ++l) line[l] = v[l >> 2][l & 3];
+                }
                 if (changed)
                     for (unsigned bits = lowered; bits; bits &= bits - 1)
                         changed->push_back(j * width_ + r.x0 + std::countr_zero(bits));
