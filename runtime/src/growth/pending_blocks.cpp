@@ -33,13 +33,12 @@ void PendingBlocks::reset(int width, int height, const std::int32_t* d2, Distanc
     made_exact_.clear();
     blobs_.clear();
     free_blobs_.clear();
-    const std::size_t tiles = static_cast<std::size_t>(tiles_w_) * tiles_h_;
-    absorbed_.assign(tiles, 0);
+    absorbed_.assign(n << 6, 0);
     witness_.assign(n, -1);
     witness_d2_.assign(n, 0);
-    tile_bound_.resize(tiles);
-    for (std::size_t t = 0; t < tiles; ++t)
-        tile_bound_[t] = max_over(tile_rect(static_cast<int>(t)), d2);
+    tile_bound_.assign(n << 6, 0);
+    for (int t = 0; t < tiles_w_ * tiles_h_; ++t)
+        tile_bound_[slot_of(t)] = max_over(tile_rect(t), d2);
     groups_w_ = ((blocks_w_ - 1) >> kGroupShift) + 1;
     groups_h_ = ((blocks_h_ - 1) >> kGroupShift) + 1;
     group_bound_.assign(static_cast<std::size_t>(groups_w_) * groups_h_, 0);
@@ -87,7 +86,7 @@ std::int32_t PendingBlocks::max_over(const Rect& r, const std::int32_t* d2) cons
 void PendingBlocks::update_bound(int block) {
     std::int32_t m = 0;
     for (std::uint64_t bits = tiles_in(block); bits; bits &= bits - 1)
-        m = std::max(m, tile_bound_[tile_at(block, std::countr_zero(bits))]);
+        m = std::max(m, tile_bound_[slot_at(block, std::countr_zero(bits))]);
     set_bound(block, m);
 }
 
@@ -215,9 +214,8 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                 std::int32_t top = 0;
                 const int cols = std::min(8, tiles_w_ - (bi << 3));
                 const int rows = std::min(8, tiles_h_ - (bj << 3));
-                std::int32_t* bound =
-                    tile_bound_.data() + static_cast<std::size_t>(bj << 3) * tiles_w_ + (bi << 3);
-                for (int row = 0; row < rows; ++row, bound += tiles_w_) {
+                std::int32_t* bound = tile_bound_.data() + slot_at(b, 0);
+                for (int row = 0; row < rows; ++row, bound += 8) {
                     std::uint64_t bits = 0;
                     for (int c = 0; c < cols; ++c) {
                         bits |= static_cast<std::uint64_t>(gx[c] + gy[row] < bound[c]) << c;
@@ -261,7 +259,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                 Pending& p = pending_[b];
                 // Tiles that were exact wait from this entry on; the others keep their place.
                 for (std::uint64_t bits = lower & ~inexact_[b]; bits; bits &= bits - 1)
-                    absorbed_[tile_at(b, std::countr_zero(bits))] = p.end();
+                    absorbed_[slot_at(b, std::countr_zero(bits))] = p.end();
                 inexact_[b] |= lower;
                 p.entries.push_back({id, static_cast<std::int16_t>(blobs_[id].x0),
                                      static_cast<std::int16_t>(blobs_[id].y0),
@@ -415,14 +413,15 @@ void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* ch
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
     const std::uint64_t bit = std::uint64_t{1} << bit_of_tile(ti, tj);
     if (!(inexact_[block] & bit)) return;
+    const std::size_t slot = slot_at(block, bit_of_tile(ti, tj));
     Pending& p = pending_[block];
     const Rect r = tile_rect(tile);
     prefetch(tile, d2);
     // Nearest blobs first: each lowers the tile's maximum, and a blob no nearer than that
     // lowers nothing.
-    std::int64_t limit = tile_bound_[tile];
+    std::int64_t limit = tile_bound_[slot];
     order_.clear();
-    for (int a = absorbed_[tile]; a < p.end(); ++a) {
+    for (int a = absorbed_[slot]; a < p.end(); ++a) {
         const std::int64_t g = gap2(p.at(a), r);
         if (g < limit) order_.emplace_back(g, a);
     }
@@ -432,7 +431,7 @@ void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* ch
         // The bound may lie below values not measured yet (see defer()).
         limit = std::min<std::int64_t>(limit, measure(p.at(a).blob, r, limit, d2, changed));
     }
-    tile_bound_[tile] = static_cast<std::int32_t>(limit);
+    tile_bound_[slot] = static_cast<std::int32_t>(limit);
     inexact_[block] &= ~bit;
     made_exact_.push_back(tile);
 }
@@ -451,8 +450,9 @@ void PendingBlocks::compact(int block) {
         // Blobs no nearer to the tile than its bound lower nothing in it.
         const Rect r =
             square_at(br.x0 + (col << kTileShift), br.y0 + (row << kTileShift), kTileShift);
-        int& a = absorbed_[t];
-        while (a < p.end() && gap2(p.at(a), r) >= tile_bound_[t]) ++a;
+        int& a = absorbed_[slot_at(block, bit)];
+        const std::int32_t bound = tile_bound_[slot_at(block, bit)];
+        while (a < p.end() && gap2(p.at(a), r) >= bound) ++a;
         if (a == p.end()) {
             inexact_[block] &= ~(std::uint64_t{1} << bit);
             made_exact_.push_back(t);
@@ -470,8 +470,9 @@ void PendingBlocks::tighten(int block, std::int64_t threshold, std::int32_t* d2,
                             std::vector<int>* changed) {
     bool trusted_any = false;
     for (std::uint64_t bits = untrusted_tiles(block); bits; bits &= bits - 1) {
-        const int t = tile_at(block, std::countr_zero(bits));
-        if (tile_bound_[t] >= threshold) {
+        const int bit = std::countr_zero(bits);
+        const int t = tile_at(block, bit);
+        if (tile_bound_[slot_at(block, bit)] >= threshold) {
             trust_tile(t, d2, changed);
             trusted_any = true;
         }
@@ -479,7 +480,7 @@ void PendingBlocks::tighten(int block, std::int64_t threshold, std::int32_t* d2,
     const std::uint64_t left = untrusted_tiles(block);
     std::int64_t top = 0;
     for (std::uint64_t bits = left; bits; bits &= bits - 1)
-        top = std::max<std::int64_t>(top, tile_bound_[tile_at(block, std::countr_zero(bits))]);
+        top = std::max<std::int64_t>(top, tile_bound_[slot_at(block, std::countr_zero(bits))]);
     untrusted_[block] = left != 0;
     reach_[block] = left != 0 ? std::min(reach_[block], top) : 0;
     update_bound(block);

@@ -46,7 +46,7 @@ class PendingBlocks {
     // after, the block is trusted or its reach is below `threshold`.
     void tighten(int block, std::int64_t threshold, std::int32_t* d2, std::vector<int>* changed);
     // >= every squared distance the tile will hold once measured.
-    std::int32_t tile_bound(int tile) const { return tile_bound_[tile]; }
+    std::int32_t tile_bound(int tile) const { return tile_bound_[slot_of(tile)]; }
     // Tiles that became exact since the last call (a tile trusted since is among them or
     // next to one of them).
     const std::vector<int>& made_exact() const { return made_exact_; }
@@ -126,6 +126,15 @@ class PendingBlocks {
                (tile % tiles_w_ >> (kShift - kTileShift));
     }
     static int bit_of_tile(int ti, int tj) { return ((tj & 7) << 3) | (ti & 7); }
+    // Per-tile data lies block by block, the 64 tiles of a block side by side: deferring and
+    // tightening read a block's tiles together.
+    std::size_t slot_of(int tile) const {
+        const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+        return static_cast<std::size_t>(block_of_tile(tile)) << 6 | bit_of_tile(ti, tj);
+    }
+    static std::size_t slot_at(int block, int bit) {
+        return static_cast<std::size_t>(block) << 6 | static_cast<std::size_t>(bit);
+    }
     bool exact(int ti, int tj) const {
         const int b = (tj >> (kShift - kTileShift)) * blocks_w_ + (ti >> (kShift - kTileShift));
         return ((inexact_[b] >> bit_of_tile(ti, tj)) & 1) == 0;
@@ -173,10 +182,10 @@ class PendingBlocks {
     std::vector<std::uint8_t> in_raised_;  // per block: listed in raised_
     std::vector<int> raised_;
     std::vector<int> made_exact_;
-    // Per tile: above every squared distance it will hold once measured, or equal to the
+    // Per tile slot: above every squared distance it will hold once measured, or equal to the
     // largest; pixels not measured yet may hold more.
     std::vector<std::int32_t> tile_bound_;
-    std::vector<int> absorbed_;  // per inexact tile: the number of its first unmeasured entry
+    std::vector<int> absorbed_;  // per inexact tile slot: the number of its first unmeasured entry
     // Per block: a site near it (-1: none yet) and 4 x its squared distance to the centre. A
     // new blob no nearer than it to every pixel of the block lowers nothing there.
     std::vector<int> witness_;
