@@ -322,7 +322,7 @@ TEST_P(LazyField, IsExactWhereTrustedAndAfterSettling) {
         }
     }
     EXPECT_GT(untrusted_pixels, 0) << "the far field was never left pending";
-    std::vector<int> changed;
+    std::vector<acanthus::detail::TileChange> changed;
     for (int b = 0; b < far.count(); ++b)
         if (!far.trusted(b)) lazy.tighten(b, 0, &changed);
     DistanceField full(w, h, /*with_sites=*/false, GetParam());

@@ -46,11 +46,11 @@ class DistanceField {
     PendingBlocks& far_blocks() { return far_; }
     const PendingBlocks& far_blocks() const { return far_; }
     // Makes the 8 x 8 tile and its 8 neighbours exact; appends lowered pixels to `changed`.
-    void trust_tile(int tile, std::vector<int>* changed) {
+    void trust_tile(int tile, std::vector<TileChange>* changed) {
         far_.trust_tile(tile, dist2_.data(), changed);
     }
     // PendingBlocks::tighten() on this field.
-    void tighten(int block, std::int64_t threshold, std::vector<int>* changed) {
+    void tighten(int block, std::int64_t threshold, std::vector<TileChange>* changed) {
         far_.tighten(block, threshold, dist2_.data(), changed);
     }
 

@@ -305,12 +305,20 @@ void EmptyCircleFinder::update(const std::vector<int>& changed) {
                                                           i);  // pixels left in this tile row
         std::size_t len = 1;
         while (len < room && k + len < n && c[k + len] == p + static_cast<int>(len)) ++len;
-        const int t = (j >> kTileShift) * tiles_w_ + (i >> kTileShift);
-        if (masks_[t].changed == 0) changed_tiles_.push_back(t);
-        masks_[t].changed |= ((std::uint64_t{1} << len) - 1)
-                             << (((j & kMask) << kTileShift) | (i & kMask));
+        mark_changed((j >> kTileShift) * tiles_w_ + (i >> kTileShift),
+                     ((std::uint64_t{1} << len) - 1)
+                         << (((j & kMask) << kTileShift) | (i & kMask)));
         k += len;
     }
+    refresh_changed();
+}
+
+void EmptyCircleFinder::update(const std::vector<TileChange>& changed) {
+    for (const TileChange& c : changed) mark_changed(c.tile, c.pixels);
+    refresh_changed();
+}
+
+void EmptyCircleFinder::refresh_changed() {
     // A changed pixel can change its own state and its 8 neighbours': each tile gathers the
     // pixels next to a change, its own and its neighbours'.
     for (int t : changed_tiles_) {

@@ -11,6 +11,7 @@
 #include "growth/distance_field.hpp"
 #include "growth/exclude_list.hpp"
 #include "growth/max_tree.hpp"
+#include "growth/tile_change.hpp"
 
 namespace acanthus::detail {
 
@@ -40,6 +41,7 @@ class EmptyCircleFinder {
     // distance changed; release() returns candidates blocked by removed exclude points.
     void rebuild();
     void update(const std::vector<int>& changed);
+    void update(const std::vector<TileChange>& changed);  // the same, a tile at a time
     void release(const std::vector<int>& removed_ids);
     void release_all();
     // Trusts every tile of a lazy field (for scans such as best_candidates()).
@@ -111,6 +113,12 @@ class EmptyCircleFinder {
     int bit_of(int pixel) const;
     // Adds pixels of the tile to re-decide at the end of update().
     void mark_near(int tile, std::uint64_t bits);
+    void mark_changed(int tile, std::uint64_t bits) {
+        if (masks_[tile].changed == 0) changed_tiles_.push_back(tile);
+        masks_[tile].changed |= bits;
+    }
+    // update() after marking the changed pixels: re-decides them and the pixels next to them.
+    void refresh_changed();
     void prefetch(int tile) const;               // the field's rows a refresh of the tile reads
     void rescan(int tile);                       // tile maximum from the candidate bits
     void refresh(int tile, std::uint64_t bits);  // re-decides those pixels, then rescans
@@ -146,7 +154,7 @@ class EmptyCircleFinder {
     MaxTree tiles_;
     // Lazy field: per block not trusted, a key above every candidate it may hold; 0 otherwise.
     MaxTree blocks_;
-    std::vector<int> settled_;  // pixels lowered by tighten() and trust_tile()
+    std::vector<TileChange> settled_;  // pixels lowered by tighten() and trust_tile()
     // Per 8 x 8 tile, one bit per pixel (bit 8 * row + column within the tile).
     // A pixel's state is in these masks: candidate, blocked (by an exclude point) or none. A
     // pixel not in state none was decided at its current distance.

@@ -312,7 +312,7 @@ bool PendingBlocks::tile_trusted(int ti, int tj) const {
     return true;
 }
 
-void PendingBlocks::trust_tile(int tile, std::int32_t* d2, std::vector<int>* changed) {
+void PendingBlocks::trust_tile(int tile, std::int32_t* d2, std::vector<TileChange>* changed) {
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
     for (int nj = std::max(0, tj - 1); nj <= std::min(tiles_h_ - 1, tj + 1); ++nj)
         for (int ni = std::max(0, ti - 1); ni <= std::min(tiles_w_ - 1, ti + 1); ++ni)
@@ -327,7 +327,7 @@ void PendingBlocks::prefetch(int tile, const std::int32_t* d2) const {
 }
 
 std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, std::int32_t* d2,
-                                    std::vector<int>* changed) {
+                                    std::uint64_t* lowered_bits) {
     // A tile row is 8 pixels, two vectors of 4 lanes; an edge tile's missing pixels read as 0,
     // which nothing lowers.
     const Blob& b = blobs_[k];
@@ -398,9 +398,7 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
                 } else {
                     for (int l = 0; l < n; ++l) line[l] = v[l >> 2][l & 3];
                 }
-                if (changed)
-                    for (unsigned bits = lowered; bits; bits &= bits - 1)
-                        changed->push_back(j * width_ + r.x0 + std::countr_zero(bits));
+                *lowered_bits |= static_cast<std::uint64_t>(lowered) << (8 * (j - r.y0));
             }
         }
         for (int h = 0; h < 2; ++h) top = v[h] > top ? v[h] : top;
@@ -408,7 +406,7 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
     return std::max({top[0], top[1], top[2], top[3]});
 }
 
-void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* changed) {
+void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<TileChange>* changed) {
     const int block = block_of_tile(tile);
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
     const std::uint64_t bit = std::uint64_t{1} << bit_of_tile(ti, tj);
@@ -426,11 +424,13 @@ void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<int>* ch
         if (g < limit) order_.emplace_back(g, a);
     }
     std::sort(order_.begin(), order_.end());
+    std::uint64_t lowered = 0;
     for (const auto& [g, a] : order_) {
         if (g >= limit) break;
         // The bound may lie below values not measured yet (see defer()).
-        limit = std::min<std::int64_t>(limit, measure(p.at(a).blob, r, limit, d2, changed));
+        limit = std::min<std::int64_t>(limit, measure(p.at(a).blob, r, limit, d2, &lowered));
     }
+    if (changed && lowered) changed->push_back({tile, lowered});
     tile_bound_[slot] = static_cast<std::int32_t>(limit);
     inexact_[block] &= ~bit;
     made_exact_.push_back(tile);
@@ -467,7 +467,7 @@ void PendingBlocks::compact(int block) {
 }
 
 void PendingBlocks::tighten(int block, std::int64_t threshold, std::int32_t* d2,
-                            std::vector<int>* changed) {
+                            std::vector<TileChange>* changed) {
     bool trusted_any = false;
     for (std::uint64_t bits = untrusted_tiles(block); bits; bits &= bits - 1) {
         const int bit = std::countr_zero(bits);

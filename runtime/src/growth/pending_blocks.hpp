@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "growth/lanes.hpp"
+#include "growth/tile_change.hpp"
 
 namespace acanthus::detail {
 
@@ -34,8 +35,8 @@ class PendingBlocks {
     // and the pixels round it.
     bool tile_trusted(int tile) const { return tile_trusted(tile % tiles_w_, tile / tiles_w_); }
     bool tile_trusted(int ti, int tj) const;  // the tile in column ti, row tj
-    // Makes the tile trusted; lowered pixels are appended to `changed`.
-    void trust_tile(int tile, std::int32_t* d2, std::vector<int>* changed);
+    // Makes the tile trusted; lowered pixels are appended to `changed`, a tile at a time.
+    void trust_tile(int tile, std::int32_t* d2, std::vector<TileChange>* changed);
 
     // A block is trusted when all its tiles are.
     bool trusted(int block) const { return !untrusted_[block]; }
@@ -44,7 +45,8 @@ class PendingBlocks {
     std::int64_t reach(int block) const { return reach_[block]; }
     // Trusts every tile of the block that may hold a squared distance of at least `threshold`;
     // after, the block is trusted or its reach is below `threshold`.
-    void tighten(int block, std::int64_t threshold, std::int32_t* d2, std::vector<int>* changed);
+    void tighten(int block, std::int64_t threshold, std::int32_t* d2,
+                 std::vector<TileChange>* changed);
     // >= every squared distance the tile will hold once measured.
     std::int32_t tile_bound(int tile) const { return tile_bound_[slot_of(tile)]; }
     // Tiles that became exact since the last call (a tile trusted since is among them or
@@ -154,13 +156,14 @@ class PendingBlocks {
         const std::int64_t dy = std::max({0, r.y0 - b.y1, b.y0 - r.y1});
         return dx * dx + dy * dy;
     }
-    // Lowers d2 over the tile r to the distances to blob k's sites. Returns the largest squared
-    // distance over r after. `limit`: a bound of r, as tile_bound_ is of a tile.
+    // Lowers d2 over the tile r to the distances to blob k's sites; adds the lowered pixels to
+    // `lowered` (tile bits). Returns the largest squared distance over r after. `limit`: a
+    // bound of r, as tile_bound_ is of a tile.
     std::int32_t measure(int k, const Rect& r, std::int64_t limit, std::int32_t* d2,
-                         std::vector<int>* changed);
+                         std::uint64_t* lowered);
     void prefetch(int tile, const std::int32_t* d2) const;  // the tile's rows of the field
     // Measures the tile's pending blobs, nearest first.
-    void settle_tile(int tile, std::int32_t* d2, std::vector<int>* changed);
+    void settle_tile(int tile, std::int32_t* d2, std::vector<TileChange>* changed);
     // Skips the pending blobs that lower nothing in a tile and releases the blobs every tile
     // of the block has measured.
     void compact(int block);
