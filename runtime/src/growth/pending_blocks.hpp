@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "growth/lanes.hpp"
+#include "growth/max_tree.hpp"
 #include "growth/tile_change.hpp"
 
 namespace acanthus::detail {
@@ -197,6 +198,7 @@ class PendingBlocks {
     static constexpr int kGroupShift = 3;
     int groups_w_ = 0, groups_h_ = 0;
     std::vector<std::int32_t> group_bound_;
+    MaxTree groups_;  // the same bounds, for the largest of all
     std::vector<Blob> blobs_;
     std::vector<int> free_blobs_;                      // ids of released blobs, reused
     std::vector<std::pair<std::int64_t, int>> order_;  // settle_tile() scratch: (gap, entry)
