@@ -3,15 +3,18 @@
 // memory is its own; with the exact Euclidean field (the default), then with the paper's
 // Manhattan MAT (--distance manhattan). Prints a table on stderr and, last, one JSON object
 // with elements per second and peak bytes per buffer pixel at each size and the ratio of cost
-// per element at 4096 px to 1024 px, for each metric.
+// per element at 4096 px to 1024 px, for each metric. Each size is grown --runs times (3 by
+// default), the sizes taking turns so that the machine's drift touches them alike; the run of
+// median time is reported, with the range of all, and every run must grow the same tree.
 //
-//   bench_growth_scale [--sizes 1024,2048,4096] [--euclidean-only]
+//   bench_growth_scale [--sizes 1024,2048,4096] [--euclidean-only] [--runs N]
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <acanthus/growth.hpp>
 #include <acanthus/region.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -34,7 +37,23 @@ struct Result {
     std::uint64_t tree_hash = 0;
     double peak_mb = 0;
     bool ok = false;
+    double fastest = 0, slowest = 0;  // seconds over the runs
 };
+
+// The run of median time of one size and metric, with the range and the largest peak of all;
+// not ok unless every run succeeded with the same tree.
+Result median_of(std::vector<Result> runs) {
+    std::sort(runs.begin(), runs.end(),
+              [](const Result& a, const Result& b) { return a.seconds < b.seconds; });
+    Result r = runs[runs.size() / 2];
+    r.fastest = runs.front().seconds;
+    r.slowest = runs.back().seconds;
+    for (const Result& x : runs) {
+        r.ok = r.ok && x.ok && x.tree_hash == r.tree_hash && x.elements == r.elements;
+        r.peak_mb = std::max(r.peak_mb, x.peak_mb);
+    }
+    return r;
+}
 
 // FNV-1a over ids, parents and the bits of every dot's centre and radius: equal hashes at a
 // size mean the same tree as another build grew.
@@ -118,10 +137,11 @@ std::string json_sizes(const std::vector<Result>& results, acanthus::DistanceMet
         char buf[512];
         std::snprintf(buf, sizeof buf,
                       "%s{\"resolution\":%d,\"elements\":%ld,\"seconds\":%.3f,"
-                      "\"elements_per_second\":%.1f,\"peak_rss_mb\":%.1f,\"bytes_per_pixel\":%.2f,"
-                      "\"tree_hash\":\"%016llx\"}",
+                      "\"elements_per_second\":%.1f,\"elements_per_second_range\":[%.1f,%.1f],"
+                      "\"peak_rss_mb\":%.1f,\"bytes_per_pixel\":%.2f,\"tree_hash\":\"%016llx\"}",
                       json.size() > 1 ? "," : "", r.resolution, r.elements, r.seconds,
-                      r.ok ? r.elements / r.seconds : 0.0, r.peak_mb,
+                      r.ok ? r.elements / r.seconds : 0.0, r.ok ? r.elements / r.slowest : 0.0,
+                      r.ok ? r.elements / r.fastest : 0.0, r.peak_mb,
                       r.ok ? r.peak_mb * 1024 * 1024 / static_cast<double>(r.pixels) : 0.0,
                       static_cast<unsigned long long>(r.tree_hash));
         json += buf;
@@ -136,6 +156,7 @@ int main(int argc, char** argv) {
     using acanthus::DistanceMetric;
     std::vector<int> sizes = {1024, 2048, 4096};
     std::vector<DistanceMetric> metrics = {DistanceMetric::euclidean, DistanceMetric::manhattan};
+    int runs = 3;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
         if (arg == "--sizes" && k + 1 < argc) {
@@ -144,32 +165,43 @@ int main(int argc, char** argv) {
             for (std::string s; std::getline(in, s, ',');) sizes.push_back(std::atoi(s.c_str()));
         } else if (arg == "--euclidean-only") {
             metrics = {DistanceMetric::euclidean};
+        } else if (arg == "--runs" && k + 1 < argc && std::atoi(argv[k + 1]) > 0) {
+            runs = std::atoi(argv[++k]);
         } else {
-            std::fprintf(stderr, "usage: %s [--sizes 1024,2048,4096] [--euclidean-only]\n",
+            std::fprintf(stderr,
+                         "usage: %s [--sizes 1024,2048,4096] [--euclidean-only] [--runs N]\n",
                          argv[0]);
             return 2;
         }
     }
 
     std::vector<Result> results;
-    std::fprintf(stderr, "%-10s %-18s %10s %9s %11s %10s %8s\n", "metric", "panel, resolution",
-                 "elements", "growth", "elements/s", "peak", "B/pixel");
+    std::fprintf(stderr, "%-10s %-18s %10s %9s %11s %17s %10s %8s\n", "metric", "panel, resolution",
+                 "elements", "growth", "elements/s", "(all runs)", "peak", "B/pixel");
     bool ok = true;
-    for (DistanceMetric metric : metrics)
-        for (int size : sizes) {
-            const Result r = run_child(size, metric);
+    for (DistanceMetric metric : metrics) {
+        std::vector<std::vector<Result>> per_size(sizes.size());
+        for (int round = 0; round < runs; ++round)
+            for (std::size_t k = 0; k < sizes.size(); ++k)
+                per_size[k].push_back(run_child(sizes[k], metric));
+        for (std::size_t k = 0; k < sizes.size(); ++k) {
+            const Result r = median_of(per_size[k]);
             ok = ok && r.ok;
             results.push_back(r);
             const std::string name(acanthus::to_string(metric));
             if (!r.ok) {
-                std::fprintf(stderr, "%-10s %d px: the run failed\n", name.c_str(), size);
+                std::fprintf(stderr, "%-10s %d px: a run failed or grew another tree\n",
+                             name.c_str(), sizes[k]);
                 continue;
             }
-            const int side = static_cast<int>(1000.0 * size / 1024 + 0.5);
-            std::fprintf(stderr, "%-10s %5d^2, %5d px %10ld %8.2fs %11.0f %7.0f MB %8.1f\n",
-                         name.c_str(), side, size, r.elements, r.seconds, r.elements / r.seconds,
+            const int side = static_cast<int>(1000.0 * sizes[k] / 1024 + 0.5);
+            std::fprintf(stderr,
+                         "%-10s %5d^2, %5d px %10ld %8.2fs %11.0f %8.0f-%-8.0f %7.0f MB %8.1f\n",
+                         name.c_str(), side, sizes[k], r.elements, r.seconds,
+                         r.elements / r.seconds, r.elements / r.slowest, r.elements / r.fastest,
                          r.peak_mb, r.peak_mb * 1024 * 1024 / static_cast<double>(r.pixels));
         }
+    }
 
     double ratio = -1, manhattan_ratio = -1;
     std::string json = "{\"benchmark\":\"growth-scale\",\"pattern\":\"dots\",\"sizes\":" +
