@@ -140,6 +140,24 @@ bool PendingBlocks::farther_than_witness(const Blob& blob, int witness, const Re
     // Every pixel of r at least as near to the witness (a site) as to the blob: the blob
     // lowers nothing there, now or after the sites r waits for are measured.
     const std::int64_t wi = witness % width_, wj = witness / width_;
+    if (manhattan_) {
+        // City-block distances separate: the largest of |p - witness| - |p - box| over r is the
+        // largest over its columns plus the largest over its rows, each at an end of the
+        // range or at a bend (the witness, the box's sides). No site is nearer than the box.
+        const auto largest = [](int lo, int hi, std::int64_t w, int b0, int b1) {
+            std::int64_t best = std::numeric_limits<std::int64_t>::min();
+            for (const std::int64_t x :
+                 {std::int64_t{lo}, std::int64_t{hi}, w, std::int64_t{b0}, std::int64_t{b1}}) {
+                if (x < lo || x > hi) continue;
+                const std::int64_t gap = std::max<std::int64_t>({0, b0 - x, x - b1});
+                best = std::max(best, std::abs(x - w) - gap);
+            }
+            return best;
+        };
+        return largest(r.x0, r.x1, wi, blob.x0, blob.x1) +
+                   largest(r.y0, r.y1, wj, blob.y0, blob.y1) <=
+               0;
+    }
     const std::int64_t fx = std::max(std::abs(r.x0 - wi), std::abs(r.x1 - wi));
     const std::int64_t fy = std::max(std::abs(r.y0 - wj), std::abs(r.y1 - wj));
     if (fx * fx + fy * fy <= gap2(blob, r)) return true;
@@ -198,9 +216,7 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                     const int b = bj * blocks_w_ + bi;
                     const Rect r = square_at(bi << kShift, bj << kShift, kShift);
                     if (gap2(blob, r) >= bound_[b]) continue;
-                    if (!manhattan_ && witness_[b] >= 0 &&
-                        farther_than_witness(blob, witness_[b], r))
-                        continue;
+                    if (witness_[b] >= 0 && farther_than_witness(blob, witness_[b], r)) continue;
                     // The tiles it may lower: the gap to a tile is separable in tile columns and
                     // rows.
                     // So is the distance from its first site to a tile's farthest pixel: one above
