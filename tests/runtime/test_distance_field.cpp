@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include "growth/distance_field.hpp"
+#include "growth/witness.hpp"
 
 using acanthus::Random;
 using acanthus::detail::DistanceField;
@@ -340,3 +342,42 @@ INSTANTIATE_TEST_SUITE_P(Metrics, LazyField,
                              return info.param == acanthus::DistanceMetric::euclidean ? "Euclidean"
                                                                                       : "Manhattan";
                          });
+
+// The witness test of the lazy field's deferral: when it says a site outranks a box of new
+// sites over a rectangle, no pixel of the rectangle is nearer to a point of the box, in either
+// metric; and it says so often enough to matter.
+TEST(Witness, OutranksOnlyWhenEveryPixelIsAtLeastAsNear) {
+    using acanthus::detail::outranks;
+    using acanthus::detail::PixelBox;
+    for (const auto metric :
+         {acanthus::DistanceMetric::euclidean, acanthus::DistanceMetric::manhattan}) {
+        const auto dist = [&](long dx, long dy) {
+            return metric == acanthus::DistanceMetric::manhattan ? std::abs(dx) + std::abs(dy)
+                                                                 : dx * dx + dy * dy;
+        };
+        Random rng(metric == acanthus::DistanceMetric::euclidean ? 31 : 32);
+        int said = 0;
+        for (int trial = 0; trial < 4000; ++trial) {
+            const int si = static_cast<int>(rng.uniform_int(0, 60));
+            const int sj = static_cast<int>(rng.uniform_int(0, 60));
+            const int bx = static_cast<int>(rng.uniform_int(0, 60));
+            const int by = static_cast<int>(rng.uniform_int(0, 60));
+            const PixelBox box{bx, by, bx + static_cast<int>(rng.uniform_int(0, 6)),
+                               by + static_cast<int>(rng.uniform_int(0, 6))};
+            const int rx = static_cast<int>(rng.uniform_int(0, 60));
+            const int ry = static_cast<int>(rng.uniform_int(0, 60));
+            const PixelBox r{rx, ry, rx + static_cast<int>(rng.uniform_int(0, 15)),
+                             ry + static_cast<int>(rng.uniform_int(0, 15))};
+            if (!outranks(si, sj, box, r, metric)) continue;
+            ++said;
+            for (int y = r.y0; y <= r.y1; ++y)
+                for (int x = r.x0; x <= r.x1; ++x)
+                    for (int v = box.y0; v <= box.y1; ++v)
+                        for (int u = box.x0; u <= box.x1; ++u)
+                            ASSERT_LE(dist(x - si, y - sj), dist(x - u, y - v))
+                                << "trial " << trial << " pixel " << x << "," << y << " site " << u
+                                << "," << v;
+        }
+        EXPECT_GT(said, 200) << "the test never outranks";
+    }
+}

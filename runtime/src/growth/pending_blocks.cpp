@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "growth/tile_masks.hpp"
+#include "growth/witness.hpp"
 
 namespace acanthus::detail {
 
@@ -136,48 +137,6 @@ void PendingBlocks::distrust(int block, const Blob& blob) {
     }
 }
 
-bool PendingBlocks::farther_than_witness(const Blob& blob, int witness, const Rect& r) const {
-    // Every pixel of r at least as near to the witness (a site) as to the blob: the blob
-    // lowers nothing there, now or after the sites r waits for are measured.
-    const std::int64_t wi = witness % width_, wj = witness / width_;
-    if (manhattan_) {
-        // City-block distances separate: the largest of |p - witness| - |p - box| over r is the
-        // largest over its columns plus the largest over its rows, each at an end of the
-        // range or at a bend (the witness, the box's sides). No site is nearer than the box.
-        const auto largest = [](int lo, int hi, std::int64_t w, int b0, int b1) {
-            std::int64_t best = std::numeric_limits<std::int64_t>::min();
-            for (const std::int64_t x :
-                 {std::int64_t{lo}, std::int64_t{hi}, w, std::int64_t{b0}, std::int64_t{b1}}) {
-                if (x < lo || x > hi) continue;
-                const std::int64_t gap = std::max<std::int64_t>({0, b0 - x, x - b1});
-                best = std::max(best, std::abs(x - w) - gap);
-            }
-            return best;
-        };
-        return largest(r.x0, r.x1, wi, blob.x0, blob.x1) +
-                   largest(r.y0, r.y1, wj, blob.y0, blob.y1) <=
-               0;
-    }
-    const std::int64_t fx = std::max(std::abs(r.x0 - wi), std::abs(r.x1 - wi));
-    const std::int64_t fy = std::max(std::abs(r.y0 - wj), std::abs(r.y1 - wj));
-    if (fx * fx + fy * fy <= gap2(blob, r)) return true;
-    // Else: no site of the blob is nearer to a pixel p than |p - centre| - R (R the half
-    // diagonal of its box), and the pixels with |p - centre| - |p - witness| >= R form a convex
-    // set (inside one branch of a hyperbola): testing r's corners is enough.
-    const double cx = 0.5 * (blob.x0 + blob.x1), cy = 0.5 * (blob.y0 + blob.y1);
-    const double bx = blob.x1 - blob.x0, by = blob.y1 - blob.y0;
-    const double R = 0.5 * std::sqrt(bx * bx + by * by);
-    for (const int x : {r.x0, r.x1})
-        for (const int y : {r.y0, r.y1}) {
-            const double ux = x - cx, uy = y - cy;
-            const double vx = static_cast<double>(x - wi), vy = static_cast<double>(y - wj);
-            // A margin far above the rounding of these square roots.
-            if (std::sqrt(ux * ux + uy * uy) - std::sqrt(vx * vx + vy * vy) - R < 1e-6)
-                return false;
-        }
-    return true;
-}
-
 void PendingBlocks::defer(const std::vector<int>& sites) {
     if (sites.empty()) return;
     Blob blob{{}, width_, height_, -1, -1, sites.front(), 0};
@@ -216,7 +175,12 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                     const int b = bj * blocks_w_ + bi;
                     const Rect r = square_at(bi << kShift, bj << kShift, kShift);
                     if (gap2(blob, r) >= bound_[b]) continue;
-                    if (witness_[b] >= 0 && farther_than_witness(blob, witness_[b], r)) continue;
+                    // A site it already holds may outrank the blob over the whole block.
+                    if (witness_[b] >= 0 && outranks(witness_[b] % width_, witness_[b] / width_,
+                                                     {blob.x0, blob.y0, blob.x1, blob.y1}, r,
+                                                     manhattan_ ? DistanceMetric::manhattan
+                                                                : DistanceMetric::euclidean))
+                        continue;
                     // The tiles it may lower: the gap to a tile is separable in tile columns and
                     // rows.
                     // So is the distance from its first site to a tile's farthest pixel: one above

@@ -12,6 +12,7 @@
 #include "growth/lanes.hpp"
 #include "growth/max_tree.hpp"
 #include "growth/tile_change.hpp"
+#include "growth/witness.hpp"
 
 namespace acanthus::detail {
 
@@ -102,9 +103,7 @@ class PendingBlocks {
         int first;           // one of its sites
         int refs;            // blocks holding it pending
     };
-    struct Rect {
-        int x0, y0, x1, y1;  // inclusive
-    };
+    using Rect = PixelBox;
     // A blob deferred to a block, with its bounding box: the gaps to tiles are read in order,
     // without visiting the blobs.
     struct Entry {
@@ -170,7 +169,6 @@ class PendingBlocks {
     void compact(int block);
     void release(int k);
     void distrust(int block, const Blob& blob);
-    bool farther_than_witness(const Blob& blob, int witness, const Rect& r) const;
     std::int32_t max_over(const Rect& r, const std::int32_t* d2) const;
     void update_bound(int block);
     void set_bound(int block, std::int32_t bound);  // of its tiles' bounds, the largest
