@@ -36,7 +36,8 @@ std::pair<Element*, double> Ornament::nearest(Point p, double hint) const {
 }
 
 std::vector<std::pair<Element*, double>> Ornament::nearest_within(Point p, double hint,
-                                                                  double* covered) const {
+                                                                  double* covered,
+                                                                  double likely) const {
     *covered = 0;
     if (elements_.empty() || !p.finite()) return {};
     // Any proxy nearer than the best one found within r has bounds within r too, so the first
@@ -54,7 +55,7 @@ std::vector<std::pair<Element*, double>> Ornament::nearest_within(Point p, doubl
             return hits;
         }
         if (r > reach) break;
-        r *= 4;
+        r = likely > r ? std::min(4 * r, likely) : 4 * r;
     }
     // Elements far outside the region: the general search.
     const auto hit = index_.nearest_entry(p, [&](detail::SpatialIndex::Entry en) {

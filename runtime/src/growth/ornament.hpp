@@ -32,8 +32,10 @@ class Ornament {
     std::pair<Element*, double> nearest(Point p, double hint = 0) const;
     // The same search, returning every element within the radius that found one, by
     // (distance, id), and that radius in `covered` (0 when none did: the nearest alone).
-    std::vector<std::pair<Element*, double>> nearest_within(Point p, double hint,
-                                                            double* covered) const;
+    // `likely`: a radius the nearest element is probably within; the search widens to it
+    // before it widens fourfold.
+    std::vector<std::pair<Element*, double>> nearest_within(Point p, double hint, double* covered,
+                                                            double likely = 0) const;
     // Placed elements within `radius` of p with their distances, by (distance, id).
     std::vector<std::pair<Element*, double>> within(Point p, double radius) const;
 
