@@ -1,0 +1,52 @@
+// Ornament: the nearest-element searches of the growth loop against brute force, with and
+// without the radius the nearest element is likely within.
+#include <gtest/gtest.h>
+
+#include <acanthus/random.hpp>
+#include <acanthus/region.hpp>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "fixtures/dots_pattern.hpp"
+#include "growth/ornament.hpp"
+
+using acanthus::Point;
+using acanthus::detail::Ornament;
+
+TEST(Ornament, NearestWithinMatchesBruteForceWhateverTheLikelyRadius) {
+    const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
+    Ornament ornament(region, 1e-9);
+    acanthus::Random rng(41);
+    std::vector<std::pair<Point, double>> dots;
+    for (int k = 0; k < 300; ++k) {
+        auto d = std::make_unique<dots::dot>();
+        const Point c{rng.uniform(10, 190), rng.uniform(10, 190)};
+        const double r = rng.uniform(0.5, 3);
+        d->p0.set(c, r);
+        ornament.add(std::move(d));
+        dots.emplace_back(c, r);
+    }
+    for (int q = 0; q < 200; ++q) {
+        const Point p{rng.uniform(0, 200), rng.uniform(0, 200)};
+        double nearest = INFINITY;
+        for (const auto& [c, r] : dots)
+            nearest = std::min(nearest, std::max(0.0, std::hypot(p.x - c.x, p.y - c.y) - r));
+        for (const double likely : {0.0, nearest * 0.5, nearest + 1, nearest * 3}) {
+            double covered = -1;
+            const auto hits = ornament.nearest_within(p, 0.5, &covered, likely);
+            ASSERT_FALSE(hits.empty());
+            EXPECT_NEAR(hits.front().second, nearest, 1e-9)
+                << "query " << q << " likely " << likely;
+            // Every element within the covered radius, nearest first.
+            std::size_t within = 0;
+            for (const auto& [c, r] : dots)
+                within += std::max(0.0, std::hypot(p.x - c.x, p.y - c.y) - r) <= covered;
+            EXPECT_EQ(hits.size(), within) << "query " << q << " likely " << likely;
+            // A likely radius the nearest is within is where the search stops.
+            if (likely > 0.5 && likely >= nearest) {
+                EXPECT_LE(covered, likely) << "query " << q;
+            }
+        }
+    }
+}
