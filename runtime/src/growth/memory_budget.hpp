@@ -8,9 +8,10 @@
 
 namespace acanthus::detail {
 
-// Bytes per buffer pixel the incremental engine holds at its peak: occupancy (render buffer
-// and field, 1 + 1), squared distance (4), squared distance to the boundary (4), fill stamps
-// (2), tile masks and maxima (under 1), and room for the pixels the first placements change.
+// Bytes per buffer pixel the incremental engine holds at its peak: the render buffer's
+// occupancy (1), squared distance (4), squared distance to the boundary (4), fill stamps (2),
+// the finder's tile masks (1: 64 bytes a tile), the lazy field's tile bounds and marks (under
+// 1), and room for the ornament and the pixels the first placements change.
 inline constexpr double kGrowthBytesPerPixel = 16;
 
 // Bytes this process may still allocate: the smallest of the memory the system reports
