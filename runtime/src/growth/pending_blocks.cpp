@@ -147,7 +147,6 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
         blob.y0 = std::min(blob.y0, j);
         blob.y1 = std::max(blob.y1, j);
     }
-    const int si = sites.front() % width_, sj = sites.front() / width_;
     int id = -1;
     // Only groups nearer to the blob than the largest bound of all.
     const int reach_all = static_cast<int>(std::sqrt(static_cast<double>(groups_.max()))) + 1;
@@ -170,10 +169,10 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
             const int ix1 = std::min(bx1, (blob.x1 + reach) >> kShift);
             const int jy0 = std::max(by0, (blob.y0 - reach) >> kShift);
             const int jy1 = std::min(by1, (blob.y1 + reach) >> kShift);
-            for (int bj = jy0; bj <= jy1; ++bj) {
+            for (int bj = jy0; bj <= jy1; ++bj)
                 for (int bi = ix0; bi <= ix1; ++bi) {
                     const int b = bj * blocks_w_ + bi;
-                    const Rect r = square_at(bi << kShift, bj << kShift, kShift);
+                    const Rect r = block_rect(b);
                     if (gap2(blob, r) >= bound_[b]) continue;
                     // A site it already holds may outrank the blob over the whole block.
                     if (witness_[b] >= 0 && outranks(witness_[b] % width_, witness_[b] / width_,
@@ -181,113 +180,120 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
                                                      manhattan_ ? DistanceMetric::manhattan
                                                                 : DistanceMetric::euclidean))
                         continue;
-                    // The tiles it may lower: the gap to a tile is separable in tile columns and
-                    // rows.
-                    // So is the distance from its first site to a tile's farthest pixel: one above
-                    // it bounds the tile once the blob is measured (a blob exactly as near as a
-                    // bound may still be a pixel's nearest, and bounds are strict limits for the
-                    // blobs settle_tile() and measure() skip).
-                    std::int32_t gx[8], gy[8], fx[8],
-                        fy[8];  // squares of grid sizes fit in 32 bits
-                    for (int c = 0; c < 8; ++c) {
-                        const int x0 = r.x0 + (c << kTileShift), x1 = x0 + (1 << kTileShift) - 1;
-                        const std::int32_t dx = std::max({0, x0 - blob.x1, blob.x0 - x1});
-                        const std::int32_t ex =
-                            std::max(std::abs(x0 - si), std::abs(std::min(x1, width_ - 1) - si));
-                        const int y0 = r.y0 + (c << kTileShift), y1 = y0 + (1 << kTileShift) - 1;
-                        const std::int32_t dy = std::max({0, y0 - blob.y1, blob.y0 - y1});
-                        const std::int32_t ey =
-                            std::max(std::abs(y0 - sj), std::abs(std::min(y1, height_ - 1) - sj));
-                        gx[c] = dx * dx;
-                        gy[c] = dy * dy;
-                        fx[c] = manhattan_ ? ex : ex * ex;
-                        fy[c] = manhattan_ ? ey : ey * ey;
-                    }
-                    std::uint64_t lower = 0;
-                    bool capped = false;
-                    std::int32_t top = 0;
-                    const int cols = std::min(8, tiles_w_ - (bi << 3));
-                    const int rows = std::min(8, tiles_h_ - (bj << 3));
-                    std::int32_t* bound = tile_bound_.data() + slot_at(b, 0);
-                    for (int row = 0; row < rows; ++row, bound += 8) {
-                        std::uint64_t bits = 0;
-                        for (int c = 0; c < cols; ++c) {
-                            bits |= static_cast<std::uint64_t>(gx[c] + gy[row] < bound[c]) << c;
-                            const std::int32_t far =
-                                (manhattan_ ? (fx[c] + fy[row]) * (fx[c] + fy[row])
-                                            : fx[c] + fy[row]) +
-                                1;
-                            capped |= far < bound[c];
-                            bound[c] = std::min(bound[c], far);
-                            top = std::max(top, bound[c]);
-                        }
-                        lower |= bits << (8 * row);
-                    }
-                    if (capped) set_bound(b, top);
+                    const std::uint64_t lower = cap_tiles(b, blob);
                     if (lower == 0) continue;
-                    if (id < 0) {
-                        if (!free_blobs_.empty()) {
-                            id = free_blobs_.back();
-                            free_blobs_.pop_back();
-                        } else {
-                            id = static_cast<int>(blobs_.size());
-                            blobs_.emplace_back();
-                        }
-                        // By column, then row: (column, row) in one integer each.
-                        sorted_.clear();
-                        for (int p : sites)
-                            sorted_.push_back(static_cast<std::int64_t>(p % width_) << 32 |
-                                              p / width_);
-                        std::sort(sorted_.begin(), sorted_.end());
-                        for (const std::int64_t key : sorted_) {
-                            const int c = static_cast<int>(key >> 32);
-                            const int row = static_cast<int>(key & 0xffffffff);
-                            if (!blob.runs.empty() && blob.runs.back().column == c &&
-                                blob.runs.back().hi + 1 == row)
-                                blob.runs.back().hi = static_cast<std::int16_t>(row);
-                            else
-                                blob.runs.push_back({static_cast<std::int16_t>(c),
-                                                     static_cast<std::int16_t>(row),
-                                                     static_cast<std::int16_t>(row)});
-                        }
-                        blobs_[id] = std::move(blob);  // its box stays readable for the tests above
-                    }
-                    Pending& p = pending_[b];
-                    // Tiles that were exact wait from this entry on; the others keep their place.
-                    for (std::uint64_t bits = lower & ~inexact_[b]; bits; bits &= bits - 1)
-                        absorbed_[slot_at(b, std::countr_zero(bits))] = p.end();
-                    inexact_[b] |= lower;
-                    p.entries.push_back({id, static_cast<std::int16_t>(blobs_[id].x0),
-                                         static_cast<std::int16_t>(blobs_[id].y0),
-                                         static_cast<std::int16_t>(blobs_[id].x1),
-                                         static_cast<std::int16_t>(blobs_[id].y1)});
-                    ++blobs_[id].refs;
-                    // The tiles it may lower are no longer trusted, nor the tiles round them.
-                    distrust(b, blobs_[id]);
-                    // The site nearest to the block's centre is its best witness.
-                    {
-                        const std::int64_t cx = 2 * si - (r.x0 + r.x1), cy = 2 * sj - (r.y0 + r.y1);
-                        const std::int64_t dc = cx * cx + cy * cy;
-                        if (witness_[b] < 0 || dc < witness_d2_[b]) {
-                            witness_[b] = sites.front();
-                            witness_d2_[b] = dc;
-                        }
-                    }
-                    const bool left = bi > 0 && (lower & tile_masks::kColumn0);
-                    const bool right = bi < blocks_w_ - 1 && (lower & tile_masks::kColumn7);
-                    const bool up = bj > 0 && (lower & tile_masks::kRow0);
-                    const bool down = bj < blocks_h_ - 1 && (lower & tile_masks::kRow7);
-                    if (left) distrust(b - 1, blobs_[id]);
-                    if (right) distrust(b + 1, blobs_[id]);
-                    if (up) distrust(b - blocks_w_, blobs_[id]);
-                    if (down) distrust(b + blocks_w_, blobs_[id]);
-                    if (left && up && (lower & 1)) distrust(b - blocks_w_ - 1, blobs_[id]);
-                    if (right && up && (lower & 0x80)) distrust(b - blocks_w_ + 1, blobs_[id]);
-                    if (left && down && (lower >> 56 & 1)) distrust(b + blocks_w_ - 1, blobs_[id]);
-                    if (right && down && (lower >> 63)) distrust(b + blocks_w_ + 1, blobs_[id]);
+                    if (id < 0) id = store(blob, sites);  // `blob` keeps its box for the tests
+                    hold(b, id, lower);
                 }
-            }
         }
+}
+
+std::uint64_t PendingBlocks::cap_tiles(int block, const Blob& blob) {
+    // The tiles it may lower: the gap to a tile is separable in tile columns and rows. So is
+    // the distance from its first site to a tile's farthest pixel: one above it bounds the
+    // tile once the blob is measured (a blob exactly as near as a bound may still be a
+    // pixel's nearest, and bounds are strict limits for the blobs settle_tile() and measure()
+    // skip).
+    const Rect r = block_rect(block);
+    const int si = blob.first % width_, sj = blob.first / width_;
+    std::int32_t gx[8], gy[8], fx[8], fy[8];  // squares of grid sizes fit in 32 bits
+    for (int c = 0; c < 8; ++c) {
+        const int x0 = r.x0 + (c << kTileShift), x1 = x0 + (1 << kTileShift) - 1;
+        const std::int32_t dx = std::max({0, x0 - blob.x1, blob.x0 - x1});
+        const std::int32_t ex =
+            std::max(std::abs(x0 - si), std::abs(std::min(x1, width_ - 1) - si));
+        const int y0 = r.y0 + (c << kTileShift), y1 = y0 + (1 << kTileShift) - 1;
+        const std::int32_t dy = std::max({0, y0 - blob.y1, blob.y0 - y1});
+        const std::int32_t ey =
+            std::max(std::abs(y0 - sj), std::abs(std::min(y1, height_ - 1) - sj));
+        gx[c] = dx * dx;
+        gy[c] = dy * dy;
+        fx[c] = manhattan_ ? ex : ex * ex;
+        fy[c] = manhattan_ ? ey : ey * ey;
+    }
+    std::uint64_t lower = 0;
+    bool capped = false;
+    std::int32_t top = 0;
+    const int bi = block % blocks_w_, bj = block / blocks_w_;
+    const int cols = std::min(8, tiles_w_ - (bi << 3));
+    const int rows = std::min(8, tiles_h_ - (bj << 3));
+    std::int32_t* bound = tile_bound_.data() + slot_at(block, 0);
+    for (int row = 0; row < rows; ++row, bound += 8) {
+        std::uint64_t bits = 0;
+        for (int c = 0; c < cols; ++c) {
+            bits |= static_cast<std::uint64_t>(gx[c] + gy[row] < bound[c]) << c;
+            const std::int32_t far =
+                (manhattan_ ? (fx[c] + fy[row]) * (fx[c] + fy[row]) : fx[c] + fy[row]) + 1;
+            capped |= far < bound[c];
+            bound[c] = std::min(bound[c], far);
+            top = std::max(top, bound[c]);
+        }
+        lower |= bits << (8 * row);
+    }
+    if (capped) set_bound(block, top);
+    return lower;
+}
+
+int PendingBlocks::store(Blob& blob, const std::vector<int>& sites) {
+    int id;
+    if (!free_blobs_.empty()) {
+        id = free_blobs_.back();
+        free_blobs_.pop_back();
+    } else {
+        id = static_cast<int>(blobs_.size());
+        blobs_.emplace_back();
+    }
+    // By column, then row: (column, row) in one integer each.
+    sorted_.clear();
+    for (int p : sites) sorted_.push_back(static_cast<std::int64_t>(p % width_) << 32 | p / width_);
+    std::sort(sorted_.begin(), sorted_.end());
+    for (const std::int64_t key : sorted_) {
+        const int c = static_cast<int>(key >> 32);
+        const int row = static_cast<int>(key & 0xffffffff);
+        if (!blob.runs.empty() && blob.runs.back().column == c && blob.runs.back().hi + 1 == row)
+            blob.runs.back().hi = static_cast<std::int16_t>(row);
+        else
+            blob.runs.push_back({static_cast<std::int16_t>(c), static_cast<std::int16_t>(row),
+                                 static_cast<std::int16_t>(row)});
+    }
+    blobs_[id] = std::move(blob);
+    return id;
+}
+
+void PendingBlocks::hold(int block, int id, std::uint64_t lower) {
+    const Blob& blob = blobs_[id];
+    Pending& p = pending_[block];
+    // Tiles that were exact wait from this entry on; the others keep their place.
+    for (std::uint64_t bits = lower & ~inexact_[block]; bits; bits &= bits - 1)
+        absorbed_[slot_at(block, std::countr_zero(bits))] = p.end();
+    inexact_[block] |= lower;
+    p.entries.push_back({id, static_cast<std::int16_t>(blob.x0), static_cast<std::int16_t>(blob.y0),
+                         static_cast<std::int16_t>(blob.x1), static_cast<std::int16_t>(blob.y1)});
+    ++blobs_[id].refs;
+    // The tiles it may lower are no longer trusted, nor the tiles round them.
+    distrust(block, blob);
+    // The site nearest to the block's centre is its best witness.
+    const Rect r = block_rect(block);
+    const int si = blob.first % width_, sj = blob.first / width_;
+    const std::int64_t cx = 2 * si - (r.x0 + r.x1), cy = 2 * sj - (r.y0 + r.y1);
+    const std::int64_t dc = cx * cx + cy * cy;
+    if (witness_[block] < 0 || dc < witness_d2_[block]) {
+        witness_[block] = blob.first;
+        witness_d2_[block] = dc;
+    }
+    const int bi = block % blocks_w_, bj = block / blocks_w_;
+    const bool left = bi > 0 && (lower & tile_masks::kColumn0);
+    const bool right = bi < blocks_w_ - 1 && (lower & tile_masks::kColumn7);
+    const bool up = bj > 0 && (lower & tile_masks::kRow0);
+    const bool down = bj < blocks_h_ - 1 && (lower & tile_masks::kRow7);
+    if (left) distrust(block - 1, blob);
+    if (right) distrust(block + 1, blob);
+    if (up) distrust(block - blocks_w_, blob);
+    if (down) distrust(block + blocks_w_, blob);
+    if (left && up && (lower & 1)) distrust(block - blocks_w_ - 1, blob);
+    if (right && up && (lower & 0x80)) distrust(block - blocks_w_ + 1, blob);
+    if (left && down && (lower >> 56 & 1)) distrust(block + blocks_w_ - 1, blob);
+    if (right && down && (lower >> 63)) distrust(block + blocks_w_ + 1, blob);
 }
 
 void PendingBlocks::release(int k) {

@@ -167,6 +167,12 @@ class PendingBlocks {
     // Skips the pending blobs that lower nothing in a tile and releases the blobs every tile
     // of the block has measured.
     void compact(int block);
+    // defer(), block by block: the tiles of the block the blob may lower (bits), capping the
+    // bounds of the tiles it reaches; the blob's runs kept under a new id; the blob pending in
+    // the block for those tiles.
+    std::uint64_t cap_tiles(int block, const Blob& blob);
+    int store(Blob& blob, const std::vector<int>& sites);
+    void hold(int block, int id, std::uint64_t lower);
     void release(int k);
     void distrust(int block, const Blob& blob);
     std::int32_t max_over(const Rect& r, const std::int32_t* d2) const;
