@@ -211,11 +211,11 @@ std::optional<EmptyCircle> GrowthEngine::Impl::find() {
 std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     Circle c = found.circle;
     // The raster radius is within about 1.5 pixels below the exact one; iterate() wants the
-    // elements within epsilon of the exact circle too.
-    // The nearest obstacle pixel's centre is at most the field's distance away (city-block
-    // distances are longer still); an element there is within about a pixel more. The search
-    // widens to that before it widens fourfold: with the Manhattan metric the raster circle
-    // is ~0.7 of the exact one, and fourfold would gather some 16 times the elements needed.
+    // elements within epsilon of the exact circle too. The nearest obstacle pixel's centre is
+    // at most the field's distance away (city-block distances are longer still), an element
+    // there about a pixel more: the search widens to that before it widens fourfold (with the
+    // Manhattan metric the raster circle is ~0.7 of the exact one, and fourfold would gather
+    // some 16 times the elements needed).
     const double likely =
         (std::sqrt(static_cast<double>(found.d2)) + 1.5) * raster.grid().pixel + epsilon;
     near_goal = ornament.nearest_within(c.center, c.radius + 2 * raster.grid().pixel + epsilon,
