@@ -133,7 +133,7 @@ void EmptyCircleFinder::rescan(int tile) {
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
     const int i0 = ti << kTileShift, j0 = tj << kTileShift;
     // A lazy tile's bound may be below distances it has not measured yet: those are stale.
-    const std::int32_t bound = field_.lazy() ? field_.far_blocks().tile_bound(tile)
+    const std::int32_t bound = field_.lazy() ? field_.far_blocks().tile_bound(ti, tj)
                                              : std::numeric_limits<std::int32_t>::max();
     Key best = 0;
     for (std::uint64_t bits = masks_[tile].candidates; bits; bits &= bits - 1) {
@@ -145,7 +145,7 @@ void EmptyCircleFinder::rescan(int tile) {
     // The tree's leaf lies far from the masks: touched only when the key moves.
     if (masks_[tile].key == best) return;
     masks_[tile].key = best;
-    tiles_.set(slot_of(tile), best);
+    tiles_.set(slot_at(ti, tj), best);
 }
 
 template <bool kInside>

@@ -39,7 +39,7 @@ void PendingBlocks::reset(int width, int height, const std::int32_t* d2, Distanc
     witness_d2_.assign(n, 0);
     tile_bound_.assign(n << 6, 0);
     for (int t = 0; t < tiles_w_ * tiles_h_; ++t)
-        tile_bound_[slot_of(t)] = max_over(tile_rect(t), d2);
+        tile_bound_[slot_of(t % tiles_w_, t / tiles_w_)] = max_over(tile_rect(t), d2);
     groups_w_ = ((blocks_w_ - 1) >> kGroupShift) + 1;
     groups_h_ = ((blocks_h_ - 1) >> kGroupShift) + 1;
     group_bound_.assign(static_cast<std::size_t>(groups_w_) * groups_h_, 0);
@@ -303,7 +303,7 @@ void PendingBlocks::release(int k) {
 }
 
 bool PendingBlocks::tile_trusted(int ti, int tj) const {
-    const int b = (tj >> (kShift - kTileShift)) * blocks_w_ + (ti >> (kShift - kTileShift));
+    const int b = block_at(ti, tj);
     if (!untrusted_[b]) return true;  // distrust() marks the blocks round a lowered tile too
     const int c = ti & 7, r = tj & 7;
     if (c > 0 && c < 7 && r > 0 && r < 7)  // its 3 x 3 tiles within the block
@@ -409,8 +409,8 @@ std::int32_t PendingBlocks::measure(int k, const Rect& r, std::int64_t limit, st
 }
 
 void PendingBlocks::settle_tile(int tile, std::int32_t* d2, std::vector<TileChange>* changed) {
-    const int block = block_of_tile(tile);
     const int ti = tile % tiles_w_, tj = tile / tiles_w_;
+    const int block = block_at(ti, tj);
     const std::uint64_t bit = std::uint64_t{1} << bit_of_tile(ti, tj);
     if (!(inexact_[block] & bit)) return;
     const std::size_t slot = slot_at(block, bit_of_tile(ti, tj));

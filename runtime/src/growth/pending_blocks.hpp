@@ -50,7 +50,8 @@ class PendingBlocks {
     void tighten(int block, std::int64_t threshold, std::int32_t* d2,
                  std::vector<TileChange>* changed);
     // >= every squared distance the tile will hold once measured.
-    std::int32_t tile_bound(int tile) const { return tile_bound_[slot_of(tile)]; }
+    std::int32_t tile_bound(int tile) const { return tile_bound(tile % tiles_w_, tile / tiles_w_); }
+    std::int32_t tile_bound(int ti, int tj) const { return tile_bound_[slot_of(ti, tj)]; }
     // Tiles that became exact since the last call (a tile trusted since is among them or
     // next to one of them).
     const std::vector<int>& made_exact() const { return made_exact_; }
@@ -123,23 +124,21 @@ class PendingBlocks {
     Rect square_at(int x0, int y0, int shift) const;
     Rect block_rect(int block) const;
     Rect tile_rect(int tile) const;
-    int block_of_tile(int tile) const {
-        return (tile / tiles_w_ >> (kShift - kTileShift)) * blocks_w_ +
-               (tile % tiles_w_ >> (kShift - kTileShift));
+    // The block of the tile in column ti, row tj.
+    int block_at(int ti, int tj) const {
+        return (tj >> (kShift - kTileShift)) * blocks_w_ + (ti >> (kShift - kTileShift));
     }
     static int bit_of_tile(int ti, int tj) { return ((tj & 7) << 3) | (ti & 7); }
     // Per-tile data lies block by block, the 64 tiles of a block side by side: deferring and
     // tightening read a block's tiles together.
-    std::size_t slot_of(int tile) const {
-        const int ti = tile % tiles_w_, tj = tile / tiles_w_;
-        return static_cast<std::size_t>(block_of_tile(tile)) << 6 | bit_of_tile(ti, tj);
+    std::size_t slot_of(int ti, int tj) const {
+        return slot_at(block_at(ti, tj), bit_of_tile(ti, tj));
     }
     static std::size_t slot_at(int block, int bit) {
         return static_cast<std::size_t>(block) << 6 | static_cast<std::size_t>(bit);
     }
     bool exact(int ti, int tj) const {
-        const int b = (tj >> (kShift - kTileShift)) * blocks_w_ + (ti >> (kShift - kTileShift));
-        return ((inexact_[b] >> bit_of_tile(ti, tj)) & 1) == 0;
+        return ((inexact_[block_at(ti, tj)] >> bit_of_tile(ti, tj)) & 1) == 0;
     }
     // The tiles of the block (bits) that exist: a block at the grid's edge may have fewer.
     std::uint64_t tiles_in(int block) const;
