@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "growth/pixel_cover.hpp"
+#include "field/pixel_cover.hpp"
 
 namespace acanthus::dartfill {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "container.hpp"
-#include "growth/distance_field.hpp"
+#include "field/distance_field.hpp"
 #include "layout.hpp"
 
 namespace acanthus::dartfill {

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "growth/distance_field.hpp"
-#include "growth/witness.hpp"
+#include "field/distance_field.hpp"
+#include "field/witness.hpp"
 
 using acanthus::Random;
 using acanthus::detail::DistanceField;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "growth/empty_circle_finder.hpp"
+#include "field/empty_circle_finder.hpp"
 
 using acanthus::Circle;
 using acanthus::GridFrame;

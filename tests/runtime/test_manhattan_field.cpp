@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "growth/distance_field.hpp"
+#include "field/distance_field.hpp"
 
 using acanthus::DistanceMetric;
 using acanthus::Random;

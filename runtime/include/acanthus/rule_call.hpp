@@ -3,6 +3,7 @@
 
 #include <acanthus/pattern.hpp>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace acanthus {
@@ -26,6 +27,7 @@ class RuleCall {
     template <class T>
     T* make_static() {
         T* e = new T;
+        created_[e] = Role::static_child;
         statics_.push_back(e);
         return e;
     }
@@ -52,7 +54,10 @@ class RuleCall {
     RuleCall* previous_;
     std::vector<Element*> statics_;
     std::vector<Element*> dynamics_;
-    std::vector<void*> created_;  // raw allocations made through Element::operator new
+    // Raw allocations made through Element::operator new and what each has become: a body may
+    // create hundreds of thousands (a library's whole arrangement), so no list is searched.
+    enum class Role : unsigned char { created, static_child, dynamic_child };
+    std::unordered_map<void*, Role> created_;
 };
 
 }  // namespace acanthus

@@ -63,6 +63,21 @@ void SpatialIndex::insert(int element, int proxy, Rect bounds) {
     tree_->rtree.insert(Value(to_box(bounds), Entry{element, proxy}));
 }
 
+void SpatialIndex::insert_all(const std::vector<std::pair<Entry, Rect>>& entries) {
+    for (const auto& [entry, bounds] : entries) check_bounds(entry, bounds);
+    // Below this many, one insertion at a time costs less than packing the whole tree again.
+    constexpr std::size_t kPackFrom = 64;
+    if (entries.size() < kPackFrom || entries.size() < tree_->rtree.size()) {
+        for (const auto& [entry, bounds] : entries)
+            tree_->rtree.insert(Value(to_box(bounds), entry));
+        return;
+    }
+    std::vector<Value> values(tree_->rtree.begin(), tree_->rtree.end());
+    values.reserve(values.size() + entries.size());
+    for (const auto& [entry, bounds] : entries) values.emplace_back(to_box(bounds), entry);
+    tree_->rtree = bgi::rtree<Value, bgi::quadratic<16>>(values);
+}
+
 void SpatialIndex::clear() { tree_->rtree.clear(); }
 
 std::size_t SpatialIndex::size() const { return tree_->rtree.size(); }

@@ -36,6 +36,9 @@ class SpatialIndex {
 
     // Throws std::invalid_argument for non-finite or inverted bounds.
     void insert(int element, int proxy, Rect bounds);
+    // Inserts all the entries; as many as the index holds already or more, it is packed anew
+    // from the old and the new entries at once. Throws as insert() does, inserting nothing.
+    void insert_all(const std::vector<std::pair<Entry, Rect>>& entries);
     void clear();
     std::size_t size() const;
 

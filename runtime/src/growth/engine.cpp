@@ -19,14 +19,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "growth/distance_field.hpp"
-#include "growth/distinct_circles.hpp"
-#include "growth/empty_circle_finder.hpp"
+#include "field/circle_source.hpp"
+#include "field/distinct_circles.hpp"
+#include "field/memory_budget.hpp"
+#include "field/raster_buffer.hpp"
 #include "growth/engine_environment.hpp"
 #include "growth/exclude_list.hpp"
-#include "growth/memory_budget.hpp"
 #include "growth/ornament.hpp"
-#include "growth/raster_buffer.hpp"
 #include "pattern/running_body.hpp"
 
 namespace acanthus {
@@ -66,27 +65,31 @@ struct GrowthEngine::Impl {
           region(r),
           options(std::move(o)),
           raster(region, options.resolution),
-          field(raster.grid().width, raster.grid().height, /*with_sites=*/false, options.distance),
           epsilon(options.epsilon < 0 ? 2 * raster.grid().pixel : options.epsilon),
           min_radius(options.min_radius < 0 ? raster.grid().pixel : options.min_radius),
-          finder(field, raster.grid(), min_radius),
+          circles(make_source()),
           ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
           env(region, ornament, exclude, options.rng_seed) {
-        // The incremental engine needs exact distances only where they may decide C; below
-        // options.lazy_field_pixels the eager field is as fast (docs/engine.md, "Scale").
-        const long long pixels = static_cast<long long>(raster.grid().width) * raster.grid().height;
-        field.set_lazy(!options.reference_engine && pixels >= options.lazy_field_pixels);
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
     }
 
+    std::unique_ptr<CircleSource> make_source() const {
+        const CircleSourceOptions o{options.distance, min_radius, options.lazy_field_pixels};
+        return options.reference_engine ? reference_circle_source(raster, o)
+                                        : incremental_circle_source(raster, o);
+    }
     std::vector<Point> default_seeds() const;
     void place_seeds();
     void grow();
     std::optional<EmptyCircle> find();
     std::optional<Circle> refine(const EmptyCircle& found);
     std::optional<Circle> find_goal();
+    bool can_parent(const Element& e) const {
+        return !e.sterile && rules_by_parent.count(&e.type()) != 0;
+    }
+    bool any_parent_left();
     void iterate(const Circle& goal);
     void commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
     void sync_exclude_clears();
@@ -96,21 +99,22 @@ struct GrowthEngine::Impl {
     Region region;
     GrowthOptions options;
     RasterBuffer raster;
-    DistanceField field;
     double epsilon;
     double min_radius;
-    EmptyCircleFinder finder;
+    std::unique_ptr<CircleSource> circles;
     ExcludeList exclude;
     Ornament ornament;
     GrowthEnvironment env;
     std::map<const ElementType*, std::vector<int>> rules_by_parent;
     GrowthStats stats;
 
-    bool field_live = false;  // the field reflects the buffer (incremental engine)
-    bool field_stale = true;  // the buffer changed since the last compute() (reference engine)
     long seen_clears = 0;
+    // Placed elements a rule may still be invoked on (can_parent), counted as they change
+    // through the loop; a body that changes other elements makes it a guess that
+    // any_parent_left() checks when it reaches 0.
+    long parents_left = 0;
     bool ran = false;
-    std::vector<int> fresh, changed;
+    std::vector<int> fresh;
     // The elements refine() found near the goal's centre, by (distance, id), within this radius.
     std::vector<std::pair<Element*, double>> near_goal;
     double near_goal_radius = 0;
@@ -128,17 +132,14 @@ void GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
         child->parent = parent;
         child->depth = parent ? parent->depth + 1 : 0;
         child->children = 0;
-        Element& e = ornament.add(std::move(child));
-        raster.add_element(e, fresh);
     }
-    if (parent) parent->children += static_cast<int>(children.size());
-    if (field_live && !options.reference_engine) {
-        changed.clear();
-        field.add_sites(fresh, ObstacleKind::element, &changed);
-        finder.update(changed);
-    } else if (!fresh.empty()) {
-        field_stale = true;
+    const std::size_t count = children.size();
+    for (Element* e : ornament.add_all(std::move(children))) {
+        raster.add_element(*e, fresh);
+        if (can_parent(*e)) ++parents_left;
     }
+    if (parent) parent->children += static_cast<int>(count);
+    circles->add_sites(fresh, count);
 }
 
 // One seed per part of the region (an outer loop with its holes) at the centre of the part's
@@ -183,26 +184,18 @@ void GrowthEngine::Impl::place_seeds() {
         one.push_back(std::move(e));
         commit(std::move(one), nullptr);
     }
-    field.compute(raster.occupancy());
-    field_stale = false;
-    field_live = true;
-    if (!options.reference_engine) finder.rebuild();
+    circles->start();
 }
 
 void GrowthEngine::Impl::sync_exclude_clears() {
     if (exclude.clear_count() == seen_clears) return;
     seen_clears = exclude.clear_count();
-    if (!options.reference_engine) finder.release_all();
+    circles->release_all();
 }
 
 std::optional<EmptyCircle> GrowthEngine::Impl::find() {
     sync_exclude_clears();
-    if (!options.reference_engine) return finder.find(exclude);
-    if (field_stale) {
-        field.compute(raster.occupancy());
-        field_stale = false;
-    }
-    return finder.find_by_scan(exclude);
+    return circles->find(exclude);
 }
 
 // The chosen circle, grown to the exact distance from its centre to the nearest element (the
@@ -224,18 +217,28 @@ std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     const double r = near_goal.front().second;
     if (!std::isfinite(r)) return std::nullopt;
     const double boundary_floor =
-        finder.radius_pixels(field.boundary_squared_distance(found.pixel)) * raster.grid().pixel;
+        circles->boundary_radius_pixels(found.pixel) * raster.grid().pixel;
     if (boundary_floor < r && region.distance_to_boundary(c.center) <= r) return std::nullopt;
     c.radius = r;
     return c;
 }
 
+bool GrowthEngine::Impl::any_parent_left() {
+    if (parents_left > 0) return true;
+    for (const Element* e : ornament.view())
+        if (can_parent(*e)) ++parents_left;
+    return parents_left > 0;
+}
+
 std::optional<Circle> GrowthEngine::Impl::find_goal() {
+    // With no element left that a rule may be invoked on, every circle would only join the
+    // exclude list: growth is over.
+    if (!any_parent_left()) return std::nullopt;
     for (;;) {
         const std::optional<EmptyCircle> found = find();
         if (!found) return std::nullopt;
         if (const std::optional<Circle> goal = refine(*found)) return goal;
-        finder.discard(*found);
+        circles->discard(*found);
     }
 }
 
@@ -282,11 +285,8 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         frame.iteration = stats.iterations;
         frame.grid = raster.grid();
         frame.occupancy = raster.occupancy();
-        std::vector<Circle> circles;
-        if (!options.reference_engine) finder.settle_all();  // the scan reads every pixel
-        for (int p : finder.best_candidates(kDebugCandidates))
-            circles.push_back(finder.circle_of(p));
-        for (const Circle& c : detail::distinct_circles(std::move(circles)))
+        for (const Circle& c :
+             detail::distinct_circles(circles->candidate_circles(kDebugCandidates)))
             (exclude.any_inside(c) ? frame.excluded : frame.eligible).push_back(c);
         frame.chosen = goal;
         frame.candidates.assign(parents.begin(), parents.end());
@@ -298,6 +298,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
     for (Element* parent : parents) {
         const auto rules = rules_by_parent.find(&parent->type());
         if (rules == rules_by_parent.end()) continue;
+        const bool could_parent = !parent->sterile;
         for (int r : rules->second) {
             if (parent->sterile) break;  // a failed rule may have made it sterile
             const RuleInfo& rule = pattern.rules[static_cast<std::size_t>(r)];
@@ -318,13 +319,14 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
             }
             ++stats.rules[static_cast<std::size_t>(r)].failures;
         }
+        if (could_parent && parent->sterile) --parents_left;
         if (success) break;
     }
 
     if (success) {
         std::vector<int> removed;
         exclude.remove_within(goal.center, epsilon, &removed);
-        if (!options.reference_engine) finder.release(removed);
+        circles->release(removed);
     } else {
         exclude.add(goal.center);
     }

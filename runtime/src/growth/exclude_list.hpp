@@ -8,9 +8,11 @@
 #include <memory>
 #include <vector>
 
+#include "field/circle_blocker.hpp"
+
 namespace acanthus::detail {
 
-class ExcludeList {
+class ExcludeList final : public CircleBlocker {
   public:
     ExcludeList();
     ~ExcludeList();
@@ -22,6 +24,7 @@ class ExcludeList {
     // Id of a point strictly inside the circle (distance < radius), or -1 when there is none.
     int find_inside(const Circle& c) const;
     bool any_inside(const Circle& c) const { return find_inside(c) >= 0; }
+    int blocker_inside(const Circle& c) const override { return find_inside(c); }
     // Removes every point within `epsilon` of p (distance <= epsilon), appending their ids to
     // `removed` when it is not null.
     void remove_within(Point p, double epsilon, std::vector<int>* removed);

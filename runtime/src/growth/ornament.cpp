@@ -21,6 +21,24 @@ Element& Ornament::add(std::unique_ptr<Element> e) {
     return *elements_.back();
 }
 
+std::vector<Element*> Ornament::add_all(std::vector<std::unique_ptr<Element>> elements) {
+    std::vector<std::pair<SpatialIndex::Entry, Rect>> entries;
+    for (std::size_t n = 0; n < elements.size(); ++n) {
+        const int id = static_cast<int>(elements_.size() + n);
+        for (std::size_t k = 0; k < elements[n]->proxy_count(); ++k)
+            entries.push_back({{id, static_cast<int>(k)}, elements[n]->proxy(k).bounds()});
+    }
+    index_.insert_all(entries);
+    std::vector<Element*> added;
+    added.reserve(elements.size());
+    for (auto& e : elements) {
+        e->id = static_cast<int>(elements_.size());
+        added.push_back(e.get());
+        elements_.push_back(std::move(e));
+    }
+    return added;
+}
+
 std::vector<const Element*> Ornament::view() const {
     std::vector<const Element*> out;
     out.reserve(elements_.size());

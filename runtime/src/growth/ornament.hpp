@@ -22,6 +22,8 @@ class Ornament {
 
     // Takes ownership, assigns the next id and indexes the proxies; returns the element.
     Element& add(std::unique_ptr<Element> e);
+    // The same for many elements in order, indexed in one pass (a bulk placement).
+    std::vector<Element*> add_all(std::vector<std::unique_ptr<Element>> elements);
     std::size_t size() const { return elements_.size(); }
     Element& at(int id) const { return *elements_[static_cast<std::size_t>(id)]; }
     std::vector<const Element*> view() const;

@@ -33,28 +33,32 @@ RuleCall::RuleCall(const RuleInfo& rule, Element& parent)
 RuleCall::~RuleCall() {
     current_call = previous_;
     // Not current any more, so these deletes do not call back into untrack().
-    std::vector<void*> leftovers;
+    std::unordered_map<void*, Role> leftovers;
     leftovers.swap(created_);
-    for (void* p : leftovers) delete static_cast<Element*>(p);
+    for (const auto& [p, role] : leftovers) delete static_cast<Element*>(p);
 }
 
 RuleCall* RuleCall::current() { return current_call; }
 
-void RuleCall::track(Element* e) { created_.push_back(e); }
+void RuleCall::track(Element* e) { created_[e] = Role::created; }
 
 void RuleCall::untrack(Element* e) {
-    erase_value(created_, static_cast<void*>(e));
-    erase_value(statics_, e);
-    erase_value(dynamics_, e);
+    const auto it = created_.find(e);
+    if (it == created_.end()) return;
+    if (it->second == Role::static_child) erase_value(statics_, e);
+    if (it->second == Role::dynamic_child) erase_value(dynamics_, e);
+    created_.erase(it);
 }
 
 void RuleCall::add_dynamic(Element& e) {
-    if (std::find(created_.begin(), created_.end(), static_cast<void*>(&e)) == created_.end())
+    const auto it = created_.find(&e);
+    if (it == created_.end())
         throw std::logic_error("new_child(): the element was not created with new in this rule");
-    if (std::find(statics_.begin(), statics_.end(), &e) != statics_.end())
+    if (it->second == Role::static_child)
         throw std::logic_error("new_child(): a static child is already a child of this rule");
-    if (std::find(dynamics_.begin(), dynamics_.end(), &e) != dynamics_.end())
+    if (it->second == Role::dynamic_child)
         throw std::logic_error("new_child(): the element was already added");
+    it->second = Role::dynamic_child;
     dynamics_.push_back(&e);
 }
 
@@ -110,7 +114,7 @@ std::vector<std::unique_ptr<Element>> RuleCall::take_children() {
     std::vector<std::unique_ptr<Element>> out;
     out.reserve(all.size());
     for (Element* e : all) {
-        erase_value(created_, static_cast<void*>(e));
+        created_.erase(e);
         out.emplace_back(e);
     }
     statics_.clear();

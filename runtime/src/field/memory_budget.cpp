@@ -1,4 +1,4 @@
-#include "growth/memory_budget.hpp"
+#include "field/memory_budget.hpp"
 
 #include <sys/resource.h>
 

@@ -1,4 +1,4 @@
-#include "growth/pending_blocks.hpp"
+#include "field/pending_blocks.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -7,8 +7,8 @@
 #include <cstring>
 #include <limits>
 
-#include "growth/tile_masks.hpp"
-#include "growth/witness.hpp"
+#include "field/tile_masks.hpp"
+#include "field/witness.hpp"
 
 namespace acanthus::detail {
 

@@ -1,4 +1,4 @@
-#include "growth/pixel_cover.hpp"
+#include "field/pixel_cover.hpp"
 
 #include <algorithm>
 #include <cmath>

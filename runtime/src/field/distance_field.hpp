@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "growth/pending_blocks.hpp"
-#include "growth/site_blob.hpp"
+#include "field/pending_blocks.hpp"
+#include "field/site_blob.hpp"
 
 namespace acanthus::detail {
 
@@ -32,6 +32,9 @@ class DistanceField {
 
     // Full recomputation from an occupancy grid (width*height, values of ObstacleKind).
     void compute(const std::vector<std::uint8_t>& occupancy);
+    // The same after element sites were added to the occupancy grid without add_sites(): the
+    // distances to boundary sites are kept (the boundary never changes after compute()).
+    void recompute_elements(const std::vector<std::uint8_t>& occupancy);
     // Marks free pixels (indices j*width+i) as sites of `kind` and updates the field.
     // Pixels whose distance changed are appended to `changed` when it is not null.
     void add_sites(const std::vector<int>& pixels, ObstacleKind kind, std::vector<int>* changed);
@@ -81,6 +84,8 @@ class DistanceField {
     };
 
   private:
+    // Lowers the distances to those to the site at column si, row sj.
+    void nearer_site(int si, int sj);
     // Updates `d2` (and `site` when not null) for the new sites; returns changed pixels in `out`.
     void propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
                    std::vector<std::int32_t>* site, std::vector<int>* out);

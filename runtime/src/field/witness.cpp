@@ -1,4 +1,4 @@
-#include "growth/witness.hpp"
+#include "field/witness.hpp"
 
 #include <algorithm>
 #include <cmath>

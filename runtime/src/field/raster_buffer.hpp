@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "growth/distance_field.hpp"
-#include "growth/pixel_cover.hpp"
+#include "field/distance_field.hpp"
+#include "field/pixel_cover.hpp"
 
 namespace acanthus::detail {
 

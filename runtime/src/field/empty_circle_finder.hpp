@@ -8,10 +8,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "growth/distance_field.hpp"
-#include "growth/exclude_list.hpp"
-#include "growth/max_tree.hpp"
-#include "growth/tile_change.hpp"
+#include "field/circle_blocker.hpp"
+#include "field/distance_field.hpp"
+#include "field/max_tree.hpp"
+#include "field/tile_change.hpp"
 
 namespace acanthus::detail {
 
@@ -38,7 +38,7 @@ class EmptyCircleFinder {
     bool shape_eligible(int pixel) const;
 
     // Incremental search. rebuild() scans the whole grid once; update() takes the pixels whose
-    // distance changed; release() returns candidates blocked by removed exclude points.
+    // distance changed; release() returns candidates blocked by removed blocker points.
     void rebuild();
     void update(const std::vector<int>& changed);
     void update(const std::vector<TileChange>& changed);  // the same, a tile at a time
@@ -46,14 +46,14 @@ class EmptyCircleFinder {
     void release_all();
     // Trusts every tile of a lazy field (for scans such as best_candidates()).
     void settle_all();
-    std::optional<EmptyCircle> find(const ExcludeList& exclude);
+    std::optional<EmptyCircle> find(const CircleBlocker& blocker);
     // Drops a candidate found by find() or find_by_scan() (the engine found the boundary nearer
     // than every element when measured exactly). It stays dropped, in both searches, until its
     // distance changes.
     void discard(const EmptyCircle& c);
 
     // Reference search: a full scan.
-    std::optional<EmptyCircle> find_by_scan(const ExcludeList& exclude) const;
+    std::optional<EmptyCircle> find_by_scan(const CircleBlocker& blocker) const;
 
     // The `limit` best shape-eligible candidates in choice order (for debug frames), by scan.
     std::vector<int> best_candidates(std::size_t limit) const;
@@ -150,13 +150,13 @@ class EmptyCircleFinder {
 
     // Pixel -> d2 at which it was discarded; few pixels ever are, so a map, not a grid.
     std::unordered_map<int, std::int32_t> discarded_;
-    std::vector<std::vector<std::pair<int, std::int32_t>>> blocked_;  // by exclude id: (pixel, d2)
+    std::vector<std::vector<std::pair<int, std::int32_t>>> blocked_;  // by blocker id: (pixel, d2)
     MaxTree tiles_;
     // Lazy field: per block not trusted, a key above every candidate it may hold; 0 otherwise.
     MaxTree blocks_;
     std::vector<TileChange> settled_;  // pixels lowered by tighten() and trust_tile()
     // Per 8 x 8 tile, one bit per pixel (bit 8 * row + column within the tile).
-    // A pixel's state is in these masks: candidate, blocked (by an exclude point) or none. A
+    // A pixel's state is in these masks: candidate, blocked (by a blocker point) or none. A
     // pixel not in state none was decided at its current distance.
     // Side by side: a refresh reads them together.
     struct TileMasks {

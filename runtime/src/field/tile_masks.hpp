@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <cstring>
 
-#include "growth/distance_field.hpp"
-#include "growth/lanes.hpp"
+#include "field/distance_field.hpp"
+#include "field/lanes.hpp"
 
 namespace acanthus::detail::tile_masks {
 

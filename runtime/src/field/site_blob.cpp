@@ -1,4 +1,4 @@
-#include "growth/site_blob.hpp"
+#include "field/site_blob.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "growth/distinct_circles.hpp"
+#include "field/distinct_circles.hpp"
 
 #include <algorithm>
 

@@ -1,11 +1,11 @@
-#include "growth/empty_circle_finder.hpp"
+#include "field/empty_circle_finder.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
 
-#include "growth/tile_masks.hpp"
+#include "field/tile_masks.hpp"
 
 namespace acanthus::detail {
 
@@ -421,7 +421,7 @@ void EmptyCircleFinder::release_all() {
     release(ids);
 }
 
-std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
+std::optional<EmptyCircle> EmptyCircleFinder::find(const CircleBlocker& blocker) {
     for (;;) {
         const Key k = tiles_.max();
         const Key b = blocks_.max();
@@ -442,7 +442,7 @@ std::optional<EmptyCircle> EmptyCircleFinder::find(const ExcludeList& exclude) {
         }
         const std::int64_t d2 = d2_of(k);
         const Circle c = circle_of(p);
-        const int id = exclude.find_inside(c);
+        const int id = blocker.blocker_inside(c);
         if (id < 0) return EmptyCircle{p, d2, c};
         const std::uint64_t mask = std::uint64_t{1} << bit_of(p);
         masks_[tile_of(p)].blocked |= mask;
@@ -464,7 +464,7 @@ void EmptyCircleFinder::discard(const EmptyCircle& c) {
     }
 }
 
-std::optional<EmptyCircle> EmptyCircleFinder::find_by_scan(const ExcludeList& exclude) const {
+std::optional<EmptyCircle> EmptyCircleFinder::find_by_scan(const CircleBlocker& blocker) const {
     const int n = grid_.width * grid_.height;
     Key best = 0;
     bool found = false;
@@ -473,7 +473,7 @@ std::optional<EmptyCircle> EmptyCircleFinder::find_by_scan(const ExcludeList& ex
         if (d2 == DistanceField::infinite || field_.occupancy(p) != ObstacleKind::none) continue;
         const Key k = key_of(p, d2);
         if (found && k < best) continue;
-        if (is_discarded(p, d2) || !shape_eligible(p) || exclude.any_inside(circle_of(p))) continue;
+        if (is_discarded(p, d2) || !shape_eligible(p) || blocker.blocker_inside(circle_of(p)) >= 0) continue;
         best = k;
         found = true;
     }

@@ -1,4 +1,4 @@
-#include "growth/manhattan_transform.hpp"
+#include "field/manhattan_transform.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,11 +1,11 @@
-#include "growth/distance_field.hpp"
+#include "field/distance_field.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <unordered_set>
 
-#include "growth/manhattan_transform.hpp"
+#include "field/manhattan_transform.hpp"
 
 namespace acanthus::detail {
 namespace {
@@ -143,16 +143,55 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
         return;
     }
     separable_edt(
-        w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
-        dist2_.data(), site, scratch_);
-    if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
-    separable_edt(
         w, height_,
         [&](int i, int j) {
             return occ[static_cast<std::size_t>(j) * w + i] ==
                    static_cast<std::uint8_t>(ObstacleKind::boundary);
         },
         boundary2_.data(), nullptr, scratch_);
+    // At the start of growth the element sites are a seed's few pixels: the nearer of the
+    // boundary and of each of them costs less than a second transform.
+    constexpr std::size_t kFewSites = 16;
+    std::vector<int> elements;
+    for (std::size_t p = 0; p < occupancy.size() && elements.size() <= kFewSites && !site; ++p)
+        if (occ[p] == static_cast<std::uint8_t>(ObstacleKind::element))
+            elements.push_back(static_cast<int>(p));
+    if (!site && elements.size() <= kFewSites) {
+        std::copy(boundary2_.begin(), boundary2_.end(), dist2_.begin());
+        for (const int e : elements) nearer_site(e % w, e / w);
+    } else {
+        separable_edt(
+            w, height_,
+            [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
+            dist2_.data(), site, scratch_);
+    }
+    if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
+}
+
+void DistanceField::nearer_site(int si, int sj) {
+    // Squared distances of grids up to 30,000 pixels a side fit in 32 bits.
+    for (int j = 0; j < height_; ++j) {
+        std::int32_t* row = dist2_.data() + static_cast<std::size_t>(j) * width_;
+        const std::int32_t dy2 = (j - sj) * (j - sj);
+        for (int i = 0; i < width_; ++i) row[i] = std::min(row[i], (i - si) * (i - si) + dy2);
+    }
+}
+
+void DistanceField::recompute_elements(const std::vector<std::uint8_t>& occupancy) {
+    if (occupancy.size() != dist2_.size())
+        throw std::invalid_argument("DistanceField::recompute_elements: occupancy size mismatch");
+    const int w = width_;
+    const std::uint8_t* occ = occupancy.data();
+    std::int32_t* site = site_.empty() ? nullptr : site_.data();
+    if (metric_ == DistanceMetric::manhattan) {
+        manhattan_transform(w, height_, occ, false, static_cast<std::uint8_t>(ObstacleKind::boundary),
+                            dist2_.data(), site);
+    } else {
+        separable_edt(
+            w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
+            dist2_.data(), site, scratch_);
+    }
+    if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
 }
 
 // Keeps the first of equal pixels, in order: the order breaks ties of the feature transform.

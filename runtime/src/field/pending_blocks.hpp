@@ -9,10 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include "growth/lanes.hpp"
-#include "growth/max_tree.hpp"
-#include "growth/tile_change.hpp"
-#include "growth/witness.hpp"
+#include "field/lanes.hpp"
+#include "field/max_tree.hpp"
+#include "field/tile_change.hpp"
+#include "field/witness.hpp"
 
 namespace acanthus::detail {
 
@@ -26,6 +26,8 @@ class PendingBlocks {
     void reset(int width, int height, const std::int32_t* d2, DistanceMetric metric);
 
     int count() const { return blocks_w_ * blocks_h_; }
+    // >= every squared distance in the field.
+    std::int64_t largest_bound() const { return static_cast<std::int64_t>(groups_.max()); }
     int tile_of(int pixel) const {
         return (pixel / width_ >> kTileShift) * tiles_w_ + (pixel % width_ >> kTileShift);
     }

@@ -1,4 +1,4 @@
-#include "growth/raster_buffer.hpp"
+#include "field/raster_buffer.hpp"
 
 #include <acanthus/error.hpp>
 #include <algorithm>

@@ -1,0 +1,129 @@
+// The incremental engine's circle source, and its choice for a placement of many elements
+// (docs/field.md, "Bulk placement").
+#include <algorithm>
+#include <cmath>
+
+#include "field/circle_source.hpp"
+#include "field/distance_field.hpp"
+
+namespace acanthus::detail {
+namespace {
+
+// A placement's sites are measured as one blob: a tile that needs them reads every column run
+// of it, while a full transform and rebuild cost about this many run readings per tile
+// (measured: docs/field.md, "Bulk placement").
+constexpr double kFullCostPerTile = 256;
+
+class IncrementalCircleSource final : public CircleSource {
+  public:
+    IncrementalCircleSource(const RasterBuffer& raster, const CircleSourceOptions& options)
+        : raster_(raster),
+          field_(raster.grid().width, raster.grid().height, /*with_sites=*/false,
+                 options.metric),
+          finder_(field_, raster.grid(), options.min_radius) {
+        const long long pixels =
+            static_cast<long long>(raster.grid().width) * raster.grid().height;
+        field_.set_lazy(pixels >= options.lazy_field_pixels);
+    }
+
+    void start() override {
+        field_.compute(raster_.occupancy());
+        finder_.rebuild();
+        stale_ = false;
+    }
+
+    void add_sites(const std::vector<int>& fresh, std::size_t elements) override {
+        if (fresh.empty() || stale_) return;  // a stale field is recomputed by the next find()
+        if (elements > 1 && cheaper_in_full(fresh)) {
+            stale_ = true;
+            return;
+        }
+        changed_.clear();
+        field_.add_sites(fresh, ObstacleKind::element, &changed_);
+        finder_.update(changed_);
+    }
+
+    std::optional<EmptyCircle> find(const CircleBlocker& blocker) override {
+        bring_up_to_date();
+        return finder_.find(blocker);
+    }
+
+    void discard(const EmptyCircle& c) override { finder_.discard(c); }
+    void release(const std::vector<int>& ids) override { finder_.release(ids); }
+    void release_all() override { finder_.release_all(); }
+
+    double boundary_radius_pixels(int pixel) const override {
+        return finder_.radius_pixels(field_.boundary_squared_distance(pixel));
+    }
+
+    std::vector<Circle> candidate_circles(std::size_t limit) override {
+        bring_up_to_date();
+        finder_.settle_all();  // the scan reads every pixel
+        std::vector<Circle> out;
+        for (int p : finder_.best_candidates(limit)) out.push_back(finder_.circle_of(p));
+        return out;
+    }
+
+  private:
+    void bring_up_to_date() {
+        if (!stale_) return;
+        field_.recompute_elements(raster_.occupancy());
+        finder_.rebuild();
+        stale_ = false;
+    }
+
+    // Whether updating the field for these sites would cost more than recomputing it. The
+    // update's cost is estimated as the sites' column runs times the tiles within reach of
+    // their box (the field's largest distance round it): with the lazy field each such tile
+    // measures every run when it is needed, and an eager update visits them too.
+    bool cheaper_in_full(const std::vector<int>& fresh) const {
+        const int w = raster_.grid().width, h = raster_.grid().height;
+        const auto& occ = raster_.occupancy();
+        const auto element = static_cast<std::uint8_t>(ObstacleKind::element);
+        long long runs = 0;
+        int x0 = w, y0 = h, x1 = -1, y1 = -1;
+        const double inv_w = 1.0 / w;
+        for (int p : fresh) {
+            int j = static_cast<int>(p * inv_w);  // the row without a division, corrected
+            j -= j * w > p;
+            j += (j + 1) * w <= p;
+            const int i = p - j * w;
+            x0 = std::min(x0, i);
+            x1 = std::max(x1, i);
+            y0 = std::min(y0, j);
+            y1 = std::max(y1, j);
+            // A run of a column starts where the pixel above is not one of these sites (they
+            // are in the buffer already, not yet at distance 0 in the field).
+            const int above = p - w;
+            if (j == 0 || occ[above] != element || field_.squared_distance(above) == 0) ++runs;
+        }
+        const long long tiles_w = (w + 7) / 8, tiles_h = (h + 7) / 8;
+        long long reach_tiles = tiles_w * tiles_h;
+        if (field_.lazy()) {
+            const int reach = static_cast<int>(
+                std::ceil(std::sqrt(static_cast<double>(field_.far_blocks().largest_bound()))));
+            const long long cols = (std::min(w - 1, x1 + reach) >> 3) -
+                                   (std::max(0, x0 - reach) >> 3) + 1;
+            const long long rows = (std::min(h - 1, y1 + reach) >> 3) -
+                                   (std::max(0, y0 - reach) >> 3) + 1;
+            reach_tiles = cols * rows;
+        }
+        return static_cast<double>(runs) * static_cast<double>(reach_tiles) >
+               kFullCostPerTile * static_cast<double>(tiles_w * tiles_h);
+    }
+
+    const RasterBuffer& raster_;
+    DistanceField field_;
+    EmptyCircleFinder finder_;
+    bool stale_ = true;
+    std::vector<int> changed_;
+};
+
+}  // namespace
+
+std::unique_ptr<CircleSource> incremental_circle_source(const RasterBuffer& raster,
+                                                        const CircleSourceOptions& options) {
+    return std::make_unique<IncrementalCircleSource>(raster, options);
+}
+
+}  // namespace acanthus::detail
