@@ -5,7 +5,9 @@
 // Each method runs with seeds S .. S+K-1 (default 1..10); the JSON gives means per run. Seconds
 // are CPU time of the fill call (one clock for all methods), so other processes on a loaded
 // machine do not skew the ratio; speedup = naive seconds / fill-gap seconds.
-// Last line: {"benchmark":"dartfill", ...}.
+// Then end to end: rules/pebbles.acr built into a program and run on the same panel with
+// --rng-seed S, its growth (the program's seconds.growth, wall time) and the whole process
+// (program_* figures, medians of three runs). Last line: {"benchmark":"dartfill", ...}.
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/stdlib/dartfill.hpp>
@@ -15,6 +17,9 @@
 #include <ctime>
 #include <exception>
 #include <string>
+#include <vector>
+
+#include "program_run.hpp"
 
 using namespace acanthus;
 
@@ -69,6 +74,20 @@ void measure(const dartfill::ShapeSet& shapes, const Region& region, dartfill::O
                 r.stats.coverage, r.stats.trials);
 }
 
+// The pebbles program on `panel`, as a user runs it; `panel` is a spec or an SVG file, which the
+// program's --region takes as the bench's --panel does.
+bench::ProgramMedian program_pebbles(const std::string& panel, std::uint64_t seed) {
+    bench::TempDir dir;
+    const bench::fs::path program = bench::build_program("pebbles", dir.path());
+    const std::vector<std::string> args{"--region",   panel,
+                                        "--rng-seed", std::to_string(seed),
+                                        "-o",         (dir.path() / "pebbles.png").string()};
+    bench::run_program(program, args);  // warm up (page cache, libraries)
+    bench::ProgramMedian m;
+    for (int k = 0; k < 3; ++k) m.add(bench::run_program(program, args), "pebbles");
+    return m;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -119,6 +138,9 @@ int main(int argc, char** argv) {
             for (int m = 0; m < 3; ++m)
                 measure(shapes, region, options, methods[m], seed + k, totals[m]);
         const Totals &naive = totals[0], &gap = totals[1], &third = totals[2];
+        const bench::ProgramMedian program = program_pebbles(panel, seed);
+        std::printf("program pebbles  elements %5ld  growth seconds %8.4f  wall seconds %8.4f\n",
+                    program.elements, program.growth_seconds, program.wall_seconds);
         std::printf(
             "{\"benchmark\":\"dartfill\",\"panel\":\"%s\",\"runs\":%d,\"first_seed\":%llu,"
             "\"naive_cancellations\":%ld,\"gap_cancellations\":%ld,\"candidates\":%d,"
@@ -127,7 +149,10 @@ int main(int argc, char** argv) {
             "\"fillgap_seconds\":%.5f,\"fillgap_trials\":%.0f,\"fillgap_coverage\":%.4f,"
             "\"speedup\":%.2f,\"fillgap_element_ratio\":%.3f,\"third_method\":\"medial\","
             "\"third_elements\":%.1f,\"third_seconds\":%.5f,\"third_coverage\":%.4f,"
-            "\"third_speedup\":%.2f}\n",
+            "\"third_speedup\":%.2f,\"program_rules\":\"rules/pebbles.acr\","
+            "\"program_elements\":%ld,\"program_growth_seconds\":%.5f,"
+            "\"program_elements_per_second\":%.0f,\"program_render_seconds\":%.5f,"
+            "\"program_wall_seconds\":%.5f,\"program_runs\":%zu}\n",
             panel.c_str(), runs, static_cast<unsigned long long>(seed), options.naive_cancellations,
             options.gap_cancellations, options.candidates, options.exponent,
             naive.mean(&Totals::elements), naive.mean(&Totals::seconds),
@@ -135,7 +160,9 @@ int main(int argc, char** argv) {
             gap.mean(&Totals::seconds), gap.mean(&Totals::trials), gap.mean(&Totals::coverage),
             naive.seconds / gap.seconds, gap.elements / naive.elements,
             third.mean(&Totals::elements), third.mean(&Totals::seconds),
-            third.mean(&Totals::coverage), naive.seconds / third.seconds);
+            third.mean(&Totals::coverage), naive.seconds / third.seconds, program.elements,
+            program.growth_seconds, static_cast<double>(program.elements) / program.growth_seconds,
+            program.render_seconds, program.wall_seconds, program.growth.size());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_dartfill: %s\n", e.what());
         return 1;

@@ -1,15 +1,19 @@
 // growth synthesis (Ijiri et al.) with and without relaxation: 1,000 to 10,000 elements of an
 // irregular two-symbol reference in a rectangle. The bar (DESIGN.md section 12): 10,000 elements
 // with relaxation in under 5 s, cost per element flat from 1,000 to 10,000. Best of three runs.
-// Then the relaxation variants, and Options::two_ring against 1-ring matching.
+// Then the relaxation variants, and Options::two_ring against 1-ring matching. Last, end to end:
+// rules/arrangement.acr built into a program and run on the stones reference in a 300 x 200
+// rectangle at 512, 1024 and 2048 px (program_* figures, medians of three runs).
 #include <acanthus/region.hpp>
 #include <acanthus/stdlib/growth.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <string>
 #include <vector>
 
+#include "program_run.hpp"
 #include "stdlib/growth/growth_fixtures.hpp"
 
 using namespace acanthus;
@@ -107,6 +111,30 @@ std::vector<Matching> compare_matchings() {
     return out;
 }
 
+constexpr int kResolutions[] = {512, 1024, 2048};
+
+// The arrangement program at each resolution, the sizes taking turns so that a change in the
+// machine's load touches all of them alike.
+std::vector<bench::ProgramMedian> program_resolutions() {
+    bench::TempDir dir;
+    const bench::fs::path program = bench::build_program("arrangement", dir.path());
+    const std::string reference =
+        "reference=" + std::string(ACANTHUS_SOURCE_DIR) + "/examples/references/stones.json";
+    auto args = [&](int resolution) {
+        return std::vector<std::string>{"--param",      reference,
+                                        "--region",     "rect:300,200",
+                                        "--resolution", std::to_string(resolution),
+                                        "-o",           (dir.path() / "arrangement.png").string()};
+    };
+    bench::run_program(program, args(512));  // warm up (page cache, libraries)
+    std::vector<bench::ProgramMedian> out(std::size(kResolutions));
+    for (int k = 0; k < 3; ++k)
+        for (std::size_t i = 0; i < out.size(); ++i)
+            out[i].add(bench::run_program(program, args(kResolutions[i])),
+                       "arrangement at " + std::to_string(kResolutions[i]) + " px");
+    return out;
+}
+
 }  // namespace
 
 int main() {
@@ -139,6 +167,26 @@ int main() {
                       m.two_seconds / m.one_seconds);
         matching_json += buffer;
     }
+    std::vector<bench::ProgramMedian> program;
+    try {
+        program = program_resolutions();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_growth: %s\n", e.what());
+        return 1;
+    }
+    std::string program_json;
+    for (std::size_t i = 0; i < program.size(); ++i) {
+        const bench::ProgramMedian& p = program[i];
+        std::printf("program arrangement %4d px: %ld elements, growth %.4f s, wall %.4f s\n",
+                    kResolutions[i], p.elements, p.growth_seconds, p.wall_seconds);
+        char buffer[300];
+        std::snprintf(buffer, sizeof buffer,
+                      ", \"program_elements_%d\": %ld, \"program_growth_seconds_%d\": %.4f, "
+                      "\"program_wall_seconds_%d\": %.4f",
+                      kResolutions[i], p.elements, kResolutions[i], p.growth_seconds,
+                      kResolutions[i], p.wall_seconds);
+        program_json += buffer;
+    }
     const double per_small = small.seconds / static_cast<double>(small.elements);
     const double per_large = large.seconds / static_cast<double>(large.elements);
     std::printf(
@@ -146,9 +194,12 @@ int main() {
         "%.4f, \"us_per_element_1000\": %.2f, \"us_per_element_10000\": %.2f, "
         "\"cost_ratio_10000_to_1000\": %.3f, \"target_seconds\": 5, \"relax_1000\": {"
         "\"none\": [%.3f, %.4f], \"window\": [%.3f, %.4f], \"global\": [%.3f, %.4f]}, "
-        "\"two_ring\": {%s}}\n",
+        "\"two_ring\": {%s}%s, \"program_ratio_2048_to_512\": %.3f, \"program_runs\": %zu, "
+        "\"program_target_ratio_2048_to_512\": 1.5}\n",
         large.elements, large.seconds, large_no_relax.seconds, 1e6 * per_small, 1e6 * per_large,
         per_large / per_small, relax[0].seconds, relax[0].link_error, relax[1].seconds,
-        relax[1].link_error, relax[2].seconds, relax[2].link_error, matching_json.c_str());
+        relax[1].link_error, relax[2].seconds, relax[2].link_error, matching_json.c_str(),
+        program_json.c_str(), program[2].growth_seconds / program[0].growth_seconds,
+        program[0].growth.size());
     return large.seconds < 5 ? 0 : 1;
 }
