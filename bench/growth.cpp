@@ -1,5 +1,5 @@
 // growth synthesis (Ijiri et al.) with and without relaxation: 1,000 to 10,000 elements of an
-// irregular two-symbol reference in a rectangle. The bar (DESIGN.md section 12): 10,000 elements
+// irregular two-symbol reference in a rectangle. The bar (docs/stdlib/growth.md): 10,000 elements
 // with relaxation in under 5 s, cost per element flat from 1,000 to 10,000. Best of three runs.
 // Then the relaxation variants, and Options::two_ring against 1-ring matching. Last, end to end:
 // rules/arrangement.acr built into a program and run on the stones reference in a 300 x 200

@@ -1,5 +1,5 @@
 // Turns a checked PatternModel into one C++ translation unit that compiles against the
-// runtime's public headers (the contract in DESIGN.md section 4 and the compiler brief).
+// runtime's public headers (docs/language.md, "The generated C++").
 #pragma once
 
 #include <string>

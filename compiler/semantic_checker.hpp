@@ -1,4 +1,4 @@
-// Checks a rule program against the language's rules (section 4 of DESIGN.md) and builds the
+// Checks a rule program against the language's rules (docs/language.md) and builds the
 // PatternModel the code generator uses. Every problem found goes to the diagnostics.
 #pragma once
 

@@ -24,10 +24,9 @@ struct GrowthOptions {
     // Metric of the distance field and its medial axis: exact Euclidean, or the paper's
     // Manhattan MAT (docs/engine.md, "The Manhattan option").
     DistanceMetric distance = DistanceMetric::euclidean;
-    // Buffers of at least this many pixels (32 times as many with the Manhattan metric) keep
-    // the distance field lazily (exact only where it may decide C); smaller ones update it
-    // eagerly, which is as fast there. The trees are the same either way (docs/engine.md,
-    // "Scale").
+    // Buffers of at least this many pixels keep the distance field lazily (exact only where it
+    // may decide C), in either metric; smaller ones update it eagerly, which is as fast there.
+    // The trees are the same either way (docs/field.md, "The lazy far field").
     long long lazy_field_pixels = 512LL * 512;
     std::vector<Point> seeds;  // empty: centre of the largest inscribed circle
     std::uint64_t rng_seed = 1;

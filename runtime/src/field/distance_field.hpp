@@ -1,5 +1,5 @@
 // Exact Euclidean distance field over the render buffer with each pixel's nearest obstacle site
-// and kind; computed in full or updated incrementally (docs/engine.md, "The distance field").
+// and kind; computed in full or updated incrementally (docs/field.md, "The distance field").
 #pragma once
 
 #include <acanthus/distance_metric.hpp>
@@ -39,11 +39,11 @@ class DistanceField {
     // Pixels whose distance changed are appended to `changed` when it is not null.
     void add_sites(const std::vector<int>& pixels, ObstacleKind kind, std::vector<int>* changed);
 
-    // Lazy far field (docs/engine.md, "Scale"): element sites added later are not measured
-    // when added; every block they may lower keeps them pending, and its values are upper
-    // bounds (distances only decrease) until a tile of it is trusted. Set before compute();
-    // Either metric, no feature transform. Off by default: every value is exact after
-    // add_sites().
+    // Lazy far field (docs/field.md, "The lazy far field"): element sites added later are not
+    // measured when added; every block they may lower keeps them pending, and its values are
+    // upper bounds (distances only decrease) until a tile of it is trusted. Set before
+    // compute(); either metric, no feature transform. Off by default: every value is exact
+    // after add_sites().
     void set_lazy(bool lazy) { lazy_ = lazy && site_.empty(); }
     bool lazy() const { return lazy_; }
     PendingBlocks& far_blocks() { return far_; }

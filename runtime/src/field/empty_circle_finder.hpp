@@ -1,5 +1,5 @@
 // FindEmptyCircle of Wong et al. section 4.1: the largest eligible circle on the medial axis of
-// the distance field, kept up to date incrementally (docs/engine.md, "FindEmptyCircle").
+// the distance field, kept up to date incrementally (docs/field.md, "FindEmptyCircle").
 #pragma once
 
 #include <acanthus/grid_frame.hpp>

@@ -1,6 +1,6 @@
 // The Manhattan (city-block) distance field of Wong et al.'s MAT (section 4.1): computed in full
 // and updated by a brushfire. Values are squares of city-block distances, so that they compare
-// like the Euclidean field's squared distances (docs/engine.md, "The Manhattan option").
+// like the Euclidean field's squared distances (docs/field.md, "The Manhattan metric").
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // What the growth engine's per-pixel state costs and what the machine can give it: a buffer too
-// large for memory is refused before anything is allocated (docs/engine.md, "Memory").
+// large for memory is refused before anything is allocated (docs/field.md, "Memory").
 #pragma once
 
 #include <acanthus/grid_frame.hpp>

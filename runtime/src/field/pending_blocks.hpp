@@ -1,6 +1,7 @@
 // The far field of a lazy DistanceField: new sites are not measured when they are added. Each
 // 64 x 64 pixel block keeps the sites that may lower it pending, and each 8 x 8 tile of it
-// measures them only when FindEmptyCircle needs that tile exact (docs/engine.md, "Scale").
+// measures them only when FindEmptyCircle needs that tile exact (docs/field.md,
+// "The lazy far field").
 #pragma once
 
 #include <acanthus/distance_metric.hpp>

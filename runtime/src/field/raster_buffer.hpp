@@ -1,5 +1,5 @@
 // The render buffer of Wong et al. section 4.1: occupancy of the region's pixels by the boundary
-// and by placed elements (docs/engine.md, "The render buffer").
+// and by placed elements (docs/field.md, "The render buffer").
 #pragma once
 
 #include <acanthus/element.hpp>

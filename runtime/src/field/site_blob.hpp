@@ -1,5 +1,5 @@
 // The sites of one DistanceField::add_sites() call and the exact squared distance to the nearest
-// of them, from per-row lower envelopes of parabolas (docs/engine.md, "The distance field").
+// of them, from per-row lower envelopes of parabolas (docs/field.md, "The distance field").
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The generated program's command line (DESIGN.md section 6), parsed with CLI11.
+// The generated program's command line (docs/cli.md), parsed with CLI11.
 #pragma once
 
 #include <acanthus/growth.hpp>

@@ -1,4 +1,4 @@
-// The element tree as JSON (--json FILE), in the shape DESIGN.md section 6 gives.
+// The element tree as JSON (--json FILE), in the shape docs/rendering.md gives ("--json FILE").
 #pragma once
 
 #include <acanthus/element.hpp>
