@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "field/empty_circle_finder.hpp"
+#include "growth/exclude_list.hpp"  // the blocker the growth loop hands the finder
 
 using acanthus::Circle;
 using acanthus::GridFrame;

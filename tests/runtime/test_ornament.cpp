@@ -50,3 +50,41 @@ TEST(Ornament, NearestWithinMatchesBruteForceWhateverTheLikelyRadius) {
         }
     }
 }
+
+// add_all() gives ids in order and answers the growth loop's searches as add() does.
+TEST(Ornament, AddAllMatchesAddingOneByOne) {
+    const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
+    Ornament one(region, 1e-9), all(region, 1e-9);
+    acanthus::Random rng(7);
+    std::vector<std::unique_ptr<acanthus::Element>> batch;
+    for (int k = 0; k < 500; ++k) {
+        const Point c{rng.uniform(10, 190), rng.uniform(10, 190)};
+        const double r = rng.uniform(0.5, 3);
+        auto a = std::make_unique<dots::dot>();
+        a->p0.set(c, r);
+        one.add(std::move(a));
+        auto b = std::make_unique<dots::dot>();
+        b->p0.set(c, r);
+        if (k < 10) {
+            all.add(std::move(b));  // a few first, so that the batch is packed with them
+        } else {
+            batch.push_back(std::move(b));
+        }
+    }
+    const auto added = all.add_all(std::move(batch));
+    ASSERT_EQ(added.size(), 490u);
+    for (std::size_t k = 0; k < added.size(); ++k) EXPECT_EQ(added[k]->id, static_cast<int>(k + 10));
+    ASSERT_EQ(all.size(), one.size());
+    for (int q = 0; q < 100; ++q) {
+        const Point p{rng.uniform(0, 200), rng.uniform(0, 200)};
+        const auto a = one.within(p, 12), b = all.within(p, 12);
+        ASSERT_EQ(a.size(), b.size());
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            EXPECT_EQ(a[k].first->id, b[k].first->id);
+            EXPECT_EQ(a[k].second, b[k].second);
+        }
+        dots::dot probe;
+        probe.p0.set(p, 2);
+        EXPECT_EQ(one.intersects(probe), all.intersects(probe));
+    }
+}

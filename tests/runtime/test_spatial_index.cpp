@@ -158,5 +158,37 @@ TEST(SpatialIndex, RejectsBadBounds) {
     EXPECT_EQ(index.size(), 0u);
 }
 
+// insert_all() in batches small (one at a time) and large (packed anew with what is there)
+// answers every query as inserting one by one does.
+TEST_F(SpatialIndexRandom, InsertAllInBatchesMatchesOneByOne) {
+    SpatialIndex batched;
+    std::vector<std::pair<SpatialIndex::Entry, Rect>> batch;
+    std::size_t next = 0;
+    for (const std::size_t size : {std::size_t{5}, std::size_t{100}, std::size_t{3}, items.size()}) {
+        batch.clear();
+        for (; next < items.size() && batch.size() < size; ++next)
+            batch.push_back({items[next].entry, items[next].box});
+        batched.insert_all(batch);
+    }
+    ASSERT_EQ(batched.size(), index.size());
+    Lcg rng{5};
+    for (int q = 0; q < 200; ++q) {
+        const double x = rng.in(-5, 105), y = rng.in(-5, 105);
+        const Rect box{x, y, x + rng.in(0, 20), y + rng.in(0, 20)};
+        EXPECT_EQ(batched.query(box), index.query(box));
+        EXPECT_EQ(batched.within({x, y}, 7), index.within({x, y}, 7));
+        EXPECT_EQ(batched.nearest({x, y}, 4), index.nearest({x, y}, 4));
+    }
+}
+
+TEST(SpatialIndex, InsertAllRejectsBadBoundsAndInsertsNothing) {
+    SpatialIndex index;
+    std::vector<std::pair<SpatialIndex::Entry, Rect>> batch;
+    for (int e = 0; e < 100; ++e) batch.push_back({{e, 0}, {0.0 + e, 0, 1.0 + e, 1}});
+    batch[70].second = {0, NAN, 1, 1};
+    EXPECT_THROW(index.insert_all(batch), std::invalid_argument);
+    EXPECT_EQ(index.size(), 0u);
+}
+
 }  // namespace
 }  // namespace acanthus::detail
