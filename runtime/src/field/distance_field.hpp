@@ -63,6 +63,7 @@ class DistanceField {
     double distance(int i, int j) const;
     // Squared distance from pixel index to its nearest boundary site.
     std::int64_t boundary_squared_distance(int index) const { return boundary2_[index]; }
+    const std::int32_t* boundary_squared_distances() const { return boundary2_.data(); }
     // Index of the nearest site, or -1 when there is no site at all (or no feature transform).
     int nearest_site(int index) const { return site_.empty() ? -1 : site_[index]; }
     ObstacleKind nearest_kind(int index) const;

@@ -245,12 +245,18 @@ void EmptyCircleFinder::rebuild() {
     tiles_.reset(slot_of(tiles_w_ * tiles_h_ - 1) + 1);
     boundary_floor_.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_,
                            std::numeric_limits<std::int32_t>::max());
-    for (int j = 0; j < grid_.height; ++j)
-        for (int i = 0; i < grid_.width; ++i) {
-            std::int32_t& f = boundary_floor_[(j >> kTileShift) * tiles_w_ + (i >> kTileShift)];
-            f = static_cast<std::int32_t>(
-                std::min<std::int64_t>(f, field_.boundary_squared_distance(j * grid_.width + i)));
+    for (int j = 0; j < grid_.height; ++j) {
+        const std::int32_t* row =
+            field_.boundary_squared_distances() + static_cast<std::size_t>(j) * grid_.width;
+        std::int32_t* floor = boundary_floor_.data() + static_cast<std::size_t>(j >> kTileShift) *
+                                                           tiles_w_;
+        for (int ti = 0; ti < tiles_w_; ++ti) {  // a tile's row at a time, in vector lanes
+            const int i0 = ti << kTileShift, i1 = std::min(grid_.width, i0 + (1 << kTileShift));
+            std::int32_t m = floor[ti];
+            for (int i = i0; i < i1; ++i) m = std::min(m, row[i]);
+            floor[ti] = m;
         }
+    }
     for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t, ~std::uint64_t{0});
     blocks_.reset(field_.lazy() ? static_cast<std::size_t>(field_.far_blocks().count()) : 0);
     if (field_.lazy()) {
