@@ -381,3 +381,44 @@ TEST(Witness, OutranksOnlyWhenEveryPixelIsAtLeastAsNear) {
         EXPECT_GT(said, 200) << "the test never outranks";
     }
 }
+
+// Grids of a million pixels and more are transformed by two threads; a start with a few element
+// sites folds them into the boundary's transform; recompute_elements() after sites were added
+// to the occupancy equals a full compute. All against brute force over the sparse sites.
+TEST(DistanceField, LargeGridsMatchBruteForce) {
+    const int w = 1201, h = 901;  // over 2^20 pixels, odd sizes to split unevenly
+    Random rng(7);
+    std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 0);
+    std::vector<std::pair<int, std::uint8_t>> sites;
+    auto add = [&](int p, std::uint8_t kind) {
+        if (occ[p]) return;
+        occ[p] = kind;
+        sites.emplace_back(p, kind);
+    };
+    for (int k = 0; k < 40; ++k)  // boundary sites
+        add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 1);
+    for (int k = 0; k < 3; ++k)  // a few element sites: the seeds of a start
+        add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
+    auto check = [&](const DistanceField& f, const char* what) {
+        for (int p = 0; p < w * h; ++p) {
+            std::int64_t all = DistanceField::infinite, boundary = DistanceField::infinite;
+            for (const auto& [s, kind] : sites) {
+                const std::int64_t d = sq(p % w - s % w) + sq(p / w - s / w);
+                all = std::min(all, d);
+                if (kind == 1) boundary = std::min(boundary, d);
+            }
+            ASSERT_EQ(f.squared_distance(p), all) << what << " pixel " << p;
+            ASSERT_EQ(f.boundary_squared_distance(p), boundary) << what << " pixel " << p;
+            if (f.nearest_site(p) >= 0) ASSERT_EQ(site_distance(f, p), all) << what;
+        }
+    };
+    DistanceField few(w, h, /*with_sites=*/false);
+    few.compute(occ);
+    check(few, "few element sites");
+    for (int k = 0; k < 40; ++k) add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
+    DistanceField full(w, h, /*with_sites=*/true);
+    full.compute(occ);
+    check(full, "two threads with the feature transform");
+    few.recompute_elements(occ);
+    check(few, "recompute_elements");
+}

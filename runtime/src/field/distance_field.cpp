@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 #include <unordered_set>
 
 #include "field/manhattan_transform.hpp"
@@ -15,29 +16,30 @@ constexpr std::int32_t kInfinite = DistanceField::infinite;
 // Felzenszwalb & Huttenlocher's separable squared EDT over a w x h grid, with a feature
 // transform when `site` is not null (site index j*w+i in the same grid). Parabola
 // intersections are compared as exact integer fractions, so the result is exact.
+//
+// Phase 1 keeps each pixel's column distance in d2 and, with a feature transform, that site's
+// row in `site`; it runs over columns [c0, c1), row by row for cache friendliness: nearest site
+// above, then below.
 template <class IsSite>
-void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t* site,
-                   DistanceField::Scratch& s) {
-    // Phase 1 keeps each pixel's column distance in d2 and, with a feature transform, that
-    // site's row in `site`; phase 2 copies one row of them at a time before overwriting it.
-    std::int32_t* g = d2;
-    std::int32_t* row = site;
-    // Phase 1, row by row for cache friendliness: nearest site above, then below.
+void edt_columns(int w, int h, int c0, int c1, IsSite is_site, std::int32_t* g,
+                 std::int32_t* row, DistanceField::Scratch& s) {
     s.last.assign(w, -1);
     for (int j = 0; j < h; ++j) {
         std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
-        for (int i = 0; i < w; ++i) {
+        for (int i = c0; i < c1; ++i) {
             if (is_site(i, j)) s.last[i] = j;
             const int l = s.last[i];
             gj[i] = l >= 0 ? j - l : kInfinite;
         }
-        if (row) std::copy(s.last.begin(), s.last.end(), row + static_cast<std::size_t>(j) * w);
+        if (row)
+            std::copy(s.last.begin() + c0, s.last.begin() + c1,
+                      row + static_cast<std::size_t>(j) * w + c0);
     }
     s.last.assign(w, -1);
     for (int j = h - 1; j >= 0; --j) {
         std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
         std::int32_t* rj = row ? row + static_cast<std::size_t>(j) * w : nullptr;
-        for (int i = 0; i < w; ++i) {
+        for (int i = c0; i < c1; ++i) {
             if (gj[i] == 0) {
                 s.last[i] = j;
             } else if (s.last[i] >= 0 && s.last[i] - j < gj[i]) {
@@ -46,9 +48,15 @@ void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t*
             }
         }
     }
+}
 
-    // Phase 2: per row, the lower envelope of parabolas (x - q)^2 + g(q)^2 over columns q
-    // that have a site. The envelope piece k starts at num[k] / den[k].
+// Phase 2, rows [j0, j1): per row, the lower envelope of parabolas (x - q)^2 + g(q)^2 over
+// columns q that have a site, copied one row at a time before the row is overwritten. The
+// envelope piece k starts at num[k] / den[k].
+void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site,
+              DistanceField::Scratch& s) {
+    const std::int32_t* g = d2;
+    const std::int32_t* row = site;
     s.hull_column.resize(w);
     s.hull_f.resize(w);
     s.hull_num.resize(w);
@@ -59,7 +67,7 @@ void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t*
     std::int64_t* f = s.hull_f.data();
     std::int64_t* num = s.hull_num.data();
     std::int64_t* den = s.hull_den.data();
-    for (int j = 0; j < h; ++j) {
+    for (int j = j0; j < j1; ++j) {
         const std::size_t base = static_cast<std::size_t>(j) * w;
         std::copy(g + base, g + base + w, s.column_distance.begin());
         if (row) std::copy(row + base, row + base + w, s.column_site_row.begin());
@@ -105,6 +113,28 @@ void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t*
     }
 }
 
+
+// Grids of at least this many pixels are transformed by two threads (columns, then rows, split
+// in halves): the start of a large growth waits for whole-grid transforms.
+constexpr long long kTwoThreadPixels = 1LL << 20;
+
+template <class IsSite>
+void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t* site,
+                   DistanceField::Scratch& s, DistanceField::Scratch& other) {
+    if (static_cast<long long>(w) * h < kTwoThreadPixels) {
+        edt_columns(w, h, 0, w, is_site, d2, site, s);
+        edt_rows(w, 0, h, d2, site, s);
+        return;
+    }
+    const int cm = w / 2, jm = h / 2;
+    std::thread columns([&] { edt_columns(w, h, cm, w, is_site, d2, site, other); });
+    edt_columns(w, h, 0, cm, is_site, d2, site, s);
+    columns.join();
+    std::thread rows([&] { edt_rows(w, jm, h, d2, site, other); });
+    edt_rows(w, 0, jm, d2, site, s);
+    rows.join();
+}
+
 }  // namespace
 
 DistanceField::DistanceField(int width, int height, bool with_sites, DistanceMetric metric)
@@ -148,7 +178,7 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
             return occ[static_cast<std::size_t>(j) * w + i] ==
                    static_cast<std::uint8_t>(ObstacleKind::boundary);
         },
-        boundary2_.data(), nullptr, scratch_);
+        boundary2_.data(), nullptr, scratch_, other_scratch_);
     // At the start of growth the element sites are a seed's few pixels: the nearer of the
     // boundary and of each of them costs less than a second transform.
     constexpr std::size_t kFewSites = 16;
@@ -163,7 +193,7 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
         separable_edt(
             w, height_,
             [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
-            dist2_.data(), site, scratch_);
+            dist2_.data(), site, scratch_, other_scratch_);
     }
     if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
 }
@@ -189,7 +219,7 @@ void DistanceField::recompute_elements(const std::vector<std::uint8_t>& occupanc
     } else {
         separable_edt(
             w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
-            dist2_.data(), site, scratch_);
+            dist2_.data(), site, scratch_, other_scratch_);
     }
     if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
 }
@@ -427,7 +457,7 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
         const std::uint8_t* mask = window_sites_.data();
         separable_edt(
             ww, wh, [&](int i, int j) { return mask[static_cast<std::size_t>(j) * ww + i] != 0; },
-            window_d2_.data(), window_site_.data(), window_scratch_);
+            window_d2_.data(), window_site_.data(), window_scratch_, other_scratch_);
         WindowMeasure measure{window_d2_.data(), window_site_.data(), w, ww, wx0, wy0};
         auto measurable = [&](int i, int j) {
             return i >= wx0 && i <= wx1 && j >= wy0 && j <= wy1;

@@ -117,7 +117,7 @@ class DistanceField {
     SiteBlob blob_;
     std::vector<std::uint8_t> window_sites_;
     std::vector<std::int32_t> window_d2_, window_site_;
-    Scratch scratch_, window_scratch_;
+    Scratch scratch_, other_scratch_, window_scratch_;
     struct Improvement {
         int pixel;
         std::int32_t d2;
