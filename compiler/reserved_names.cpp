@@ -87,6 +87,7 @@ constexpr std::string_view kSupportNames[] = {
     "clear_exclude_list",
     "corners",
     "new_child",
+    "report_progress",
     "goal",
     "RandomSource",
     "canvas",

@@ -4,6 +4,7 @@
 // with AshlarMethod::rules, stones laid in reading order with a random size up to the maximum,
 // chosen so that no four stones meet at a point and no straight joint runs along more than
 // `ashlar_max_seam` stones where some size allows it (merging alone cannot promise either).
+#include <acanthus/progress.hpp>
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 #include <set>
@@ -38,10 +39,13 @@ class AshlarFace {
     }
     const std::vector<Stone>& stones() const { return stones_; }
 
+    // Whole rows of stones before any becomes a cell: each row is reported as progress.
     void lay(Random& random) {
-        for (int r = 0; r < g_.rows(); ++r)
+        for (int r = 0; r < g_.rows(); ++r) {
             for (int u = 0; u < g_.units(); ++u)
                 if (get(r, u) == kEmpty) lay_at(r, u, random);
+            report_progress("ashlar rows", r + 1, g_.rows());
+        }
     }
 
   private:

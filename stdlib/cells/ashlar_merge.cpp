@@ -1,5 +1,6 @@
 #include "ashlar_merge.hpp"
 
+#include <acanthus/progress.hpp>
 #include <algorithm>
 #include <cstddef>
 
@@ -28,6 +29,7 @@ std::vector<Stone> merge_ashlar(const std::vector<char>& free, int rows, int uni
             queue.push_back(s);
         }
     };
+    long merges = 0;
     while (!queue.empty()) {
         auto k = static_cast<std::size_t>(
             random.uniform_int(0, static_cast<long long>(queue.size()) - 1));
@@ -58,6 +60,8 @@ std::vector<Stone> merge_ashlar(const std::vector<char>& free, int rows, int uni
         m.w = std::max(a.unit + a.w, b.unit + b.w) - m.unit;
         alive[static_cast<std::size_t>(t)] = 0;
         stones[static_cast<std::size_t>(s)] = m;
+        // A wall's worth of units merges in seconds before any of them becomes a cell.
+        report_progress("ashlar merges", ++merges);
         for (int r = b.row; r < b.row + b.h; ++r)
             for (int u = b.unit; u < b.unit + b.w; ++u)
                 owner[static_cast<std::size_t>(r * units + u)] = s;

@@ -2,6 +2,7 @@
 // generator, and per-face layouts that generators share (a brick layout, an ashlar grid).
 #pragma once
 
+#include <acanthus/progress.hpp>
 #include <acanthus/stdlib/cells.hpp>
 #include <map>
 #include <memory>
@@ -22,10 +23,14 @@ struct ContextData {
     std::string label;
     double edge_tolerance = 0;
     std::vector<int> near_edges;  // scratch for place()
+    long expected_cells = 0;      // the estimate progress reports show; 0: unknown
 
     // A new cell of the running generator and feature, built in place; the caller sets polygon.
+    // Reported as progress: a whole facade is one rule body, and the watchdog takes a body that
+    // stops reporting for a runaway.
     Cell& add_cell(int course) {
         Cell& c = cells.emplace_back();
+        report_progress("cells", static_cast<long>(cells.size()), expected_cells);
         c.generator = generator;
         c.feature = feature.kind;
         c.label = label;

@@ -7,7 +7,30 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "context_data.hpp"
+
 namespace acanthus::cells {
+
+namespace {
+
+// About how many cells fill the wall: its area over the mean cell's, from the bond's mix of
+// stretchers (four quarter bricks) and headers (two), or the ashlar grid. For progress only.
+long expected_cells(const Facade& facade, const Options& o) {
+    double quarters = 4;  // mean cell length along a course, in quarter bricks
+    if (o.bond == Bond::header) quarters = 2;
+    if (o.bond == Bond::english) quarters = 8.0 / 3;  // a course of each: 1/4 + 1/2 per quarter
+    if (o.bond == Bond::flemish) quarters = 3;        // a stretcher and a header per 6 quarters
+    double cell = quarters / 4 * (o.brick_length + o.mortar) * (o.brick_height + o.mortar);
+    if (o.bond == Bond::ashlar) {
+        const double unit = o.ashlar_unit > 0 ? o.ashlar_unit : o.brick_height + o.mortar;
+        // Random sizes up to the maximum: about half of it each way, on average.
+        cell = unit * unit * (o.ashlar_max_width + 1) / 2 * (o.ashlar_max_height + 1) / 2;
+    }
+    const double cells = std::round(facade.wall_area() / cell);
+    return std::isfinite(cells) && cells > 0 ? static_cast<long>(std::min(cells, 1e15)) : 0;
+}
+
+}  // namespace
 
 std::string_view to_string(FeatureKind kind) {
     switch (kind) {
@@ -105,6 +128,7 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options,
                                           (options.brick_height + options.mortar));
     context.cells().reserve(static_cast<std::size_t>(
         std::min(1.25 * bricks + 4.0 * static_cast<double>(facade.corners().size()), 2e6)));
+    context.data().expected_cells = expected_cells(facade, options);
     Texture out;
     for (std::size_t i = 0; i < facade.corners().size(); ++i)
         tree({FeatureKind::corner, static_cast<int>(i)}, context);

@@ -1,3 +1,4 @@
+#include <acanthus/progress.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -51,6 +52,8 @@ bool FillContext::fits(const Layout& layout, const Pose& pose) {
 const PlacedShape* FillContext::place(Layout& layout, const Pose& pose) {
     layout.add(PlacedShape(shapes_[cycle_], cycle_, pose));
     cycle_ = (cycle_ + 1) % static_cast<int>(shapes_.size());
+    // A whole fill is one rule body: each placement is progress to the watchdog.
+    report_progress("shapes", static_cast<long>(layout.shapes().size()), options_.max_elements);
     return &layout.shapes().back();
 }
 

@@ -1,5 +1,6 @@
 #include "synthesis.hpp"
 
+#include <acanthus/progress.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -216,6 +217,8 @@ void Synthesis::grow(int id) {
     n.radius = radius;
     pattern_.note_radius(radius);
     placed_.push_back(id);
+    // Thousands of motifs are one rule body: the watchdog needs to see them coming.
+    report_progress("motifs", static_cast<long>(placed_.size()), options_.max_elements);
     const auto& ring = reference_.rings[c];
     for (std::size_t i = 0; i < target_nodes.size(); ++i) {
         std::size_t slot = (static_cast<std::size_t>(choice.match.shift) + i) % ring.size();

@@ -5,6 +5,7 @@
 #include <acanthus/canvas.hpp>
 #include <acanthus/environment.hpp>
 #include <acanthus/pattern.hpp>
+#include <acanthus/progress.hpp>
 #include <acanthus/rule_call.hpp>
 #include <acanthus/skeletal_stroke.hpp>
 #include <cmath>
@@ -36,6 +37,7 @@ using acanthus::PointProxy;
 using acanthus::PolygonProxy;
 using acanthus::Proxy;
 using acanthus::Rect;
+using acanthus::report_progress;
 using acanthus::Result;
 using acanthus::SkeletalStroke;
 using acanthus::STOP;

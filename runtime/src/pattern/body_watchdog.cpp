@@ -4,6 +4,7 @@
 #include <chrono>
 #include <sstream>
 
+#include "pattern/body_progress.hpp"
 #include "pattern/running_body.hpp"
 
 namespace acanthus::detail {
@@ -30,6 +31,8 @@ BodyWatchdog::BodyWatchdog(double call_limit, double time_limit)
       time_limit_(time_limit),
       call_message_("still running after " + seconds_text(call_limit) +
                     " (an endless loop?); stopped by the per-call limit (--body-time-limit)"),
+      stalled_message_("still running, with no progress reported for " + seconds_text(call_limit) +
+                       " (an endless loop?); stopped by the per-call limit (--body-time-limit)"),
       time_message_("still running " + seconds_text(kTimeLimitGrace) +
                     " after the --time-limit of " + seconds_text(time_limit) +
                     " (an endless loop?); stopped") {
@@ -49,11 +52,14 @@ void BodyWatchdog::watch() {
     const Clock::time_point start = Clock::now();
     unsigned long watched = 0;
     bool watching = false;
-    Clock::time_point since = start;
+    Clock::time_point since = start;  // the watched body's start or its last progress
+    bool reported = false;            // the watched body has reported
+    long last_done = 0;               // its `done` at the previous look
     std::unique_lock<std::mutex> lock(mutex_);
     while (!wake_.wait_for(lock, kPoll, [this] { return stop_; })) {
         const unsigned long before = RunningBody::sequence();
         const char* label = RunningBody::label();
+        const BodyProgress progress = body_progress(before);
         const Clock::time_point now = Clock::now();
         if (!label || RunningBody::sequence() != before) {
             watching = false;
@@ -63,11 +69,19 @@ void BodyWatchdog::watch() {
             watching = true;
             watched = before;
             since = now;
+            reported = progress.what != nullptr;
+            last_done = progress.done;
             continue;
         }
-        // The same body has been running since `since` (at least one poll).
+        // The same body has been running since `since` (at least one poll). Its first report, or
+        // a `done` grown since the last look, is progress: the per-call clock starts again.
+        if (progress.what) {
+            if (!reported || progress.done > last_done) since = now;
+            reported = true;
+            last_done = progress.done;
+        }
         if (call_limit_ > 0 && seconds_between(since, now) >= call_limit_)
-            fatal_body_exit(label, call_message_.c_str());
+            fatal_body_exit(label, reported ? stalled_message_.c_str() : call_message_.c_str());
         if (time_limit_ > 0 && seconds_between(start, now) >= time_limit_ + kTimeLimitGrace)
             fatal_body_exit(label, time_message_.c_str());
     }

@@ -1,6 +1,8 @@
-// A thread that ends the run when user code runs away: one body running longer than the
-// per-call limit, or still running a grace second after --time-limit. Exit 3 naming the rule
-// and its line, no output left behind (running_body.hpp).
+// A thread that ends the run when user code runs away: one body making no progress for the
+// per-call limit, or still running a grace second after --time-limit. A body makes progress by
+// reporting a grown `done` (acanthus::report_progress); one that never reports has the limit
+// for the whole call. Exit 3 naming the rule and its line, no output left behind
+// (running_body.hpp).
 #pragma once
 
 #include <condition_variable>
@@ -15,8 +17,8 @@ class BodyWatchdog {
     static constexpr double kDefaultCallLimit = 10;  // seconds
     static constexpr double kTimeLimitGrace = 1;     // seconds after --time-limit
 
-    // `call_limit`: longest one body may run (0: no limit). `time_limit`: the run's
-    // --time-limit, counted from now (0: none).
+    // `call_limit`: longest one body may run without progress (0: no limit). `time_limit`: the
+    // run's --time-limit, counted from now (0: none).
     BodyWatchdog(double call_limit, double time_limit);
     ~BodyWatchdog();
     BodyWatchdog(const BodyWatchdog&) = delete;
@@ -27,7 +29,9 @@ class BodyWatchdog {
 
     double call_limit_;
     double time_limit_;
-    std::string call_message_;  // preformatted: the watchdog thread does not allocate to fire
+    // Preformatted: the watchdog thread does not allocate to fire.
+    std::string call_message_;     // the body never reported progress
+    std::string stalled_message_;  // it reported, but `done` stopped growing
     std::string time_message_;
     std::mutex mutex_;
     std::condition_variable wake_;

@@ -16,6 +16,7 @@ std::atomic<const char*> g_label{nullptr};
 std::atomic<unsigned long> g_sequence{0};
 char g_program[256] = "acanthus";
 std::atomic<void (*)() noexcept> g_cleanup{nullptr};
+std::atomic<bool> g_line_open{false};
 
 void write_text(const char* text) noexcept {
     std::size_t left = std::strlen(text);
@@ -71,7 +72,10 @@ void set_program_name_for_fatal_exit(const std::string& name) {
 
 void set_fatal_exit_cleanup(void (*cleanup)() noexcept) { g_cleanup.store(cleanup); }
 
+void set_fatal_exit_line_open(bool open) noexcept { g_line_open.store(open); }
+
 void fatal_body_exit(const char* label, const char* why) noexcept {
+    if (g_line_open.load()) write_text("\n");
     write_text(g_program);
     write_text(": error: ");
     write_text(label ? label : "a rule body");

@@ -37,6 +37,10 @@ void set_program_name_for_fatal_exit(const std::string& name);
 // async-signal-safe, set once at start.
 void set_fatal_exit_cleanup(void (*cleanup)() noexcept);
 
+// Whether a progress line is drawn on the terminal without its newline (the program stage says
+// so as it draws): fatal_body_exit then starts its message on a fresh line.
+void set_fatal_exit_line_open(bool open) noexcept;
+
 // Async-signal-safe: writes "<program>: error: <label>: <why>\n" to stderr, runs the cleanup hook
 // and ends the process with status 3.
 [[noreturn]] void fatal_body_exit(const char* label, const char* why) noexcept;

@@ -241,7 +241,8 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->check(positive("--time-limit"))
         ->group(growth_group);
     app.add_option("--body-time-limit", o.body_time_limit,
-                   "Stop with an error (exit 3) when one rule body runs longer (0: no limit)")
+                   "Stop with an error (exit 3) when one rule body runs this long without "
+                   "reporting progress (0: no limit)")
         ->type_name("S")
         ->capture_default_str()
         ->check(at_least("--body-time-limit", 0, 1e9))

@@ -323,9 +323,11 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options);
 // Inside a rule body: one element of type T per cell (T has a polygon proxy p0 and fields
 // generator, feature, label and course, as `cell` in cells.acr; a field `tint`, when T has one,
 // gets a uniform number in [-1, 1] from the program's --rng-seed for colour variation). Returns
-// how many were added.
+// how many were added. Each one is reported as progress ("elements"): a million cells take a
+// while, after texture()'s own reports have ended.
 template <class T>
 int add_cells(const Texture& texture, bool sterile = true) {
+    const auto total = static_cast<long>(texture.cells.size());
     int added = 0;
     for (const Cell& c : texture.cells) {
         T* e = new T;
@@ -338,6 +340,7 @@ int add_cells(const Texture& texture, bool sterile = true) {
         e->sterile = sterile;
         acanthus::body::new_child(*e);
         ++added;
+        acanthus::report_progress("elements", added, total);
     }
     return added;
 }
