@@ -3,24 +3,21 @@
 #include <algorithm>
 #include <cmath>
 
-#include "field/circle_source.hpp"
-#include "field/distance_field.hpp"
+#include "field/field_circle_source.hpp"
 
 namespace acanthus::detail {
 namespace {
 
 // A placement's sites are measured as one blob: a tile that needs them reads every column run
-// of it, while a full transform and rebuild cost about this many run readings per tile
-// (measured: docs/field.md, "Bulk placement").
+// of it. A full transform and rebuild is taken to cost this many run readings per tile of the
+// grid (about 1.5 us a tile at 2048 px here): an estimate that leans towards the incremental
+// update, which is never wrong, only slow (docs/field.md, "Bulk placement").
 constexpr double kFullCostPerTile = 256;
 
-class IncrementalCircleSource final : public CircleSource {
+class IncrementalCircleSource final : public FieldCircleSource {
   public:
     IncrementalCircleSource(const RasterBuffer& raster, const CircleSourceOptions& options)
-        : raster_(raster),
-          field_(raster.grid().width, raster.grid().height, /*with_sites=*/false,
-                 options.metric),
-          finder_(field_, raster.grid(), options.min_radius) {
+        : FieldCircleSource(raster, options) {
         const long long pixels =
             static_cast<long long>(raster.grid().width) * raster.grid().height;
         field_.set_lazy(pixels >= options.lazy_field_pixels);
@@ -48,20 +45,13 @@ class IncrementalCircleSource final : public CircleSource {
         return finder_.find(blocker);
     }
 
-    void discard(const EmptyCircle& c) override { finder_.discard(c); }
     void release(const std::vector<int>& ids) override { finder_.release(ids); }
     void release_all() override { finder_.release_all(); }
-
-    double boundary_radius_pixels(int pixel) const override {
-        return finder_.radius_pixels(field_.boundary_squared_distance(pixel));
-    }
 
     std::vector<Circle> candidate_circles(std::size_t limit) override {
         bring_up_to_date();
         finder_.settle_all();  // the scan reads every pixel
-        std::vector<Circle> out;
-        for (int p : finder_.best_candidates(limit)) out.push_back(finder_.circle_of(p));
-        return out;
+        return scanned_candidates(limit);
     }
 
   private:
@@ -112,10 +102,6 @@ class IncrementalCircleSource final : public CircleSource {
                kFullCostPerTile * static_cast<double>(tiles_w * tiles_h);
     }
 
-    const RasterBuffer& raster_;
-    DistanceField field_;
-    EmptyCircleFinder finder_;
-    bool stale_ = true;
     std::vector<int> changed_;
 };
 
