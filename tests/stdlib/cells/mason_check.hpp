@@ -1,0 +1,226 @@
+// A mason's reading of a laid wall, from its cells alone: straight joints between consecutive
+// courses, whole bricks and courses against their nominal sizes, the smallest piece, voussoirs
+// that are not whole, and openings without a head. The tests run it on every example facade in
+// every bond and tree (test_cells_mason.cpp); it knows nothing of how the cells were laid.
+#pragma once
+
+#include <acanthus/stdlib/cells.hpp>
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace cells_test {
+
+using acanthus::Point;
+using acanthus::Rect;
+using acanthus::cells::Cell;
+using acanthus::cells::Facade;
+
+struct MasonSpec {
+    double length = 215, height = 65, mortar = 10;  // the nominal brick and joint
+    double tolerance = 3;                           // a unit or course may be this far off
+};
+
+struct MasonReport {
+    long head_joints = 0;      // head joints with a joint in the course above to compare
+    long straight_joints = 0;  // of those, closer than a quarter brick to one above
+    std::vector<Point> straight_at;
+    long whole_bricks = 0;
+    double length_deviation = 0;  // largest |length - nominal| of a whole stretcher or header
+    double height_deviation = 0;  // largest |height - nominal| of a whole brick
+    long courses = 0;
+    long courses_off_gauge = 0;   // course pitches beyond the tolerance (cut courses included)
+    double gauge_deviation = 0;   // largest |pitch - gauge|
+    double smallest_piece = 1e9;  // smallest cell's area over a brick face's
+    long slivers = 0;             // cells under 10% of a brick face
+    long narrow_pieces = 0;       // brick pieces narrower than a queen closer
+    long voussoirs = 0;
+    long voussoirs_clipped = 0;
+    long openings = 0;
+    long openings_without_head = 0;
+    std::vector<std::string> headless;
+};
+
+namespace mason_detail {
+
+inline bool is_rect(const std::vector<Point>& p, Rect& r) {
+    if (p.size() != 4) return false;
+    r = {1e300, 1e300, -1e300, -1e300};
+    for (Point q : p)
+        r = {std::min(r.x0, q.x), std::min(r.y0, q.y), std::max(r.x1, q.x), std::max(r.y1, q.y)};
+    const double eps = 1e-6 * std::max(1.0, std::max(std::abs(r.x1), std::abs(r.y1)));
+    for (Point q : p)
+        if ((std::abs(q.x - r.x0) > eps && std::abs(q.x - r.x1) > eps) ||
+            (std::abs(q.y - r.y0) > eps && std::abs(q.y - r.y1) > eps))
+            return false;
+    return true;
+}
+
+inline double area(const std::vector<Point>& p) {
+    double a = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Point& q = p[i];
+        const Point& r = p[(i + 1) % p.size()];
+        a += q.x * r.y - r.x * q.y;
+    }
+    return std::abs(a) / 2;
+}
+
+inline bool contains(const std::vector<Point>& poly, Point p) {
+    bool in = false;
+    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+        if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
+            p.x < poly[j].x + (p.y - poly[j].y) * (poly[i].x - poly[j].x) / (poly[i].y - poly[j].y))
+            in = !in;
+    return in;
+}
+
+// Laid in courses of bricks (not stones, arches or coloured blocks).
+inline bool coursed(const Cell& c) {
+    static const std::set<std::string> kinds{"bricks", "window_bottom", "quoins", "lintel",
+                                             "soldier_course"};
+    return kinds.count(c.generator) > 0;
+}
+
+inline bool is_head(const std::string& generator) {
+    static const std::set<std::string> heads{"lintel", "arch_stones", "arch_bricks",
+                                             "soldier_course", "flat_arch"};
+    return heads.count(generator) > 0;
+}
+
+struct Joint {
+    double x, y0, y1;  // the gap's middle and the course's drawn extent (SVG: y0 above)
+};
+
+}  // namespace mason_detail
+
+inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& cells,
+                               const MasonSpec& s) {
+    using namespace mason_detail;
+    MasonReport r;
+    const double face = s.length * s.height, gauge = s.height + s.mortar;
+    const double header = (s.length - s.mortar) / 2;
+    const double closer = (s.length + s.mortar) / 4 - s.mortar - s.tolerance;
+
+    // Pieces, whole units, and the head joints between neighbours in a course.
+    std::vector<Rect> bricks;
+    std::vector<double> bottoms;
+    for (const Cell& c : cells) {
+        double a = area(c.polygon) / face;
+        r.smallest_piece = std::min(r.smallest_piece, a);
+        r.slivers += a < 0.1;
+        Rect b;
+        if (!coursed(c) || !is_rect(c.polygon, b)) continue;
+        bricks.push_back(b);
+        bottoms.push_back(b.y1);
+        const double w = b.width(), h = b.height();
+        if (std::abs(h - s.height) > 0.2 * s.height) continue;  // a cut course
+        if (w < closer) ++r.narrow_pieces;
+        const double nominal = std::abs(w - s.length) <= 0.12 * s.length ? s.length
+                               : std::abs(w - header) <= 0.12 * header   ? header
+                                                                         : 0;
+        if (nominal == 0) continue;  // a bat or closer
+        ++r.whole_bricks;
+        r.length_deviation = std::max(r.length_deviation, std::abs(w - nominal));
+        r.height_deviation = std::max(r.height_deviation, std::abs(h - s.height));
+    }
+    const double same = 0.05 * s.mortar + 1e-9;
+    auto row = [&](const Rect& b) { return std::llround(b.y1 / same); };
+    std::sort(bricks.begin(), bricks.end(), [&](const Rect& a, const Rect& b) {
+        return row(a) != row(b) ? row(a) < row(b) : a.x0 < b.x0;
+    });
+    std::vector<Joint> joints;
+    for (std::size_t i = 0; i + 1 < bricks.size(); ++i) {
+        const Rect &a = bricks[i], &b = bricks[i + 1];
+        if (row(a) != row(b) || std::abs(a.y0 - b.y0) > same) continue;
+        double gap = b.x0 - a.x1;
+        if (gap > 0 && gap <= 2 * s.mortar) joints.push_back({(a.x1 + b.x0) / 2, a.y0, a.y1});
+    }
+    // Each joint against those of the course right above it (its bottom a joint over our top).
+    std::sort(joints.begin(), joints.end(),
+              [](const Joint& a, const Joint& b) { return a.y1 < b.y1; });
+    for (const Joint& j : joints) {
+        auto lo = std::lower_bound(joints.begin(), joints.end(), j.y0 - 2 * s.mortar,
+                                   [](const Joint& a, double y) { return a.y1 < y; });
+        bool compared = false, straight = false;
+        for (auto it = lo; it != joints.end() && it->y1 < j.y0; ++it) {
+            compared = true;
+            straight |= std::abs(it->x - j.x) < s.length / 4 - 1e-6;
+        }
+        r.head_joints += compared;
+        if (straight) {
+            ++r.straight_joints;
+            r.straight_at.push_back({j.x, j.y0});
+        }
+    }
+    // Course pitches from the bottoms of bricks, cut courses too.
+    std::sort(bottoms.begin(), bottoms.end());
+    std::vector<double> lines;
+    for (double y : bottoms)
+        if (lines.empty() || y - lines.back() > same) lines.push_back(y);
+    r.courses = static_cast<long>(lines.size());
+    for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+        double pitch = lines[i + 1] - lines[i];
+        if (pitch > 1.5 * gauge) continue;  // a storey of openings or another face between
+        double dev = std::abs(pitch - gauge);
+        r.gauge_deviation = std::max(r.gauge_deviation, dev);
+        r.courses_off_gauge += dev > s.tolerance + 1e-9;
+    }
+    // Voussoirs: whole when every vertex lies on the inner or the outer arc, a brick apart.
+    for (const Cell& c : cells) {
+        if ((c.generator != "arch_stones" && c.generator != "arch_bricks") ||
+            c.feature != acanthus::cells::FeatureKind::edge || c.feature_index < 0)
+            continue;
+        const auto& e = facade.edges()[static_cast<std::size_t>(c.feature_index)];
+        if (!e.arc) continue;
+        ++r.voussoirs;
+        const Point o = e.segments.front().center;
+        double lo = 1e300, hi = -1e300;
+        for (Point p : c.polygon) {
+            double d = std::hypot(p.x - o.x, p.y - o.y);
+            lo = std::min(lo, d), hi = std::max(hi, d);
+        }
+        const double tol = 0.25 * s.mortar + 1e-6;
+        bool whole = hi - lo >= s.length - tol;
+        for (Point p : c.polygon) {
+            double d = std::hypot(p.x - o.x, p.y - o.y);
+            whole &= std::abs(d - lo) < tol || std::abs(d - hi) < tol;
+        }
+        r.voussoirs_clipped += !whole;
+    }
+    // Heads: above the middle of every top edge of an opening, a lintel, arch or soldier cell.
+    std::set<std::string> seen, headless;
+    for (const auto& e : facade.edges()) {
+        if (!e.opening || e.part != acanthus::cells::Part::top) continue;
+        std::string name;
+        for (const std::string& l : e.labels) name += (name.empty() ? "" : " ") + l;
+        seen.insert(name);
+        const double mid = e.length / 2;
+        const Point p = e.at(mid) + e.inward(mid) * (s.mortar + 0.25 * s.height);
+        bool head = false;
+        for (const Cell& c : cells)
+            if (is_head(c.generator) && contains(c.polygon, p)) head = true;
+        if (!head) headless.insert(name);
+    }
+    r.openings = static_cast<long>(seen.size());
+    r.openings_without_head = static_cast<long>(headless.size());
+    r.headless.assign(headless.begin(), headless.end());
+    if (cells.empty()) r.smallest_piece = 0;
+    return r;
+}
+
+// One line of a table: the numbers a mason would look at first.
+inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
+    return out << "straight " << r.straight_joints << "/" << r.head_joints << ", whole "
+               << r.whole_bricks << " dev L " << r.length_deviation << " H " << r.height_deviation
+               << ", courses " << r.courses << " off-gauge " << r.courses_off_gauge << " (max "
+               << r.gauge_deviation << "), smallest " << r.smallest_piece << " slivers "
+               << r.slivers << " narrow " << r.narrow_pieces << ", voussoirs clipped "
+               << r.voussoirs_clipped << "/" << r.voussoirs << ", headless "
+               << r.openings_without_head << "/" << r.openings;
+}
+
+}  // namespace cells_test

@@ -1,0 +1,130 @@
+// The mason's checker: it finds what it should on deliberately broken walls, and it reads every
+// example facade in every bond and tree (centimetres, as rules/facade.acr lays them).
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <map>
+
+#include "cells_oracle.hpp"
+#include "mason_check.hpp"
+
+using namespace cells_test;
+
+namespace {
+
+const MasonSpec kCm{21.5, 6.5, 1, 0.3};
+
+Cell brick(double x0, double y0, double x1, double y1, int course,
+           const char* generator = "bricks") {
+    const double h = kCm.mortar / 2;
+    Cell c;
+    c.polygon = {{x0 + h, y0 + h}, {x1 - h, y0 + h}, {x1 - h, y1 - h}, {x0 + h, y1 - h}};
+    c.generator = generator;
+    c.course = course;
+    return c;
+}
+
+// Courses of stretchers on a plain wall, each course shifted by `shift`.
+std::vector<Cell> stretchers(double shift, int courses, double length = 22.5) {
+    std::vector<Cell> cells;
+    for (int k = 0; k < courses; ++k) {
+        double y1 = 100 - 7.5 * k, y0 = y1 - 7.5;
+        double x = k % 2 ? -shift : 0;
+        for (; x < 200; x += length)
+            if (x + length > 0) cells.push_back(brick(std::max(0.0, x), y0, x + length, y1, k));
+    }
+    return cells;
+}
+
+Facade plain_wall() {
+    std::vector<FacadeShape> s;
+    s.push_back(shape(rect(0, 0, 200, 100), {"wall"}, "w"));
+    return Facade::from_shapes(std::move(s), "plain.svg");
+}
+
+}  // namespace
+
+TEST(CellsMason, HalfBrickBondHasNoStraightJoint) {
+    MasonReport r = mason_check(plain_wall(), stretchers(11.25, 6), kCm);
+    EXPECT_GT(r.head_joints, 30);
+    EXPECT_EQ(r.straight_joints, 0);
+    EXPECT_NEAR(r.length_deviation, 0, 1e-9);
+    EXPECT_EQ(r.courses_off_gauge, 0);
+}
+
+TEST(CellsMason, FindsStraightJoints) {
+    // Courses shifted by 2 cm: every joint runs on into the next course.
+    MasonReport r = mason_check(plain_wall(), stretchers(2, 6), kCm);
+    EXPECT_GT(r.straight_joints, 30);
+    EXPECT_EQ(r.straight_joints, static_cast<long>(r.straight_at.size()));
+}
+
+TEST(CellsMason, FindsStretchedBricksAndCourses) {
+    std::vector<Cell> cells = stretchers(11.25, 4, 24);  // 23 cm bricks
+    cells.push_back(brick(0, 61, 22.5, 70, 4));          // a course 9 cm high over the others
+    cells.push_back(brick(0, 53.5, 22.5, 61, 5));
+    MasonReport r = mason_check(plain_wall(), cells, kCm);
+    EXPECT_NEAR(r.length_deviation, 1.5, 1e-9);
+    EXPECT_GE(r.courses_off_gauge, 1);
+}
+
+TEST(CellsMason, FindsSliversAndNarrowPieces) {
+    std::vector<Cell> cells = stretchers(11.25, 2);
+    cells.push_back(brick(0, 50, 2.5, 57.5, 7));  // 1.5 x 6.5 drawn: 7% of a face
+    MasonReport r = mason_check(plain_wall(), cells, kCm);
+    EXPECT_EQ(r.slivers, 1);
+    EXPECT_EQ(r.narrow_pieces, 1);
+    EXPECT_LT(r.smallest_piece, 0.1);
+}
+
+TEST(CellsMason, FindsHeadlessOpeningsAndClippedVoussoirs) {
+    std::vector<FacadeShape> s;
+    s.push_back(shape(rect(0, 0, 300, 200), {"wall"}, "w"));
+    s.push_back(shape(rect(30, 100, 60, 80), {"window"}, "flat"));
+    s.push_back(shape(arched(150, 180, 80, 60), {"window", "arch"}, "round"));
+    Facade f = Facade::from_shapes(std::move(s), "two.svg");
+    Options o;
+    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1;
+    Texture t = texture(f, brick_tree(), o, 1);
+    MasonReport r = mason_check(f, t.cells, kCm);
+    EXPECT_EQ(r.openings, 2);
+    ASSERT_EQ(r.headless.size(), 1u);  // the flat-headed window; the arch has its voussoirs
+    EXPECT_NE(r.headless[0].find("flat"), std::string::npos);
+    EXPECT_GT(r.voussoirs, 5);
+    // Notch one voussoir: it is no longer whole.
+    for (Cell& c : t.cells)
+        if (c.generator == "arch_stones" && c.feature == FeatureKind::edge) {
+            Point a = c.polygon[0], b = c.polygon[1];
+            c.polygon.insert(c.polygon.begin() + 1, midpoint(a, b) + (b - a).perp() * 0.3);
+            break;
+        }
+    EXPECT_EQ(mason_check(f, t.cells, kCm).voussoirs_clipped, r.voussoirs_clipped + 1);
+}
+
+// Every example facade in every bond and tree; the numbers go to the log (the table).
+TEST(CellsMason, ExampleFacades) {
+    const std::string dir = std::string(ACANTHUS_SOURCE_DIR) + "/examples/facades/";
+    Options o;
+    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1;
+    Node b = generator("bricks", bricks());
+    Node rowlock = by_kind(by_part(b, generator("window_bottom", window_bottom()), b),
+                           by_curve(generator("arch_bricks", arch_bricks()),
+                                    by_part(b, generator("window_bottom", window_bottom()), b)),
+                           b);
+    const std::map<std::string, Node> trees{
+        {"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
+    for (const char* name : {"row-house", "gable", "oculus", "insets"}) {
+        Facade f = Facade::from_svg_file(dir + name + ".svg");
+        for (Bond bond : {Bond::running, Bond::english, Bond::flemish, Bond::header, Bond::stack})
+            for (const auto& [tree_name, tree] : trees) {
+                o.bond = bond;
+                Texture t = texture(f, tree, o, 1);
+                MasonReport r = mason_check(f, t.cells, kCm);
+                std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << r
+                          << "\n";
+            }
+        o.bond = Bond::ashlar;
+        MasonReport r = mason_check(f, texture(f, ashlar_tree(), o, 1).cells, kCm);
+        std::cout << name << " ashlar: " << r << "\n";
+    }
+}
