@@ -56,6 +56,30 @@ bool write_whole_file(const fs::path& path, const std::string& text) {
     return !ec;
 }
 
+// Responses go out as they are: the library compresses a text body with Brotli (at its slowest
+// quality: 0.07 s to 9 s for a render) or gzip whenever the browser accepts it, and on loopback
+// sending the bytes takes less time than compressing them (docs/preview.md#speed). A body sent
+// by a content provider of known length is never compressed.
+void send_uncompressed(httplib::Response& res) {
+    if (res.body.empty()) return;
+    auto body = std::make_shared<const std::string>(std::move(res.body));
+    res.body.clear();
+    const std::string type = res.get_header_value("Content-Type");
+    res.headers.erase("Content-Type");  // set_content_provider adds it again
+    res.set_content_provider(
+        body->size(), type,
+        [body](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+            return sink.write(body->data() + offset, length);
+        });
+}
+
+httplib::Server::Handler uncompressed(httplib::Server::Handler handler) {
+    return [handler = std::move(handler)](const httplib::Request& req, httplib::Response& res) {
+        handler(req, res);
+        send_uncompressed(res);
+    };
+}
+
 void bad_request(httplib::Response& res, const std::string& message) {
     res.status = 400;
     res.set_content(json{{"error", message}}.dump(), "application/json");
@@ -213,6 +237,12 @@ void send_rerun(PreviewSite& site, httplib::Response& res, const std::vector<std
 }  // namespace
 
 void add_routes(httplib::Server& server, PreviewSite& site) {
+    const auto get = [&server](const std::string& pattern, httplib::Server::Handler handler) {
+        server.Get(pattern, uncompressed(std::move(handler)));
+    };
+    const auto post = [&server](const std::string& pattern, httplib::Server::Handler handler) {
+        server.Post(pattern, uncompressed(std::move(handler)));
+    };
     static const std::pair<const char*, const char*> assets[] = {
         {"/", "text/html; charset=utf-8"},
         {"/preview.js", "text/javascript; charset=utf-8"},
@@ -220,13 +250,13 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
     for (const auto& [path, type] : assets) {
         const std::string file = std::string(path) == "/" ? "index.html" : path + 1;
         const std::string mime = type;
-        server.Get(path, [&site, file, mime](const httplib::Request&, httplib::Response& res) {
+        get(path, [&site, file, mime](const httplib::Request&, httplib::Response& res) {
             send_file(res, fs::path(site.assets_dir) / file, mime.c_str());
             res.set_header("Cache-Control", "no-store");
         });
     }
 
-    server.Get("/status.json", [&site](const httplib::Request&, httplib::Response& res) {
+    get("/status.json", [&site](const httplib::Request&, httplib::Response& res) {
         json status = site.status.to_json();
         settings_json(site.job.settings(), site, status["settings"]);
         status["file"] = site.file;
@@ -234,7 +264,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         res.set_content(status.dump(), "application/json");
     });
 
-    server.Get("/render.svg", [&site](const httplib::Request&, httplib::Response& res) {
+    get("/render.svg", [&site](const httplib::Request&, httplib::Response& res) {
         std::string svg = site.status.svg();
         if (svg.empty()) {
             res.status = 404;
@@ -247,7 +277,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
 
     for (const char* ext : {"pdf", "png"}) {
         const std::string e = ext;
-        server.Get("/render." + e, [&site, e](const httplib::Request&, httplib::Response& res) {
+        get("/render." + e, [&site, e](const httplib::Request&, httplib::Response& res) {
             static std::atomic<long> n{0};
             const fs::path file =
                 fs::path(site.work_dir) / ("download-" + std::to_string(++n) + "." + e);
@@ -256,7 +286,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         });
     }
 
-    server.Get("/debug-frame.png", [&site](const httplib::Request& req, httplib::Response& res) {
+    get("/debug-frame.png", [&site](const httplib::Request& req, httplib::Response& res) {
         const std::string it = req.get_param_value("iteration");
         if (it.empty() || it.size() > 9 ||
             it.find_first_not_of("0123456789") != std::string::npos || std::stol(it) < 1) {
@@ -277,7 +307,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
 
     // Frames of the growth: POST /frames {"every": K} makes them, GET /frames/N.png serves them.
     static std::mutex frames_mutex;
-    server.Post("/frames", [&site](const httplib::Request& req, httplib::Response& res) {
+    post("/frames", [&site](const httplib::Request& req, httplib::Response& res) {
         json body;
         if (!parse_json(req, res, body)) return;
         long every = body.value("every", 1L);
@@ -300,29 +330,28 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         for (const auto& entry : fs::directory_iterator(dir, ec)) count += entry.is_regular_file();
         res.set_content(json{{"count", count}}.dump(), "application/json");
     });
-    server.Get(
-        R"(/frames/(\d{1,6})\.png)", [&site](const httplib::Request& req, httplib::Response& res) {
-            char name[32];
-            std::snprintf(name, sizeof name, "frame-%06ld.png", std::stol(req.matches[1].str()));
-            std::lock_guard lock(frames_mutex);
-            send_file(res, fs::path(site.work_dir) / "frames" / name, "image/png");
-        });
+    get(R"(/frames/(\d{1,6})\.png)", [&site](const httplib::Request& req, httplib::Response& res) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame-%06ld.png", std::stol(req.matches[1].str()));
+        std::lock_guard lock(frames_mutex);
+        send_file(res, fs::path(site.work_dir) / "frames" / name, "image/png");
+    });
 
-    server.Get("/panels.json", [&site](const httplib::Request&, httplib::Response& res) {
+    get("/panels.json", [&site](const httplib::Request&, httplib::Response& res) {
         res.set_content(json(site.panels).dump(), "application/json");
     });
-    server.Get(R"(/panels/([A-Za-z0-9_.-]{1,64}))", [&site](const httplib::Request& req,
-                                                            httplib::Response& res) {
-        const std::string name = req.matches[1];
-        if (std::find(site.panels.begin(), site.panels.end(), name) == site.panels.end()) {
-            res.status = 404;
-            res.set_content("not found\n", "text/plain");
-            return;
-        }
-        send_file(res, fs::path(site.panels_dir) / name, "image/svg+xml");
-    });
+    get(R"(/panels/([A-Za-z0-9_.-]{1,64}))",
+        [&site](const httplib::Request& req, httplib::Response& res) {
+            const std::string name = req.matches[1];
+            if (std::find(site.panels.begin(), site.panels.end(), name) == site.panels.end()) {
+                res.status = 404;
+                res.set_content("not found\n", "text/plain");
+                return;
+            }
+            send_file(res, fs::path(site.panels_dir) / name, "image/svg+xml");
+        });
 
-    server.Post("/settings", [&site](const httplib::Request& req, httplib::Response& res) {
+    post("/settings", [&site](const httplib::Request& req, httplib::Response& res) {
         json body;
         if (!parse_json(req, res, body)) return;
         PreviewSettings s = site.job.settings();
@@ -335,7 +364,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
     });
 
     // A panel dropped onto the page: saved in the server's own directory, used from now on.
-    server.Post("/panel", [&site](const httplib::Request& req, httplib::Response& res) {
+    post("/panel", [&site](const httplib::Request& req, httplib::Response& res) {
         if (req.body.size() > kMaxRequestBody) {
             res.status = 413;
             return;
@@ -356,7 +385,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
     });
 
     // Growth-library strokes drawn on the page, saved as the guides SVG the library reads.
-    server.Post("/guides", [&site](const httplib::Request& req, httplib::Response& res) {
+    post("/guides", [&site](const httplib::Request& req, httplib::Response& res) {
         json body;
         if (!parse_json(req, res, body)) return;
         std::string svg, error;
@@ -384,7 +413,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         res.set_content(json{{"guides", svg.empty() ? "" : file.string()}}.dump(),
                         "application/json");
     });
-    server.Get("/guides.svg", [&site](const httplib::Request&, httplib::Response& res) {
+    get("/guides.svg", [&site](const httplib::Request&, httplib::Response& res) {
         // Only the file this server wrote, whatever growth_guides the settings name.
         const std::string written = latest_guides.get();
         if (written.empty()) {
@@ -396,7 +425,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
     });
 
     // Server-sent events: the status, each time it changes (and every 15 s to keep it open).
-    server.Get("/events", [&site](const httplib::Request&, httplib::Response& res) {
+    get("/events", [&site](const httplib::Request&, httplib::Response& res) {
         res.set_header("Cache-Control", "no-store");
         auto seen = std::make_shared<long>(-1);
         res.set_chunked_content_provider(
@@ -435,13 +464,15 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         return httplib::Server::HandlerResponse::Handled;
     });
 
+    // Also the answers of the pre-routing handler and the library's own errors (>= 400).
     server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
-        if (res.body.empty()) {
+        if (res.body.empty() && !res.has_header("Content-Type")) {
             res.set_content(res.status == 404   ? "not found\n"
                             : res.status == 413 ? "request body too large\n"
                                                 : "error\n",
                             "text/plain");
         }
+        send_uncompressed(res);
     });
 }
 

@@ -33,6 +33,19 @@ def raw_get(url, path):
     return r.status
 
 
+def get_encoded(url, path, encodings="br, gzip"):
+    """(status, Content-Encoding, body, seconds) of a GET that accepts compressed answers."""
+    host, port = url[len("http://"):].rstrip("/").split(":")
+    c = http.client.HTTPConnection(host, int(port), timeout=10)
+    start = time.monotonic()
+    c.request("GET", path, headers={"Accept-Encoding": encodings})
+    r = c.getresponse()
+    body = r.read()
+    seconds = time.monotonic() - start
+    c.close()
+    return r.status, r.getheader("Content-Encoding"), body, seconds
+
+
 def save(path, text):
     with open(path + ".tmp", "w") as f:
         f.write(text)
@@ -56,6 +69,15 @@ def main():
             code, first_svg, ctype = server.get("/render.svg")
             check(code == 200 and ctype.startswith("image/svg+xml") and b"<svg" in first_svg,
                   "/render.svg serves the render")
+            # Never compressed: Brotli took up to 9 s for a render (docs/preview.md#speed).
+            for path, start in [("/render.svg", b"<"), ("/status.json", b"{"), ("/", b"<"),
+                                ("/preview.js", b"/"), ("/nothing", b"not found")]:
+                code, encoding, body, seconds = get_encoded(server.url, path)
+                check(code in (200, 404) and encoding is None and body.startswith(start) and
+                      seconds < 1, "%s with Accept-Encoding: br, gzip comes plain (%d, %s, %.3f s)"
+                      % (path, code, encoding, seconds))
+            check(get_encoded(server.url, "/render.svg")[2] == first_svg,
+                  "the same bytes as without Accept-Encoding")
             rules_fired = {r["rule"]: r["successes"] for r in s["metrics"]["rules"]}
             check(rules_fired.get("seed --> dot") == 1, "per-rule metrics")
 
