@@ -3,12 +3,15 @@
 #include <httplib.h>
 #include <pthread.h>
 #include <stdlib.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <thread>
@@ -150,12 +153,24 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
         httplib::Server server;
         server.set_payload_max_length(kMaxRequestBody);
         server.new_task_queue = [] { return new httplib::ThreadPool(16); };
+        // The library's default sets SO_REUSEPORT, with which a second preview on the same
+        // port shares it silently (requests split between two rule files). SO_REUSEADDR only
+        // lets a stopped preview's port be taken again at once.
+        server.set_socket_options([](socket_t sock) {
+            int yes = 1;
+            setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+        });
         // Bound before anything is compiled: a port in use costs nothing.
+        errno = 0;
         const int bound = port == 0 ? server.bind_to_any_port(host)
                                     : (server.bind_to_port(host, port) ? port : -1);
         if (bound < 0) {
-            std::cerr << "acanthus: error: cannot listen on " << host << ":" << port
-                      << " (in use? try --port N, or --port 0 for any free port)\n";
+            const int why = errno;
+            std::cerr << "acanthus: error: cannot listen on " << host << ":" << port << ": "
+                      << (why == EADDRINUSE ? "the port is in use (another acanthus preview?)"
+                          : why != 0        ? std::strerror(why)
+                                            : "cannot bind")
+                      << "; --port N takes another port, --port 0 any free one\n";
             code = kBadInput;
         } else {
             RenderJob job(config, settings, status);

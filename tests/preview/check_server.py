@@ -4,6 +4,7 @@ Usage: check_server.py ACANTHUS"""
 import http.client
 import os
 import shutil
+import subprocess
 import sys
 import tempfile
 import threading
@@ -69,6 +70,17 @@ def main():
             code, first_svg, ctype = server.get("/render.svg")
             check(code == 200 and ctype.startswith("image/svg+xml") and b"<svg" in first_svg,
                   "/render.svg serves the render")
+            # --port 0 took a free port and printed it; a second preview on that port is refused.
+            port = int(server.url.rstrip("/").rsplit(":", 1)[1])
+            check(port > 0, "--port 0 printed the port it took (%d)" % port)
+            start = time.monotonic()
+            second = subprocess.run([acanthus, "preview", rules, "--port", str(port)], cwd=work,
+                                    capture_output=True, text=True, timeout=30)
+            check(second.returncode == 1 and "in use" in second.stderr and
+                  time.monotonic() - start < 10,
+                  "a second preview on port %d exits 1: %s" % (port, second.stderr.strip()))
+            check(server.status()["revision"] == s["revision"], "the first one still answers")
+
             # Never compressed: Brotli took up to 9 s for a render (docs/preview.md#speed).
             for path, start in [("/render.svg", b"<"), ("/status.json", b"{"), ("/", b"<"),
                                 ("/preview.js", b"/"), ("/nothing", b"not found")]:
