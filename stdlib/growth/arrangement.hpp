@@ -17,7 +17,6 @@ struct Link {
 struct Node {
     Point position;
     int symbol = -1;  // -1: an id-less seed
-    int sub = -1;
     int source = -1;  // reference element once placed; -1 for a seed
     double rotation = 0;
     double angle = 0;

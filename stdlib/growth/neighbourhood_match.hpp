@@ -12,7 +12,7 @@ namespace acanthus::growth::detail {
 struct RingEntry {
     Vector offset;    // neighbour minus centre
     int symbol = -1;  // -1: an id-less seed, which matches any symbol
-    int sub = -1;     // -1: none (seeds, empty sub-ids): never "the same"
+    int sub = -1;     // sub-id: the reference element it is (a copy of); -1 for a seed
 };
 
 // A neighbour's neighbour (the 2-ring without the 1-ring), matched by nearest position.

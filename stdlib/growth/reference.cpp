@@ -50,11 +50,6 @@ std::shared_ptr<const ReferenceData> analyse_reference(std::string name,
     std::sort(data->symbols.begin(), data->symbols.end());
     data->symbols.erase(std::unique(data->symbols.begin(), data->symbols.end()),
                         data->symbols.end());
-    std::vector<std::string> subs;
-    for (const auto& e : elements)
-        if (!e.sub.empty()) subs.push_back(e.sub);
-    std::sort(subs.begin(), subs.end());
-    subs.erase(std::unique(subs.begin(), subs.end()), subs.end());
 
     double total = 0;
     data->shortest_edge = INFINITY;
@@ -68,8 +63,6 @@ std::shared_ptr<const ReferenceData> analyse_reference(std::string name,
     for (std::size_t i = 0; i < elements.size(); ++i) {
         const ReferenceElement& e = elements[i];
         data->symbol.push_back(data->symbol_id(e.symbol));
-        auto it = std::lower_bound(subs.begin(), subs.end(), e.sub);
-        data->sub.push_back(e.sub.empty() ? -1 : static_cast<int>(it - subs.begin()));
         data->radius.push_back(e.size > 0 ? e.size : 0.35 * data->mean_edge);
         std::vector<RingSlot> ring;
         for (std::size_t k = 0; k < c.rings[i].size(); ++k) {

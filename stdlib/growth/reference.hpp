@@ -1,5 +1,6 @@
-// The analysed reference arrangement behind growth::Reference: elements with interned symbol and
-// sub-ids, the connectivity, and each element's 1-ring as offsets (section 4).
+// The analysed reference arrangement behind growth::Reference: elements with interned symbols,
+// the connectivity, and each element's 1-ring as offsets (section 4). An element's sub-id is its
+// index: section 3 gives every reference element a sub-id of its own.
 #pragma once
 
 #include <acanthus/stdlib/growth.hpp>
@@ -22,7 +23,6 @@ struct ReferenceData {
     std::vector<ReferenceElement> elements;
     std::vector<std::string> symbols;            // sorted names; symbol ids index it
     std::vector<int> symbol;                     // per element
-    std::vector<int> sub;                        // per element, interned; -1 for an empty sub
     std::vector<double> radius;                  // collision radius per element
     std::vector<std::vector<Outline>> outlines;  // per element (empty lists for JSON)
     Connectivity connectivity;

@@ -1,5 +1,5 @@
-// The reference arrangement as JSON (issue 10): {"elements": [{"symbol": "a", "sub": "1",
-// "x": 0, "y": 0, "angle": 0, "size": 3}], "flips": [[i, j]]}.
+// The reference arrangement as JSON (issue 10): {"elements": [{"symbol": "a", "label": "1",
+// "x": 0, "y": 0, "angle": 0, "size": 3}], "flips": [[i, j]]}. "sub" is the label's old name.
 #include <acanthus/error.hpp>
 #include <acanthus/input_file.hpp>
 #include <acanthus/stdlib/growth.hpp>
@@ -73,7 +73,10 @@ Reference Reference::from_json_string(std::string_view input, const std::string&
         r.symbol = text(e, "symbol", where);
         if (r.symbol.empty()) throw InputError(where + ": empty \"symbol\"");
         r.position = {number(e, "x", where), number(e, "y", where)};
-        if (e.contains("sub")) r.sub = text(e, "sub", where);
+        if (e.contains("label") && e.contains("sub"))
+            throw InputError(where + ": \"label\" and its old name \"sub\" both given");
+        for (const char* key : {"label", "sub"})
+            if (e.contains(key)) r.label = text(e, key, where);
         if (e.contains("angle")) r.angle = number(e, "angle", where);
         if (e.contains("size")) {
             r.size = number(e, "size", where);

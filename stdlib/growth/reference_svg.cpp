@@ -137,7 +137,10 @@ Reference Reference::from_svg_string(std::string_view text, const std::string& n
         ReferenceElement r;
         r.symbol = e.data.at("symbol");
         if (r.symbol.empty()) throw InputError(where + ": empty data-symbol");
-        if (e.data.count("sub")) r.sub = e.data.at("sub");
+        if (e.data.count("label") && e.data.count("sub"))
+            throw InputError(where + ": data-label and its old name data-sub both given");
+        for (const char* key : {"label", "sub"})
+            if (e.data.count(key)) r.label = e.data.at(key);
         if (e.data.count("angle")) r.angle = number(e, "angle", where) * M_PI / 180;
         if (e.data.count("size")) {
             r.size = number(e, "size", where);

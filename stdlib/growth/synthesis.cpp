@@ -24,7 +24,7 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
     for (std::size_t i = 0; i < reference.elements.size(); ++i) {
         std::vector<RingEntry> ring;
         for (const RingSlot& s : reference.rings[i])
-            ring.push_back({s.offset, reference.symbol[s.element], reference.sub[s.element]});
+            ring.push_back({s.offset, reference.symbol[s.element], s.element});
         rings_.push_back(std::move(ring));
     }
     if (options.two_ring) {
@@ -188,7 +188,7 @@ void Synthesis::grow(int id) {
     std::vector<int> target_nodes;
     for (int k : ccw_from_widest_gap(offsets)) {
         const Node& n = pattern_[neighbours[k]];
-        target.push_back({offsets[k], n.symbol, n.placed() ? n.sub : -1});
+        target.push_back({offsets[k], n.symbol, n.source});
         target_nodes.push_back(neighbours[k]);
     }
     Choice choice =
@@ -209,7 +209,6 @@ void Synthesis::grow(int id) {
     const int c = choice.element;
     n.source = c;
     n.symbol = reference_.symbol[c];
-    n.sub = reference_.sub[c];
     n.rotation = choice.match.rotation;
     n.angle = reference_.elements[c].angle + n.rotation + jitter;
     n.scale = scale;
@@ -299,7 +298,7 @@ SynthesisResult Synthesis::result() const {
         index[id] = static_cast<int>(r.motifs.size());
         const ReferenceElement& e = reference_.elements[n.source];
         r.motifs.push_back(
-            {n.position, e.symbol, e.sub, n.angle, n.scale, n.radius, n.source, n.tint});
+            {n.position, e.symbol, e.label, n.angle, n.scale, n.radius, n.source, n.tint});
     }
     for (int id : placed_)
         for (const Link& l : pattern_[id].links) {

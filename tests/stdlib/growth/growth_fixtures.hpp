@@ -14,7 +14,7 @@ using acanthus::Point;
 using acanthus::growth::ReferenceElement;
 
 // A triangular (hexagonal-packing) lattice of `rows` x `cols` points, spacing `a`; the symbol
-// cycles through `symbols` along each row, every element has its own sub-id.
+// cycles through `symbols` along each row; no labels (every element is its own sub-id anyway).
 inline std::vector<ReferenceElement> triangular_lattice(int rows, int cols, double a,
                                                         const std::vector<std::string>& symbols = {
                                                             "a"}) {
@@ -23,7 +23,6 @@ inline std::vector<ReferenceElement> triangular_lattice(int rows, int cols, doub
         for (int c = 0; c < cols; ++c) {
             ReferenceElement e;
             e.symbol = symbols[static_cast<std::size_t>(c) % symbols.size()];
-            e.sub = std::to_string(out.size());
             e.position = {c * a + (r % 2) * a / 2, r * a * std::sqrt(3.0) / 2};
             out.push_back(e);
         }
@@ -54,7 +53,6 @@ inline std::vector<ReferenceElement> striped_grid(int rows, int cols, double a, 
         for (int c = 0; c < cols; ++c) {
             ReferenceElement e;
             e.symbol = c % period == period - 1 ? "b" : "a";
-            e.sub = std::to_string(out.size());
             e.position = {c * a, r * a};
             out.push_back(e);
         }

@@ -14,7 +14,7 @@ using namespace acanthus::growth;
 namespace {
 
 const char* kGood = R"({"elements": [
-  {"symbol": "a", "sub": "1", "x": 0, "y": 0, "angle": 0.5, "size": 3},
+  {"symbol": "a", "label": "1", "x": 0, "y": 0, "angle": 0.5, "size": 3},
   {"symbol": "b", "x": 10, "y": 0},
   {"symbol": "a", "x": 5, "y": 8.66},
   {"symbol": "b", "x": 15, "y": 8.66}
@@ -40,13 +40,25 @@ void expect_error(const std::string& text, const std::string& part) {
 TEST(GrowthJson, GoodFileLoadsWithDefaults) {
     Reference ref = Reference::from_json_string(kGood, "ref.json");
     ASSERT_EQ(ref.size(), 4u);
-    EXPECT_EQ(ref.element(0).sub, "1");
+    EXPECT_EQ(ref.element(0).label, "1");
     EXPECT_DOUBLE_EQ(ref.element(0).angle, 0.5);
     EXPECT_DOUBLE_EQ(ref.radius(0), 3);
-    EXPECT_EQ(ref.element(1).sub, "");
+    EXPECT_EQ(ref.element(1).label, "");
     EXPECT_DOUBLE_EQ(ref.element(1).angle, 0);
     EXPECT_NEAR(ref.radius(1), 0.35 * ref.mean_edge_length(), 1e-12);
     EXPECT_EQ(ref.edges().size(), 5u);
+}
+
+TEST(GrowthJson, SubIsTheLabelsOldName) {
+    std::string old = kGood;
+    old.replace(old.find("\"label\""), 7, "\"sub\"");
+    EXPECT_EQ(Reference::from_json_string(old, "ref.json").element(0).label, "1");
+    const std::string head = R"({"elements": [{"symbol": "a", "x": 0, "y": 0},
+                                  {"symbol": "a", "x": 1, "y": 0}, )";
+    expect_error(head + R"({"symbol": "a", "x": 0, "y": 1, "label": "p", "sub": "q"}]})",
+                 "element 2: \"label\" and its old name \"sub\" both given");
+    expect_error(head + R"({"symbol": "a", "x": 0, "y": 1, "label": 7}]})",
+                 "element 2: \"label\" is not a string");
 }
 
 TEST(GrowthJson, FileIsReadFromDisk) {

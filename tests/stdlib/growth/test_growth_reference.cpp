@@ -130,19 +130,18 @@ TEST(GrowthReference, RingsAreCounterClockwiseAndInteriorIsNotBoundary) {
     EXPECT_EQ(ref.data().candidates.size(), 7u);
 }
 
-TEST(GrowthReference, SymbolsAndSubsAreInterned) {
+TEST(GrowthReference, SymbolsAreInternedAndLabelsKeptAsGiven) {
     auto elements = growth_fixtures::triangular_lattice(3, 4, 5.0, {"b", "a"});
-    elements[0].sub = "";
-    elements[1].sub = "x";
-    elements[2].sub = "x";
+    elements[1].label = "x";
+    elements[2].label = "x";
     Reference ref = Reference::from_elements(elements);
     const auto& d = ref.data();
     EXPECT_EQ(d.symbols, (std::vector<std::string>{"a", "b"}));
     EXPECT_EQ(d.symbol[0], 1);
     EXPECT_EQ(d.symbol[1], 0);
-    EXPECT_EQ(d.sub[0], -1);
-    EXPECT_EQ(d.sub[1], d.sub[2]);
-    EXPECT_NE(d.sub[1], d.sub[3]);
+    EXPECT_EQ(ref.element(0).label, "");
+    EXPECT_EQ(ref.element(1).label, "x");
+    EXPECT_EQ(ref.element(2).label, "x");
 }
 
 }  // namespace

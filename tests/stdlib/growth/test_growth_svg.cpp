@@ -26,7 +26,7 @@ std::string grid_svg() {
                  (c % 2 ? "b" : "a") + "\" x=\"" + std::to_string(c * 10 - 1) + "\" y=\"" +
                  std::to_string(r * 10 - 1) + "\" width=\"2\" height=\"2\" fill=\"#f00\"/>";
         }
-    s += R"x(<g id="mid" data-symbol="b" data-sub="m" data-angle="90" data-size="3"
+    s += R"x(<g id="mid" data-symbol="b" data-label="m" data-angle="90" data-size="3"
               transform="translate(10,10)"><circle r="1" fill="#00f"/><circle cx="0.5" r="0.5"/></g>)x";
     s += R"x(<text>ignored</text><rect id="frame" width="40" height="40" fill="none"/></svg>)x";
     return s;
@@ -50,7 +50,7 @@ TEST(GrowthSvg, ElementsAtBoundingBoxCentresWithDataAttributes) {
     // The group is last in document order; its box spans both circles after the translation.
     const ReferenceElement& mid = ref.element(8);
     EXPECT_EQ(mid.symbol, "b");
-    EXPECT_EQ(mid.sub, "m");
+    EXPECT_EQ(mid.label, "m");
     EXPECT_NEAR(mid.angle, M_PI / 2, 1e-12);
     EXPECT_NEAR(mid.position.x, 10, 1e-9);
     EXPECT_NEAR(mid.position.y, 10, 1e-9);
@@ -61,6 +61,21 @@ TEST(GrowthSvg, ElementsAtBoundingBoxCentresWithDataAttributes) {
     EXPECT_EQ(ref.outlines(0).size(), 1u);
     EXPECT_EQ(ref.symbol_count(), 2u);
     EXPECT_EQ(ref.edges().size(), 16u);  // a square grid: 12 sides and one diagonal per square
+}
+
+TEST(GrowthSvg, DataSubIsTheLabelsOldName) {
+    std::string s = kHead;
+    const int xs[] = {0, 10, 5}, ys[] = {0, 0, 8};
+    for (int i = 0; i < 3; ++i)
+        s += "<circle data-symbol=\"d\" data-sub=\"v" + std::to_string(i) + "\" r=\"1\" cx=\"" +
+             std::to_string(xs[i]) + "\" cy=\"" + std::to_string(ys[i]) + "\"/>";
+    Reference ref = Reference::from_svg_string(s + "</svg>", "old.svg");
+    EXPECT_EQ(ref.element(2).label, "v2");
+    std::string m = error_of(kHead + R"x(<circle data-symbol="a" data-label="p" data-sub="q" r="1"/>
+        <circle data-symbol="a" cx="5" r="1"/><circle data-symbol="a" cy="5" r="1"/></svg>)x");
+    EXPECT_NE(m.find("element 0 <circle> (line 1): data-label and its old name data-sub"),
+              std::string::npos)
+        << m;
 }
 
 TEST(GrowthSvg, UseElementsAreElementsOfTheirOwn) {

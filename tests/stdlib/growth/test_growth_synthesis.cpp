@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "growth_fixtures.hpp"
+#include "growth_lattices.hpp"
 
 using namespace acanthus;
 using namespace acanthus::growth;
@@ -129,9 +130,10 @@ int verbatim_links(const Reference& ref, const SynthesisResult& r) {
 }
 
 TEST(GrowthSynthesis, SubIdTermAvoidsCopyingTheReferenceVerbatim) {
-    // Every element of an irregular reference has its own sub-id. The paper's subid term (1 when
-    // the sub-ids are the same) makes continuing the reference verbatim cost w3; without it the
-    // exact continuation is the best match and the reference is copied in patches.
+    // Every element of a reference is its own sub-id (no labels are given here). The paper's
+    // subid term (1 when the sub-ids are the same) makes continuing the reference verbatim cost
+    // w3; without it the exact continuation is the best match and the reference is copied in
+    // patches.
     Reference ref = Reference::from_elements(growth_fixtures::jittered_lattice(8, 8, 10, 2));
     Region region = Region::from_spec("rect:120,100");
     Options o;
@@ -143,6 +145,26 @@ TEST(GrowthSynthesis, SubIdTermAvoidsCopyingTheReferenceVerbatim) {
     int with_count = verbatim_links(ref, with), without_count = verbatim_links(ref, without);
     EXPECT_LT(with_count, static_cast<int>(with.edges.size()) / 20);
     EXPECT_GT(without_count, static_cast<int>(without.edges.size()) / 4);
+}
+
+TEST(GrowthSynthesis, LabelsAreCarriedNotMatched) {
+    // The 3-colour lattice labels its elements "0", "1", "2" by symbol. Were the labels
+    // the sub-id, every correct neighbour would cost w3 and the lattice would collapse; as plain
+    // labels they change nothing but the motifs' label.
+    auto labelled = growth_lattices::lattice(growth_lattices::Kind::three_colour, 8, 10);
+    auto plain = labelled;
+    for (auto& e : plain) e.label.clear();
+    Region region = Region::from_spec("rect:150,120");
+    SynthesisResult a = synthesize(Reference::from_elements(labelled), region, Options{}, {}, 4);
+    SynthesisResult b = synthesize(Reference::from_elements(plain), region, Options{}, {}, 4);
+    ASSERT_EQ(a.motifs.size(), b.motifs.size());
+    for (std::size_t i = 0; i < a.motifs.size(); ++i) {
+        EXPECT_EQ(a.motifs[i].position, b.motifs[i].position);
+        EXPECT_EQ(a.motifs[i].source, b.motifs[i].source);
+        EXPECT_EQ(a.motifs[i].label, labelled[static_cast<std::size_t>(a.motifs[i].source)].label);
+        EXPECT_EQ(b.motifs[i].label, "");
+    }
+    for (auto [i, j] : a.edges) EXPECT_NE(a.motifs[i].symbol, a.motifs[j].symbol);
 }
 
 TEST(GrowthSynthesis, MaxElementsAndStartsOutside) {
@@ -166,7 +188,7 @@ TEST(GrowthSynthesis, IrregularReferenceKeepsItsSpacing) {
     auto elements = growth_fixtures::jittered_lattice(9, 9, 10, 2);
     Reference ref = Reference::from_elements(elements);
     std::vector<Motif> as_motifs;
-    for (const auto& e : elements) as_motifs.push_back({e.position, e.symbol, e.sub, 0, 1, 0, 0});
+    for (const auto& e : elements) as_motifs.push_back({e.position, e.symbol, e.label, 0, 1, 0, 0});
     double reference_median = median_nearest_neighbour(as_motifs);
     for (Mode mode : {Mode::none, Mode::rotation}) {
         Options o;

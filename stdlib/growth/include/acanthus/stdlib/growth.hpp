@@ -32,7 +32,9 @@ std::map<std::string, int> parse_priority(std::string_view text);
 // 0.35 x the mean reference edge length.
 struct ReferenceElement {
     std::string symbol;
-    std::string sub;
+    // The author's label: a drawn variant carried to the motif. Not the paper's sub-id: every
+    // reference element is its own sub-id (section 3), whatever its label.
+    std::string label;
     Point position;
     double angle = 0;  // radians
     double size = 0;
@@ -60,12 +62,13 @@ struct ReferenceData;
 // source and, where there is one, the element index.
 class Reference {
   public:
-    // {"elements": [{"symbol", "x", "y", optional "sub", "angle", "size"}], "flips": [[i, j]]}
+    // {"elements": [{"symbol", "x", "y", optional "label" (or its old name "sub"), "angle",
+    // "size"}], "flips": [[i, j]]}
     static Reference from_json_file(const std::string& path);
     static Reference from_json_string(std::string_view text, const std::string& name);
-    // An SVG drawing: every shape or group with data-symbol (optional data-sub, data-angle in
-    // degrees, data-size) is one element at the centre of its bounding box; its shapes are its
-    // outline. Flips: data-flips="i j; k l" on the root.
+    // An SVG drawing: every shape or group with data-symbol (optional data-label or data-sub,
+    // data-angle in degrees, data-size) is one element at the centre of its bounding box; its
+    // shapes are its outline. Flips: data-flips="i j; k l" on the root.
     static Reference from_svg_file(const std::string& path);
     static Reference from_svg_string(std::string_view text, const std::string& name);
     // By content: an SVG when the file's first non-blank character is '<', else JSON.
@@ -102,7 +105,7 @@ struct Options {
     bool relax = true;      // section 5.5 least squares after every growth step
     double w1 = 1.0;        // position difference
     double w2 = 1.0;        // symbol differs
-    double w3 = 100.0;      // sub-id the same (the paper: avoids repeating one element)
+    double w3 = 100.0;      // the same reference element (sub-id): avoids copying it verbatim
     long max_elements = 0;  // 0: until no seed is left
     std::map<std::string, int> priority;  // per symbol, higher grows first (default 0)
     double priority_radius = 5.0;         // x mean edge length: where a higher priority blocks
@@ -150,7 +153,7 @@ struct Guides {
 struct Motif {
     Point position;
     std::string symbol;
-    std::string sub;
+    std::string label;  // the reference element's label
     double angle = 0;
     double scale = 1;
     double radius = 0;
@@ -198,8 +201,8 @@ void draw_motif(Canvas& canvas, const Reference& reference, int source, Point ce
                 double scale, double tint = 0);
 
 // Inside a rule body: one element of type T per motif (T has a circle proxy p0 and fields symbol,
-// sub, angle, scale and source, as `motif` in growth.acr), each added with new_child(). Returns
-// how many were added.
+// sub (the label), angle, scale and source, as `motif` in growth.acr), each added with
+// new_child(). Returns how many were added.
 template <class T>
 int add_motifs(const SynthesisResult& result, bool sterile = true) {
     int added = 0;
@@ -207,7 +210,7 @@ int add_motifs(const SynthesisResult& result, bool sterile = true) {
         T* e = new T;
         e->p0.set(m.position, m.radius);
         e->symbol = m.symbol;
-        e->sub = m.sub;
+        e->sub = m.label;
         e->angle = m.angle;
         e->scale = m.scale;
         e->source = m.source;
