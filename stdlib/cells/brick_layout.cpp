@@ -1,7 +1,10 @@
 #include "brick_layout.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
+#include "brick_grid.hpp"
 #include "context_data.hpp"
 
 namespace acanthus::cells::detail {
@@ -54,10 +57,33 @@ Rect BrickLayout::rect(int row, int piece) const {
     return grid.cell(row, p.start, p.start + p.length);
 }
 
+Rect BrickLayout::drawn(int row, int u0, int u1) const {
+    const Rect claim = grid.cell(row, u0, u1);
+    const double slack = 1e-9 * std::max(1.0, std::abs(claim.x1) + std::abs(claim.y1));
+    auto size = [&](double claimed, double nominal, double per_joint) {
+        return std::abs(claimed - nominal) <= per_joint + slack ? nominal - mortar
+                                                                : claimed - mortar;
+    };
+    // Head joints: the stretch of a whole unit run; bed joints: the course's height.
+    const int n = u1 - u0;
+    const double w = size(claim.width(), n * unit, tolerance * n / 4);
+    const double h = size(claim.height(), gauge, tolerance);
+    const Point c = claim.center();
+    return {c.x - w / 2, c.y - h / 2, c.x + w / 2, c.y + h / 2};
+}
+
+Rect BrickLayout::drawn(int row, int piece) const {
+    const Piece& p = rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
+    return drawn(row, p.start, p.start + p.length);
+}
+
 BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o) {
     BrickLayout layout;
-    layout.grid =
-        make_grid(facade, face, (o.brick_length + o.mortar) / 4, o.brick_height + o.mortar);
+    layout.grid = make_brick_grid(facade, face, o);
+    layout.unit = (o.brick_length + o.mortar) / 4;
+    layout.gauge = o.brick_height + o.mortar;
+    layout.tolerance = o.joint_tolerance;
+    layout.mortar = o.mortar;
     layout.bond.bond = o.bond == Bond::ashlar ? Bond::running : o.bond;
     long best = -1;
     for (int phase = 0; phase < layout.bond.period(); ++phase) {

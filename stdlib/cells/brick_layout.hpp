@@ -1,6 +1,6 @@
-// The bricks of a face before any is laid [5.2]: the grid tool at quarter-brick units and
-// course height, runs of units inside the face cut into the bond's pieces, with the phase that
-// gives the fewest cut bricks ("fewest half bricks"; the corner flips follow from it).
+// The bricks of a face before any is laid [5.2]: the brick grid (fixed quarter-brick units and
+// courses, brick_grid.hpp), runs of units inside the face cut into the bond's pieces, with the
+// phase that gives the fewest cut bricks ("fewest half bricks"; the corner flips follow from it).
 #pragma once
 
 #include <acanthus/stdlib/cells.hpp>
@@ -20,9 +20,15 @@ struct BrickLayout {
     std::vector<std::vector<char>> taken;         // per row and piece: laid already
     long cut_pieces = 0;
 
+    double unit = 0, gauge = 0, tolerance = 0, mortar = 0;  // nominal, from the options
+
     // The piece under point p: row and index, or false.
     bool find(Point p, int& row, int& piece) const;
     Rect rect(int row, int piece) const;
+    // What a mason lays in units [u0, u1) of `row`: the nominal brick (or bat) centred in its
+    // claim where the joints took up the difference, the claim less half a joint elsewhere.
+    Rect drawn(int row, int u0, int u1) const;
+    Rect drawn(int row, int piece) const;
 };
 
 BrickLayout make_brick_layout(const Facade& facade, int face, const Options& options);

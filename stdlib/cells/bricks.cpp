@@ -19,7 +19,8 @@ void lay(Context& c, BrickLayout& layout, int row, int piece) {
     char& taken = layout.taken[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
     if (taken) return;
     taken = 1;
-    c.place(detail::polygon_of(layout.rect(row, piece)), layout.grid.course(row));
+    const Rect drawn = layout.drawn(row, piece);
+    c.place(detail::polygon_of(layout.rect(row, piece)), layout.grid.course(row), true, &drawn);
 }
 
 }  // namespace
@@ -57,10 +58,11 @@ Generator bricks() {
                 if (taken[k]) continue;
                 taken[k] = 1;
                 Rect rect = layout.rect(r, static_cast<int>(k));
+                const Rect drawn = layout.drawn(r, static_cast<int>(k));
                 if (pieces[k].full && occupancy.rect_is_free(rect))
-                    c.place_free_rect(rect, layout.grid.course(r));
+                    c.place_free_rect(rect, layout.grid.course(r), &drawn);
                 else
-                    c.place(detail::polygon_of(rect), layout.grid.course(r));
+                    c.place(detail::polygon_of(rect), layout.grid.course(r), true, &drawn);
             }
         }
     };

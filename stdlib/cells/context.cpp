@@ -8,6 +8,7 @@
 #include "context_data.hpp"
 #include "facade_data.hpp"
 #include "face_occupancy.hpp"
+#include "feature_walk.hpp"
 
 namespace acanthus::cells {
 
@@ -77,31 +78,34 @@ void Context::begin(const std::string& generator, const FeatureRef& feature) {
 
 using detail::axis_rect;
 
-int Context::place_free_rect(Rect r, int course) {
+int Context::place_free_rect(Rect r, int course, const Rect* drawn) {
     const Facade& facade = *data_->facade;
     int face = detail::face_of(facade, data_->feature);
     face_occupancy(face).claim(r);
     double h = data_->options.mortar / 2;
+    if (drawn) r = {drawn->x0 - h, drawn->y0 - h, drawn->x1 + h, drawn->y1 + h};
     if (r.width() <= 2 * h || r.height() <= 2 * h) return 0;
     data_->add_cell(course).polygon = {
         {r.x0 + h, r.y0 + h}, {r.x1 - h, r.y0 + h}, {r.x1 - h, r.y1 - h}, {r.x0 + h, r.y1 - h}};
     return 1;
 }
 
-int Context::place(const std::vector<Point>& claim, int course, bool clip) {
+int Context::place(const std::vector<Point>& claim, int course, bool clip, const Rect* drawn) {
     const Facade& facade = *data_->facade;
     int face = detail::face_of(facade, data_->feature);
     FaceOccupancy& occupancy = face_occupancy(face);
     const detail::IntScale& scale = occupancy.data().scale();
     std::vector<std::vector<Point>> pieces;
     Rect r;
+    bool whole = !clip;
     if (clip && axis_rect(claim, r)) {
         // What the booleans would give when the rectangle is wholly free: itself on the grid.
         auto snap = [&](Point p) { return scale.to_point(scale.to_int(p)); };
         Point a = snap({r.x0, r.y0}), b = snap({r.x1, r.y1});
-        if (a.x < b.x && a.y < b.y && occupancy.data().snapped_rect_is_free({a.x, a.y, b.x, b.y}))
+        if (a.x < b.x && a.y < b.y && occupancy.data().snapped_rect_is_free({a.x, a.y, b.x, b.y})) {
             pieces.push_back({a, {b.x, a.y}, b, {a.x, b.y}});
-        else
+            whole = true;
+        } else
             pieces = occupancy.free_part(claim);
     } else if (clip) {
         pieces = occupancy.free_part(claim);
@@ -134,18 +138,20 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip) {
                 if (on >= 2) data_->edges[static_cast<std::size_t>(e)].claim(s0, s1);
             }
         }
-        std::vector<std::vector<Point>> drawn;
+        std::vector<std::vector<Point>> drawn_cells;
         double h = data_->options.mortar / 2;
-        if (axis_rect(piece, r)) {
+        if (whole && drawn) {
+            drawn_cells.push_back(detail::polygon_of(*drawn));
+        } else if (axis_rect(piece, r)) {
             if (r.width() > 2 * h && r.height() > 2 * h)
-                drawn.push_back({{r.x0 + h, r.y0 + h},
-                                 {r.x1 - h, r.y0 + h},
-                                 {r.x1 - h, r.y1 - h},
-                                 {r.x0 + h, r.y1 - h}});
+                drawn_cells.push_back({{r.x0 + h, r.y0 + h},
+                                       {r.x1 - h, r.y0 + h},
+                                       {r.x1 - h, r.y1 - h},
+                                       {r.x0 + h, r.y1 - h}});
         } else {
-            drawn = detail::shrink(piece, h, scale);
+            drawn_cells = detail::shrink(piece, h, scale);
         }
-        for (std::vector<Point>& d : drawn) {
+        for (std::vector<Point>& d : drawn_cells) {
             data_->add_cell(course).polygon = std::move(d);
             ++added;
         }

@@ -65,6 +65,12 @@ CourseGrid make_grid(const Facade& facade, int face, double ux, double uy) {
     CourseGrid g;
     g.xs = lines(std::move(vx), ux);
     g.ys = lines(std::move(vy), uy);
+    classify_units(facade, face, g);
+    return g;
+}
+
+void classify_units(const Facade& facade, int face, CourseGrid& g) {
+    const Face& f = facade.faces()[static_cast<std::size_t>(face)];
     const int nu = g.units(), nr = g.rows();
     g.status.assign(static_cast<std::size_t>(nu) * static_cast<std::size_t>(nr), kOutside);
 
@@ -133,7 +139,6 @@ CourseGrid make_grid(const Facade& facade, int face, double ux, double uy) {
             s = partial[static_cast<std::size_t>(u)] ? kPartial : (inside ? kFull : kOutside);
         }
     }
-    return g;
 }
 
 }  // namespace acanthus::cells::detail

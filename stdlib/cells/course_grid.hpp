@@ -31,6 +31,8 @@ struct CourseGrid {
 
 // Unit width `ux`, row height `uy`.
 CourseGrid make_grid(const Facade& facade, int face, double ux, double uy);
+// Sets the status of every unit of `g`'s lines against the face's outline.
+void classify_units(const Facade& facade, int face, CourseGrid& g);
 
 // A point just inside the face from a corner (along the bisector) or an edge (along its normal).
 Point inside_corner(const Corner& c, double step);

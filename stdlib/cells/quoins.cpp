@@ -27,7 +27,8 @@ void quoin(Context& c, const detail::BrickLayout& layout, const Edge& e, Point i
     int u0 = right ? u : u - len + 1, u1 = right ? u + len : u + 1;
     u0 = std::max(0, u0);
     u1 = std::min(layout.grid.units(), u1);
-    c.place(detail::polygon_of(layout.grid.cell(row, u0, u1)), course);
+    const Rect drawn = layout.drawn(row, u0, u1);
+    c.place(detail::polygon_of(layout.grid.cell(row, u0, u1)), course, true, &drawn);
 }
 
 }  // namespace

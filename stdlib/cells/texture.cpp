@@ -102,6 +102,8 @@ void check(const Options& o, const std::string& source_name) {
         bad("the brick size must be positive (cells_brick=LENGTHxHEIGHT), not " +
             std::to_string(o.brick_length) + "x" + std::to_string(o.brick_height));
     if (!std::isfinite(o.mortar) || o.mortar < 0) bad("the mortar joint must be 0 or more");
+    if (!std::isfinite(o.joint_tolerance) || o.joint_tolerance < 0)
+        bad("the joint tolerance must be 0 or more (cells_joint_tolerance)");
     if (o.mortar >= std::min(o.brick_length, o.brick_height))
         bad("the mortar joint must be thinner than the brick");
     if (!std::isfinite(o.ashlar_unit) || o.ashlar_unit < 0)

@@ -22,9 +22,12 @@ int sill_of(const Facade& facade, const Corner& c) {
 }
 
 void headers(Context& c, const detail::BrickLayout& layout, int row, int u0, int u1) {
-    for (int u = std::max(0, u0); u < std::min(u1, layout.grid.units()); u += 2)
-        c.place(detail::polygon_of(layout.grid.cell(row, u, std::min(u + 2, u1))),
-                layout.grid.course(row));
+    for (int u = std::max(0, u0); u < std::min(u1, layout.grid.units()); u += 2) {
+        const int end = std::min(u + 2, u1);
+        const Rect drawn = layout.drawn(row, u, end);
+        c.place(detail::polygon_of(layout.grid.cell(row, u, end)), layout.grid.course(row), true,
+                &drawn);
+    }
 }
 
 }  // namespace

@@ -80,10 +80,12 @@ std::map<int, std::vector<Joint>> head_joints(const Facade& facade, const std::v
         std::sort(rects.begin(), rects.end(), [](Rect a, Rect b) { return a.x0 < b.x0; });
         for (std::size_t i = 0; i + 1 < rects.size(); ++i) {
             Rect a = rects[i], b = rects[i + 1];
-            if (std::abs(a.x1 + mortar - b.x0) > 1e-6 * length || std::abs(a.y0 - b.y0) > 1e-6 ||
+            // Head joints open or close within a tolerance so that bricks keep their size.
+            const double gap = b.x0 - a.x1;
+            if (gap <= 0 || gap > 2 * mortar || std::abs(a.y0 - b.y0) > 1e-6 ||
                 std::abs(a.y1 - b.y1) > 1e-6)
                 continue;
-            Joint j{a.x1 + mortar / 2, a.y0, a.y1};
+            Joint j{(a.x1 + b.x0) / 2, a.y0, a.y1};
             bool near = std::any_of(keep_off.begin(), keep_off.end(), [&](Rect r) {
                 return j.x > r.x0 && j.x < r.x1 && j.y1 > r.y0 && j.y0 < r.y1;
             });

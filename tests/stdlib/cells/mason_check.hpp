@@ -28,8 +28,9 @@ struct MasonReport {
     long head_joints = 0;      // head joints with a joint in the course above to compare
     long straight_joints = 0;  // of those, closer than a quarter brick to one above
     std::vector<Point> straight_at;
-    long whole_bricks = 0;
-    double length_deviation = 0;  // largest |length - nominal| of a whole stretcher or header
+    long whole_bricks = 0;        // stretchers and headers within a third of the tolerance
+    long shaved_bricks = 0;       // within 12% of one but not whole: cuts no mason makes
+    double length_deviation = 0;  // largest |length - nominal| of a whole or shaved brick
     double height_deviation = 0;  // largest |height - nominal| of a whole brick
     long courses = 0;
     long courses_off_gauge = 0;   // course pitches beyond the tolerance (cut courses included)
@@ -123,8 +124,12 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
                                : std::abs(w - header) <= 0.12 * header   ? header
                                                                          : 0;
         if (nominal == 0) continue;  // a bat or closer
-        ++r.whole_bricks;
         r.length_deviation = std::max(r.length_deviation, std::abs(w - nominal));
+        if (std::abs(w - nominal) > s.tolerance / 3) {
+            ++r.shaved_bricks;
+            continue;
+        }
+        ++r.whole_bricks;
         r.height_deviation = std::max(r.height_deviation, std::abs(h - s.height));
     }
     const double same = 0.05 * s.mortar + 1e-9;
@@ -215,12 +220,12 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
 // One line of a table: the numbers a mason would look at first.
 inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
     return out << "straight " << r.straight_joints << "/" << r.head_joints << ", whole "
-               << r.whole_bricks << " dev L " << r.length_deviation << " H " << r.height_deviation
-               << ", courses " << r.courses << " off-gauge " << r.courses_off_gauge << " (max "
-               << r.gauge_deviation << "), smallest " << r.smallest_piece << " slivers "
-               << r.slivers << " narrow " << r.narrow_pieces << ", voussoirs clipped "
-               << r.voussoirs_clipped << "/" << r.voussoirs << ", headless "
-               << r.openings_without_head << "/" << r.openings;
+               << r.whole_bricks << " shaved " << r.shaved_bricks << " dev L " << r.length_deviation
+               << " H " << r.height_deviation << ", courses " << r.courses << " off-gauge "
+               << r.courses_off_gauge << " (max " << r.gauge_deviation << "), smallest "
+               << r.smallest_piece << " slivers " << r.slivers << " narrow " << r.narrow_pieces
+               << ", voussoirs clipped " << r.voussoirs_clipped << "/" << r.voussoirs
+               << ", headless " << r.openings_without_head << "/" << r.openings;
 }
 
 }  // namespace cells_test

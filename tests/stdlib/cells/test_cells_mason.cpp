@@ -122,6 +122,13 @@ TEST(CellsMason, ExampleFacades) {
                 MasonReport r = mason_check(f, t.cells, kCm);
                 std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << r
                           << "\n";
+                SCOPED_TRACE(std::string(name) + " " + std::string(to_string(bond)) + " " +
+                             tree_name);
+                // Fixed units: whole bricks keep their height, courses their gauge.
+                EXPECT_LE(r.height_deviation, 0.1);
+                if (std::string(name) != "gable") {
+                    EXPECT_EQ(r.courses_off_gauge, 0);
+                }
             }
         o.bond = Bond::ashlar;
         MasonReport r = mason_check(f, texture(f, ashlar_tree(), o, 1).cells, kCm);

@@ -150,6 +150,9 @@ struct Options {
     double brick_length = 215;  // user units; bricks and the grid tool's module
     double brick_height = 65;
     double mortar = 10;  // joint width: drawn cells are claims shrunk by half of it
+    // How far a head or bed joint may open or close so that whole bricks and courses keep their
+    // nominal size and still meet openings and the wall's ends; beyond it, cut bricks and courses.
+    double joint_tolerance = 3;
     Bond bond = Bond::running;
     double ashlar_unit = 0;    // grid of the ashlar tool; 0: brick_height + mortar
     int ashlar_max_width = 4;  // ashlar stones, in grid units
@@ -236,11 +239,14 @@ class Context {
     EdgeOccupancy& edge_occupancy(int edge);
     FaceOccupancy& face_occupancy(int face);
 
-    // Claims `claim` (clipped to what is free in the face when `clip`), and adds the drawn cells.
-    // Returns how many cells were added (0 when nothing was free).
-    int place(const std::vector<Point>& claim, int course = -1, bool clip = true);
+    // Claims `claim` (clipped to what is free in the face when `clip`), and adds the drawn cells:
+    // the claim shrunk by half the joint, or `drawn` when given and the claim was wholly free (a
+    // brick of nominal size whose joints took up a difference). Returns how many cells were added
+    // (0 when nothing was free).
+    int place(const std::vector<Point>& claim, int course = -1, bool clip = true,
+              const Rect* drawn = nullptr);
     // A rectangle known to be free: no clipping.
-    int place_free_rect(Rect rect, int course = -1);
+    int place_free_rect(Rect rect, int course = -1, const Rect* drawn = nullptr);
 
     // Set by the tree while a generator runs.
     void begin(const std::string& generator, const FeatureRef& feature);
