@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "batch/batch_command.hpp"
 #include "compilation.hpp"
 #include "driver/build_command.hpp"
 #include "driver/preview_command.hpp"
@@ -44,7 +45,7 @@ int fail(const std::string& message) {
     return kBadInput;
 }
 
-constexpr const char* kCommands[] = {"compile", "check", "build", "run", "preview"};
+constexpr const char* kCommands[] = {"compile", "check", "build", "run", "preview", "batch"};
 
 // CLI11 would say "A subcommand is required"; name the word and list the commands instead.
 bool report_unknown_command(int argc, char** argv) {
@@ -62,6 +63,7 @@ bool report_unknown_command(int argc, char** argv) {
               << "  build    build a rule file into an executable program\n"
               << "  run      build a rule file (cached) and run it\n"
               << "  preview  serve a live page of a rule file's render, updated on save\n"
+              << "  batch    render a manifest's jobs in parallel, check them against references\n"
               << "Run 'acanthus --help' for the options.\n";
     return true;
 }
@@ -150,11 +152,16 @@ int main(int argc, char** argv) {
         "Usage: acanthus preview [-I DIR]... [--cxx CXX] [-O LEVEL] FILE.acr [program options...] "
         "[--port N] [--host ADDR]");
 
+    acanthus::batch::BatchOptions batch_options;
+    auto* batch = acanthus::batch::add_batch_command(app, batch_options);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : kBadUsage;
     }
+
+    if (batch->parsed()) return acanthus::batch::run_batch_command(batch_options);
 
     // Previews favour a quick build over a fast program (docs/preview.md, bench/preview.sh).
     if (preview->parsed() && preview->count("-O") == 0) build_options.optimization = "0";

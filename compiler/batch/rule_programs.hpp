@@ -1,0 +1,30 @@
+// Each rule file of a batch, compiled once to C++ and built once into the content-hash cache
+// `acanthus run` uses (driver/build_command.hpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "driver/build_command.hpp"
+#include "driver/toolchain.hpp"
+
+namespace acanthus::batch {
+
+struct RuleProgram {
+    std::string rule;        // absolute path
+    std::string cpp;         // generated C++ (the rule file and every import it read)
+    std::string key;         // changes with the C++, the compiler command, the runtime, the version
+    std::string executable;  // set once built
+    std::string error;       // the front end's diagnostics or the C++ compiler's messages
+};
+
+// Runs the front end over `rule` (no C++ compiler yet): fills cpp and key, or error.
+RuleProgram prepare_rule_program(const std::string& rule, const Toolchain& toolchain,
+                                 const BuildOptions& options);
+
+// Builds (or finds in the cache) the program; false with `program.error` set, the compiler's
+// messages captured rather than printed.
+bool build_rule_program(RuleProgram& program, const Toolchain& toolchain,
+                        const BuildOptions& options);
+
+}  // namespace acanthus::batch
