@@ -16,6 +16,7 @@
 #include <iostream>
 #include <thread>
 
+#include "driver/preview_limits.hpp"
 #include "driver/preview_render_job.hpp"
 #include "driver/preview_routes.hpp"
 #include "driver/preview_status.hpp"
@@ -29,6 +30,7 @@ namespace {
 constexpr int kBadInput = 1;
 constexpr int kBadUsage = 2;
 constexpr int kDefaultPort = 8765;
+constexpr std::size_t kKeptIdleThreads = 8;  // a browser keeps about six connections open
 
 int usage(const std::string& message) {
     std::cerr << "acanthus: error: " << message
@@ -152,13 +154,22 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
         std::atomic<bool> stopping{false};
         httplib::Server server;
         server.set_payload_max_length(kMaxRequestBody);
-        server.new_task_queue = [] { return new httplib::ThreadPool(16); };
+        server.new_task_queue = [] {
+            return new ConnectionThreads(kMaxConnectionThreads, kKeptIdleThreads);
+        };
+        // A client that sends half a request, or stops reading, is dropped after 5 s without
+        // progress; an idle keep-alive connection after 5 s.
+        server.set_read_timeout(5);
+        server.set_write_timeout(5);
+        server.set_keep_alive_timeout(5);
         // The library's default sets SO_REUSEPORT, with which a second preview on the same
         // port shares it silently (requests split between two rule files). SO_REUSEADDR only
         // lets a stopped preview's port be taken again at once.
-        server.set_socket_options([](socket_t sock) {
+        socket_t listening = -1;
+        server.set_socket_options([&listening](socket_t sock) {
             int yes = 1;
             setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+            listening = sock;  // the last one given is the one bound
         });
         // Bound before anything is compiled: a port in use costs nothing.
         errno = 0;
@@ -173,6 +184,10 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
                       << "; --port N takes another port, --port 0 any free one\n";
             code = kBadInput;
         } else {
+            // The library listens with a backlog of 5: a page opening its connections while
+            // a few others connect found the queue full, and its connection waited for a
+            // retransmission (1 s). Listening again only makes the queue longer.
+            if (listening >= 0) ::listen(listening, SOMAXCONN);
             RenderJob job(config, settings, status);
             const std::string stem = fs::path(input).stem().string();
             PreviewSite site{job,

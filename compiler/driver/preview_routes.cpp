@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "driver/preview_guides.hpp"
+#include "driver/preview_limits.hpp"
 #include "driver/preview_render_job.hpp"
 #include "driver/preview_status.hpp"
 
@@ -218,10 +219,54 @@ void settings_json(const PreviewSettings& s, const PreviewSite& site, json& out)
     out["time_limit"] = s.time_limit;
 }
 
+RunSlots request_runs(kRequestRunsAtOnce, kRequestRunsQueued);
+std::atomic<int> open_streams{0};
+
+// Calls `run` (which runs the program) in one of the few slots for requests' programs, or
+// answers 503 when as many already run and wait: twenty downloads at once started twenty
+// programs before, on two cores beside the live render.
+template <class Run>
+void in_run_slot(httplib::Response& res, Run&& run) {
+    if (request_runs.take(std::chrono::seconds(60)) != RunSlots::Outcome::taken) {
+        res.status = 503;
+        res.set_header("Retry-After", "2");
+        res.set_content("busy: other downloads or frames are being made; try again\n",
+                        "text/plain");
+        return;
+    }
+    struct GiveBack {
+        ~GiveBack() { request_runs.give_back(); }
+    } give_back;
+    run();
+}
+
+// Requests that change the preview or run its program are taken only from the page itself.
+// A browser names the requesting page in Origin (fetch, forms) and says on every request,
+// an <img> of another site's page included, whether it comes from the same origin
+// (Sec-Fetch-Site; "none" is an address typed or a bookmark). Scripts send neither.
+bool changes_or_runs(const httplib::Request& req) {
+    return req.method == "POST" || req.path == "/render.png" || req.path == "/render.pdf" ||
+           req.path == "/debug-frame.png";
+}
+
+bool from_the_page(const httplib::Request& req) {
+    if (req.has_header("Origin") &&
+        req.get_header_value("Origin") != "http://" + req.get_header_value("Host"))
+        return false;
+    const std::string site = req.get_header_value("Sec-Fetch-Site");
+    return site.empty() || site == "same-origin" || site == "none";
+}
+
 // A program output made on request (a download, a debug frame) in the server's directory.
 void send_rerun(PreviewSite& site, httplib::Response& res, const std::vector<std::string>& extra,
                 const fs::path& file, const char* type, const std::string& download) {
-    ExtraRun run = site.job.run_again(extra, 120);
+    ExtraRun run;
+    bool ran = false;
+    in_run_slot(res, [&] {
+        run = site.job.run_again(extra, 120);
+        ran = true;
+    });
+    if (!ran) return;
     if (!run.ok) {
         res.status = 409;
         res.set_content(run.message + "\n", "text/plain");
@@ -316,10 +361,16 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         const fs::path dir = fs::path(site.work_dir) / "frames";
         const fs::path last = fs::path(site.work_dir) / "frames-final.svg";
         std::error_code ec;
-        fs::remove_all(dir, ec);
-        ExtraRun run = site.job.run_again({"--frames", dir.string(), "--every",
-                                           std::to_string(every), "-o", last.string(), "--quiet"},
-                                          300);
+        ExtraRun run;
+        bool ran = false;
+        in_run_slot(res, [&] {
+            fs::remove_all(dir, ec);
+            run = site.job.run_again({"--frames", dir.string(), "--every", std::to_string(every),
+                                      "-o", last.string(), "--quiet"},
+                                     300);
+            ran = true;
+        });
+        if (!ran) return;
         fs::remove(last, ec);
         if (!run.ok) {
             res.status = 409;
@@ -426,10 +477,17 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
 
     // Server-sent events: the status, each time it changes (and every 15 s to keep it open).
     get("/events", [&site](const httplib::Request&, httplib::Response& res) {
+        if (open_streams.fetch_add(1) >= kMaxEventStreams) {
+            --open_streams;
+            res.status = 503;
+            res.set_content("too many pages open on this preview\n", "text/plain");
+            return;
+        }
         res.set_header("Cache-Control", "no-store");
         auto seen = std::make_shared<long>(-1);
         res.set_chunked_content_provider(
-            "text/event-stream", [&site, seen](std::size_t, httplib::DataSink& sink) {
+            "text/event-stream",
+            [&site, seen](std::size_t, httplib::DataSink& sink) {
                 if (*seen >= 0) {
                     long now = *seen;
                     for (int i = 0; i < 15 && now == *seen && !site.stopping; ++i)
@@ -442,22 +500,21 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
                 status["file"] = site.file;
                 const std::string event = "data: " + status.dump() + "\n\n";
                 return sink.write(event.data(), event.size());
-            });
+            },
+            [](bool) { --open_streams; });
     });
 
     // Another web site open in the same browser must not read or drive the preview. A site
     // that rebinds its own name to 127.0.0.1 sends that name as Host: only an address,
-    // localhost or the --host name is served. A POST carrying an Origin is accepted only from
-    // the page itself, whatever address the server listens on.
+    // localhost or the --host name is served. A POST, or a GET that runs the program, is
+    // accepted only from the page itself (from_the_page), whatever address the server listens on.
     server.set_pre_routing_handler([&site](const httplib::Request& req, httplib::Response& res) {
         if (!served_host(req.get_header_value("Host"), site.listen_host)) {
             res.status = 403;
             res.set_content("requests must name the server by its address\n", "text/plain");
             return httplib::Server::HandlerResponse::Handled;
         }
-        if (req.method != "POST" || !req.has_header("Origin"))
-            return httplib::Server::HandlerResponse::Unhandled;
-        if (req.get_header_value("Origin") == "http://" + req.get_header_value("Host"))
+        if (!changes_or_runs(req) || from_the_page(req))
             return httplib::Server::HandlerResponse::Unhandled;
         res.status = 403;
         res.set_content("cross-origin request refused\n", "text/plain");

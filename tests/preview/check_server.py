@@ -4,6 +4,7 @@ Usage: check_server.py ACANTHUS"""
 import http.client
 import os
 import shutil
+import socket
 import subprocess
 import sys
 import tempfile
@@ -45,6 +46,53 @@ def get_encoded(url, path, encodings="br, gzip"):
     seconds = time.monotonic() - start
     c.close()
     return r.status, r.getheader("Content-Encoding"), body, seconds
+
+
+def request_with(url, method, path, headers, timeout=60):
+    host, port = url[len("http://"):].rstrip("/").split(":")
+    c = http.client.HTTPConnection(host, int(port), timeout=timeout)
+    c.request(method, path, headers=headers)
+    r = c.getresponse()
+    r.read()
+    c.close()
+    return r.status, r.getheader("Retry-After")
+
+
+def never_stalls(server):
+    """20 open event streams and 20 clients sending half a request: /status.json still answers."""
+    host, port = server.url[len("http://"):].rstrip("/").split(":")
+    streams, slow = [], []
+    try:
+        for _ in range(20):
+            sock = socket.create_connection((host, int(port)), timeout=10)
+            sock.sendall(b"GET /events HTTP/1.1\r\nHost: %s:%s\r\n\r\n" % (host.encode(),
+                                                                          port.encode()))
+            streams.append(sock)
+        for sock in streams:
+            first = sock.recv(65536)
+            if not (first.startswith(b"HTTP/1.1 200") and b"text/event-stream" in first):
+                check(False, "an event stream answered: %r" % first[:80])
+                break
+        for _ in range(20):
+            sock = socket.create_connection((host, int(port)), timeout=10)
+            sock.sendall(b"GET /status.json HTTP/1.1\r\nHo")
+            slow.append(sock)
+        worst = 0.0
+        end = time.monotonic() + 3
+        while time.monotonic() < end:
+            for sock in slow:  # a byte now and then: never quite a timeout
+                sock.sendall(b"s")
+            start = time.monotonic()
+            code = server.get("/status.json", timeout=10)[0]
+            worst = max(worst, time.monotonic() - start)
+            if code != 200:
+                check(False, "status.json answered (%d)" % code)
+            time.sleep(0.2)
+        check(worst < 0.5, "20 event streams and 20 slow clients open: /status.json answered "
+              "within %.3f s at worst" % worst)
+    finally:
+        for sock in streams + slow:
+            sock.close()
 
 
 def save(path, text):
@@ -133,6 +181,29 @@ def main():
             check(code == 200 and body.startswith(b"%PDF"), "/render.pdf is a PDF")
             code, body, ctype = server.get("/render.png", timeout=60)
             check(code == 200 and body.startswith(b"\x89PNG"), "/render.png is a PNG")
+
+            # Programs run for requests: only for the page itself, a few at a time.
+            page = "http://" + server.url[len("http://"):].rstrip("/")
+            for path in ["/render.png", "/render.pdf", "/debug-frame.png?iteration=3"]:
+                for headers in [{"Origin": "http://evil.example"},
+                                {"Sec-Fetch-Site": "cross-site"}, {"Sec-Fetch-Site": "same-site"}]:
+                    code = request_with(server.url, "GET", path, headers)[0]
+                    check(code == 403, "GET %s with %s refused (%d)" % (path, headers, code))
+            code = request_with(server.url, "GET", "/render.png",
+                                {"Origin": page, "Sec-Fetch-Site": "same-origin"})[0]
+            check(code == 200, "GET /render.png from the page itself (%d)" % code)
+            answers = []
+            threads = [threading.Thread(target=lambda: answers.append(
+                request_with(server.url, "GET", "/render.png", {}))) for _ in range(12)]
+            for t in threads:
+                t.start()
+            for t in threads:
+                t.join()
+            check(all(a == (200, None) or a == (503, "2") for a in answers) and
+                  any(a[0] == 200 for a in answers),
+                  "12 PNG downloads at once: made (200) or refused as busy (503): %s" %
+                  sorted(a[0] for a in answers))
+            never_stalls(server)
 
             # rng seed, panel and seeds from the page; two quick changes: the later one wins
             # (the render in progress is cancelled).

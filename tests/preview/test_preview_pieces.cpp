@@ -1,11 +1,16 @@
 // The preview's pure pieces: diagnostics parsed from compiler output, guides written from
-// strokes, program options split into the page's settings.
+// strokes, program options split into the page's settings, the server's connection threads and
+// program slots.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <future>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "driver/preview_diagnostics.hpp"
 #include "driver/preview_guides.hpp"
+#include "driver/preview_limits.hpp"
 #include "driver/preview_settings.hpp"
 
 namespace acanthus {
@@ -101,6 +106,77 @@ TEST(PreviewSettings, OptionsThePreviewOwnsRefused) {
     EXPECT_FALSE(s.take({"--time-limit", "-1"}, error));
     EXPECT_FALSE(s.take({"--param", "novalue"}, error));
     EXPECT_FALSE(s.take({"--region"}, error));
+}
+
+// Connections that never end (event streams, half requests) do not keep the next one waiting,
+// up to the bound; beyond it a connection waits for a thread.
+TEST(ConnectionThreads, LongConnectionsLeaveRoomAndTheBoundHolds) {
+    ConnectionThreads threads(21, 2);
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    std::atomic<int> started{0};
+    for (int i = 0; i < 20; ++i)
+        threads.enqueue([&, released] {
+            ++started;
+            released.wait();
+        });
+    std::promise<void> quick;
+    threads.enqueue([&] { quick.set_value(); });
+    EXPECT_EQ(quick.get_future().wait_for(std::chrono::seconds(5)), std::future_status::ready);
+    EXPECT_LE(threads.threads(), 21u);
+    std::promise<void> beyond;
+    threads.enqueue([&] { beyond.set_value(); });  // 20 blocked, 21 threads: one is free
+    EXPECT_EQ(beyond.get_future().wait_for(std::chrono::seconds(5)), std::future_status::ready);
+    release.set_value();
+    threads.shutdown();
+    EXPECT_EQ(started, 20);
+    EXPECT_EQ(threads.threads(), 0u);
+}
+
+TEST(ConnectionThreads, WaitsForAThreadAtTheBound) {
+    ConnectionThreads threads(2, 0);
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    for (int i = 0; i < 2; ++i) threads.enqueue([released] { released.wait(); });
+    std::promise<void> third;
+    threads.enqueue([&] { third.set_value(); });
+    std::future<void> done = third.get_future();
+    EXPECT_EQ(done.wait_for(std::chrono::milliseconds(200)), std::future_status::timeout);
+    EXPECT_EQ(threads.threads(), 2u);
+    release.set_value();
+    EXPECT_EQ(done.wait_for(std::chrono::seconds(5)), std::future_status::ready);
+    threads.shutdown();
+}
+
+TEST(ConnectionThreads, IdleThreadsEndDownToTheKeptOnes) {
+    ConnectionThreads threads(8, 1, std::chrono::milliseconds(50));
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    for (int i = 0; i < 4; ++i) threads.enqueue([released] { released.wait(); });
+    release.set_value();
+    for (int i = 0; i < 100 && threads.threads() > 1; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_EQ(threads.threads(), 1u);
+    std::promise<void> later;
+    threads.enqueue([&] { later.set_value(); });
+    EXPECT_EQ(later.get_future().wait_for(std::chrono::seconds(5)), std::future_status::ready);
+}
+
+TEST(RunSlots, RunningThenQueuedThenBusy) {
+    RunSlots slots(2, 1);
+    EXPECT_EQ(slots.take(std::chrono::milliseconds(0)), RunSlots::Outcome::taken);
+    EXPECT_EQ(slots.take(std::chrono::milliseconds(0)), RunSlots::Outcome::taken);
+    EXPECT_EQ(slots.take(std::chrono::milliseconds(20)), RunSlots::Outcome::timed_out);
+    auto queued =
+        std::async(std::launch::async, [&] { return slots.take(std::chrono::seconds(5)); });
+    for (int i = 0; i < 500 && slots.waiting() == 0; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_EQ(slots.take(std::chrono::milliseconds(0)), RunSlots::Outcome::busy);
+    slots.give_back();
+    EXPECT_EQ(queued.get(), RunSlots::Outcome::taken);
+    slots.give_back();
+    slots.give_back();
+    EXPECT_EQ(slots.take(std::chrono::milliseconds(0)), RunSlots::Outcome::taken);
 }
 
 }  // namespace
