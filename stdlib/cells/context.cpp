@@ -35,6 +35,7 @@ Context::Context(const Facade& facade, const Options& options, std::uint64_t see
     data_->faces.resize(facade.faces().size());
     Rect b = facade.bounds();
     data_->edge_tolerance = 2e-5 * std::max(b.width(), b.height());
+    data_->smallest_cell = 0.1 * options.brick_length * options.brick_height;
 }
 
 Context::~Context() = default;
@@ -85,6 +86,7 @@ int Context::place_free_rect(Rect r, int course, const Rect* drawn) {
     double h = data_->options.mortar / 2;
     if (drawn) r = {drawn->x0 - h, drawn->y0 - h, drawn->x1 + h, drawn->y1 + h};
     if (r.width() <= 2 * h || r.height() <= 2 * h) return 0;
+    if ((r.width() - 2 * h) * (r.height() - 2 * h) < data_->smallest_cell) return 0;
     data_->add_cell(course).polygon = {
         {r.x0 + h, r.y0 + h}, {r.x1 - h, r.y0 + h}, {r.x1 - h, r.y1 - h}, {r.x0 + h, r.y1 - h}};
     return 1;
@@ -152,6 +154,8 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
             drawn_cells = detail::shrink(piece, h, scale);
         }
         for (std::vector<Point>& d : drawn_cells) {
+            // A piece under a tenth of a brick's face is no cell a mason lays: mortar fills it.
+            if (detail::area_of(d) < data_->smallest_cell) continue;
             data_->add_cell(course).polygon = std::move(d);
             ++added;
         }

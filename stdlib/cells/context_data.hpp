@@ -22,6 +22,7 @@ struct ContextData {
     FeatureRef feature;
     std::string label;
     double edge_tolerance = 0;
+    double smallest_cell = 0;     // drawn area under which a piece is left to the mortar
     std::vector<int> near_edges;  // scratch for place()
     long expected_cells = 0;      // the estimate progress reports show; 0: unknown
 

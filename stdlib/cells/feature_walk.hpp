@@ -1,4 +1,5 @@
-// Small helpers the generators share: a rectangle as a polygon, points just inside an edge.
+// Small helpers the generators share: a rectangle as a polygon, its area, points just inside
+// an edge.
 #pragma once
 
 #include <acanthus/stdlib/cells.hpp>
@@ -10,6 +11,17 @@ namespace acanthus::cells::detail {
 
 inline std::vector<Point> polygon_of(Rect r) {
     return {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}};
+}
+
+// Unsigned area of a simple polygon (shoelace).
+inline double area_of(const std::vector<Point>& p) {
+    double a = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Point& q = p[i];
+        const Point& r = p[(i + 1) % p.size()];
+        a += q.x * r.y - r.x * q.y;
+    }
+    return std::abs(a) / 2;
 }
 
 // Calls f(point, s) at points `inset` inside the wall from the edge, every `step` or closer.

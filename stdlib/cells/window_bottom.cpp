@@ -1,8 +1,10 @@
 // Window-bottom bricks [5.2]: a row of headers in the course under an opening's sill, one more
-// header past each bottom corner. Faces are not its business: passing one is an error.
+// header past each bottom corner, set off the joints of the courses below and above. Faces are not
+// its business: passing one is an error.
 #include <acanthus/error.hpp>
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
+#include <vector>
 
 #include "brick_layout.hpp"
 #include "context_data.hpp"
@@ -21,9 +23,38 @@ int sill_of(const Facade& facade, const Corner& c) {
     return -1;
 }
 
-void headers(Context& c, const detail::BrickLayout& layout, int row, int u0, int u1) {
-    for (int u = std::max(0, u0); u < std::min(u1, layout.grid.units()); u += 2) {
-        const int end = std::min(u + 2, u1);
+// Head joints of the bond's pieces in `row` (their left ends), to keep the header row off them.
+bool joint_at(const detail::BrickLayout& layout, int row, int u) {
+    if (row < 0 || row >= layout.grid.rows()) return false;
+    for (const detail::Piece& p : layout.rows[static_cast<std::size_t>(row)])
+        if (p.start == u && p.start > 0) return true;
+    return false;
+}
+
+// Joints of the header row over units [a, b): every other unit, on the parity that meets fewest
+// joints of the courses below and above (a straight joint otherwise); end pieces of 2 or 3.
+std::vector<int> header_joints(const detail::BrickLayout& layout, int row, int a, int b) {
+    int best = 0, fewest = -1;
+    for (int parity = 0; parity < 2; ++parity) {
+        int straight = 0;
+        for (int u = a + 2; u <= b - 2; ++u)
+            if (((u % 2) + 2) % 2 == parity)
+                straight += joint_at(layout, row + 1, u) + joint_at(layout, row - 1, u);
+        if (fewest < 0 || straight < fewest) fewest = straight, best = parity;
+    }
+    std::vector<int> joints{a};
+    for (int u = a + 2; u <= b - 2; ++u)
+        if (((u % 2) + 2) % 2 == best) joints.push_back(u);
+    joints.push_back(b);
+    return joints;
+}
+
+// Lays the header row's pieces that overlap [lo, hi); pieces already laid claim nothing more.
+void headers(Context& c, const detail::BrickLayout& layout, int row, const std::vector<int>& j,
+             int lo, int hi) {
+    for (std::size_t k = 0; k + 1 < j.size(); ++k) {
+        const int u = std::max(0, j[k]), end = std::min(j[k + 1], layout.grid.units());
+        if (end <= lo || u >= hi || u >= end) continue;
         const Rect drawn = layout.drawn(row, u, end);
         c.place(detail::polygon_of(layout.grid.cell(row, u, end)), layout.grid.course(row), true,
                 &drawn);
@@ -52,15 +83,16 @@ Generator window_bottom() {
         double tiny = 1e-6 * (x1 - x0);
         int u0 = layout.grid.unit_at(x0 + tiny), u1 = layout.grid.unit_at(x1 - tiny);
         if (row < 0 || u0 < 0 || u1 < 0) return;
+        const std::vector<int> joints = header_joints(layout, row, u0 - 2, u1 + 3);
         if (f.kind == FeatureKind::edge) {
-            headers(c, layout, row, u0, u1 + 1);
+            headers(c, layout, row, joints, u0, u1 + 1);
             return;
         }
         const Corner& corner = facade.corners()[static_cast<std::size_t>(f.index)];
         if (corner.position.x <= (x0 + x1) / 2)
-            headers(c, layout, row, u0 - 2, u0);
+            headers(c, layout, row, joints, u0 - 2, u0);
         else
-            headers(c, layout, row, u1 + 1, u1 + 3);
+            headers(c, layout, row, joints, u1 + 1, u1 + 3);
     };
 }
 
