@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "cocircular_cells.hpp"
 #include "common/triangulation.hpp"
 
 namespace acanthus::growth::detail {
@@ -72,14 +73,18 @@ Connectivity analyse_connectivity(const std::vector<Point>& points,
                                   const std::string& source) {
     Connectivity c;
     std::vector<std::array<int, 3>> triangles;
-    for (const common::DelaunayTriangle& t : common::delaunay_triangulation(points)) {
-        const auto& v = t.vertices;
-        // 2pi/3 itself counts as skewed (a lattice's zigzag side), however the angle rounds.
-        if (largest_angle(points[v[0]], points[v[1]], points[v[2]]) > 2 * M_PI / 3 - 1e-9) {
-            ++c.removed_triangles;
+    for (const Cell& cell :
+         cocircular_cells(points, common::delaunay_triangulation(points), kAngleTolerance)) {
+        // A lone triangle near 2pi/3 counts as skewed, so that a lattice's zigzag side goes
+        // however it rounds. A polygon of points on one circle is a cell of the pattern itself (a
+        // honeycomb's hexagon has angles of exactly 2pi/3) and goes only when clearly flatter.
+        const bool lone = cell.triangles.size() == 1;
+        const double limit = 2 * M_PI / 3 + (lone ? -kAngleTolerance : kAngleTolerance);
+        if (cell.largest_angle > limit) {
+            c.removed_triangles += static_cast<int>(cell.triangles.size());
             continue;
         }
-        triangles.push_back(v);
+        triangles.insert(triangles.end(), cell.triangles.begin(), cell.triangles.end());
     }
     if (triangles.empty() && c.removed_triangles == 0)
         throw InputError(source + ": all elements lie on one line; no connectivity");

@@ -1,6 +1,6 @@
 // Section 4 of the paper: the connectivity of a reference arrangement. Delaunay triangles with an
-// angle of 2pi/3 or more are removed, the author's flips applied, and edges kept only on kept
-// triangles.
+// angle of 2pi/3 or more are removed (cells of points on one circle split canonically and judged
+// whole), the author's flips applied, and edges kept only on kept triangles.
 #pragma once
 
 #include <acanthus/point.hpp>
@@ -10,6 +10,14 @@
 #include <vector>
 
 namespace acanthus::growth::detail {
+
+// Angles within this many radians of a threshold count as on it: 2pi/3 for a skewed triangle (a
+// lattice's zigzag side makes exactly 2pi/3) and pi for the opposite angles of two triangles on
+// one circle. Scale-free, and chosen for rounded files: coordinates rounded to 3 decimals of the
+// spacing a move a point by at most 7.1e-4 a, which turns an angle between sides no shorter than a
+// by at most 2.8e-3 rad and a sum of two such angles by 5.7e-3. 0.01 rad (0.57 degrees) covers
+// that with room and is far below any difference an author draws on purpose.
+inline constexpr double kAngleTolerance = 0.01;
 
 struct Connectivity {
     std::vector<std::array<int, 3>> triangles;  // kept, counter-clockwise (y up)

@@ -11,6 +11,7 @@
 #include "common/triangulation.hpp"
 #include "connectivity.hpp"
 #include "growth_fixtures.hpp"
+#include "growth_lattices.hpp"
 #include "reference.hpp"
 
 using namespace acanthus;
@@ -39,15 +40,37 @@ TEST(GrowthReference, SkewedHullTriangleIsRemovedWithItsEdges) {
 }
 
 TEST(GrowthReference, KeepsExactlyTheDelaunayTrianglesUnder120Degrees) {
+    // Random points with no four nearly on one circle (those cells are split canonically; see
+    // RoundedLatticesHaveTheExactConnectivity): the first such set from the seed.
+    auto angle_at = [](Point o, Point a, Point b) {
+        return std::atan2(std::abs((a - o).cross(b - o)), (a - o).dot(b - o));
+    };
     Random random(7);
     std::vector<Point> points;
-    for (int i = 0; i < 60; ++i) points.push_back({random.uniform(0, 10), random.uniform(0, 3)});
-    auto all = common::delaunay_triangulation(points);
+    std::vector<common::DelaunayTriangle> all;
+    for (bool cocircular = true; cocircular;) {
+        points.clear();
+        for (int i = 0; i < 60; ++i)
+            points.push_back({random.uniform(0, 10), random.uniform(0, 3)});
+        all = common::delaunay_triangulation(points);
+        cocircular = false;
+        for (const auto& t : all)
+            for (int k = 0; k < 3; ++k) {
+                if (t.neighbors[k] < 0) continue;
+                int a = t.vertices[(k + 1) % 3], b = t.vertices[(k + 2) % 3], far = -1;
+                for (int w : all[t.neighbors[k]].vertices)
+                    if (w != a && w != b) far = w;
+                double sum = angle_at(points[t.vertices[k]], points[a], points[b]) +
+                             angle_at(points[far], points[a], points[b]);
+                cocircular = cocircular || std::abs(sum - M_PI) < growth::detail::kAngleTolerance;
+            }
+    }
     std::set<std::array<int, 3>> expected;
     int skewed = 0;
     for (const auto& t : all) {
         auto v = t.vertices;
-        if (largest_angle(points[v[0]], points[v[1]], points[v[2]]) > 2 * M_PI / 3 - 1e-9) {
+        if (largest_angle(points[v[0]], points[v[1]], points[v[2]]) >
+            2 * M_PI / 3 - growth::detail::kAngleTolerance) {
             ++skewed;
             continue;
         }
@@ -70,6 +93,42 @@ TEST(GrowthReference, KeepsExactlyTheDelaunayTrianglesUnder120Degrees) {
             on = on || (std::count(t.begin(), t.end(), i) && std::count(t.begin(), t.end(), j));
         EXPECT_TRUE(on) << i << "-" << j;
     }
+}
+
+// Issue 27: a lattice whose file was rounded to 3 decimals of its spacing has the connectivity of
+// the exact one (skewed zigzag sides and cocircular cells decided within an angle tolerance), at
+// any spacing and origin, turned or not.
+TEST(GrowthReference, RoundedLatticesHaveTheExactConnectivity) {
+    using growth_lattices::Kind;
+    struct Placement {
+        double spacing;
+        Point origin;
+        double turn;  // radians
+    };
+    for (Placement at : {Placement{10, {0, 0}, 0}, Placement{0.37, {123.4567, -89.01}, 0},
+                         Placement{2500, {-1e5, 3e4}, 0}, Placement{10, {5, 5}, 0.35}})
+        for (Kind kind : growth_lattices::all_kinds()) {
+            auto exact = growth_lattices::lattice(kind, 9, at.spacing);
+            for (auto& e : exact)
+                e.position = at.origin + (e.position - Point{0, 0}).rotated(at.turn);
+            auto rounded = exact;
+            for (auto& e : rounded)
+                e.position = {growth_lattices::rounded(e.position.x, at.spacing, 3),
+                              growth_lattices::rounded(e.position.y, at.spacing, 3)};
+            Reference a = Reference::from_elements(exact), b = Reference::from_elements(rounded);
+            const std::string what = std::string(growth_lattices::name(kind)) + " at spacing " +
+                                     std::to_string(at.spacing) + " turned " +
+                                     std::to_string(at.turn);
+            EXPECT_EQ(a.edges(), b.edges()) << what;
+            int differ = 0;
+            for (std::size_t i = 0; i < a.size(); ++i)
+                differ += a.ring(i) != b.ring(i) || a.boundary(i) != b.boundary(i);
+            EXPECT_EQ(differ, 0) << what << ": elements whose ring differs";
+            EXPECT_EQ(a.data().candidates, b.data().candidates) << what;
+            int interior = 0;
+            for (std::size_t i = 0; i < a.size(); ++i) interior += !a.boundary(i);
+            EXPECT_GT(interior, 0) << what;  // a honeycomb's hexagons are kept whole
+        }
 }
 
 TEST(GrowthReference, FlipReplacesTheDiagonal) {
