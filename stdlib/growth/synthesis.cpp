@@ -16,7 +16,9 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
       panel_(panel),
       options_(options),
       random_(random),
-      weights_{options.w1, options.w2, options.w3},
+      // Positions are compared in mean edge lengths, so that w1 weighs the same against the
+      // symbol and sub-id terms whatever the drawing's units.
+      weights_{options.w1 / reference.mean_edge, options.w2, options.w3},
       l_(reference.mean_edge),
       l_short_(options.short_factor * reference.shortest_edge),
       tolerance_(1e-9 * reference.mean_edge),

@@ -167,6 +167,42 @@ TEST(GrowthSynthesis, LabelsAreCarriedNotMatched) {
     for (auto [i, j] : a.edges) EXPECT_NE(a.motifs[i].symbol, a.motifs[j].symbol);
 }
 
+// Issue 27: the position error is in mean edge lengths, so the same reference drawn in other units
+// grows the same arrangement, scaled: the same symbols and sources in the same order, positions
+// equal up to the scale.
+TEST(GrowthSynthesis, ScaledReferenceGrowsTheSameArrangementScaled) {
+    auto elements = growth_fixtures::jittered_lattice(9, 9, 10, 2, {"a", "b", "a"});
+    auto grow = [&](double scale, Mode mode) {
+        auto scaled = elements;
+        for (auto& e : scaled) {
+            e.position = {e.position.x * scale, e.position.y * scale};
+            e.size = 3 * scale;
+        }
+        Region region = Region::from_spec("rect:" + std::to_string(200 * scale) + "," +
+                                          std::to_string(150 * scale));
+        Options o;
+        o.mode = mode;
+        return synthesize(Reference::from_elements(scaled), region, o, {{100 * scale, 75 * scale}},
+                          9);
+    };
+    for (Mode mode : {Mode::none, Mode::rotation}) {
+        SynthesisResult unit = grow(1, mode);
+        ASSERT_GT(unit.motifs.size(), 200u);
+        for (double scale : {0.01, 100.0}) {
+            SynthesisResult r = grow(scale, mode);
+            ASSERT_EQ(r.motifs.size(), unit.motifs.size()) << "scale " << scale;
+            for (std::size_t i = 0; i < r.motifs.size(); ++i) {
+                ASSERT_EQ(r.motifs[i].source, unit.motifs[i].source) << "scale " << scale;
+                ASSERT_EQ(r.motifs[i].symbol, unit.motifs[i].symbol);
+                EXPECT_NEAR(r.motifs[i].position.x / scale, unit.motifs[i].position.x, 1e-7);
+                EXPECT_NEAR(r.motifs[i].position.y / scale, unit.motifs[i].position.y, 1e-7);
+                EXPECT_NEAR(r.motifs[i].angle, unit.motifs[i].angle, 1e-9);
+            }
+            EXPECT_EQ(r.edges, unit.edges);
+        }
+    }
+}
+
 TEST(GrowthSynthesis, MaxElementsAndStartsOutside) {
     Reference ref = lattice();
     Region region = Region::from_spec("rect:200,150");

@@ -103,7 +103,7 @@ class Reference {
 struct Options {
     Mode mode = Mode::none;
     bool relax = true;      // section 5.5 least squares after every growth step
-    double w1 = 1.0;        // position difference
+    double w1 = 1.0;        // position difference, per mean reference edge length
     double w2 = 1.0;        // symbol differs
     double w3 = 100.0;      // the same reference element (sub-id): avoids copying it verbatim
     long max_elements = 0;  // 0: until no seed is left
