@@ -107,8 +107,11 @@ void check_options(const Options& o) {
         bad("priority_radius must be >= 0");
     if (o.max_elements < 0) bad("max_elements must be >= 0");
     if (o.mode == Mode::flow && o.flow_strokes.empty())
-        bad("flow mode needs at least one flow stroke (Options::flow_strokes, or a guides file "
-            "with class=\"flow\" paths)");
+        bad(o.guides_name.empty()
+                ? "flow mode needs at least one flow stroke (Options::flow_strokes, or a guides "
+                  "file with class=\"flow\" paths)"
+                : "flow mode needs at least one flow stroke, and " + o.guides_name +
+                      " has none (paths with class=\"flow\")");
     if (!(o.color_variation >= 0 && o.color_variation <= 1))
         bad("color_variation must be in [0, 1]");
     auto finite_line = [](const std::vector<Point>& line) {

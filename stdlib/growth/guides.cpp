@@ -4,6 +4,7 @@
 #include <acanthus/error.hpp>
 #include <acanthus/input_file.hpp>
 #include <acanthus/stdlib/growth.hpp>
+#include <algorithm>
 
 #include "svg/shape_reader.hpp"
 
@@ -43,6 +44,7 @@ std::vector<std::vector<Point>> polylines(const Geom::PathVector& paths) {
 
 Guides Guides::from_svg_string(std::string_view text, const std::string& name) {
     Guides g;
+    g.name = name;
     for (const SvgShape& s : acanthus::detail::read_svg_shapes(text, name)) {
         std::string tool = tool_of(s);
         if (tool.empty()) continue;
@@ -51,6 +53,11 @@ Guides Guides::from_svg_string(std::string_view text, const std::string& name) {
         if (lines.empty()) throw InputError(where + ": a " + tool + " stroke with no length");
         for (auto& line : lines) {
             if (tool == "flow") {
+                // The field follows a stroke's direction: one that goes nowhere has none.
+                if (line.front() == line.back() &&
+                    std::all_of(line.begin(), line.end(),
+                                [&](Point p) { return p == line.front(); }))
+                    throw InputError(where + ": a flow stroke with no length (no direction)");
                 g.flow.push_back(std::move(line));
             } else if (tool == "boundary") {
                 g.boundary.push_back(std::move(line));
@@ -81,6 +88,7 @@ void Guides::add_to(Options& options) const {
     options.boundary_strokes.insert(options.boundary_strokes.end(), boundary.begin(),
                                     boundary.end());
     options.spray_strokes.insert(options.spray_strokes.end(), spray.begin(), spray.end());
+    options.guides_name = options.guides_name.empty() ? name : options.guides_name + ", " + name;
 }
 
 }  // namespace acanthus::growth

@@ -72,11 +72,13 @@ std::shared_ptr<const ReferenceData> analyse_reference(std::string name,
         data->rings.push_back(std::move(ring));
         if (!c.boundary[i]) data->candidates.push_back(static_cast<int>(i));
     }
-    // A reference too small to have an inside (a single triangle, a strip) still grows: its
-    // elements with a ring stand in for interior ones.
+    // Section 4 matches only elements surrounded by their neighbours; a ring with a gap would be
+    // copied with the gap (a single triangle, a strip, a row of two).
     if (data->candidates.empty())
-        for (std::size_t i = 0; i < elements.size(); ++i)
-            if (!data->rings[i].empty()) data->candidates.push_back(static_cast<int>(i));
+        throw InputError(name +
+                         ": no element is surrounded by its neighbours (every one lies on the "
+                         "boundary of the connectivity), so there is no ring to copy; a reference "
+                         "needs at least one element with neighbours all around it");
     outlines.resize(elements.size());
     data->outlines = std::move(outlines);
     data->elements = std::move(elements);

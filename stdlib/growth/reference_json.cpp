@@ -18,7 +18,9 @@ double number(const Json& e, const char* key, const std::string& where) {
     const Json& v = e.at(key);
     if (!v.is_number()) throw InputError(where + ": \"" + key + "\" is not a number");
     double d = v.get<double>();
-    if (!std::isfinite(d)) throw InputError(where + ": \"" + key + "\" is not finite");
+    // JSON has no NaN or infinity: a non-finite value is a literal beyond the range of a double.
+    if (!std::isfinite(d))
+        throw InputError(where + ": \"" + key + "\" is out of range (beyond ±1.8e308)");
     return d;
 }
 
@@ -52,13 +54,50 @@ std::size_t nesting_depth(std::string_view text) {
     return deepest;
 }
 
+// "LINE:COLUMN" of the byte the parser stopped at (nlohmann counts from 1, past the last read).
+std::string line_and_column(std::string_view text, std::size_t byte) {
+    std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < end; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return std::to_string(line) + ":" + std::to_string(column);
+}
+
+// The parser's own words without its prefix ("[json.exception.parse_error.101] parse error at
+// line 1, column 5: "): what was wrong, its position given once by the caller.
+std::string parser_reason(std::string_view what) {
+    std::size_t colon = what.find(": ");
+    return std::string(colon == std::string_view::npos ? what : what.substr(colon + 2));
+}
+
 }  // namespace
 
 Reference Reference::from_json_string(std::string_view input, const std::string& name) {
     if (nesting_depth(input) > 64) throw InputError(name + ": malformed JSON (nested too deeply)");
     // Literal NaN and Infinity are not JSON; the parser rejects them as malformed.
-    Json doc = Json::parse(input, nullptr, false);
-    if (doc.is_discarded()) throw InputError(name + ": malformed JSON");
+    Json doc;
+    try {
+        doc = Json::parse(input);
+    } catch (const Json::parse_error& e) {
+        throw InputError(name + ":" + line_and_column(input, e.byte) +
+                         ": malformed JSON: " + parser_reason(e.what()));
+    } catch (const Json::out_of_range& e) {
+        // A number literal beyond a double ("1e999"): the parser names it, not where it is.
+        std::string what = e.what();
+        std::size_t open = what.find('\''), close = what.rfind('\'');
+        std::string literal =
+            open < close ? what.substr(open + 1, close - open - 1) : std::string("a number");
+        std::size_t at = input.find(literal);
+        throw InputError(
+            name + (at == std::string_view::npos ? "" : ":" + line_and_column(input, at + 1)) +
+            ": number out of range: " + literal + " (beyond ±1.8e308)");
+    }
     if (!doc.is_object() || !doc.contains("elements") || !doc["elements"].is_array())
         throw InputError(name + ": expected an object with an \"elements\" array");
     std::vector<ReferenceElement> elements;

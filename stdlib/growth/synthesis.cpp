@@ -46,7 +46,9 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
             outer_rings_.push_back(std::move(entries));
         }
     }
-    if (options.mode == Mode::flow) flow_.emplace(options.flow_strokes, l_, "growth");
+    if (options.mode == Mode::flow)
+        flow_.emplace(options.flow_strokes, l_,
+                      options.guides_name.empty() ? "growth" : options.guides_name);
     for (const std::string& name : reference.symbols) {
         auto it = options.priority.find(name);
         priority_.push_back(it == options.priority.end() ? 0 : it->second);

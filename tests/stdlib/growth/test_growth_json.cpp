@@ -13,11 +13,15 @@ using namespace acanthus::growth;
 
 namespace {
 
+// A hexagon of six around a centre: the centre is surrounded, so it has a ring to copy.
 const char* kGood = R"({"elements": [
   {"symbol": "a", "label": "1", "x": 0, "y": 0, "angle": 0.5, "size": 3},
   {"symbol": "b", "x": 10, "y": 0},
   {"symbol": "a", "x": 5, "y": 8.66},
-  {"symbol": "b", "x": 15, "y": 8.66}
+  {"symbol": "b", "x": -5, "y": 8.66},
+  {"symbol": "a", "x": -10, "y": 0},
+  {"symbol": "b", "x": -5, "y": -8.66},
+  {"symbol": "a", "x": 5, "y": -8.66}
 ], "flips": []})";
 
 // The message of the InputError `text` raises, or "" when it loads.
@@ -39,14 +43,14 @@ void expect_error(const std::string& text, const std::string& part) {
 
 TEST(GrowthJson, GoodFileLoadsWithDefaults) {
     Reference ref = Reference::from_json_string(kGood, "ref.json");
-    ASSERT_EQ(ref.size(), 4u);
+    ASSERT_EQ(ref.size(), 7u);
     EXPECT_EQ(ref.element(0).label, "1");
     EXPECT_DOUBLE_EQ(ref.element(0).angle, 0.5);
     EXPECT_DOUBLE_EQ(ref.radius(0), 3);
     EXPECT_EQ(ref.element(1).label, "");
     EXPECT_DOUBLE_EQ(ref.element(1).angle, 0);
     EXPECT_NEAR(ref.radius(1), 0.35 * ref.mean_edge_length(), 1e-12);
-    EXPECT_EQ(ref.edges().size(), 5u);
+    EXPECT_EQ(ref.edges().size(), 12u);
 }
 
 TEST(GrowthJson, SubIsTheLabelsOldName) {
@@ -64,7 +68,7 @@ TEST(GrowthJson, SubIsTheLabelsOldName) {
 TEST(GrowthJson, FileIsReadFromDisk) {
     auto path = std::filesystem::temp_directory_path() / "growth_test_ref.json";
     std::ofstream(path) << kGood;
-    EXPECT_EQ(Reference::from_json_file(path.string()).size(), 4u);
+    EXPECT_EQ(Reference::from_json_file(path.string()).size(), 7u);
     std::filesystem::remove(path);
 }
 
@@ -75,6 +79,23 @@ TEST(GrowthJson, MissingFile) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("/nonexistent/ref.json"), std::string::npos);
     }
+}
+
+TEST(GrowthJson, ErrorsSayLineAndColumnAndOutOfRange) {
+    // Issue 27: a malformed file says where, and a number no double holds is called out of range.
+    expect_error("{\"elements\": [\n  {\"symbol\": \"a\", \"x\": 0,, \"y\": 0}]}",
+                 "ref.json:2:26: malformed JSON");
+    expect_error("{\"elements\": [\n  {\"symbol\": \"a\", \"x\": 1e999, \"y\": 0}]}",
+                 "ref.json:2:24: number out of range: 1e999");
+    expect_error("{\"elements\": [{\"symbol\": \"a\", \"x\": 1, \"y\": -2e400}]}",
+                 "number out of range: -2e400");
+}
+
+TEST(GrowthJson, NoSurroundedElementIsRefusedWithTheReason) {
+    // Four in a row of triangles: every element is on the boundary, no ring to copy.
+    expect_error(R"({"elements": [{"symbol": "a", "x": 0, "y": 0}, {"symbol": "a", "x": 10, "y": 0},
+                  {"symbol": "a", "x": 5, "y": 8.66}, {"symbol": "a", "x": 15, "y": 8.66}]})",
+                 "ref.json: no element is surrounded by its neighbours");
 }
 
 TEST(GrowthJson, MalformedJson) {
@@ -107,8 +128,8 @@ TEST(GrowthJson, AllCollinear) {
 
 TEST(GrowthJson, FlipNamingNoEdge) {
     std::string base = kGood;
-    std::string bad = base.substr(0, base.find("\"flips\"")) + R"("flips": [[0, 3]]})";
-    expect_error(bad, "flip 0 [0, 3]");
+    std::string bad = base.substr(0, base.find("\"flips\"")) + R"("flips": [[1, 4]]})";
+    expect_error(bad, "flip 0 [1, 4]");
     bad = base.substr(0, base.find("\"flips\"")) + R"("flips": [[0, 7]]})";
     expect_error(bad, "flip 0 [0, 7]");
     bad = base.substr(0, base.find("\"flips\"")) + R"("flips": [[0]]})";
@@ -146,7 +167,8 @@ TEST(GrowthJson, CoordinatesOutOfRange) {
     // The range regions and placed elements keep (docs/cli.md): ±1e9 is in, beyond is refused.
     const std::string head = R"({"elements": [{"symbol": "a", "x": 0, "y": 0},
                                   {"symbol": "a", "x": 1e9, "y": 0}, )";
-    EXPECT_EQ(error_of(head + R"({"symbol": "a", "x": 0, "y": -1e9}]})"), "");
+    EXPECT_EQ(error_of(head + R"({"symbol": "a", "x": 0, "y": -1e9}]})").find("out of range"),
+              std::string::npos);
     expect_error(head + R"({"symbol": "a", "x": 0, "y": -1.5e9}]})",
                  "element 2: coordinates out of range");
     expect_error(head + R"({"symbol": "a", "x": 0, "y": 1, "size": 1e300}]})",

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <acanthus/error.hpp>
+#include <acanthus/region.hpp>
 #include <acanthus/stdlib/growth.hpp>
 #include <cmath>
 #include <filesystem>
@@ -65,8 +66,8 @@ TEST(GrowthSvg, ElementsAtBoundingBoxCentresWithDataAttributes) {
 
 TEST(GrowthSvg, DataSubIsTheLabelsOldName) {
     std::string s = kHead;
-    const int xs[] = {0, 10, 5}, ys[] = {0, 0, 8};
-    for (int i = 0; i < 3; ++i)
+    const int xs[] = {0, 10, 5, -5, -10, -5, 5}, ys[] = {0, 0, 9, 9, 0, -9, -9};
+    for (int i = 0; i < 7; ++i)
         s += "<circle data-symbol=\"d\" data-sub=\"v" + std::to_string(i) + "\" r=\"1\" cx=\"" +
              std::to_string(xs[i]) + "\" cy=\"" + std::to_string(ys[i]) + "\"/>";
     Reference ref = Reference::from_svg_string(s + "</svg>", "old.svg");
@@ -80,40 +81,39 @@ TEST(GrowthSvg, DataSubIsTheLabelsOldName) {
 
 TEST(GrowthSvg, UseElementsAreElementsOfTheirOwn) {
     std::string s = kHead + R"x(<defs><circle id="dot" r="1"/></defs>)x";
-    const double xs[] = {0, 10, 5, 15}, ys[] = {0, 0, 8, 8};
-    for (int i = 0; i < 4; ++i)
+    const double xs[] = {0, 10, 5, -5, -10, -5, 5}, ys[] = {0, 0, 8, 8, 0, -8, -8};
+    for (int i = 0; i < 7; ++i)
         s += "<use href=\"#dot\" data-symbol=\"d\" x=\"" + std::to_string(xs[i]) + "\" y=\"" +
              std::to_string(ys[i]) + "\"/>";
     Reference ref = Reference::from_svg_string(s + "</svg>", "use.svg");
-    ASSERT_EQ(ref.size(), 4u);
-    EXPECT_NEAR(ref.element(3).position.x, 15, 1e-9);
+    ASSERT_EQ(ref.size(), 7u);
+    EXPECT_NEAR(ref.element(3).position.x, -5, 1e-9);
     EXPECT_NEAR(ref.element(3).position.y, 8, 1e-9);
 }
 
 TEST(GrowthSvg, FlipsOnTheRoot) {
-    // A unit square: Delaunay picks one diagonal; the author's flip gives the other.
-    auto square = [](const std::string& flips) {
+    // A 3 x 3 grid: each square is split one way (canonically); the author's flip gives the
+    // other diagonal of the first square.
+    auto grid = [](const std::string& flips) {
         std::string s = R"x(<svg xmlns="http://www.w3.org/2000/svg" )x" + flips + ">";
-        const int xs[] = {0, 10, 0, 10}, ys[] = {0, 0, 10, 10};
-        for (int i = 0; i < 4; ++i)
-            s += "<circle data-symbol=\"s\" r=\"1\" cx=\"" + std::to_string(xs[i]) + "\" cy=\"" +
-                 std::to_string(ys[i]) + "\"/>";
+        for (int i = 0; i < 9; ++i)
+            s += "<circle data-symbol=\"s\" r=\"1\" cx=\"" + std::to_string(i % 3 * 10) +
+                 "\" cy=\"" + std::to_string(i / 3 * 10) + "\"/>";
         return s + "</svg>";
     };
-    Reference plain = Reference::from_svg_string(square(""), "sq.svg");
+    Reference plain = Reference::from_svg_string(grid(""), "sq.svg");
     auto has = [](const Reference& r, int i, int j) {
         for (auto [a, b] : r.edges())
             if (a == i && b == j) return true;
         return false;
     };
-    bool diagonal03 = has(plain, 0, 3);
-    ASSERT_NE(diagonal03, has(plain, 1, 2));
-    std::string flip = diagonal03 ? "data-flips=\"0 3\"" : "data-flips=\"1 2\"";
-    Reference flipped = Reference::from_svg_string(square(flip), "sq.svg");
-    EXPECT_EQ(has(flipped, 0, 3), !diagonal03);
-    EXPECT_EQ(has(flipped, 1, 2), diagonal03);
-    EXPECT_NE(error_of(square("data-flips=\"0 x\"")).find("ref.svg: data-flips"),
-              std::string::npos);
+    bool diagonal04 = has(plain, 0, 4);
+    ASSERT_NE(diagonal04, has(plain, 1, 3));
+    std::string flip = diagonal04 ? "data-flips=\"0 4\"" : "data-flips=\"1 3\"";
+    Reference flipped = Reference::from_svg_string(grid(flip), "sq.svg");
+    EXPECT_EQ(has(flipped, 0, 4), !diagonal04);
+    EXPECT_EQ(has(flipped, 1, 3), diagonal04);
+    EXPECT_NE(error_of(grid("data-flips=\"0 x\"")).find("ref.svg: data-flips"), std::string::npos);
 }
 
 TEST(GrowthSvg, BadInputNamesFileAndElement) {
@@ -142,9 +142,11 @@ TEST(GrowthSvg, FromFileReadsEitherFormat) {
     auto svg = dir / "ref.svg", json = dir / "ref.json";
     std::ofstream(svg) << "  \n" << grid_svg();
     std::ofstream(json) << R"x({"elements": [{"symbol": "a", "x": 0, "y": 0},
-        {"symbol": "a", "x": 10, "y": 0}, {"symbol": "a", "x": 5, "y": 8}]})x";
+        {"symbol": "a", "x": 10, "y": 0}, {"symbol": "a", "x": 5, "y": 8},
+        {"symbol": "a", "x": -5, "y": 8}, {"symbol": "a", "x": -10, "y": 0},
+        {"symbol": "a", "x": -5, "y": -8}, {"symbol": "a", "x": 5, "y": -8}]})x";
     EXPECT_EQ(Reference::from_file(svg.string()).size(), 9u);
-    EXPECT_EQ(Reference::from_file(json.string()).size(), 3u);
+    EXPECT_EQ(Reference::from_file(json.string()).size(), 7u);
     EXPECT_EQ(&load_reference(svg.string()), &load_reference(svg.string()));
     std::filesystem::remove_all(dir);
 }
@@ -186,6 +188,38 @@ TEST(GrowthGuides, BadGuides) {
     EXPECT_NE(m.find("<path id=\"s\">"), std::string::npos) << m;
     EXPECT_NE(m.find("stroke-width"), std::string::npos) << m;
     EXPECT_NE(error("<svg").find("g.svg:1"), std::string::npos);
+}
+
+TEST(GrowthGuides, FlowStrokeErrorsNameTheGuidesFile) {
+    const std::string head = R"x(<svg xmlns="http://www.w3.org/2000/svg">)x";
+    try {
+        Guides::from_svg_string(head + R"x(<path class="flow" d="M 5,5 L 5,5 L 5,5"/></svg>)x",
+                                "guides.svg");
+        FAIL() << "a flow stroke with no length loaded";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("guides.svg: <path> (line 1): a flow stroke with no "
+                                             "length"),
+                  std::string::npos)
+            << e.what();
+    }
+    // Flow mode with a guides file that has no flow stroke names the file.
+    Options o;
+    o.mode = Mode::flow;
+    Guides::from_svg_string(head + R"x(<path class="boundary" d="M 0,0 L 9,9"/></svg>)x",
+                            "walls.svg")
+        .add_to(o);
+    Reference ref = Reference::from_svg_string(
+        head + R"x(<circle data-symbol="a" r="1"/><circle data-symbol="a" cx="10" r="1"/>
+        <circle data-symbol="a" cx="5" cy="9" r="1"/><circle data-symbol="a" cx="-5" cy="9" r="1"/>
+        <circle data-symbol="a" cx="-10" r="1"/><circle data-symbol="a" cx="-5" cy="-9" r="1"/>
+        <circle data-symbol="a" cx="5" cy="-9" r="1"/></svg>)x",
+        "ref.svg");
+    try {
+        synthesize(ref, Region::from_spec("rect:100,100"), o, {}, 1);
+        FAIL() << "flow mode grew without a flow stroke";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("walls.svg has none"), std::string::npos) << e.what();
+    }
 }
 
 TEST(GrowthPriority, ParsesSymbolLevels) {

@@ -133,6 +133,8 @@ struct Options {
         double width = 0;
     };
     std::vector<Spray> spray_strokes;
+    // Where the strokes came from, for messages (Guides::add_to sets it to the guides file).
+    std::string guides_name;
 };
 
 // The tools drawn in an SVG: paths, polylines and lines with class `flow` (direction from start
@@ -141,10 +143,11 @@ struct Options {
 struct Guides {
     std::vector<std::vector<Point>> flow, boundary;
     std::vector<Options::Spray> spray;
+    std::string name;  // the file, for messages
 
     static Guides from_svg_file(const std::string& path);
     static Guides from_svg_string(std::string_view text, const std::string& name);
-    // Adds the strokes to the options' flow, boundary and spray strokes.
+    // Adds the strokes to the options' flow, boundary and spray strokes and names the file.
     void add_to(Options& options) const;
 };
 
