@@ -71,8 +71,6 @@ install(FILES
   "${PROJECT_BINARY_DIR}/install-config/AcanthusConfig.cmake"
   "${PROJECT_BINARY_DIR}/AcanthusConfigVersion.cmake"
   "${CMAKE_CURRENT_LIST_DIR}/AcanthusRules.cmake"
-  "${CMAKE_CURRENT_LIST_DIR}/AcanthusImports.cmake"
-  "${CMAKE_CURRENT_LIST_DIR}/AcanthusScanImports.cmake"
   DESTINATION "${ACANTHUS_INSTALL_CMAKEDIR}")
 
 # --- acanthus.pc: relocatable, the prefix is found from the .pc file's own directory -------------

@@ -3,17 +3,16 @@
 # Compiles a rule file to C++ with `acanthus compile` and builds it into the executable NAME,
 # linked with Acanthus::stdlib, Acanthus::runtime and LIBRARIES. The compile
 # step depends on the rule file, every rule file it imports (found in IMPORT_DIRS, then the
-# stdlib directory) and the compiler, so editing any of them regenerates the program.
+# stdlib directory) and the compiler, so editing any of them regenerates the program. The
+# imports are the compiler's own list (`acanthus compile --depfile`): CMake never parses
+# %import lines itself.
 #
 # Used inside the Acanthus tree and, installed next to AcanthusConfig.cmake, by
 # find_package(Acanthus CONFIG). Needs ACANTHUS_STDLIB_DIR (the directory of the stdlib's rule
 # files: in the tree, the one the stdlib registry names) set before it is included.
 include_guard(GLOBAL)
-include("${CMAKE_CURRENT_LIST_DIR}/AcanthusImports.cmake")
 
 set_property(GLOBAL PROPERTY ACANTHUS_STDLIB_DIR "${ACANTHUS_STDLIB_DIR}")
-set_property(GLOBAL PROPERTY ACANTHUS_SCAN_IMPORTS_SCRIPT
-  "${CMAKE_CURRENT_LIST_DIR}/AcanthusScanImports.cmake")
 
 # Functions keep the policies in effect where they are defined: DEPFILE paths are then handled
 # the same way by Ninja and Makefiles (CMP0116), whatever the calling project requires.
@@ -35,7 +34,6 @@ function(acanthus_add_pattern name)
   endif()
 
   get_property(stdlib_dir GLOBAL PROPERTY ACANTHUS_STDLIB_DIR)
-  get_property(scan_script GLOBAL PROPERTY ACANTHUS_SCAN_IMPORTS_SCRIPT)
   set(import_dirs "")
   foreach(dir IN LISTS ARG_IMPORT_DIRS)
     get_filename_component(dir "${dir}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
@@ -49,11 +47,6 @@ function(acanthus_add_pattern name)
     list(APPEND import_flags -I "${dir}")
   endforeach()
 
-  # Imports known now; the depfile written at build time keeps the list current afterwards.
-  _acanthus_find_imports("${rules}" imports DIRS ${import_dirs})
-  # A list would be split into several arguments on the way to the script; pass it '|'-joined.
-  string(REPLACE ";" "|" dirs_arg "${import_dirs}")
-
   set(gen_dir "${CMAKE_CURRENT_BINARY_DIR}/acanthus_generated")
   set(generated "${gen_dir}/${name}.cpp")
   set(depfile "${gen_dir}/${name}.d")
@@ -62,10 +55,11 @@ function(acanthus_add_pattern name)
   if(TARGET Acanthus::acanthus)
     add_custom_command(OUTPUT "${generated}"
       COMMAND "${CMAKE_COMMAND}" -E make_directory "${gen_dir}"
-      COMMAND Acanthus::acanthus compile "${rules}" -o "${generated}" ${import_flags}
-      COMMAND "${CMAKE_COMMAND}" "-DRULES=${rules}" "-DOUTPUT=${generated}"
-              "-DDEPFILE=${depfile}" "-DDIRS=${dirs_arg}" -P "${scan_script}"
-      DEPENDS "${rules}" ${imports} Acanthus::acanthus "${scan_script}"
+      COMMAND Acanthus::acanthus compile "${rules}" -o "${generated}" --depfile "${depfile}"
+              ${import_flags}
+      # The first build needs no import list (the output is missing); every later one reads
+      # the list the compiler wrote, so a new %import line is tracked without re-running CMake.
+      DEPENDS "${rules}" Acanthus::acanthus
       DEPFILE "${depfile}"
       COMMENT "Compiling rule file ${ARG_RULES} to ${shown}"
       VERBATIM)

@@ -4,7 +4,9 @@
 #include <sstream>
 
 #include "batch/child_process.hpp"
+#include "batch/job_state.hpp"
 #include "compilation.hpp"
+#include "dependency_file.hpp"
 #include "driver/toolchain_config.hpp"
 
 namespace acanthus::batch {
@@ -20,7 +22,8 @@ RuleProgram prepare_rule_program(const std::string& rule, const Toolchain& toolc
     request.stdlib_dirs = toolchain.stdlib_dirs;
     request.generate.output_name = fs::path(rule).stem().string() + ".cpp";
     std::ostringstream diagnostics;
-    if (!compile_rule_file(request, true, program.cpp, diagnostics)) {
+    std::vector<std::string> read_files;
+    if (!compile_rule_file(request, true, program.cpp, diagnostics, &read_files)) {
         program.error = diagnostics.str();
         if (program.error.empty()) program.error = rule + ": the rule file has errors";
         return program;
@@ -28,6 +31,11 @@ RuleProgram prepare_rule_program(const std::string& rule, const Toolchain& toolc
     std::vector<std::string> parts{program.cpp, ACANTHUS_VERSION_STRING,
                                    file_identity(toolchain.runtime_library),
                                    file_identity(toolchain.stdlib_library)};
+    // The C++ misses what generates no code (a comment, an import's own text): the files count
+    // too, the same list a CMake build's depfile names.
+    program.dependencies = rule_file_dependencies(read_files);
+    for (const std::string& file : program.dependencies)
+        parts.insert(parts.end(), {"read", file, content_key(file)});
     for (const std::string& part : compile_command(toolchain, options, "SOURCE", "EXECUTABLE"))
         parts.push_back(part);
     program.key = cache_key(parts);

@@ -11,9 +11,12 @@
 namespace acanthus::batch {
 
 struct RuleProgram {
-    std::string rule;        // absolute path
-    std::string cpp;         // generated C++ (the rule file and every import it read)
-    std::string key;         // changes with the C++, the compiler command, the runtime, the version
+    std::string rule;  // absolute path
+    std::string cpp;   // generated C++ (the rule file and every import it read)
+    std::vector<std::string> dependencies;  // what `acanthus compile --depfile` lists
+    // Changes with the C++, the contents of the rule file and its imports, the compiler command,
+    // the runtime and the version.
+    std::string key;
     std::string executable;  // set once built
     std::string error;       // the front end's diagnostics or the C++ compiler's messages
 };

@@ -11,6 +11,7 @@
 
 #include "batch/batch_command.hpp"
 #include "compilation.hpp"
+#include "dependency_file.hpp"
 #include "driver/build_command.hpp"
 #include "driver/preview_command.hpp"
 #include "driver/toolchain.hpp"
@@ -83,9 +84,10 @@ std::string overwritten_input(const std::string& output, const std::vector<std::
     return {};
 }
 
-int refuse_overwrite(const std::string& output, const std::string& input) {
+int refuse_overwrite(const std::string& output, const std::string& input,
+                     const char* option = "-o") {
     std::cerr << "acanthus: error: the output '" << output << "' would overwrite the input '"
-              << input << "'; choose another -o\n";
+              << input << "'; choose another " << option << "\n";
     return kBadUsage;
 }
 
@@ -99,7 +101,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     if (report_unknown_command(argc, argv)) return kBadUsage;
 
-    std::string input, output;
+    std::string input, output, depfile;
     std::vector<std::string> includes;
     bool no_lines = false, no_main = false;
     BuildOptions build_options;
@@ -112,6 +114,9 @@ int main(int argc, char** argv) {
         ->allow_extra_args(false);
     compile->add_flag("--no-line-directives", no_lines, "Do not emit #line directives");
     compile->add_flag("--no-main", no_main, "Export acanthus_pattern() instead of main()");
+    compile->add_option("--depfile", depfile,
+                        "Also write the files the rule file read (it and its imports) as a Make "
+                        "rule for OUTPUT (CMake's DEPFILE, Ninja, Make)");
 
     auto* check = app.add_subcommand("check", "Check a rule file and report every error");
     check->add_option("file", input, "Rule file (.acr)")->required();
@@ -206,17 +211,39 @@ int main(int argc, char** argv) {
 
     if (compile->parsed()) {
         if (output.empty()) output = stem_of(input) + ".cpp";
+        if (!depfile.empty() && output == "-") {
+            std::cerr << "acanthus: error: --depfile needs -o FILE, the target of its rule\n";
+            return kBadUsage;
+        }
         request.generate.output_name = output == "-" ? "<stdout>" : output;
         std::vector<std::string> inputs;
         if (!acanthus::compile_rule_file(request, true, cpp, std::cerr, &inputs)) return kBadInput;
         if (std::string in = overwritten_input(output, inputs); !in.empty())
             return refuse_overwrite(output, in);
+        std::string rule, error;
+        if (!depfile.empty()) {
+            if (std::string in = overwritten_input(depfile, inputs); !in.empty())
+                return refuse_overwrite(depfile, in, "--depfile");
+            if (canonical_or_same(depfile) == canonical_or_same(output)) {
+                std::cerr << "acanthus: error: --depfile and -o name the same file '" << output
+                          << "'\n";
+                return kBadUsage;
+            }
+            if (!acanthus::make_dependency_rule(output, acanthus::rule_file_dependencies(inputs),
+                                                rule, error))
+                return fail(error);
+        }
         if (output == "-") {
             std::cout << cpp << std::flush;
-            return std::cout ? 0 : kBadInput;
+            if (!std::cout) return kBadInput;
+        } else if (!acanthus::write_file_atomically(output, cpp, error)) {
+            return fail(error);
         }
-        std::string error;
-        if (!acanthus::write_file_atomically(output, cpp, error)) return fail(error);
+        // After the C++: a depfile never describes an output that was not written.
+        if (!depfile.empty() && !acanthus::write_file_atomically(depfile, rule, error)) {
+            acanthus::remove_if_present(output);
+            return fail(error);
+        }
         return 0;
     }
 

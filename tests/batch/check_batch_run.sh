@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Usage: check_batch_run.sh ACANTHUS SOURCE_DIR WORK
 # acanthus batch over a small product: every job rendered, a second run skips them all, a changed
-# input redoes only its jobs, --force redoes everything, a failing job does not stop the others
-# (exit 1, its message in the summary), a bad manifest exits 2 with its line and column.
+# input (a panel, a rule file's import) redoes only its jobs, --force redoes everything, a
+# failing job does not stop the others (exit 1, its message in the summary), a bad manifest
+# exits 2 with its line and column.
 set -u
 acanthus="$1"; source="$2"; work="$3"
 rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
@@ -41,6 +42,19 @@ rm out/dots/panel-1-max_radius-2.svg
 grep -q "1 rendered, 15 up to date" log || fail "a deleted output should be redone"
 "$acanthus" batch batch.toml --force -q 2>log || fail "--force"
 grep -q "16 rendered, 0 up to date" log || fail "--force should redo everything"
+
+# A rule file's import counts with its contents (the list `acanthus compile --depfile` writes),
+# even where a change generates no different C++ (a comment).
+mkdir -p lib
+printf '%%import "lib/dots_body"\n' > imports.acr
+cp "$source/rules/dots.acr" lib/dots_body.acr
+printf '[[job]]\nrules = "imports.acr"\npanels = "rect:40,30"\nargs = ["--resolution", "64"]\n' > imports.toml
+"$acanthus" batch imports.toml -q 2>log || fail "a rule file with an import"
+"$acanthus" batch imports.toml -q 2>log || fail "a rule file with an import, again"
+grep -q "0 rendered, 1 up to date" log || fail "an unchanged import redid its job"
+echo "// a comment changes no C++" >> lib/dots_body.acr
+"$acanthus" batch imports.toml -q 2>log || fail "after changing the import"
+grep -q "1 rendered, 0 up to date" log || fail "a changed import did not redo its job"
 
 # A parameter outside its declared range fails its jobs only.
 cat >> batch.toml <<TOML

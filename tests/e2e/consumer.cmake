@@ -1,7 +1,8 @@
 # Builds examples/cmake-consumer against an installed Acanthus (MODE=install, PREFIX=<prefix>)
 # or a build tree (MODE=build-tree, ACANTHUS_BUILD=<build dir>), runs the program, then checks
-# that the build tracks the rule file and its import: touching either regenerates the C++,
-# and a rebuild with nothing touched does not.
+# that the build tracks the rule file and its import through the compiler's depfile: touching
+# either regenerates the C++, adding or removing an import is followed, and a rebuild with
+# nothing touched does nothing.
 #   cmake -DMODE=... -DCONSUMER=<source> -DWORK=<dir> -DGENERATOR=<gen> -DCXX=<compiler>
 #         [-DLAUNCHER=<ccache>] [-DLINK_FLAGS=<flags>] [-DRSVG=<rsvg-convert>] -P consumer.cmake
 cmake_minimum_required(VERSION 3.20)
@@ -70,6 +71,19 @@ if(RSVG)
 endif()
 message(STATUS "ring: ${n} elements")
 
+# The compiler's depfile (`acanthus compile --depfile`) is what names the import to CMake.
+set(depfile "${build}/acanthus_generated/ring.d")
+if(NOT EXISTS "${depfile}")
+  message(FATAL_ERROR "acanthus_add_pattern wrote no depfile ${depfile}")
+endif()
+file(READ "${depfile}" deps)
+foreach(listed "${src}/ring.acr" "${src}/rules/palette.acr")
+  string(FIND "${deps}" "${listed}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "the depfile does not list ${listed}:\n${deps}")
+  endif()
+endforeach()
+
 # Rebuilding with nothing changed must not recompile the rule file.
 run("no-op rebuild" "${CMAKE_COMMAND}" --build "${build}")
 if(run_output MATCHES "Compiling rule file")
@@ -98,4 +112,22 @@ run("rebuild after touching the new import" "${CMAKE_COMMAND}" --build "${build}
 if(NOT run_output MATCHES "Compiling rule file")
   message(FATAL_ERROR "touching a newly added import did not regenerate:\n${run_output}")
 endif()
-message(STATUS "rebuilds track the rule file and its imports")
+
+# An import removed with its %import line: the build follows the new list, no stale rule.
+file(READ "${src}/rules/palette.acr" palette)
+string(REPLACE "%import \"extra\"\n" "" palette "${palette}")
+file(WRITE "${src}/rules/palette.acr" "${palette}")
+file(REMOVE "${src}/rules/extra.acr")
+run("rebuild after removing an import" "${CMAKE_COMMAND}" --build "${build}")
+if(NOT run_output MATCHES "Compiling rule file")
+  message(FATAL_ERROR "removing an import did not regenerate:\n${run_output}")
+endif()
+# CMake's Makefile generator (3.25) keeps every path a custom command's depfile ever named, so
+# there a removed import regenerates the C++ on each build; Ninja takes the new list.
+if(GENERATOR STREQUAL "Ninja")
+  run("no-op rebuild after removing an import" "${CMAKE_COMMAND}" --build "${build}")
+  if(run_output MATCHES "Compiling rule file")
+    message(FATAL_ERROR "a rebuild with nothing changed recompiled the rule file:\n${run_output}")
+  endif()
+endif()
+message(STATUS "rebuilds track the rule file and its imports (${GENERATOR})")
