@@ -11,6 +11,7 @@
 #include "clip.hpp"
 #include "facade_data.hpp"
 #include "feature_loop.hpp"
+#include "opening_overlaps.hpp"
 #include "region/fill.hpp"
 #include "region/trace.hpp"
 
@@ -167,6 +168,12 @@ Facade Facade::from_shapes(std::vector<FacadeShape> shapes, const std::string& s
                  "shapes with class \"wall\")");
         holes.AddPaths(filled[i], ClipperLib::ptSubject, true);
     }
+    std::vector<bool> opening(shapes.size());
+    for (std::size_t i = 0; i < shapes.size(); ++i) opening[i] = !is_wall(shapes[i]);
+    if (auto [a, b] = detail::overlapping_openings(filled, opening); a >= 0)
+        throw InputError(source_name + ": " + describe(shapes[a]) + " and " + describe(shapes[b]) +
+                         ": openings overlap (they are not merged: draw one opening as one "
+                         "shape, or move them apart)");
     ClipperLib::Paths opening_union;
     holes.Execute(ClipperLib::ctUnion, opening_union, ClipperLib::pftNonZero,
                   ClipperLib::pftNonZero);
@@ -232,13 +239,16 @@ Facade Facade::from_shapes(std::vector<FacadeShape> shapes, const std::string& s
         f.area = std::abs(scale.area({ints.front()}));
         for (std::size_t k = 1; k < ints.size(); ++k) f.area -= std::abs(scale.area({ints[k]}));
         f.bounds = detail::bounds_of(f.loops.front());
+        data->face_walls.emplace_back();
         for (std::size_t i = 0; i < shapes.size(); ++i) {
             if (!is_wall(shapes[i])) continue;
             Geom::OptRect b = shapes[i].paths.boundsFast();
-            if (b && detail::overlaps(f.bounds, {b->left(), b->top(), b->right(), b->bottom()}))
-                for (const std::string& l : labels[i].labels)
-                    if (std::find(f.labels.begin(), f.labels.end(), l) == f.labels.end())
-                        f.labels.push_back(l);
+            if (!b || !detail::overlaps(f.bounds, {b->left(), b->top(), b->right(), b->bottom()}))
+                continue;
+            data->face_walls.back().push_back(describe(shapes[i]));
+            for (const std::string& l : labels[i].labels)
+                if (std::find(f.labels.begin(), f.labels.end(), l) == f.labels.end())
+                    f.labels.push_back(l);
         }
         data->wall_area += f.area;
         data->face_rings.push_back(std::move(ints));

@@ -16,8 +16,9 @@ struct FacadeData {
     Rect bounds;
     double wall_area = 0;
     std::vector<std::vector<Point>> openings;
-    double scale = 1;                           // Clipper integer units per user unit
-    std::vector<ClipperLib::Paths> face_rings;  // per face: outer rings and holes (even-odd)
+    double scale = 1;                                  // Clipper integer units per user unit
+    std::vector<ClipperLib::Paths> face_rings;         // per face: outer rings and holes (even-odd)
+    std::vector<std::vector<std::string>> face_walls;  // per face: the wall shapes, for messages
 };
 
 }  // namespace acanthus::cells::detail

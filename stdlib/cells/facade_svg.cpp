@@ -10,6 +10,7 @@
 
 #include "region/region_data.hpp"
 #include "svg/shape_reader.hpp"
+#include "zero_size_shapes.hpp"
 
 namespace acanthus::cells {
 
@@ -130,7 +131,9 @@ Facade from_svg_shapes(const std::vector<SvgShape>& svg, const std::string& name
 }  // namespace
 
 Facade Facade::from_svg_string(std::string_view text, const std::string& name) {
-    return from_svg_shapes(acanthus::detail::read_svg_shapes(text, name), name, false);
+    std::vector<SvgShape> svg = acanthus::detail::read_svg_shapes(text, name);
+    detail::refuse_zero_size_shapes(text, name);
+    return from_svg_shapes(svg, name, false);
 }
 
 Facade Facade::from_svg_file(const std::string& path) {
@@ -155,6 +158,7 @@ Facade Facade::for_panel(const Region& region, bool whole_panel) {
     if (is_spec(name) || !std::filesystem::is_regular_file(name, ec)) return from_region(region);
     std::string text = read_input_file_or_throw(name, "facade", acanthus::detail::kMaxSvgFileBytes);
     std::vector<SvgShape> svg = acanthus::detail::read_svg_shapes(text, name);
+    detail::refuse_zero_size_shapes(text, name);
     // Read again rather than taken from the region: the drawing's circular arcs stay exact.
     bool wall = std::any_of(svg.begin(), svg.end(),
                             [](const SvgShape& s) { return wall_role(chain_of(s)); });

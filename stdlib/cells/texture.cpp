@@ -8,29 +8,9 @@
 #include <stdexcept>
 
 #include "context_data.hpp"
+#include "facade_limits.hpp"
 
 namespace acanthus::cells {
-
-namespace {
-
-// About how many cells fill the wall: its area over the mean cell's, from the bond's mix of
-// stretchers (four quarter bricks) and headers (two), or the ashlar grid. For progress only.
-long expected_cells(const Facade& facade, const Options& o) {
-    double quarters = 4;  // mean cell length along a course, in quarter bricks
-    if (o.bond == Bond::header) quarters = 2;
-    if (o.bond == Bond::english) quarters = 8.0 / 3;  // a course of each: 1/4 + 1/2 per quarter
-    if (o.bond == Bond::flemish) quarters = 3;        // a stretcher and a header per 6 quarters
-    double cell = quarters / 4 * (o.brick_length + o.mortar) * (o.brick_height + o.mortar);
-    if (o.bond == Bond::ashlar) {
-        const double unit = o.ashlar_unit > 0 ? o.ashlar_unit : o.brick_height + o.mortar;
-        // Random sizes up to the maximum: about half of it each way, on average.
-        cell = unit * unit * (o.ashlar_max_width + 1) / 2 * (o.ashlar_max_height + 1) / 2;
-    }
-    const double cells = std::round(facade.wall_area() / cell);
-    return std::isfinite(cells) && cells > 0 ? static_cast<long>(std::min(cells, 1e15)) : 0;
-}
-
-}  // namespace
 
 std::string_view to_string(FeatureKind kind) {
     switch (kind) {
@@ -115,13 +95,19 @@ void check(const Options& o, const std::string& source_name) {
         o.arch_depth < 0)
         bad("arch stone sizes must be 0 (automatic) or more");
     if (o.arch_rows < 1) bad("cells_arch_rows must be at least 1");
+    if (o.max_cells < 1) bad("cells_max_cells must be at least 1");
     if (o.lintel_bearing < 0 || o.lintel_courses < 1 || o.quoin_long < 1 || o.quoin_short < 1)
         bad("lintel bearing, lintel depth and quoin lengths must be positive");
 }
 
+void check(const Facade& facade, const Options& options) {
+    check(options, facade.name());
+    detail::check_limits(facade, options);
+}
+
 Texture texture(const Facade& facade, const Node& tree, const Options& options,
                 std::uint64_t seed) {
-    check(options, facade.name());
+    check(facade, options);
     auto start = std::chrono::steady_clock::now();
     Context context(facade, options, seed);
     // Room for a brick bond and its cut bricks at once: growing by doubling copies every cell
@@ -130,7 +116,7 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options,
                                           (options.brick_height + options.mortar));
     context.cells().reserve(static_cast<std::size_t>(
         std::min(1.25 * bricks + 4.0 * static_cast<double>(facade.corners().size()), 2e6)));
-    context.data().expected_cells = expected_cells(facade, options);
+    context.data().expected_cells = detail::expected_cells(facade, options);
     Texture out;
     for (std::size_t i = 0; i < facade.corners().size(); ++i)
         tree({FeatureKind::corner, static_cast<int>(i)}, context);

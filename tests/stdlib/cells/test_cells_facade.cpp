@@ -4,6 +4,7 @@
 
 #include <acanthus/error.hpp>
 #include <algorithm>
+#include <chrono>
 
 #include "cells_oracle.hpp"
 
@@ -119,6 +120,57 @@ TEST(CellsFacade, BadFacadesNameFileAndShape) {
         EXPECT_NE(std::string(e.what()).find("row_house.svg"), std::string::npos);
         EXPECT_NE(std::string(e.what()).find("brick"), std::string::npos);
     }
+}
+
+TEST(CellsFacade, OverlappingOpeningsRefused) {
+    std::string m = message_of({shape(rect(0, 0, 1000, 1000), {"wall"}, "front"),
+                                shape(rect(100, 100, 200, 300), {"window"}, "w1"),
+                                shape(rect(250, 350, 200, 300), {"window"}, "w2")});
+    EXPECT_NE(m.find("bad.svg"), std::string::npos) << m;
+    EXPECT_NE(m.find("w1"), std::string::npos) << m;
+    EXPECT_NE(m.find("w2"), std::string::npos) << m;
+    EXPECT_NE(m.find("openings overlap"), std::string::npos) << m;
+    // Openings that only touch along a side stay two openings.
+    m = message_of({shape(rect(0, 0, 1000, 1000), {"wall"}, "front"),
+                    shape(rect(100, 100, 200, 300), {"window"}, "w1"),
+                    shape(rect(300, 100, 200, 300), {"window"}, "w2")});
+    EXPECT_EQ(m, "");
+}
+
+TEST(CellsFacade, ThinAndHugeWallsRefusedBeforeLaying) {
+    Options o;  // courses of 65 + 10 mm
+    auto refusal = [&](const Facade& f) {
+        try {
+            texture(f, brick_tree(), o, 1);
+        } catch (const acanthus::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    // 60 mm high: no course fits anywhere.
+    std::string m =
+        refusal(Facade::from_shapes({shape(rect(0, 0, 6000, 60), {"wall"}, "strip")}, "thin.svg"));
+    EXPECT_NE(m.find("thin.svg"), std::string::npos) << m;
+    EXPECT_NE(m.find("strip"), std::string::npos) << m;
+    EXPECT_NE(m.find("thinner than a course"), std::string::npos) << m;
+    // One course high is enough.
+    EXPECT_EQ(
+        refusal(Facade::from_shapes({shape(rect(0, 0, 6000, 75), {"wall"}, "strip")}, "thin.svg")),
+        "");
+    // A wall 1e-5 thick is no area at all.
+    m = message_of({shape(rect(0, 0, 6000, 1e-5), {"wall"}, "film")});
+    EXPECT_NE(m.find("film"), std::string::npos) << m;
+    EXPECT_NE(m.find("no area"), std::string::npos) << m;
+    // A kilometre by 30 m (mm): refused at once with the estimate, not after minutes of work.
+    Facade huge = Facade::from_shapes({shape(rect(0, 0, 1e6, 3e4), {"wall"}, "long")}, "km.svg");
+    auto start = std::chrono::steady_clock::now();
+    m = refusal(huge);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1);
+    EXPECT_NE(m.find("km.svg"), std::string::npos) << m;
+    EXPECT_NE(m.find("about 1,777,778 cells"), std::string::npos) << m;
+    EXPECT_NE(m.find("cells_max_cells"), std::string::npos) << m;
+    o.max_cells = 0;
+    EXPECT_NE(refusal(row_house()).find("cells_max_cells must be at least 1"), std::string::npos);
 }
 
 TEST(CellsFacade, EdgeOccupancyMergesIntervals) {

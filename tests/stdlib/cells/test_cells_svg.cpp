@@ -134,6 +134,33 @@ TEST(CellsSvg, BadFacadesNameFileAndId) {
     }
 }
 
+TEST(CellsSvg, ZeroSizeAndOverlappingShapesNamed) {
+    // SVG draws nothing for these; a facade refuses them rather than losing a window.
+    std::string e = error_of(svg(R"(<rect id="front" class="wall" width="600" height="400"/>
+                        <rect id="slot" class="window" x="100" y="100" width="0" height="50"/>)"));
+    EXPECT_NE(e.find("front.svg: <rect id=\"slot\"> (line 3)"), std::string::npos) << e;
+    EXPECT_NE(e.find("no area"), std::string::npos) << e;
+    e = error_of(svg(R"(<rect id="front" class="wall" width="600" height="400"/>
+                        <g class="oculus"><circle id="eye" cx="300" cy="100" r="0"/></g>)"));
+    EXPECT_NE(e.find("<circle id=\"eye\">"), std::string::npos) << e;
+    EXPECT_NE(e.find("no area"), std::string::npos) << e;
+    e = error_of(svg(R"(<rect id="front" class="wall" width="0" height="400"/>
+                        <rect id="back" class="wall" width="600" height="400"/>)"));
+    EXPECT_NE(e.find("<rect id=\"front\">"), std::string::npos) << e;
+    // Unfilled, hidden or in <defs>: not masonry, still ignored.
+    e = error_of(svg(R"(<rect id="front" class="wall" width="600" height="400"/>
+                        <rect class="window" width="0" height="5" fill="none"/>
+                        <defs><rect id="d" width="0" height="5"/></defs>
+                        <g display="none"><circle r="0"/></g>)"));
+    EXPECT_EQ(e, "");
+    e = error_of(svg(R"(<rect id="front" class="wall" width="600" height="400"/>
+                        <rect id="a" class="window" x="100" y="100" width="100" height="100"/>
+                        <rect id="b" class="window" x="150" y="150" width="100" height="100"/>)"));
+    EXPECT_NE(e.find("<rect id=\"a\"> (line 3) and <rect id=\"b\"> (line 4)"), std::string::npos)
+        << e;
+    EXPECT_NE(e.find("openings overlap"), std::string::npos) << e;
+}
+
 TEST(CellsSvg, PanelsAreWholeWalls) {
     Facade f = Facade::for_panel(acanthus::Region::from_spec("rect:200,140"));
     EXPECT_NEAR(f.wall_area(), 200.0 * 140, 1e-6);

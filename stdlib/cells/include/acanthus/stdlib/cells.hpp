@@ -166,6 +166,9 @@ struct Options {
     int lintel_courses = 2;     // lintel depth, in courses
     int quoin_long = 4, quoin_short = 2;  // jamb quoins, in quarter bricks, alternating by course
     double arc_tolerance = 0;  // chord error of drawn arcs; 0: mortar / 20 (at least 1e-3)
+    // texture() refuses a facade estimated above this many cells before laying any: a million
+    // cells are about 200 MB, and a program's elements and drawing several times that.
+    long max_cells = 1000000;
 };
 
 // A placed cell: its drawn polygon (the claim shrunk by half the joint), who placed it, the
@@ -319,6 +322,9 @@ struct Texture {
 
 // Throws InputError for bad options (a brick of size zero, ...), naming the facade.
 void check(const Options& options, const std::string& source_name);
+// Throws InputError for what texture() refuses before laying a cell: bad options, a face no
+// course fits in (naming its wall shapes), more than options.max_cells (with the estimate).
+void check(const Facade& facade, const Options& options);
 
 // Runs the tree over all corners, then all edges, then all faces [4.2]. Deterministic for the
 // same facade, tree, options and seed.

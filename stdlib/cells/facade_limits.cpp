@@ -1,0 +1,85 @@
+// Refusals up front: a face thinner than a course has no place for one brick (the growth engine
+// would only find that the seed misses it), and a facade whose estimate passes max_cells would
+// run out of memory or time long after starting.
+#include "facade_limits.hpp"
+
+#include <acanthus/error.hpp>
+#include <algorithm>
+#include <cmath>
+
+#include "facade_data.hpp"
+
+namespace acanthus::cells::detail {
+
+long expected_cells(const Facade& facade, const Options& o) {
+    double quarters = 4;  // mean cell length along a course, in quarter bricks
+    if (o.bond == Bond::header) quarters = 2;
+    if (o.bond == Bond::english) quarters = 8.0 / 3;  // a course of each: 1/4 + 1/2 per quarter
+    if (o.bond == Bond::flemish) quarters = 3;        // a stretcher and a header per 6 quarters
+    double cell = quarters / 4 * (o.brick_length + o.mortar) * (o.brick_height + o.mortar);
+    if (o.bond == Bond::ashlar) {
+        const double unit = o.ashlar_unit > 0 ? o.ashlar_unit : o.brick_height + o.mortar;
+        // Random sizes up to the maximum: about half of it each way, on average.
+        cell = unit * unit * (o.ashlar_max_width + 1) / 2 * (o.ashlar_max_height + 1) / 2;
+    }
+    const double cells = std::round(facade.wall_area() / cell);
+    return std::isfinite(cells) && cells > 0 ? static_cast<long>(std::min(cells, 1e15)) : 0;
+}
+
+namespace {
+
+std::string with_commas(long n) {
+    std::string s = std::to_string(n), out;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (i > 0 && (s.size() - i) % 3 == 0) out += ',';
+        out += s[i];
+    }
+    return out;
+}
+
+std::string number(double v) {
+    std::string s = std::to_string(v);
+    s.erase(s.find_last_not_of('0') + 1);
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+}
+
+// True when every point of the face lies within half a course of its outline: shrunk by (just
+// under) that, nothing is left.
+bool thinner_than(const FacadeData& data, int face, double course) {
+    // The rings are even-odd; a union orients holes against outer rings, as offsetting needs.
+    ClipperLib::Clipper c;
+    c.AddPaths(data.face_rings[face], ClipperLib::ptSubject, true);
+    ClipperLib::Paths rings;
+    c.Execute(ClipperLib::ctUnion, rings, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
+    ClipperLib::ClipperOffset offset;
+    offset.AddPaths(rings, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+    ClipperLib::Paths inner;
+    offset.Execute(inner, -0.49 * course * data.scale);
+    double area = 0;
+    for (const ClipperLib::Path& r : inner) area += ClipperLib::Area(r);
+    return !(area > 0);
+}
+
+}  // namespace
+
+void check_limits(const Facade& facade, const Options& o) {
+    const FacadeData& data = facade.data();
+    const long cells = expected_cells(facade, o);
+    if (cells > o.max_cells)
+        throw InputError(
+            facade.name() + ": the wall would take about " + with_commas(cells) + " cells (" +
+            number(facade.wall_area()) + " square units of wall), more than the limit of " +
+            with_commas(o.max_cells) + " (cells_max_cells); is the drawing in the brick's units?");
+    const double course = o.brick_height + o.mortar;
+    for (std::size_t f = 0; f < data.faces.size(); ++f) {
+        if (!thinner_than(data, static_cast<int>(f), course)) continue;
+        std::string names;
+        for (const std::string& n : data.face_walls[f]) names += (names.empty() ? "" : ", ") + n;
+        throw InputError(facade.name() + ": " + (names.empty() ? "the wall" : names) +
+                         ": the wall is thinner than a course (" + number(course) +
+                         ": brick height and joint) everywhere in it: no brick fits");
+    }
+}
+
+}  // namespace acanthus::cells::detail
