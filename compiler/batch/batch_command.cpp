@@ -81,6 +81,11 @@ CLI::App* add_batch_command(CLI::App& app, BatchOptions& o) {
                       "SLURM_ARRAY_TASK_ID / JOB_COMPLETION_INDEX");
     batch->add_option("--shards", o.shards, "N for --shard auto")
         ->check(CLI::Range(1ul, 1000000ul));
+    batch
+        ->add_option("--only", o.only,
+                     "Run only the jobs whose output matches GLOB (relative to the output "
+                     "directory, e.g. 'out/dots/*'; repeatable)")
+        ->allow_extra_args(false);
 
     o.report_command = batch->add_subcommand(
         "report", "Merge the reports of shards (their --report directories) into one");
@@ -90,7 +95,8 @@ CLI::App* add_batch_command(CLI::App& app, BatchOptions& o) {
         ->required();
     batch->footer(
         "Usage: acanthus batch MANIFEST [--jobs N] [--force] [--check REFDIR "
-        "[--update-references]] [--report DIR] [--shard K/N | --shard auto [--shards N]]\n"
+        "[--update-references]] [--report DIR] [--shard K/N | --shard auto [--shards N]] "
+        "[--only GLOB]...\n"
         "       acanthus batch report SHARD_REPORT... -o DIR");
     return batch;
 }
@@ -137,6 +143,8 @@ int run_batch_command(const BatchOptions& o) {
         std::cerr << e.what() << '\n';
         return kBadUsage;
     }
+    // Before sharding: a glob is checked against every job, not only this shard's.
+    if (!select_outputs(all_jobs, o.only, error)) return usage_error(error);
     std::vector<Job> jobs = select_shard(all_jobs, shard);
 
     settings.parallel_jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
@@ -170,7 +178,8 @@ int run_batch_command(const BatchOptions& o) {
                       << r.job.panel_name << ", seed " << r.job.seed << "):\n"
                       << indented(first_lines(r.message, 12)) << '\n';
         } else {
-            std::cerr << "DIFFERS " << r.job.output_relative << ": " << r.check.message;
+            std::cerr << "DIFFERS " << r.job.output_relative << ": " << r.check.message
+                      << "; new render " << r.job.output;
             if (!r.check.diff_picture.empty())
                 std::cerr << "; diff picture " << r.check.diff_picture;
             std::cerr << '\n';

@@ -20,8 +20,9 @@ struct BatchOptions {
     std::string report_directory;  // default with --check: <output dir>/batch-report
     int tolerance = 8;
     double max_differing_fraction = 0.001;
-    std::string shard;       // "K/N" or "auto"
-    std::size_t shards = 0;  // N for --shard auto
+    std::string shard;              // "K/N" or "auto"
+    std::size_t shards = 0;         // N for --shard auto
+    std::vector<std::string> only;  // output globs: run just these jobs
     // `batch report`
     std::vector<std::string> report_inputs;
     std::string merged_report;

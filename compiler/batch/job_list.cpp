@@ -1,5 +1,7 @@
 #include "batch/job_list.hpp"
 
+#include <fnmatch.h>
+
 #include <charconv>
 #include <filesystem>
 #include <map>
@@ -203,6 +205,31 @@ std::vector<Job> select_shard(const std::vector<Job>& jobs, Shard shard) {
     for (const Job& job : jobs)
         if (job.index % shard.count == shard.index) out.push_back(job);
     return out;
+}
+
+bool select_outputs(std::vector<Job>& jobs, const std::vector<std::string>& patterns,
+                    std::string& error) {
+    if (patterns.empty()) return true;
+    std::vector<bool> used(patterns.size());
+    std::vector<Job> out;
+    for (Job& job : jobs) {
+        bool selected = false;
+        for (std::size_t i = 0; i < patterns.size(); ++i) {
+            if (fnmatch(patterns[i].c_str(), job.output_relative.c_str(), FNM_PATHNAME) == 0) {
+                used[i] = true;
+                selected = true;
+            }
+        }
+        if (selected) out.push_back(std::move(job));
+    }
+    for (std::size_t i = 0; i < patterns.size(); ++i) {
+        if (!used[i]) {
+            error = "--only '" + patterns[i] + "' matches no job's output";
+            return false;
+        }
+    }
+    jobs = std::move(out);
+    return true;
 }
 
 }  // namespace acanthus::batch

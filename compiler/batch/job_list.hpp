@@ -56,4 +56,10 @@ bool shard_from_environment(const Environment& getenv, std::size_t shards, Shard
 
 std::vector<Job> select_shard(const std::vector<Job>& jobs, Shard shard);
 
+// --only GLOB...: keeps the jobs whose output (relative to the output directory) matches one of
+// `patterns` (shell globs, `*` not crossing a `/`). False with `error` set, `jobs` unchanged,
+// when a pattern matches no job: a typo must not pass as an empty, successful run.
+bool select_outputs(std::vector<Job>& jobs, const std::vector<std::string>& patterns,
+                    std::string& error);
+
 }  // namespace acanthus::batch

@@ -164,6 +164,29 @@ TEST(BatchShards, SplitEveryJobOnce) {
     EXPECT_EQ(select_shard(jobs, {1, 3}).front().seed, 2u);
 }
 
+TEST(BatchOnly, GlobsOverOutputs) {
+    Manifest manifest = parse(std::string("[[job]]\n") + kDots +
+                              "panels = [\"rect:9,9\", \"circle:5\"]\nformats = [\"svg\", "
+                              "\"png\"]\n\n[[job]]\nrules = \"../../rules/spiral.acr\"\n"
+                              "panels = \"rect:9,9\"\n");
+    const std::vector<Job> all = expand_jobs(manifest, "/tmp/out");
+    std::vector<Job> jobs = all;
+    std::string error;
+    ASSERT_TRUE(select_outputs(jobs, {}, error));
+    EXPECT_EQ(jobs.size(), all.size());
+    ASSERT_TRUE(select_outputs(jobs, {"out/dots/*"}, error)) << error;
+    EXPECT_EQ(jobs.size(), 4u);
+    jobs = all;
+    ASSERT_TRUE(select_outputs(jobs, {"out/*/rect-*.svg", "out/dots/circle-5-1.png"}, error));
+    ASSERT_EQ(jobs.size(), 3u);
+    EXPECT_EQ(jobs[2].index, all.back().index);  // in job order, indices kept for the shards
+    jobs = all;
+    EXPECT_FALSE(select_outputs(jobs, {"out/*"}, error));  // '*' does not cross a '/'
+    EXPECT_FALSE(select_outputs(jobs, {"out/dots/*", "out/dot/*"}, error));
+    EXPECT_EQ(error, "--only 'out/dot/*' matches no job's output");
+    EXPECT_EQ(jobs.size(), all.size());
+}
+
 TEST(BatchShards, ParseAndEnvironment) {
     Shard shard;
     std::string error;
