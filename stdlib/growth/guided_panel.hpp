@@ -16,6 +16,8 @@ class GuidedPanel : public Panel {
     bool contains(Point p) const override;
     bool admits(Circle motif, double tolerance) const override;
     bool reaches(Point from, Point to) const override;
+    Rect bounds() const override { return base_.bounds(); }
+    double clearance(Point p) const override { return base_.clearance(p); }
 
   private:
     struct Segment {

@@ -14,6 +14,10 @@ bool RegionPanel::admits(Circle motif, double tolerance) const {
 
 bool EnvironmentPanel::contains(Point p) const { return env_.inside(p); }
 
+Rect EnvironmentPanel::bounds() const { return env_.region() ? env_.region()->bounds() : Rect{}; }
+
+double EnvironmentPanel::clearance(Point p) const { return env_.distance_to_boundary(p); }
+
 bool EnvironmentPanel::admits(Circle motif, double tolerance) const {
     if (!env_.inside(motif.center) ||
         env_.distance_to_boundary(motif.center) < motif.radius - tolerance)

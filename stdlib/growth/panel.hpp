@@ -19,6 +19,10 @@ class Panel {
     virtual bool admits(Circle motif, double tolerance) const = 0;
     // Growth may step from `from` to `to` (no boundary stroke between them).
     virtual bool reaches(Point /*from*/, Point /*to*/) const { return true; }
+    // A box around the room (empty: unknown, and growth does not restart in holes).
+    virtual Rect bounds() const = 0;
+    // Distance from p to the panel's edge (for choosing the middle of an empty lobe).
+    virtual double clearance(Point p) const = 0;
 };
 
 class RegionPanel : public Panel {
@@ -26,6 +30,8 @@ class RegionPanel : public Panel {
     explicit RegionPanel(const Region& region) : region_(region) {}
     bool contains(Point p) const override { return region_.contains(p); }
     bool admits(Circle motif, double tolerance) const override;
+    Rect bounds() const override { return region_.bounds(); }
+    double clearance(Point p) const override { return region_.distance_to_boundary(p); }
 
   private:
     const Region& region_;
@@ -38,6 +44,8 @@ class EnvironmentPanel : public Panel {
     explicit EnvironmentPanel(Environment& env) : env_(env) {}
     bool contains(Point p) const override;
     bool admits(Circle motif, double tolerance) const override;
+    Rect bounds() const override;
+    double clearance(Point p) const override;
 
   private:
     Environment& env_;

@@ -23,6 +23,17 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
       l_short_(options.short_factor * reference.shortest_edge),
       tolerance_(1e-9 * reference.mean_edge),
       pattern_(reference.mean_edge) {
+    std::vector<double> nearest;
+    for (const auto& ring : reference.rings) {
+        double best = INFINITY;
+        for (const RingSlot& s : ring) best = std::min(best, s.offset.length());
+        if (std::isfinite(best)) nearest.push_back(best);
+    }
+    if (!nearest.empty()) {
+        std::nth_element(nearest.begin(), nearest.begin() + static_cast<long>(nearest.size() / 2),
+                         nearest.end());
+        spacing_ = nearest[nearest.size() / 2];
+    }
     for (std::size_t i = 0; i < reference.elements.size(); ++i) {
         std::vector<RingEntry> ring;
         for (const RingSlot& s : reference.rings[i])
@@ -106,8 +117,75 @@ int Synthesis::next_seed() const {
     return queue_.empty() ? -1 : queue_.begin()->second;
 }
 
+// A restart needs an empty circle a tenth wider than the spacing: a honeycomb's own holes are
+// exactly one spacing across the centre, and must stay empty.
+constexpr double kRestartRadius = 1.1;
+
 void Synthesis::run() {
     auto begin = std::chrono::steady_clock::now();
+    do grow_front();
+    while (
+        (options_.max_elements == 0 || static_cast<long>(placed_.size()) < options_.max_elements) &&
+        restart());
+    stats_.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
+
+bool Synthesis::restart() {
+    if (!options_.fill_holes || starts_.empty()) return false;
+    Hole hole;
+    if (!holes().find(pattern_, kRestartRadius * spacing_, hole)) return false;
+    // Whatever grows from here, this circle is not offered again.
+    holes_->exclude(hole.center, 0.5 * spacing_);
+    ++stats_.restarts;
+    // Next to motifs, the seed goes where one of them wants a neighbour (an open slot of its
+    // reference ring, nearest the hole's centre), so a lattice continues in phase; in an empty
+    // lobe it goes to the centre and grows afresh.
+    Point at = hole.center;
+    int parent = -1, symbol = -1;
+    double best = INFINITY;
+    for (int other : pattern_.near(hole.center, hole.radius + spacing_)) {
+        const Node& o = pattern_[other];
+        if (!o.placed()) continue;
+        for (const RingSlot& slot : reference_.rings[o.source]) {
+            Point q = o.position + slot.offset.rotated(o.rotation);
+            double r = reference_.radius[slot.element] * options_.scale_min;
+            double d = distance(q, hole.center);
+            if (d >= best || d > hole.radius || pattern_.nearest(q, 0.9 * spacing_, -1) >= 0 ||
+                !panel_.contains(q) || !panel_.reaches(o.position, q) || !motif_fits(-1, q, r) ||
+                pattern_.crosses(o.position, q, other, -1))
+                continue;
+            best = d;
+            at = q;
+            parent = other;
+            symbol = reference_.symbol[slot.element];
+        }
+    }
+    starts_.push_back(at);
+    int id = new_seed(at, symbol);
+    // Linked to the motifs around it, the seed is matched against them like any other.
+    for (int other : pattern_.near(at, 1.6 * spacing_)) {
+        const Node& o = pattern_[other];
+        if (other == id || !o.placed() || !panel_.reaches(at, o.position) ||
+            (other != parent && pattern_.crosses(at, o.position, id, other)))
+            continue;
+        pattern_.link(id, other, o.position - at);
+    }
+    return true;
+}
+
+HoleFinder& Synthesis::holes() {
+    if (!holes_) {
+        double smallest = INFINITY;
+        for (double r : reference_.radius) smallest = std::min(smallest, r);
+        holes_.emplace(panel_, starts_, spacing_, smallest * options_.scale_min, tolerance_);
+    }
+    return *holes_;
+}
+
+double Synthesis::largest_hole() { return starts_.empty() ? 0.0 : holes().largest(pattern_); }
+
+void Synthesis::grow_front() {
     while (!queue_.empty()) {
         if (options_.max_elements > 0 && static_cast<long>(placed_.size()) >= options_.max_elements)
             break;
@@ -121,8 +199,6 @@ void Synthesis::run() {
         }
         grow(seed);
     }
-    stats_.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
 std::vector<OuterEntry> Synthesis::outer_ring(int seed, const std::vector<int>& ring_nodes) const {

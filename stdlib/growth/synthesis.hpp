@@ -13,6 +13,7 @@
 
 #include "arrangement.hpp"
 #include "flow_field.hpp"
+#include "hole_finder.hpp"
 #include "neighbourhood_match.hpp"
 #include "panel.hpp"
 #include "reference.hpp"
@@ -28,6 +29,10 @@ class Synthesis {
     int plant(const std::vector<Point>& starts);
     void run();
     SynthesisResult result() const;
+    // The reference's median nearest-neighbour distance (the spacing holes are measured in).
+    double spacing() const { return spacing_; }
+    // The largest empty circle left where a motif fits, as a radius (0 without a panel box).
+    double largest_hole();
     const Arrangement& arrangement() const { return pattern_; }
 
   private:
@@ -37,6 +42,11 @@ class Synthesis {
     };
 
     int next_seed() const;
+    void grow_front();
+    // Plants a seed in the largest empty circle that holds a motif at the reference's spacing,
+    // linked to the motifs around it; false when no such circle is left.
+    bool restart();
+    HoleFinder& holes();  // made on first use, over the starts planted by then
     void grow(int seed);
     Choice choose(const Node& seed, const std::vector<RingEntry>& target,
                   const std::vector<OuterEntry>& target_outer);
@@ -63,6 +73,8 @@ class Synthesis {
     std::vector<int> priority_;                         // per symbol id
     bool priorities_differ_ = false;
     double l_ = 1, l_short_ = 0.5, tolerance_ = 0;
+    double spacing_ = 1;
+    std::optional<HoleFinder> holes_;
     Arrangement pattern_;
     std::set<std::pair<double, int>> queue_;  // (distance from the start, node)
     std::vector<Point> starts_;

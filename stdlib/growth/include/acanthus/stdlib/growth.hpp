@@ -107,6 +107,9 @@ struct Options {
     double w2 = 1.0;        // symbol differs
     double w3 = 100.0;      // the same reference element (sub-id): avoids copying it verbatim
     long max_elements = 0;  // 0: until no seed is left
+    // When the growth front stops, restart it in the largest empty circle that holds a motif at
+    // the reference's spacing, until none is left (false: stop with the front, as the paper).
+    bool fill_holes = true;
     std::map<std::string, int> priority;  // per symbol, higher grows first (default 0)
     double priority_radius = 5.0;         // x mean edge length: where a higher priority blocks
     double short_factor = 0.5;            // l_short = factor x shortest reference edge
@@ -169,6 +172,7 @@ struct SynthesisStats {
     long seeds = 0;      // seeds made (start, ring and l_long seeds)
     long dropped = 0;    // seeds dropped: outside, no match, motif does not fit
     long merged = 0;     // l_short merges
+    long restarts = 0;   // seeds planted in empty circles after the growth front stopped
     double seconds = 0;  // wall time (reported only, never used)
     double relax_seconds = 0;
     // How far the result is from the reference's offsets: RMS over the links between motifs of

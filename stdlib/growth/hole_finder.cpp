@@ -1,0 +1,108 @@
+#include "hole_finder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+
+namespace acanthus::growth::detail {
+
+HoleFinder::HoleFinder(const Panel& panel, const std::vector<Point>& starts, double spacing,
+                       double motif_radius, double tolerance)
+    : panel_(panel), spacing_(spacing), motif_radius_(motif_radius), tolerance_(tolerance) {
+    Rect box = panel.bounds();
+    if (!(spacing > 0) || !(box.width() > 0) || !(box.height() > 0)) return;
+    // A quarter spacing finds a hole's radius within a fifth of a spacing; a huge panel gets a
+    // coarser grid so that the search stays under about a million samples.
+    double step = std::max(spacing / 4, std::sqrt(box.width() * box.height() / 1e6));
+    const long nx = static_cast<long>(std::ceil(box.width() / step));
+    const long ny = static_cast<long>(std::ceil(box.height() / step));
+    auto at = [&](long i, long j) {
+        return Point{box.x0 + (static_cast<double>(i) + 0.5) * step,
+                     box.y0 + (static_cast<double>(j) + 0.5) * step};
+    };
+    std::vector<signed char> state(static_cast<std::size_t>(nx * ny), 0);  // 1 in, -1 out
+    auto inside = [&](long i, long j) {
+        signed char& s = state[static_cast<std::size_t>(j * nx + i)];
+        if (s == 0) s = panel.contains(at(i, j)) ? 1 : -1;
+        return s > 0;
+    };
+    // Flood from the starts through samples inside, never across a boundary stroke.
+    std::vector<bool> reached(state.size(), false);
+    std::deque<std::pair<long, long>> todo;
+    for (Point s : starts) {
+        long i = std::clamp(static_cast<long>((s.x - box.x0) / step), 0L, nx - 1);
+        long j = std::clamp(static_cast<long>((s.y - box.y0) / step), 0L, ny - 1);
+        if (!inside(i, j) || reached[static_cast<std::size_t>(j * nx + i)]) continue;
+        reached[static_cast<std::size_t>(j * nx + i)] = true;
+        todo.push_back({i, j});
+    }
+    while (!todo.empty()) {
+        auto [i, j] = todo.front();
+        todo.pop_front();
+        const long di[] = {1, -1, 0, 0}, dj[] = {0, 0, 1, -1};
+        for (int k = 0; k < 4; ++k) {
+            long a = i + di[k], b = j + dj[k];
+            if (a < 0 || b < 0 || a >= nx || b >= ny) continue;
+            std::size_t n = static_cast<std::size_t>(b * nx + a);
+            if (reached[n] || !inside(a, b) || !panel.reaches(at(i, j), at(a, b))) continue;
+            reached[n] = true;
+            todo.push_back({a, b});
+        }
+    }
+    for (long j = 0; j < ny; ++j)
+        for (long i = 0; i < nx; ++i)
+            if (reached[static_cast<std::size_t>(j * nx + i)] &&
+                panel.admits({at(i, j), motif_radius}, tolerance))
+                samples_.push_back({at(i, j), panel.clearance(at(i, j)), true});
+}
+
+double HoleFinder::nearest_placed(const Arrangement& pattern, Point p, double cap) const {
+    double best = cap;
+    for (int id : pattern.near(p, cap)) {
+        const Node& n = pattern[id];
+        if (n.placed()) best = std::min(best, distance(n.position, p));
+    }
+    return best;
+}
+
+bool HoleFinder::find(const Arrangement& pattern, double at_least, Hole& hole) {
+    // Beyond three spacings every sample is empty enough; depth then picks the middle of a lobe.
+    const double cap = std::max(3 * spacing_, at_least);
+    double best_score = -1;
+    for (Sample& s : samples_) {
+        if (!s.open) continue;
+        double free = nearest_placed(pattern, s.at, cap);
+        if (free < at_least) {
+            s.open = false;  // motifs are never taken away, so it stays covered
+            continue;
+        }
+        double score = std::min(free, s.depth + spacing_);
+        if (score > best_score) {
+            best_score = score;
+            hole = {s.at, free};
+        }
+    }
+    return best_score >= 0;
+}
+
+void HoleFinder::exclude(Point p, double radius) {
+    for (Sample& s : samples_)
+        if (distance(s.at, p) <= radius) s.open = false;
+}
+
+double HoleFinder::largest(const Arrangement& pattern) const {
+    double best = 0;
+    const double cap = 1e3 * spacing_;
+    for (const Sample& s : samples_) {
+        // Grow the search until it meets a motif: holes are usually small.
+        double free = cap;
+        for (double r = 2 * spacing_; r < cap; r *= 4) {
+            free = nearest_placed(pattern, s.at, r);
+            if (free < r) break;
+        }
+        best = std::max(best, free);
+    }
+    return best;
+}
+
+}  // namespace acanthus::growth::detail
