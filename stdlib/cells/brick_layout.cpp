@@ -5,6 +5,7 @@
 #include <string>
 
 #include "brick_grid.hpp"
+#include "closers.hpp"
 #include "context_data.hpp"
 
 namespace acanthus::cells::detail {
@@ -95,9 +96,17 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o) 
     layout.rows.resize(static_cast<std::size_t>(rows));
     layout.piece_of_unit.resize(static_cast<std::size_t>(rows));
     layout.taken.resize(static_cast<std::size_t>(rows));
+    for (int r = 0; r < rows; ++r)
+        row_pieces(layout.grid, layout.bond, layout.phase, r,
+                   layout.rows[static_cast<std::size_t>(r)]);
+    set_closers(layout);
     for (int r = 0; r < rows; ++r) {
         auto& pieces = layout.rows[static_cast<std::size_t>(r)];
-        row_pieces(layout.grid, layout.bond, layout.phase, r, pieces);
+        for (Piece& p : pieces) {  // closers moved some ends
+            p.full = true;
+            for (int u = p.start; u < p.start + p.length; ++u)
+                if (layout.grid.at(r, u) != kFull) p.full = false;
+        }
         auto& index = layout.piece_of_unit[static_cast<std::size_t>(r)];
         index.assign(static_cast<std::size_t>(layout.grid.units()), -1);
         for (std::size_t k = 0; k < pieces.size(); ++k)

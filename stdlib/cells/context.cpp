@@ -79,6 +79,38 @@ void Context::begin(const std::string& generator, const FeatureRef& feature) {
 
 using detail::axis_rect;
 
+namespace {
+
+// A brick cut off by a jamb a few millimetres off a whole number of quarter bricks: laid whole,
+// a half joint from the reveal. Shorter, it reaches into that half joint (the brick's face may
+// be the reveal); longer, its head joint opens by the difference. That head joint never closes:
+// moved, it could come within a quarter brick of the joint above or below.
+double nominal_width(Rect r, const Options& o) {
+    const double q = (o.brick_length + o.mortar) / 4;
+    const double m = std::round(r.width() / q);
+    return m >= 1 ? m * q - o.mortar : 0;
+}
+
+// The drawn brick, or an empty rect when the piece is no shaved brick at a jamb.
+Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o) {
+    const double h = o.mortar / 2, w = nominal_width(r, o), short_by = w - (r.width() - o.mortar);
+    const double eps = 1e-9 * std::max(1.0, std::abs(r.x1) + std::abs(r.y1));
+    const bool left = r.x0 > claim.x0 + eps, right = r.x1 < claim.x1 - eps;
+    // Full-height courses only, cut at one end only; short by no more than the reveal's half
+    // joint (and twice the tolerance), or long by no more than the head joint may open.
+    const bool fits = short_by > 0 ? short_by <= std::min(h, 2 * o.joint_tolerance) + eps
+                                   : -short_by <= o.joint_tolerance + eps;
+    if (w <= 0 || std::abs(short_by) <= eps || !fits || left == right || r.y0 > drawn.y0 + eps ||
+        r.y1 < drawn.y1 - eps ||
+        std::abs(r.height() - (drawn.height() + o.mortar)) > o.joint_tolerance + eps)
+        return {0, 0, 0, 0};
+    // Against the jamb: the side the face cut off.
+    return left ? Rect{r.x0 + h, drawn.y0, r.x0 + h + w, drawn.y1}
+                : Rect{r.x1 - h - w, drawn.y0, r.x1 - h, drawn.y1};
+}
+
+}  // namespace
+
 int Context::place_free_rect(Rect r, int course, const Rect* drawn) {
     const Facade& facade = *data_->facade;
     int face = detail::face_of(facade, data_->feature);
@@ -144,6 +176,10 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
         double h = data_->options.mortar / 2;
         if (whole && drawn) {
             drawn_cells.push_back(detail::polygon_of(*drawn));
+        } else if (Rect claimed, n;
+                   drawn && axis_rect(piece, r) && axis_rect(claim, claimed) &&
+                   (n = nominal_at_jamb(r, claimed, *drawn, data_->options)).width() > 0) {
+            drawn_cells.push_back(detail::polygon_of(n));
         } else if (axis_rect(piece, r)) {
             if (r.width() > 2 * h && r.height() > 2 * h)
                 drawn_cells.push_back({{r.x0 + h, r.y0 + h},

@@ -1,0 +1,76 @@
+// Only the first and last two joints of a run move: inside a run the bond's own sequence already
+// staggers the joints, and moving them would put bats all over the wall.
+#include "closers.hpp"
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+namespace acanthus::cells::detail {
+
+namespace {
+
+// Unit lines where a piece ends and the next begins, in the same run (not at a jamb).
+std::set<int> joints_of(const std::vector<Piece>& pieces) {
+    std::set<int> out;
+    for (std::size_t k = 0; k + 1 < pieces.size(); ++k)
+        if (pieces[k].start + pieces[k].length == pieces[k + 1].start)
+            out.insert(pieces[k + 1].start);
+    return out;
+}
+
+bool run_end(const std::vector<Piece>& pieces, std::size_t k, bool left) {
+    if (left) return k == 0 || pieces[k - 1].start + pieces[k - 1].length != pieces[k].start;
+    return k + 1 == pieces.size() || pieces[k].start + pieces[k].length != pieces[k + 1].start;
+}
+
+// The joint between pieces k and k + 1 moved by d units, if both stay from one to four units
+// and a piece at a run's end keeps two (it may end in a part unit at the jamb).
+bool movable(const std::vector<Piece>& pieces, std::size_t k, int d) {
+    const int a = pieces[k].length + d, b = pieces[k + 1].length - d;
+    if (a < 1 || b < 1 || a > 4 || b > 4) return false;
+    if (run_end(pieces, k, true) && a < 2) return false;
+    if (run_end(pieces, k + 1, false) && b < 2) return false;
+    return true;
+}
+
+}  // namespace
+
+void set_closers(BrickLayout& layout) {
+    if (layout.bond.bond == Bond::stack) return;  // joints over joints is the stack bond
+    auto& rows = layout.rows;
+    const int n = static_cast<int>(rows.size());
+    // Rows are listed from the top; courses are laid from the bottom.
+    for (int r = n - 2; r >= 0; --r) {
+        const std::set<int> below = joints_of(rows[static_cast<std::size_t>(r + 1)]);
+        const std::set<int> above =
+            r > 0 ? joints_of(rows[static_cast<std::size_t>(r - 1)]) : std::set<int>{};
+        auto& pieces = rows[static_cast<std::size_t>(r)];
+        for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
+            if (pieces[k].start + pieces[k].length != pieces[k + 1].start) continue;
+            // Within two joints of a run's end.
+            const bool near_left =
+                run_end(pieces, k, true) || (k > 0 && run_end(pieces, k - 1, true));
+            const bool near_right = run_end(pieces, k + 1, false) ||
+                                    (k + 2 < pieces.size() && run_end(pieces, k + 2, false));
+            if (!near_left && !near_right) continue;
+            const int j = pieces[k + 1].start;
+            if (!below.count(j)) continue;
+            // Neighbouring joints of this course stay where they are: no new straight joint
+            // between them and the new place.
+            int best = 0, best_cost = 1 << 20;
+            for (int d : std::array<int, 4>{1, -1, 2, -2}) {
+                if (!movable(pieces, k, d) || below.count(j + d)) continue;
+                const int cost = (above.count(j + d) ? 10 : 0) + std::abs(d);
+                if (cost < best_cost) best = d, best_cost = cost;
+            }
+            if (best == 0) continue;
+            pieces[k].length += best;
+            pieces[k + 1].start += best;
+            pieces[k + 1].length -= best;
+            pieces[k].cut = pieces[k + 1].cut = true;
+        }
+    }
+}
+
+}  // namespace acanthus::cells::detail

@@ -1,0 +1,14 @@
+// Closers at the ends of runs (quoins, jambs, reveals): the bond cut off at an opening leaves
+// joints over joints near it; a mason breaks them with a queen closer or a bat there.
+#pragma once
+
+#include "brick_layout.hpp"
+
+namespace acanthus::cells::detail {
+
+// Moves the joints next to each run's ends, course by course from the bottom, off the joints of
+// the course below (and, where it can, of the course above): the two pieces either side of such
+// a joint become a closer and a bat, or two bats, of one to four quarter bricks.
+void set_closers(BrickLayout& layout);
+
+}  // namespace acanthus::cells::detail
