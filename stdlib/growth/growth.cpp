@@ -2,6 +2,7 @@
 // ornament.
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
+#include <acanthus/metrics.hpp>
 #include <acanthus/stdlib/growth.hpp>
 #include <algorithm>
 #include <cctype>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "fidelity.hpp"
 #include "geometry/coordinate_range.hpp"
 #include "guided_panel.hpp"
 #include "panel.hpp"
@@ -139,10 +141,14 @@ SynthesisResult run(const Reference& reference, const detail::Panel& panel, cons
     check_options(options);
     detail::GuidedPanel guided(panel, options);
     const bool tools = !options.boundary_strokes.empty() || !options.spray_strokes.empty();
-    detail::Synthesis synthesis(reference.data(), tools ? guided : panel, options, random);
+    const detail::Panel& room = tools ? guided : panel;
+    detail::Synthesis synthesis(reference.data(), room, options, random);
     synthesis.plant(with_spray_starts(starts, options));
     synthesis.run();
-    return synthesis.result();
+    SynthesisResult result = synthesis.result();
+    result.fidelity = detail::measure_fidelity(reference.data(), result.motifs, room,
+                                               synthesis.spacing(), synthesis.largest_hole());
+    return result;
 }
 
 }  // namespace
@@ -166,7 +172,10 @@ SynthesisResult synthesize(const Reference& reference, const Options& options, P
     Environment* env = Environment::current();
     if (!env) throw std::logic_error("growth::synthesize(reference, options) needs a rule body");
     detail::EnvironmentPanel panel(*env);
-    return run(reference, panel, options, {start}, env->random());
+    SynthesisResult result = run(reference, panel, options, {start}, env->random());
+    // The program's --metrics shows the last synthesis of the run.
+    set_metrics_section("growth", fidelity_json(result));
+    return result;
 }
 
 SynthesisResult synthesize(const Reference& reference, const Options& options) {

@@ -1,6 +1,7 @@
 // The --metrics JSON object.
 #include "program/metrics_json.hpp"
 
+#include <acanthus/metrics.hpp>
 #include <nlohmann/json.hpp>
 
 namespace acanthus::detail {
@@ -26,6 +27,9 @@ std::string metrics_json(const Pattern& pattern, const GrowthStats& stats, long 
     out["seconds"] =
         Json{{"total", total_seconds}, {"growth", stats.seconds}, {"render", render_seconds}};
     out["engine"] = reference_engine ? "reference" : "incremental";
+    // Sections the rule libraries added (acanthus/metrics.hpp), after the runtime's own keys.
+    for (const auto& [key, text] : metrics_sections())
+        if (!out.contains(key)) out[key] = Json::parse(text);
     return out.dump();
 }
 

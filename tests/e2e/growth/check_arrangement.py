@@ -255,6 +255,49 @@ def case_bad_input():
               f"bad input {name}: exit 1 naming '{named}', no output ({p.stderr.strip()[:120]})")
 
 
+def case_metrics():
+    """--metrics carries the library's fidelity report under "growth" (issue 27)."""
+    for name, ref, panel in (("metrics-lattice", "lattice.json", "rectangle.svg"),
+                             ("metrics-stones", "stones.json", "narrow-neck.svg")):
+        out = WORK / f"{name}.svg"
+        p = subprocess.run([PROGRAM, "-o", str(out), "--metrics", "--param",
+                            f"reference={REFS / ref}", "--region", str(PANELS / panel)],
+                           capture_output=True, text=True, timeout=300)
+        if p.returncode != 0:
+            check(False, f"{name}: exit {p.returncode}: {p.stderr.strip()}")
+            continue
+        g = json.loads(p.stdout).get("growth")
+        if not isinstance(g, dict):
+            check(False, f"{name}: --metrics has a growth section")
+            continue
+        points, symbols = reference_points(REFS / ref)
+        want = median(nearest(points))
+        check(abs(g["spacing"] - want) <= 1e-9 * want,
+              f"{name}: spacing {g['spacing']:.4f} is the reference's NN median {want:.4f}")
+        check(abs(g["nn_median"] - 1) <= 0.05, f"{name}: NN median {g['nn_median']:.3f} NN (within 5%)")
+        h = g["nn_histogram"]
+        check(len(h["result"]) == len(h["reference"]) == 21 and
+              abs(sum(h["result"]) - 1) < 1e-9 and abs(sum(h["reference"]) - 1) < 1e-9,
+              f"{name}: NN histograms of 21 bins, each summing to 1")
+        mix = {s: symbols.count(s) / len(symbols) for s in set(symbols)}
+        check(all(abs(g["symbols"][s]["reference"] - v) < 1e-9 for s, v in mix.items()) and
+              abs(sum(v["result"] for v in g["symbols"].values()) - 1) < 1e-9,
+              f"{name}: symbol mix {g['symbols']}")
+        same = g["same_symbol_neighbours"]
+        check(0 <= same["result"] <= 1 and 0 <= same["reference"] <= 1,
+              f"{name}: same-symbol neighbour shares {same}")
+        check(g["defects"]["interior"] > 0 and 0 <= g["defects"]["share"] <= 1,
+              f"{name}: defects {g['defects']}")
+        check(0 < g["largest_hole"] <= 1.5,
+              f"{name}: largest hole {g['largest_hole']:.2f} NN (at most 1.5)")
+        check(g["motifs"] > 50, f"{name}: {g['motifs']} motifs")
+        if ref == "lattice.json":
+            check(g["defects"]["share"] <= 0.05 and
+                  abs(same["result"] - same["reference"]) <= 0.05,
+                  f"lattice: defects {g['defects']['share']:.1%} (at most 5%), same-symbol share "
+                  f"{same['result']:.3f} vs {same['reference']:.3f}")
+
+
 CASES = {name[5:]: f for name, f in globals().items() if name.startswith("case_")}
 for name in sys.argv[4:] or CASES:
     CASES[name]()

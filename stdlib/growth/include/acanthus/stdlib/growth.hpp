@@ -180,11 +180,32 @@ struct SynthesisStats {
     double link_error = 0;
 };
 
+// How faithfully the result keeps the reference (docs/stdlib/growth.md, "Fidelity report"):
+// lengths in units of the reference's median nearest-neighbour (NN) distance.
+struct Fidelity {
+    double spacing = 0;          // the reference's NN median, in drawing units
+    double nn_median = 0;        // the result's NN median / spacing
+    double histogram_bin = 0.1;  // NN histograms: shares per bin of this width from 0, the last
+    std::vector<double> nn_histogram, reference_nn_histogram;  // bin holding everything beyond
+    std::map<std::string, double> symbol_mix, reference_symbol_mix;  // share per symbol
+    // Pairs within 1.2 NN with one symbol, among all pairs within 1.2 NN.
+    double same_symbol_share = 0, reference_same_symbol_share = 0;
+    // Motifs at least 1.5 NN inside the panel whose neighbours (within 1.2 NN) match no full
+    // reference ring of their symbol within 0.15 NN: 0 for a perfect regular lattice.
+    long interior = 0;
+    double defect_share = 0;
+    // The largest empty circle where a motif fits: its radius to the nearest motif's centre.
+    double largest_hole = 0;
+};
+
 struct SynthesisResult {
     std::vector<Motif> motifs;
     std::vector<std::pair<int, int>> edges;  // connectivity between motifs (indices), i < j
     SynthesisStats stats;
+    Fidelity fidelity;
 };
+// The fidelity report as a JSON object (the `growth` section of the program's --metrics).
+std::string fidelity_json(const SynthesisResult& result);
 
 // Grows the reference in a whole region from `starts` (none: the centre of the largest inscribed
 // circle). Deterministic for the same inputs and `seed`.
