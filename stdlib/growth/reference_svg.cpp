@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 
+#include "empty_symbols.hpp"
 #include "reference.hpp"
 #include "region/curves.hpp"
 #include "svg/shape_reader.hpp"
@@ -105,6 +106,8 @@ std::vector<std::pair<int, int>> flips_of(const SvgElement* root, const std::str
 
 Reference Reference::from_svg_string(std::string_view text, const std::string& name) {
     std::vector<SvgShape> shapes = acanthus::detail::read_svg_shapes(text, name);
+    // The reader hands over only shapes: an element with none would vanish without a word.
+    detail::check_symbols_own_shapes(text, name);
     // Elements in document order of their first shape; shapes grouped by their owner.
     std::vector<const SvgElement*> owners;
     std::map<const SvgElement*, std::vector<const SvgShape*>> grouped;

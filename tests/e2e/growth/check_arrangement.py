@@ -240,11 +240,17 @@ def case_bad_input():
     (bad / "collinear.json").write_text(
         '{"elements": [{"symbol": "a", "x": 0, "y": 0}, {"symbol": "a", "x": 1, "y": 1}, '
         '{"symbol": "a", "x": 2, "y": 2}]}')
+    (bad / "empty-group.svg").write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg"><circle data-symbol="a" r="1"/>'
+        '<circle data-symbol="a" cx="9" r="1"/><circle data-symbol="a" cy="9" r="1"/>'
+        '<circle data-symbol="a" cx="9" cy="9" r="1"/><g id="forgotten" data-symbol="b"/></svg>')
     (bad / "guides.svg").write_text('<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0,0 L 9,9"/></svg>')
     cases = [("missing", ["--param", f"reference={bad / 'nonexistent.json'}"], "nonexistent.json"),
              ("malformed", ["--param", f"reference={bad / 'malformed.json'}"], "malformed.json"),
              ("no-symbol", ["--param", f"reference={bad / 'no-symbol.svg'}"], "no-symbol.svg"),
              ("collinear", ["--param", f"reference={bad / 'collinear.json'}"], "collinear.json"),
+             ("empty-group", ["--param", f"reference={bad / 'empty-group.svg'}"],
+              'empty-group.svg: <g id="forgotten"> (line 1): carries data-symbol="b" but owns no shape'),
              ("guides", ["--param", f"growth_guides={bad / 'guides.svg'}"], "guides.svg"),
              ("mode", ["--param", "growth_mode=sideways"], "sideways"),
              ("flow-without-strokes", ["--param", "growth_mode=flow"], "flow stroke")]
@@ -296,6 +302,15 @@ def case_metrics():
                   abs(same["result"] - same["reference"]) <= 0.05,
                   f"lattice: defects {g['defects']['share']:.1%} (at most 5%), same-symbol share "
                   f"{same['result']:.3f} vs {same['reference']:.3f}")
+
+
+def case_header_files():
+    """Every file rules/arrangement.acr's header names exists (issue 27)."""
+    import re
+    text = (SOURCE / "rules/arrangement.acr").read_text()
+    named = sorted(set(re.findall(r"examples/[\w./-]+\.(?:svg|json)", text)))
+    missing = [n for n in named if not (SOURCE / n).is_file()]
+    check(named and not missing, f"header: {len(named)} files named, missing: {missing}")
 
 
 CASES = {name[5:]: f for name, f in globals().items() if name.startswith("case_")}

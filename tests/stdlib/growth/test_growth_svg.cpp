@@ -136,6 +136,34 @@ TEST(GrowthSvg, BadInputNamesFileAndElement) {
     EXPECT_NE(m.find("data-size must be positive"), std::string::npos) << m;
 }
 
+// The reader hands over only shapes, so an element without one would vanish silently (issue 27).
+TEST(GrowthSvg, EmptySymbolGroupIsNamed) {
+    auto with = [](const std::string& extra) {
+        std::string s = grid_svg();
+        return s.insert(s.size() - 6, extra);
+    };
+    // grid_svg() spans two lines: the group is on line 4.
+    std::string m = error_of(with("\n\n<g id=\"lost\" data-symbol=\"a\"></g>"));
+    EXPECT_NE(
+        m.find("ref.svg: <g id=\"lost\"> (line 4): carries data-symbol=\"a\" but owns no shape"),
+        std::string::npos)
+        << m;
+    // Only text (which the reader does not draw), or every shape owned by a nearer data-symbol.
+    m = error_of(with("<g id=\"words\" data-symbol=\"b\"><text>b</text></g>"));
+    EXPECT_NE(m.find("<g id=\"words\">"), std::string::npos) << m;
+    m =
+        error_of(with("<g id=\"outer\" data-symbol=\"a\"><g data-symbol=\"b\"><circle cx=\"30\" "
+                      "r=\"1\"/></g></g>"));
+    EXPECT_NE(m.find("<g id=\"outer\">"), std::string::npos) << m;
+    // Hidden elements and templates are not elements at all, as before.
+    EXPECT_EQ(error_of(with("<g data-symbol=\"a\" style=\"display: none\"></g>"
+                            "<defs><g id=\"t\" data-symbol=\"a\"></g></defs>")),
+              "");
+    EXPECT_EQ(
+        Reference::from_svg_string(with("<g data-symbol=\"a\" display=\"none\"/>"), "r").size(),
+        9u);
+}
+
 TEST(GrowthSvg, FromFileReadsEitherFormat) {
     auto dir = std::filesystem::temp_directory_path() / "acanthus_growth_svg_test";
     std::filesystem::create_directories(dir);
