@@ -51,9 +51,17 @@ HoleFinder::HoleFinder(const Panel& panel, const std::vector<Point>& starts, dou
     }
     for (long j = 0; j < ny; ++j)
         for (long i = 0; i < nx; ++i)
-            if (reached[static_cast<std::size_t>(j * nx + i)] &&
-                panel.admits({at(i, j), motif_radius}, tolerance))
-                samples_.push_back({at(i, j), panel.clearance(at(i, j)), true});
+            if (reached[static_cast<std::size_t>(j * nx + i)]) samples_.push_back({at(i, j)});
+}
+
+bool HoleFinder::fits(Sample& s) const {
+    if (s.fits == 0) s.fits = panel_.admits({s.at, motif_radius_}, tolerance_) ? 1 : -1;
+    return s.fits > 0;
+}
+
+double HoleFinder::depth(Sample& s) const {
+    if (s.depth < 0) s.depth = panel_.clearance(s.at);
+    return s.depth;
 }
 
 double HoleFinder::nearest_placed(const Arrangement& pattern, Point p, double cap) const {
@@ -71,12 +79,14 @@ bool HoleFinder::find(const Arrangement& pattern, double at_least, Hole& hole) {
     double best_score = -1;
     for (Sample& s : samples_) {
         if (!s.open) continue;
-        double free = nearest_placed(pattern, s.at, cap);
-        if (free < at_least) {
+        // A small search settles most samples; only the open ones look farther.
+        double free = nearest_placed(pattern, s.at, at_least);
+        if (free >= at_least) free = nearest_placed(pattern, s.at, cap);
+        if (free < at_least || !fits(s)) {
             s.open = false;  // motifs are never taken away, so it stays covered
             continue;
         }
-        double score = std::min(free, s.depth + spacing_);
+        double score = std::min(free, depth(s) + spacing_);
         if (score > best_score) {
             best_score = score;
             hole = {s.at, free};
@@ -90,17 +100,17 @@ void HoleFinder::exclude(Point p, double radius) {
         if (distance(s.at, p) <= radius) s.open = false;
 }
 
-double HoleFinder::largest(const Arrangement& pattern) const {
+double HoleFinder::largest(const Arrangement& pattern) {
     double best = 0;
     const double cap = 1e3 * spacing_;
-    for (const Sample& s : samples_) {
+    for (Sample& s : samples_) {
         // Grow the search until it meets a motif: holes are usually small.
         double free = cap;
-        for (double r = 2 * spacing_; r < cap; r *= 4) {
+        for (double r = spacing_; r < cap; r *= 4) {
             free = nearest_placed(pattern, s.at, r);
             if (free < r) break;
         }
-        best = std::max(best, free);
+        if (free > best && fits(s)) best = free;
     }
     return best;
 }

@@ -29,19 +29,23 @@ class HoleFinder {
     // Never offer this sample's neighbourhood again (a restart there placed nothing).
     void exclude(Point p, double radius);
     // The largest empty circle over all samples that can hold a motif (0 when none).
-    double largest(const Arrangement& pattern) const;
+    double largest(const Arrangement& pattern);
 
   private:
     struct Sample {
         Point at;
-        double depth = 0;  // panel clearance, for ties
+        double depth = -1;     // panel clearance, for ties (-1: not asked yet)
+        signed char fits = 0;  // a motif fits here: 1 yes, -1 no, 0 not asked yet
         bool open = true;
     };
     double nearest_placed(const Arrangement& pattern, Point p, double cap) const;
+    // Asked of the panel only for samples that could win: most never are.
+    bool fits(Sample& s) const;
+    double depth(Sample& s) const;
 
     const Panel& panel_;
     double spacing_, motif_radius_, tolerance_;
-    std::vector<Sample> samples_;  // reached and able to hold a motif, in grid order
+    std::vector<Sample> samples_;  // reached from a start, in grid order
 };
 
 }  // namespace acanthus::growth::detail
