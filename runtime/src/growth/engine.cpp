@@ -258,6 +258,8 @@ Flow GrowthEngine::Impl::call_exhausted() {
         return flow;
     } catch (const RuleFailure&) {
         throw;
+    } catch (const InputError&) {
+        throw;  // bad input found by a library (exit 1), as from a rule body
     } catch (const std::exception& e) {
         throw RuleFailure(pattern.file, pattern.exhausted_line, "%exhausted",
                           std::string("exception thrown: ") + e.what());
