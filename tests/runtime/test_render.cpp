@@ -172,7 +172,7 @@ TEST(Render, OutputIsByteIdenticalOnReRender) {
     ASSERT_EQ(std::system(("pdfinfo " + (dir / "a.pdf") + " >" + (dir / "info.txt")).c_str()), 0);
     EXPECT_NE(slurp(dir / "info.txt").find("Jan  1 00:00:00 2000"), std::string::npos);
     std::string svg = slurp(dir / "a.svg");
-    EXPECT_NE(svg.find("id=\"surface1\""), std::string::npos);
+    EXPECT_NE(svg.find("id=\"layer-dot\""), std::string::npos);  // the structured SVG
 }
 
 TEST(Render, SvgSurfaceIdsAreRenumberedInOrderOfAppearance) {

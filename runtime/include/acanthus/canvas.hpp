@@ -7,6 +7,10 @@ typedef struct _cairo cairo_t;
 
 namespace acanthus {
 
+namespace detail {
+class CanvasSink;
+}
+
 struct Color {
     double r = 0, g = 0, b = 0, a = 1;
 };
@@ -21,6 +25,9 @@ class Canvas {
   public:
     // Draws into `cr` (not owned). Coordinates are the region's user units.
     explicit Canvas(cairo_t* cr);
+    // For the renderer: fills and strokes go to `sink` (the structured SVG writer) while `cr`
+    // keeps the state (colour, line width, path, transformation).
+    Canvas(cairo_t* cr, detail::CanvasSink* sink);
 
     void set_color(double r, double g, double b, double a = 1.0);
     void set_color(Color c);
@@ -49,10 +56,21 @@ class Canvas {
     void restore();
 
     // The escape hatch: the underlying Cairo context.
-    cairo_t* cairo() { return cr_; }
+    cairo_t* cairo() {
+        used_cairo_ = true;
+        return cr_;
+    }
+    // For the renderer: whether cairo() was called since the last reset (a sink cannot see what
+    // was drawn through it, so the element is drawn by Cairo instead).
+    bool used_cairo() const { return used_cairo_; }
+    void reset_used_cairo() { used_cairo_ = false; }
 
   private:
+    bool send_shape(const Proxy& proxy, bool fill);
+
     cairo_t* cr_;
+    detail::CanvasSink* sink_ = nullptr;
+    bool used_cairo_ = false;
 };
 
 }  // namespace acanthus

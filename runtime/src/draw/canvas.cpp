@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "draw/canvas_sink.hpp"
+
 namespace acanthus {
 
 namespace {
@@ -15,6 +17,8 @@ constexpr double point_dot_radius = 1.5;
 }  // namespace
 
 Canvas::Canvas(cairo_t* cr) : cr_(cr) {}
+
+Canvas::Canvas(cairo_t* cr, detail::CanvasSink* sink) : cr_(cr), sink_(sink) {}
 
 void Canvas::set_color(double r, double g, double b, double a) {
     cairo_set_source_rgba(cr_, r, g, b, a);
@@ -49,29 +53,76 @@ void Canvas::arc(Point center, double radius, double start, double end) {
 
 void Canvas::close_path() { cairo_close_path(cr_); }
 
-void Canvas::fill() { cairo_fill(cr_); }
+void Canvas::fill() {
+    if (sink_) {
+        sink_->path(cr_, true);
+        cairo_new_path(cr_);
+        return;
+    }
+    cairo_fill(cr_);
+}
 
-void Canvas::stroke() { cairo_stroke(cr_); }
+void Canvas::stroke() {
+    if (sink_) {
+        sink_->path(cr_, false);
+        cairo_new_path(cr_);
+        return;
+    }
+    cairo_stroke(cr_);
+}
+
+// A sink keeps a lone circle or polygon as that shape; on a path already begun it is just more
+// path.
+bool Canvas::send_shape(const Proxy& proxy, bool fill) {
+    if (!sink_ || cairo_has_current_point(cr_) || !proxy.finite()) return false;
+    switch (proxy.kind()) {
+        case ProxyKind::point: {
+            const auto& p = static_cast<const PointProxy&>(proxy);
+            sink_->circle(cr_, Point{p.x, p.y}, point_dot_radius * line_width(), true);
+            return true;
+        }
+        case ProxyKind::circle: {
+            const auto& c = static_cast<const CircleProxy&>(proxy);
+            sink_->circle(cr_, c.center, std::abs(c.radius), fill);
+            return true;
+        }
+        case ProxyKind::polygon: {
+            const auto& poly = static_cast<const PolygonProxy&>(proxy);
+            if (poly.points.empty()) return false;
+            sink_->polygon(cr_, poly.points, fill);
+            return true;
+        }
+        default:
+            return false;
+    }
+}
 
 void Canvas::fill(const Proxy& proxy) {
+    if (send_shape(proxy, true)) return;
     add_proxy(proxy);
-    cairo_fill(cr_);
+    fill();
 }
 
 void Canvas::stroke(const Proxy& proxy) {
+    if (send_shape(proxy, false)) return;
     add_proxy(proxy);
     // A point has no outline to stroke: its dot is filled instead.
     if (proxy.kind() == ProxyKind::point)
-        cairo_fill(cr_);
+        fill();
     else
-        cairo_stroke(cr_);
+        stroke();
 }
 
 void Canvas::fill_circle(Point center, double radius) {
+    if (sink_ && !cairo_has_current_point(cr_) && std::isfinite(center.x) &&
+        std::isfinite(center.y) && std::isfinite(radius)) {
+        if (radius > 0) sink_->circle(cr_, center, radius, true);  // Cairo draws nothing else
+        return;
+    }
     cairo_new_sub_path(cr_);
     cairo_arc(cr_, center.x, center.y, radius, 0, 2 * M_PI);
     cairo_close_path(cr_);
-    cairo_fill(cr_);
+    fill();
 }
 
 void Canvas::fill_circle(Point center, double radius, Color color) {

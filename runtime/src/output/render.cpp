@@ -20,12 +20,17 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "draw/default_style.hpp"
 #include "output/document.hpp"
+#include "output/layer_order.hpp"
+#include "output/output_stream.hpp"
 #include "output/output_writer.hpp"
 #include "output/page_layout.hpp"
+#include "output/svg_fallback.hpp"
+#include "output/svg_writer.hpp"
 #include "pattern/running_body.hpp"
 
 namespace acanthus {
@@ -58,17 +63,18 @@ std::optional<SkeletalStroke> resolve_stroke(const std::string& name) {
     return SkeletalStroke::builtin(name);
 }
 
-void draw_region_outline(cairo_t* cr, const Region& region, const detail::PageLayout& page) {
+// Through the Canvas, so that the structured SVG gets it as a path of its own layer.
+void draw_region_outline(Canvas& canvas, const Region& region, const detail::PageLayout& page) {
     // A quarter of a page unit of flattening error is invisible at any output size.
     for (const auto& ring : region.rings(0.25 / page.scale)) {
         if (ring.empty()) continue;
-        cairo_move_to(cr, ring[0].x, ring[0].y);
-        for (std::size_t i = 1; i < ring.size(); ++i) cairo_line_to(cr, ring[i].x, ring[i].y);
-        cairo_close_path(cr);
+        canvas.move_to(ring[0]);
+        for (std::size_t i = 1; i < ring.size(); ++i) canvas.line_to(ring[i]);
+        canvas.close_path();
     }
-    cairo_set_source_rgba(cr, region_color.r, region_color.g, region_color.b, region_color.a);
-    cairo_set_line_width(cr, 0.75 * page.line_width);
-    cairo_stroke(cr);
+    canvas.set_color(region_color);
+    canvas.set_line_width(0.75 * page.line_width);
+    canvas.stroke();
 }
 
 RuleFailure draw_failure(const Pattern& pattern, const ElementType& type, const std::string& why) {
@@ -129,6 +135,67 @@ void draw_stroke_chains(Canvas& canvas, const std::vector<const Element*>& eleme
     }
 }
 
+// Whether an element is drawn at all: seeds are markers, unless their type has a %draw.
+bool is_drawn(const Pattern& pattern, const Element& element, RenderStyle style,
+              const detail::CurveStroke& curves) {
+    const ElementType& type = element.type();
+    bool custom = type.draw != nullptr && detail::uses_draw_bodies(style) && !curves.stroke;
+    return custom || pattern.seed == nullptr || &type != pattern.seed;
+}
+
+// One element, its %draw or the style's default; `index` of `count` ranks it for the order style.
+void draw_element(Canvas& canvas, cairo_t* cr, const Pattern& pattern, const Element& element,
+                  long index, long count, RenderStyle style, const detail::PageLayout& page,
+                  const detail::CurveStroke& curves) {
+    const ElementType& type = element.type();
+    bool custom = type.draw != nullptr && detail::uses_draw_bodies(style) && !curves.stroke;
+    if (custom && style == RenderStyle::overlay) {
+        cairo_save(cr);
+        cairo_new_path(cr);
+        cairo_set_line_width(cr, page.line_width);
+        detail::draw_default(canvas, element, style, {}, {}, false);
+        cairo_restore(cr);
+    }
+
+    cairo_save(cr);
+    cairo_new_path(cr);
+    cairo_set_line_width(cr, page.line_width);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    if (custom) {
+        try {
+            const detail::RunningBody running(
+                detail::body_label(&type, pattern.file, type.line, "%draw " + type.name));
+            type.draw(canvas, element);
+        } catch (const RuleFailure&) {
+            throw;
+        } catch (const std::exception& e) {
+            throw draw_failure(pattern, type, e.what());
+        } catch (...) {
+            throw draw_failure(pattern, type, "unknown exception");
+        }
+    } else {
+        long rank = element.id >= 0 ? element.id : index;
+        Color color = hue(detail::order_hue(rank, count));
+        detail::draw_default(canvas, element, style, color, {}, curves.stroke != nullptr);
+    }
+    cairo_restore(cr);
+    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
+        throw draw_failure(
+            pattern, type,
+            std::string("drawing failed: ") + cairo_status_to_string(cairo_status(cr)));
+}
+
+void draw_all_stroke_chains(Canvas& canvas, cairo_t* cr,
+                            const std::vector<const Element*>& elements,
+                            const detail::PageLayout& page, const detail::CurveStroke& curves) {
+    cairo_save(cr);
+    draw_stroke_chains(canvas, elements, *curves.stroke, page.line_width,
+                       1e-6 * std::max(page.width, page.height) / page.scale);
+    cairo_restore(cr);
+}
+
 void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const Element*>& elements,
                    RenderStyle style, const detail::PageLayout& page,
                    const detail::CurveStroke& curves) {
@@ -136,52 +203,85 @@ void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const 
     long count = static_cast<long>(elements.size());
     for (long index = 0; index < count; ++index) {
         const Element& element = *elements[static_cast<std::size_t>(index)];
-        const ElementType& type = element.type();
-        bool custom = type.draw != nullptr && detail::uses_draw_bodies(style) && !curves.stroke;
-        if (!custom && pattern.seed != nullptr && &type == pattern.seed) continue;
-        if (custom && style == RenderStyle::overlay) {
-            cairo_save(cr);
-            cairo_new_path(cr);
-            cairo_set_line_width(cr, page.line_width);
-            detail::draw_default(canvas, element, style, {}, {}, false);
-            cairo_restore(cr);
-        }
+        if (!is_drawn(pattern, element, style, curves)) continue;
+        draw_element(canvas, cr, pattern, element, index, count, style, page, curves);
+    }
+    if (curves.stroke) draw_all_stroke_chains(canvas, cr, elements, page, curves);
+}
 
+// The structured SVG (docs/rendering.md): a layer per element type (layer_order.hpp), a group
+// per element, written to the file one element at a time. The Canvas
+// keeps its state on a context of a 1x1 surface that is never painted; the shapes go to the
+// writer. An element whose drawing the writer cannot follow is drawn again by Cairo's SVG surface.
+void render_structured_svg(const std::string& path, const Pattern& pattern, const Region& region,
+                           const std::vector<const Element*>& elements,
+                           const RenderOptions& options, RenderStyle style,
+                           const detail::PageLayout& page, const detail::CurveStroke& curves) {
+    detail::OutputStream out(path);
+    detail::SvgWriter svg(out, page.width, page.height, pattern.name);
+    if (options.background) svg.background(*options.background);
+
+    std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> surface(
+        cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1), &cairo_surface_destroy);
+    std::unique_ptr<cairo_t, void (*)(cairo_t*)> context(cairo_create(surface.get()),
+                                                         &cairo_destroy);
+    cairo_t* cr = context.get();
+    page.apply(cr);
+    Canvas canvas(cr, &svg);
+
+    if (options.draw_region) {
+        svg.begin_layer("panel outline", "layer-panel-outline");
         cairo_save(cr);
-        cairo_new_path(cr);
-        cairo_set_line_width(cr, page.line_width);
-        cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        if (custom) {
-            try {
-                const detail::RunningBody running(
-                    detail::body_label(&type, pattern.file, type.line, "%draw " + type.name));
-                type.draw(canvas, element);
-            } catch (const RuleFailure&) {
-                throw;
-            } catch (const std::exception& e) {
-                throw draw_failure(pattern, type, e.what());
-            } catch (...) {
-                throw draw_failure(pattern, type, "unknown exception");
-            }
-        } else {
-            long rank = element.id >= 0 ? element.id : index;
-            Color color = hue(detail::order_hue(rank, count));
-            detail::draw_default(canvas, element, style, color, {}, curves.stroke != nullptr);
-        }
+        draw_region_outline(canvas, region, page);
         cairo_restore(cr);
-        if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
-            throw draw_failure(
-                pattern, type,
-                std::string("drawing failed: ") + cairo_status_to_string(cairo_status(cr)));
+        svg.end_layer();
+    }
+
+    // Each type's elements in placement order.
+    std::vector<const ElementType*> types = detail::layer_order(elements);
+    long count = static_cast<long>(elements.size());
+    for (const ElementType* type : types) {
+        svg.begin_layer(type->name, "layer-" + type->name);
+        for (long index = 0; index < count; ++index) {
+            const Element& element = *elements[static_cast<std::size_t>(index)];
+            if (&element.type() != type) continue;
+            long id = element.id >= 0 ? element.id : index;
+            svg.begin_element(type->name, id, element.parent ? element.parent->id : -1,
+                              element.depth);
+            if (!is_drawn(pattern, element, style, curves)) {
+                svg.end_element();  // an empty group: every element is in the file
+                continue;
+            }
+            canvas.reset_used_cairo();
+            draw_element(canvas, cr, pattern, element, index, count, style, page, curves);
+            if (canvas.used_cairo() || svg.needs_fallback()) {
+                svg.replace_shapes(detail::cairo_svg_fragment(
+                    page,
+                    [&](cairo_t* raw) {
+                        Canvas cairo_canvas(raw);
+                        draw_element(cairo_canvas, raw, pattern, element, index, count, style, page,
+                                     curves);
+                    },
+                    type->name + "-" + std::to_string(id) + "-"));
+            }
+            svg.end_element();
+        }
+        svg.end_layer();
     }
     if (curves.stroke) {
-        cairo_save(cr);
-        draw_stroke_chains(canvas, elements, *curves.stroke, page.line_width,
-                           1e-6 * std::max(page.width, page.height) / page.scale);
-        cairo_restore(cr);
+        // Skeletal strokes are drawn through Cairo (they fill warped outlines with its paths).
+        svg.begin_layer("skeletal strokes", "layer-skeletal-strokes");
+        svg.raw(detail::cairo_svg_fragment(
+            page,
+            [&](cairo_t* raw) {
+                Canvas cairo_canvas(raw);
+                draw_all_stroke_chains(cairo_canvas, raw, elements, page, curves);
+            },
+            "strokes-"));
+        svg.end_layer();
     }
+    svg.finish();
+    out.commit();
 }
 
 }  // namespace
@@ -195,6 +295,11 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
     detail::CurveStroke curves;
     if (stroke) curves = {&*stroke, skeletal_stroke_widths * page.line_width};
 
+    if (format == OutputFormat::svg) {
+        render_structured_svg(path, pattern, region, elements, options, style, page, curves);
+        return;
+    }
+
     detail::OutputDocument document(format, page.width, page.height, pattern.name);
     cairo_t* cr = document.context();
     if (options.background) {
@@ -203,7 +308,10 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
         cairo_paint(cr);
     }
     page.apply(cr);
-    if (options.draw_region) draw_region_outline(cr, region, page);
+    if (options.draw_region) {
+        Canvas canvas(cr);
+        draw_region_outline(canvas, region, page);
+    }
     draw_elements(cr, pattern, elements, style, page, curves);
 
     detail::write_output(path, document.finish());
