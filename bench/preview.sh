@@ -2,8 +2,10 @@
 # Usage: bench/preview.sh BUILD_DIR
 # `acanthus preview` edit-to-picture: for every pattern in rules/, at its default size, the time
 # from saving a changed rule body to the new revision in /status.json (compile, build with the
-# precompiled prelude, grow, render): the median of 3 edits after a first render. Last line: one
-# JSON object, {"seconds": {"dots": ..., ...}, "max": ...}.
+# precompiled prelude, grow, render), and to the new picture painted by the page in headless
+# Chromium (tests/preview/paint_time.js, puppeteer-core from its package-lock.json): the median of
+# 3 edits after a first render. Last line: one JSON object, {"seconds": {"dots": ..., ...},
+# "max": ..., "painted_seconds": {...}, "painted_max": ...} (server times only without Chromium).
 # needs: acanthus acanthus_runtime acanthus_stdlib
 set -euo pipefail
 BUILD="$1"

@@ -1,4 +1,6 @@
-"""Edit-to-picture of `acanthus preview` for each pattern in rules/ (see bench/preview.sh)."""
+"""Edit-to-picture of `acanthus preview` for each pattern in rules/ (see bench/preview.sh): the
+time from the save to the new revision on the server, and to the picture painted in headless
+Chromium (tests/preview/paint_time.js)."""
 import json
 import os
 import shutil
@@ -10,6 +12,49 @@ import time
 import urllib.request
 
 EDITS = 3
+
+
+def browser_command(root):
+    """The paint timer's command without its URL, or None (and why) when it cannot run."""
+    chromium = os.environ.get("ACANTHUS_CHROMIUM") or next(
+        (shutil.which(c) for c in ("chromium", "chromium-browser", "google-chrome")
+         if shutil.which(c)), None)
+    if not chromium or not shutil.which("node"):
+        return None, "no Chromium or no node"
+    tests = os.path.join(root, "tests", "preview")
+    if not os.path.isdir(os.path.join(tests, "node_modules", "puppeteer-core")):
+        if subprocess.run(["npm", "ci", "--no-audit", "--no-fund"], cwd=tests,
+                          stdout=sys.stderr).returncode != 0:
+            return None, "npm ci failed in tests/preview"
+    return ["node", os.path.join(tests, "paint_time.js"), chromium], None
+
+
+class PaintTimer:
+    """The page open in headless Chromium; painted(rev) is when it painted revision rev."""
+
+    def __init__(self, command, url):
+        self.process = subprocess.Popen(command[:2] + [url] + command[2:], stdin=subprocess.PIPE,
+                                        stdout=subprocess.PIPE, text=True)
+        line = self.process.stdout.readline()
+        if not line.startswith("ready "):
+            raise RuntimeError("the browser did not show the first picture: %r" % line)
+
+    def painted(self, revision):
+        """Seconds since the epoch when the page painted `revision` (or a later one)."""
+        self.process.stdin.write("wait %d\n" % revision)
+        self.process.stdin.flush()
+        words = self.process.stdout.readline().split()
+        if len(words) != 3 or words[2] == "none":
+            raise RuntimeError("the page did not paint revision %d" % revision)
+        return int(words[2]) / 1000.0
+
+    def close(self):
+        self.process.stdin.close()
+        try:
+            self.process.wait(20)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            self.process.wait()
 
 
 def status(url):
@@ -43,9 +88,10 @@ def edit(path, n):
     os.replace(path + ".tmp", path)
 
 
-def measure(acanthus, root, rule):
+def measure(acanthus, root, rule, browser):
+    """(server seconds, painted seconds or None): medians over the edits."""
     work = tempfile.mkdtemp(prefix="acanthus-bench-preview.")
-    server = None
+    server = timer = None
     try:
         path = os.path.join(work, os.path.basename(rule))
         shutil.copy(rule, path)
@@ -59,7 +105,9 @@ def measure(acanthus, root, rule):
         first = wait_revision(url, 0, 300)
         if first["state"] != "ok":
             raise RuntimeError("%s: %s" % (rule, first["output"]))
-        times = []
+        if browser:
+            timer = PaintTimer(browser, url)
+        times, painted = [], []
         for n in range(EDITS):
             if n > 0:  # back to the start (a cached program), then one changed body
                 restored = status(url)["revision"]
@@ -69,16 +117,21 @@ def measure(acanthus, root, rule):
                 wait_revision(url, restored)
             time.sleep(0.2)
             before = status(url)["revision"]
-            start = time.monotonic()
+            start, saved = time.monotonic(), time.time()
             edit(path, 1000 + n)
             s = wait_revision(url, before)
             times.append(time.monotonic() - start)
-            print("  %s edit %d: %.3f s %s" % (os.path.basename(rule), n, times[-1], s.get("timings")),
-                  file=sys.stderr)
             if s["state"] != "ok":
                 raise RuntimeError("%s: %s" % (rule, s["output"]))
-        return statistics.median(times)
+            if timer:
+                painted.append(timer.painted(s["revision"]) - saved)
+            print("  %s edit %d: server %.3f s, painted %s %s" % (
+                os.path.basename(rule), n, times[-1],
+                "%.3f s" % painted[-1] if painted else "-", s.get("timings")), file=sys.stderr)
+        return statistics.median(times), statistics.median(painted) if painted else None
     finally:
+        if timer:
+            timer.close()
         if server:
             server.terminate()
             try:
@@ -98,11 +151,24 @@ def main():
         only = os.environ.get("ACANTHUS_BENCH_PATTERNS")
         if only:
             rules = [f for f in rules if f[:-4] in only.split(",")]
-        seconds = {}
+        browser, why = browser_command(root)
+        if not browser:
+            print("bench preview: %s: server times only" % why, file=sys.stderr)
+        seconds, painted = {}, {}
         for f in rules:
-            seconds[f[:-4]] = round(measure(acanthus, root, os.path.join(root, "rules", f)), 3)
-            print("%s: %.3f s" % (f[:-4], seconds[f[:-4]]), file=sys.stderr)
-        print(json.dumps({"seconds": seconds, "max": max(seconds.values())}))
+            server_seconds, painted_seconds = measure(acanthus, root,
+                                                      os.path.join(root, "rules", f), browser)
+            name = f[:-4]
+            seconds[name] = round(server_seconds, 3)
+            if painted_seconds is not None:
+                painted[name] = round(painted_seconds, 3)
+            print("%s: server %.3f s, painted %s" % (
+                name, seconds[name], "%.3f s" % painted[name] if name in painted else "-"),
+                file=sys.stderr)
+        result = {"seconds": seconds, "max": max(seconds.values())}
+        if painted:
+            result.update({"painted_seconds": painted, "painted_max": max(painted.values())})
+        print(json.dumps(result))
     finally:
         shutil.rmtree(cache, ignore_errors=True)
 

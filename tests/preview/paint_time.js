@@ -1,0 +1,48 @@
+// When the preview page in headless Chromium painted each revision, for bench/preview_edit.py.
+// Usage: node paint_time.js URL CHROMIUM. Prints "ready REV" once the first picture is shown;
+// then for each line "wait REV" on standard input prints "painted REV MS": the wall-clock time
+// (ms since the epoch) of the first frame after the page's picture of revision REV or later
+// loaded, or "painted REV none" after 120 s.
+"use strict";
+const readline = require("readline");
+const puppeteer = require("puppeteer-core");
+
+const [url, chromium] = process.argv.slice(2);
+
+(async () => {
+  const browser = await puppeteer.launch({ executablePath: chromium, headless: "new",
+                                           args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"] });
+  try {
+    const page = await browser.newPage();
+    await page.setViewport({ width: 1280, height: 760 });
+    // The page sets data-shown when the new picture loaded; the frame after the next one is
+    // the first with it on screen.
+    await page.evaluateOnNewDocument(() => {
+      window.paintedAt = {};
+      new MutationObserver(() => {
+        const rev = Number(document.body.dataset.shown);
+        requestAnimationFrame(() => requestAnimationFrame(() => { window.paintedAt[rev] = Date.now(); }));
+      }).observe(document, { attributes: true, subtree: true, attributeFilter: ["data-shown"] });
+    });
+    await page.goto(url);
+    await page.waitForFunction(() => Object.keys(window.paintedAt).length > 0, { timeout: 300000, polling: 50 });
+    const first = await page.evaluate(() => Math.max(...Object.keys(window.paintedAt).map(Number)));
+    console.log("ready " + first);
+    const lines = readline.createInterface({ input: process.stdin });
+    for await (const line of lines) {
+      const m = line.match(/^wait (\d+)$/);
+      if (!m) continue;
+      const rev = Number(m[1]);
+      let ms = "none";
+      try {
+        await page.waitForFunction((r) => Object.keys(window.paintedAt).some((k) => Number(k) >= r),
+                                   { timeout: 120000, polling: 10 }, rev);
+        ms = await page.evaluate((r) => Math.min(...Object.entries(window.paintedAt)
+          .filter(([k]) => Number(k) >= r).map(([, t]) => t)), rev);
+      } catch (e) { /* none */ }
+      console.log(`painted ${rev} ${ms}`);
+    }
+  } finally {
+    await browser.close();
+  }
+})().catch((e) => { console.error(e && e.stack ? e.stack : e); process.exit(1); });
