@@ -95,24 +95,21 @@ double same_share(const Site& s, double reach) {
     return close > 0 ? static_cast<double>(same) / static_cast<double>(close) : 0.0;
 }
 
-struct Ring {
-    std::vector<Vector> offsets;
-    std::vector<std::string> symbols;
-};
-
-std::vector<Ring> rings(const Site& s, double reach) {
-    Neighbours n(s.points, reach);
-    std::vector<Ring> out(s.points.size());
-    for (std::size_t i = 0; i < s.points.size(); ++i)
+// Neighbours of each point within `reach`, as offsets and symbols.
+std::vector<RingChecker::Ring> rings(const std::vector<Point>& points, const std::vector<int>& symbols,
+                                     double reach) {
+    Neighbours n(points, reach);
+    std::vector<RingChecker::Ring> out(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
         for (std::size_t j : n.of(i)) {
-            out[i].offsets.push_back(s.points[j] - s.points[i]);
-            out[i].symbols.push_back(s.symbols[j]);
+            out[i].offsets.push_back(points[j] - points[i]);
+            out[i].symbols.push_back(symbols[j]);
         }
     return out;
 }
 
 // Every neighbour of `a` pairs with a distinct one of `b` of its symbol within `tolerance`.
-bool same_ring(const Ring& a, const Ring& b, double tolerance) {
+bool same_ring(const RingChecker::Ring& a, const RingChecker::Ring& b, double tolerance) {
     if (a.offsets.size() != b.offsets.size()) return false;
     std::vector<bool> used(b.offsets.size(), false);
     for (std::size_t k = 0; k < a.offsets.size(); ++k) {
@@ -126,25 +123,108 @@ bool same_ring(const Ring& a, const Ring& b, double tolerance) {
     return true;
 }
 
+std::vector<Point> points_of(const ReferenceData& reference) {
+    std::vector<Point> points;
+    for (const ReferenceElement& e : reference.elements) points.push_back(e.position);
+    return points;
+}
+
 }  // namespace
 
+double reference_spacing(const ReferenceData& reference) {
+    Site ref;
+    ref.points = points_of(reference);
+    return median(nearest(ref, 4 * reference.mean_edge));
+}
+
+std::int64_t RingChecker::key(Vector v) const {
+    const double cell = tolerance();
+    auto x = static_cast<std::int64_t>(std::floor(v.x / cell));
+    auto y = static_cast<std::int64_t>(std::floor(v.y / cell));
+    return (x << 32) ^ (y & 0xffffffff);
+}
+
+RingChecker::RingChecker(const ReferenceData& reference) : spacing_(reference_spacing(reference)) {
+    if (!(spacing_ > 0)) spacing_ = reference.mean_edge;
+    const std::vector<Point> points = points_of(reference);
+    std::vector<Ring> all = rings(points, reference.symbol, reach());
+    for (const Ring& r : all) full_ = std::max(full_, r.offsets.size());
+    for (std::size_t k = 0; k < all.size(); ++k) {
+        const Ring& r = all[k];
+        if (r.offsets.size() != full_ || full_ == 0) continue;
+        bool known = false;
+        const int symbol = reference.symbol[k];
+        const Vector probe = r.offsets.front();
+        const std::int64_t x = static_cast<std::int64_t>(std::floor(probe.x / tolerance()));
+        const std::int64_t y = static_cast<std::int64_t>(std::floor(probe.y / tolerance()));
+        for (std::int64_t dx = -1; dx <= 1 && !known; ++dx)
+            for (std::int64_t dy = -1; dy <= 1 && !known; ++dy) {
+                auto it = index_.find(((x + dx) << 32) ^ ((y + dy) & 0xffffffff));
+                if (it == index_.end()) continue;
+                for (int d : it->second)
+                    if (distinct_symbol_[d] == symbol && same_ring(r, distinct_[d], 0.005 * spacing_)) {
+                        known = true;
+                        break;
+                    }
+            }
+        if (known) continue;
+        const int id = static_cast<int>(distinct_.size());
+        distinct_.push_back(r);
+        distinct_symbol_.push_back(symbol);
+        std::vector<std::int64_t> keys;
+        for (Vector v : r.offsets) keys.push_back(key(v));
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+        for (std::int64_t k2 : keys) index_[k2].push_back(id);
+    }
+}
+
+bool RingChecker::matches(const Ring& ring, int symbol) const {
+    if (ring.offsets.size() != full_ || full_ == 0) return false;
+    // A matching reference ring has an offset within the tolerance of this ring's first one.
+    const Vector probe = ring.offsets.front();
+    const std::int64_t x = static_cast<std::int64_t>(std::floor(probe.x / tolerance()));
+    const std::int64_t y = static_cast<std::int64_t>(std::floor(probe.y / tolerance()));
+    std::vector<int> tried;
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+            auto it = index_.find(((x + dx) << 32) ^ ((y + dy) & 0xffffffff));
+            if (it == index_.end()) continue;
+            for (int d : it->second) {
+                if (distinct_symbol_[d] != symbol ||
+                    std::find(tried.begin(), tried.end(), d) != tried.end())
+                    continue;
+                tried.push_back(d);
+                if (same_ring(ring, distinct_[d], tolerance())) return true;
+            }
+        }
+    return false;
+}
+
+std::vector<bool> RingChecker::good(const std::vector<Point>& points,
+                                    const std::vector<int>& symbols) const {
+    std::vector<Ring> got = rings(points, symbols, reach());
+    std::vector<bool> out(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) out[i] = matches(got[i], symbols[i]);
+    return out;
+}
+
 Fidelity measure_fidelity(const ReferenceData& reference, const std::vector<Motif>& motifs,
-                          const Panel& panel, double spacing, double largest_hole) {
+                          const Panel& panel, double largest_hole) {
     Fidelity f;
     Site ref, got;
-    for (std::size_t i = 0; i < reference.elements.size(); ++i) {
-        ref.points.push_back(reference.elements[i].position);
-        ref.symbols.push_back(reference.elements[i].symbol);
-    }
+    ref.points = points_of(reference);
+    for (const ReferenceElement& e : reference.elements) ref.symbols.push_back(e.symbol);
     for (const Motif& m : motifs) {
         got.points.push_back(m.position);
         got.symbols.push_back(m.symbol);
     }
+    const RingChecker checker(reference);
+    // The unit is measured on the reference's points, as an author (or a checker) would.
+    const double spacing = checker.spacing();
     // NN distances beyond 4 NN are reported as 4: the histogram's last bin holds them anyway.
     const double cap = 4 * spacing;
     std::vector<double> ref_nn = nearest(ref, cap), got_nn = nearest(got, cap);
-    // The unit is measured on the reference's points, as an author (or a checker) would.
-    spacing = median(ref_nn);
     f.spacing = spacing;
     f.nn_median = got.points.size() > 1 ? median(got_nn) / spacing : 0.0;
     f.reference_nn_histogram = histogram(ref_nn, spacing, f.histogram_bin);
@@ -152,26 +232,20 @@ Fidelity measure_fidelity(const ReferenceData& reference, const std::vector<Moti
                                            : std::vector<double>(21, 0.0);
     f.reference_symbol_mix = mix(ref);
     f.symbol_mix = mix(got);
-    const double reach = 1.2 * spacing;
-    f.reference_same_symbol_share = same_share(ref, reach);
-    f.same_symbol_share = same_share(got, reach);
+    f.reference_same_symbol_share = same_share(ref, checker.reach());
+    f.same_symbol_share = same_share(got, checker.reach());
 
-    // Defects: only the reference's fullest rings are what an interior motif may look like.
-    std::vector<Ring> ref_rings = rings(ref, reach), got_rings = rings(got, reach);
-    std::size_t full = 0;
-    for (const Ring& r : ref_rings) full = std::max(full, r.offsets.size());
-    long defects = 0;
+    // Defects: interior motifs whose ring matches no full reference ring of their symbol.
+    std::vector<int> symbols;
+    for (const Motif& m : motifs) symbols.push_back(reference.symbol_id(m.symbol));
+    const std::vector<bool> good = checker.good(got.points, symbols);
     for (std::size_t i = 0; i < got.points.size(); ++i) {
-        if (panel.clearance(got.points[i]) < 1.5 * spacing) continue;
+        if (panel.clearance(got.points[i]) < checker.interior_clearance()) continue;
         ++f.interior;
-        bool matched = false;
-        for (std::size_t k = 0; k < ref_rings.size() && !matched; ++k)
-            matched = ref_rings[k].offsets.size() == full && ref.symbols[k] == got.symbols[i] &&
-                      same_ring(got_rings[i], ref_rings[k], 0.15 * spacing);
-        defects += !matched;
+        f.defects += !good[i];
     }
-    f.defect_share =
-        f.interior > 0 ? static_cast<double>(defects) / static_cast<double>(f.interior) : 0.0;
+    f.defect_share = f.interior > 0 ? static_cast<double>(f.defects) / static_cast<double>(f.interior)
+                                    : 0.0;
     f.largest_hole = largest_hole / spacing;
     return f;
 }
@@ -200,8 +274,12 @@ std::string fidelity_json(const SynthesisResult& result) {
     out["symbols"] = std::move(symbols);
     out["same_symbol_neighbours"] =
         Json{{"result", f.same_symbol_share}, {"reference", f.reference_same_symbol_share}};
-    out["defects"] = Json{{"interior", f.interior}, {"share", f.defect_share}};
+    out["defects"] =
+        Json{{"interior", f.interior}, {"count", f.defects}, {"share", f.defect_share}};
     out["largest_hole"] = f.largest_hole;
+    out["lattice"] = Json{{"sites", result.stats.lattice_sites},
+                          {"completed", result.stats.completed},
+                          {"repaired", result.stats.repaired}};
     return out.dump();
 }
 

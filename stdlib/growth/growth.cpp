@@ -146,8 +146,8 @@ SynthesisResult run(const Reference& reference, const detail::Panel& panel, cons
     synthesis.plant(with_spray_starts(starts, options));
     synthesis.run();
     SynthesisResult result = synthesis.result();
-    result.fidelity = detail::measure_fidelity(reference.data(), result.motifs, room,
-                                               synthesis.spacing(), synthesis.largest_hole());
+    result.fidelity =
+        detail::measure_fidelity(reference.data(), result.motifs, room, synthesis.largest_hole());
     return result;
 }
 

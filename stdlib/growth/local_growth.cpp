@@ -25,8 +25,10 @@ void Synthesis::spawn(int centre, const Choice& choice, const std::vector<int>& 
     const std::size_t m = ring.size();
     const double rotation = pattern_[centre].rotation;
     std::vector<int> slot_node(m, -1);
-    for (std::size_t i = 0; i < target_nodes.size(); ++i)
-        slot_node[(static_cast<std::size_t>(choice.match.shift) + i) % m] = target_nodes[i];
+    for (std::size_t i = 0; i < target_nodes.size(); ++i) {
+        int slot = choice.slot(i, m);
+        if (slot >= 0) slot_node[static_cast<std::size_t>(slot)] = target_nodes[i];
+    }
     std::vector<std::size_t> open;
     for (std::size_t j = 0; j < m; ++j)
         if (slot_node[j] < 0) open.push_back(j);
@@ -34,7 +36,16 @@ void Synthesis::spawn(int centre, const Choice& choice, const std::vector<int>& 
     for (std::size_t j : open) {
         const Point p = pattern_[centre].position;
         const Vector offset = ring[j].offset.rotated(rotation);
-        const Point q = p + offset;
+        Point q = p + offset;
+        if (on_lattice()) {
+            // The new seed goes on its lattice point, so that fronts meeting agree exactly.
+            Lattice::Spot spot = lattice_->nearest(origin_, q);
+            if (spot.residual > kOffLattice * spacing_) {
+                ++stats_.dropped;
+                continue;
+            }
+            q = spot.at;
+        }
         if (!panel_.contains(q) || !panel_.reaches(p, q)) {
             ++stats_.dropped;
             continue;
@@ -97,6 +108,11 @@ void Synthesis::link_ring_pair(int centre, int a, int b, double original, Vector
     if (!(va.cross(vb) > 0)) return;
     Vector dir = (va.normalized() + vb.normalized()).normalized();
     Point x = p + dir * ((va.length() + vb.length()) / 2);
+    if (on_lattice()) {
+        Lattice::Spot spot = lattice_->nearest(origin_, x);
+        if (spot.residual > kOffLattice * spacing_) return;
+        x = spot.at;
+    }
     if (!panel_.contains(x) || !panel_.reaches(p, x) || pattern_.nearest(x, l_short_, -1) >= 0 ||
         pattern_.crosses(p, x, centre, -1))
         return;

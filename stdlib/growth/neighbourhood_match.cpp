@@ -111,4 +111,42 @@ RingMatch match_two_ring(const std::vector<RingEntry>& target,
     return best;
 }
 
+RingMatch match_by_position(const std::vector<RingEntry>& target,
+                            const std::vector<RingEntry>& reference, const Weights& w, double reach,
+                            std::vector<int>& slots) {
+    slots.assign(target.size(), -1);
+    if (target.size() > reference.size()) return {};
+    std::vector<double> taken(reference.size(), INFINITY);  // distance of the target holding it
+    std::vector<int> holder(reference.size(), -1);
+    std::vector<double> nearest(target.size(), INFINITY);
+    for (std::size_t i = 0; i < target.size(); ++i) {
+        int best = -1;
+        for (std::size_t k = 0; k < reference.size(); ++k) {
+            double d = (target[i].offset - reference[k].offset).length();
+            if (d < nearest[i]) {
+                nearest[i] = d;
+                best = static_cast<int>(k);
+            }
+        }
+        if (best < 0 || nearest[i] > reach || !(nearest[i] < taken[best])) continue;
+        if (holder[best] >= 0) slots[holder[best]] = -1;
+        holder[best] = static_cast<int>(i);
+        taken[best] = nearest[i];
+        slots[i] = best;
+    }
+    double error = 0;
+    for (std::size_t i = 0; i < target.size(); ++i) {
+        const RingEntry& t = target[i];
+        if (slots[i] < 0) {
+            error += w.w2 + w.w1 * (std::isfinite(nearest[i]) ? nearest[i] : t.offset.length());
+            continue;
+        }
+        const RingEntry& r = reference[static_cast<std::size_t>(slots[i])];
+        error += w.w1 * (t.offset - r.offset).length();
+        if (t.symbol >= 0 && t.symbol != r.symbol) error += w.w2;
+        if (t.sub >= 0 && t.sub == r.sub) error += w.w3;
+    }
+    return {error, 0, 0.0};
+}
+
 }  // namespace acanthus::growth::detail

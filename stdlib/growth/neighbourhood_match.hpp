@@ -65,4 +65,12 @@ RingMatch match_two_ring(const std::vector<RingEntry>& target,
                          const std::vector<OuterEntry>& reference_outer, const Weights& w,
                          bool rotate, double rotation, double reach, double bound);
 
+// On a lattice, where a target neighbourhood need not be one consecutive run of the ring: each
+// target neighbour pairs with the nearest ring slot (no rotation), `slots[i]` (-1 when none lies
+// within `reach`, or a nearer target took it: w2 plus w1 times the distance to the nearest). The
+// error has the terms of alignment_error. Not found when the target has more neighbours.
+RingMatch match_by_position(const std::vector<RingEntry>& target,
+                            const std::vector<RingEntry>& reference, const Weights& w, double reach,
+                            std::vector<int>& slots);
+
 }  // namespace acanthus::growth::detail

@@ -60,6 +60,10 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
     if (options.mode == Mode::flow)
         flow_.emplace(options.flow_strokes, l_,
                       options.guides_name.empty() ? "growth" : options.guides_name);
+    if (options.lattice && options.mode == Mode::none) {
+        lattice_ = detect_lattice(reference);
+        if (lattice_) stats_.lattice_sites = static_cast<int>(lattice_->sites.size());
+    }
     for (const std::string& name : reference.symbols) {
         auto it = options.priority.find(name);
         priority_.push_back(it == options.priority.end() ? 0 : it->second);
@@ -123,10 +127,13 @@ constexpr double kRestartRadius = 1.1;
 
 void Synthesis::run() {
     auto begin = std::chrono::steady_clock::now();
+    auto room = [&] {
+        return options_.max_elements == 0 ||
+               static_cast<long>(placed_.size()) < options_.max_elements;
+    };
     do grow_front();
-    while (
-        (options_.max_elements == 0 || static_cast<long>(placed_.size()) < options_.max_elements) &&
-        restart());
+    while (room() && restart());
+    if (on_lattice() && room()) repair_lattice();
     stats_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
@@ -160,6 +167,13 @@ bool Synthesis::restart() {
             parent = other;
             symbol = reference_.symbol[slot.element];
         }
+    }
+    if (on_lattice()) {
+        // The lattice continues in phase, also in an empty lobe.
+        Lattice::Spot spot = lattice_->nearest(origin_, at);
+        if (pattern_.nearest(spot.at, 0.5 * spacing_, -1) >= 0) return true;
+        at = spot.at;
+        symbol = lattice_->sites[static_cast<std::size_t>(spot.site)].symbol;
     }
     starts_.push_back(at);
     int id = new_seed(at, symbol);
@@ -216,7 +230,8 @@ std::vector<OuterEntry> Synthesis::outer_ring(int seed, const std::vector<int>& 
 }
 
 Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntry>& target,
-                                    const std::vector<OuterEntry>& target_outer) {
+                                    const std::vector<OuterEntry>& target_outer,
+                                    const std::vector<int>& candidates) {
     // Section 5.2, eq. 1: the reference element minimizing ERROR; exact ties are drawn at random
     // so that a regular reference does not copy one element everywhere.
     std::vector<Choice> best;
@@ -224,10 +239,13 @@ Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntr
     // Flow mode turns the whole reference so that its x axis follows the field at the seed.
     const bool rotate = options_.mode == Mode::rotation;
     const double turn = flow_ ? flow_->angle(seed.position) : 0.0;
-    for (int c : reference_.candidates) {
-        if (seed.symbol >= 0 && reference_.symbol[c] != seed.symbol) continue;
+    const bool by_position = on_lattice();
+    for (int c : candidates) {
+        if (!by_position && seed.symbol >= 0 && reference_.symbol[c] != seed.symbol) continue;
+        std::vector<int> slots;
         RingMatch m =
-            options_.two_ring
+            by_position ? match_by_position(target, rings_[c], weights_, 0.3 * spacing_, slots)
+            : options_.two_ring
                 ? match_two_ring(target, rings_[c], target_outer, outer_rings_[c], weights_, rotate,
                                  turn, 0.5 * l_,
                                  best.empty() ? INFINITY : best_error + 1e-9 * (1 + best_error))
@@ -238,7 +256,7 @@ Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntr
             best.clear();
             best_error = m.error;
         }
-        if (m.error <= best_error + slack) best.push_back({c, m});
+        if (m.error <= best_error + slack) best.push_back({c, m, std::move(slots)});
     }
     if (best.empty()) return {};
     if (best.size() == 1) return best.front();
@@ -257,6 +275,15 @@ bool Synthesis::motif_fits(int id, Point at, double radius) const {
 }
 
 void Synthesis::grow(int id) {
+    const std::vector<int>* candidates = &reference_.candidates;
+    if (on_lattice()) {
+        Lattice::Spot spot = lattice_->nearest(origin_, pattern_[id].position);
+        if (spot.residual > kOffLattice * spacing_) return drop(id);
+        int other = pattern_.nearest(spot.at, 0.5 * spacing_, id);
+        if (other >= 0 && pattern_[other].placed()) return drop(id);
+        pattern_.move(id, spot.at);
+        candidates = &lattice_->sites[static_cast<std::size_t>(spot.site)].candidates;
+    }
     // The target neighbourhood w(e_tar): linked elements and seeds, CCW from the open side.
     std::vector<Vector> offsets;
     std::vector<int> neighbours;
@@ -271,9 +298,10 @@ void Synthesis::grow(int id) {
         target.push_back({offsets[k], n.symbol, n.source});
         target_nodes.push_back(neighbours[k]);
     }
-    Choice choice =
-        choose(pattern_[id], target,
-               options_.two_ring ? outer_ring(id, target_nodes) : std::vector<OuterEntry>{});
+    Choice choice = choose(
+        pattern_[id], target,
+        options_.two_ring && !on_lattice() ? outer_ring(id, target_nodes) : std::vector<OuterEntry>{},
+        *candidates);
     if (choice.element < 0) return drop(id);
     double scale = random_.uniform(options_.scale_min, options_.scale_max);
     double jitter = options_.angle_jitter > 0
@@ -298,10 +326,17 @@ void Synthesis::grow(int id) {
     placed_.push_back(id);
     // Thousands of motifs are one rule body: the watchdog needs to see them coming.
     report_progress("motifs", static_cast<long>(placed_.size()), options_.max_elements);
+    if (lattice_ && !phase_) {
+        // The first motif puts the lattice down: its site's point is where it stands.
+        phase_ = true;
+        origin_ = n.position - lattice_->sites[static_cast<std::size_t>(lattice_->site_of[c])].offset;
+    }
     const auto& ring = reference_.rings[c];
     for (std::size_t i = 0; i < target_nodes.size(); ++i) {
-        std::size_t slot = (static_cast<std::size_t>(choice.match.shift) + i) % ring.size();
-        pattern_.set_desired(id, target_nodes[i], ring[slot].offset.rotated(n.rotation));
+        int slot = choice.slot(i, ring.size());
+        if (slot >= 0)
+            pattern_.set_desired(id, target_nodes[i],
+                                 ring[static_cast<std::size_t>(slot)].offset.rotated(n.rotation));
     }
     spawn(id, choice, target_nodes);
     if (options_.relax) relax_around(id);

@@ -13,12 +13,17 @@
 
 #include "arrangement.hpp"
 #include "flow_field.hpp"
+#include "fidelity.hpp"
 #include "hole_finder.hpp"
+#include "lattice.hpp"
 #include "neighbourhood_match.hpp"
 #include "panel.hpp"
 #include "reference.hpp"
 
 namespace acanthus::growth::detail {
+
+// A seed farther than this (in spacings) from every lattice point is not on the lattice.
+inline constexpr double kOffLattice = 0.3;
 
 class Synthesis {
   public:
@@ -39,6 +44,13 @@ class Synthesis {
     struct Choice {
         int element = -1;
         RingMatch match;
+        // On a lattice: the ring slot each target neighbour pairs with (-1: none), by position.
+        std::vector<int> slots;
+        // The reference ring slot target neighbour i pairs with, or -1.
+        int slot(std::size_t i, std::size_t ring_size) const {
+            if (!slots.empty()) return slots[i];
+            return static_cast<int>((static_cast<std::size_t>(match.shift) + i) % ring_size);
+        }
     };
 
     int next_seed() const;
@@ -49,7 +61,7 @@ class Synthesis {
     HoleFinder& holes();  // made on first use, over the starts planted by then
     void grow(int seed);
     Choice choose(const Node& seed, const std::vector<RingEntry>& target,
-                  const std::vector<OuterEntry>& target_outer);
+                  const std::vector<OuterEntry>& target_outer, const std::vector<int>& candidates);
     // Placed neighbours of the 1-ring nodes, beyond the seed and its 1-ring (Options::two_ring).
     std::vector<OuterEntry> outer_ring(int seed, const std::vector<int>& ring_nodes) const;
     bool motif_fits(int id, Point at, double radius) const;
@@ -61,6 +73,22 @@ class Synthesis {
     void relax_around(int centre);
     bool still_valid(int id) const;
     int priority(int symbol) const;
+
+    // On a lattice (lattice.hpp; Options::lattice, mode none): every seed is put on the lattice
+    // point nearest it before it grows, or dropped when none is within a third of the spacing;
+    // its candidates are the reference elements of that point's site, paired with its
+    // neighbours by position.
+    bool on_lattice() const { return lattice_ && phase_; }
+    // Seeds on the empty lattice points next to motifs (all of them with fill_holes, else only
+    // the points `repair` emptied), grown until none is left.
+    void complete_lattice();
+    // A seed on lattice point `spot`, linked to the motifs on its site's ring; -1 when the
+    // point is taken, outside, or no motif of its site fits there.
+    int plant_on_lattice(const Lattice::Spot& spot, Point from);
+    // Motifs whose ring matches no reference ring (RingChecker), with their neighbours that lie
+    // off the lattice or carry another site's symbol, removed and grown again, a few rounds.
+    void repair_lattice();
+    void remove_motif(int id);
 
     const ReferenceData& reference_;
     const Panel& panel_;
@@ -75,6 +103,11 @@ class Synthesis {
     double l_ = 1, l_short_ = 0.5, tolerance_ = 0;
     double spacing_ = 1;
     std::optional<HoleFinder> holes_;
+    std::optional<Lattice> lattice_;
+    bool phase_ = false;        // the lattice's origin is set (by the first motif)
+    Point origin_;
+    std::set<Lattice::Spot> planted_spots_;  // completion seeds, each point once
+    std::set<Lattice::Spot> reopened_;       // emptied by the repair
     Arrangement pattern_;
     std::set<std::pair<double, int>> queue_;  // (distance from the start, node)
     std::vector<Point> starts_;

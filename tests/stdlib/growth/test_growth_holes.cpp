@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "growth_fidelity.hpp"
+#include "fidelity.hpp"
 #include "growth_fixtures.hpp"
 #include "growth_lattices.hpp"
 
@@ -58,7 +58,7 @@ TEST(GrowthHoles, BothLobesOfANarrowNeckFill) {
     for (const auto& elements : {growth_fixtures::jittered_lattice(8, 8, 10, 1.5, {"a", "b"}),
                                  growth_fixtures::triangular_lattice(7, 7, 10, {"a", "b"})}) {
         Reference reference = Reference::from_elements(elements);
-        const double nn = growth_fidelity::median_nn(growth_fidelity::sites(reference));
+        const double nn = acanthus::growth::detail::reference_spacing(reference.data());
         double smallest = INFINITY;
         for (std::size_t i = 0; i < reference.size(); ++i)
             smallest = std::min(smallest, reference.radius(i));

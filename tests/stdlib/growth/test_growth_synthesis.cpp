@@ -316,6 +316,7 @@ TEST(GrowthSynthesis, TwoRingKeepsAStripePeriodTheOneRingLoses) {
         for (bool two_ring : {false, true}) {
             Options o;
             o.two_ring = two_ring;
+            o.lattice = false;  // the paper's growth: on its lattice the 1-ring keeps it too
             SynthesisResult r = synthesize(ref, region, o, {}, seed);
             std::vector<growth_fixtures::Placed> placed;
             for (const Motif& m : r.motifs) placed.push_back({m.position, m.symbol});

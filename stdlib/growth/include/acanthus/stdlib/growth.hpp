@@ -120,6 +120,11 @@ struct Options {
     // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
     // only the 1-ring: more context at the growth front, for near-regular references.
     bool two_ring = false;
+    // A regular reference (two translations map every element onto one of its kind) grows on its
+    // lattice: seeds go to lattice points, each takes its site's elements, and motifs whose ring
+    // matches no reference ring are removed and grown again (mode none only; false: the paper's
+    // growth alone, which lets domains slip where fronts meet).
+    bool lattice = true;
     double scale_min = 1.0;  // random scale per motif, uniform
     double scale_max = 1.0;
     double angle_jitter = 0.0;     // radians: random turn of each motif, uniform in +-jitter
@@ -173,6 +178,9 @@ struct SynthesisStats {
     long dropped = 0;    // seeds dropped: outside, no match, motif does not fit
     long merged = 0;     // l_short merges
     long restarts = 0;   // seeds planted in empty circles after the growth front stopped
+    int lattice_sites = 0;  // sites per cell of the reference's lattice (0: none, or not used)
+    long completed = 0;     // seeds planted on empty lattice points next to motifs
+    long repaired = 0;      // motifs removed by the lattice repair (and grown again)
     double seconds = 0;  // wall time (reported only, never used)
     double relax_seconds = 0;
     // How far the result is from the reference's offsets: RMS over the links between motifs of
@@ -193,6 +201,7 @@ struct Fidelity {
     // Motifs at least 1.5 NN inside the panel whose neighbours (within 1.2 NN) match no full
     // reference ring of their symbol within 0.15 NN: 0 for a perfect regular lattice.
     long interior = 0;
+    long defects = 0;
     double defect_share = 0;
     // The largest empty circle where a motif fits: its radius to the nearest motif's centre.
     double largest_hole = 0;

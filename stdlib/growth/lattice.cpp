@@ -1,0 +1,277 @@
+#include "lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+
+#include "reference.hpp"
+
+namespace acanthus::growth::detail {
+namespace {
+
+// Translations are looked for this far from the central element (a stripe of period 5, a
+// rosette cell of three sites fit well within).
+constexpr double kReach = 6.0;
+// Of the elements a translation moves onto another element or into the reference's triangles,
+// at most this share may be contradicted (an element of another kind, or none).
+constexpr double kContradictions = 0.02;
+// Elements checked per translation: those nearest the central element (bounds the cost of a
+// huge reference; a small one is checked whole).
+constexpr std::size_t kSample = 4000;
+constexpr int kMaxSites = 24;
+
+class PointGrid {
+  public:
+    PointGrid(const std::vector<Point>& points, double cell) : points_(points), cell_(cell) {
+        for (std::size_t i = 0; i < points.size(); ++i)
+            grid_[key(cx(points[i].x), cx(points[i].y))].push_back(static_cast<int>(i));
+    }
+    // The nearest point within r (r <= cell), or -1.
+    int nearest(Point q, double r) const {
+        int best = -1;
+        double best_d = r;
+        const long x = cx(q.x), y = cx(q.y);
+        for (long dx = -1; dx <= 1; ++dx)
+            for (long dy = -1; dy <= 1; ++dy) {
+                auto it = grid_.find(key(x + dx, y + dy));
+                if (it == grid_.end()) continue;
+                for (int i : it->second) {
+                    double d = distance(points_[i], q);
+                    if (d < best_d || (d == best_d && best >= 0 && i < best)) {
+                        best_d = d;
+                        best = i;
+                    }
+                }
+            }
+        return best;
+    }
+
+  private:
+    long cx(double v) const { return static_cast<long>(std::floor(v / cell_)); }
+    static std::int64_t key(long x, long y) {
+        return (static_cast<std::int64_t>(x) << 32) ^ (static_cast<std::int64_t>(y) & 0xffffffff);
+    }
+    const std::vector<Point>& points_;
+    double cell_;
+    std::unordered_map<std::int64_t, std::vector<int>> grid_;  // looked up, never iterated
+};
+
+// The kept triangles, for "is this place inside the reference" (an empty place inside a
+// honeycomb's hexagon is one; beyond the reference's edge is not).
+class TriangleGrid {
+  public:
+    TriangleGrid(const std::vector<Point>& points, const std::vector<std::array<int, 3>>& triangles,
+                 double cell)
+        : points_(points), triangles_(triangles), cell_(cell) {
+        for (std::size_t t = 0; t < triangles.size(); ++t) {
+            double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+            for (int v : triangles[t]) {
+                x0 = std::min(x0, points[v].x), x1 = std::max(x1, points[v].x);
+                y0 = std::min(y0, points[v].y), y1 = std::max(y1, points[v].y);
+            }
+            for (long i = cx(x0); i <= cx(x1); ++i)
+                for (long j = cx(y0); j <= cx(y1); ++j) grid_[key(i, j)].push_back(t);
+        }
+    }
+    bool inside(Point q) const {
+        auto it = grid_.find(key(cx(q.x), cx(q.y)));
+        if (it == grid_.end()) return false;
+        for (std::size_t t : it->second) {
+            const auto& v = triangles_[t];
+            double a = (points_[v[1]] - points_[v[0]]).cross(q - points_[v[0]]);
+            double b = (points_[v[2]] - points_[v[1]]).cross(q - points_[v[1]]);
+            double c = (points_[v[0]] - points_[v[2]]).cross(q - points_[v[2]]);
+            if ((a >= 0 && b >= 0 && c >= 0) || (a <= 0 && b <= 0 && c <= 0)) return true;
+        }
+        return false;
+    }
+
+  private:
+    long cx(double v) const { return static_cast<long>(std::floor(v / cell_)); }
+    static std::int64_t key(long x, long y) {
+        return (static_cast<std::int64_t>(x) << 32) ^ (static_cast<std::int64_t>(y) & 0xffffffff);
+    }
+    const std::vector<Point>& points_;
+    const std::vector<std::array<int, 3>>& triangles_;
+    double cell_;
+    std::unordered_map<std::int64_t, std::vector<std::size_t>> grid_;
+};
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+Point Lattice::point(Point origin, int site, long i, long j) const {
+    return origin + sites[static_cast<std::size_t>(site)].offset + t1 * static_cast<double>(i) +
+           t2 * static_cast<double>(j);
+}
+
+Lattice::Spot Lattice::nearest(Point origin, Point p) const {
+    const double det = t1.cross(t2);
+    Spot best;
+    best.residual = INFINITY;
+    for (int s = 0; s < static_cast<int>(sites.size()); ++s) {
+        Vector d = p - (origin + sites[static_cast<std::size_t>(s)].offset);
+        // Cell coordinates: d = u t1 + v t2.
+        double u = d.cross(t2) / det, v = t1.cross(d) / det;
+        const long i0 = std::lround(u), j0 = std::lround(v);
+        for (long i = i0 - 1; i <= i0 + 1; ++i)
+            for (long j = j0 - 1; j <= j0 + 1; ++j) {
+                Point at = point(origin, s, i, j);
+                double r = distance(at, p);
+                if (r < best.residual) best = {s, i, j, at, r};
+            }
+    }
+    return best;
+}
+
+std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
+    const auto& elements = reference.elements;
+    const std::size_t n = elements.size();
+    if (reference.candidates.empty() || n < 4) return std::nullopt;
+    std::vector<Point> points;
+    for (const auto& e : elements) points.push_back(e.position);
+
+    Lattice lattice;
+    {
+        PointGrid grid(points, 2 * reference.mean_edge);
+        std::vector<double> nn;
+        for (std::size_t i = 0; i < n; ++i) {
+            double best = INFINITY;
+            for (const RingSlot& s : reference.rings[i]) best = std::min(best, s.offset.length());
+            if (std::isfinite(best)) nn.push_back(best);
+        }
+        lattice.spacing = median(nn);
+    }
+    const double spacing = lattice.spacing;
+    if (!(spacing > 0)) return std::nullopt;
+    const double tol = lattice.tolerance = 0.15 * spacing;
+    PointGrid grid(points, spacing);
+    TriangleGrid inside(points, reference.connectivity.triangles, 2 * spacing);
+
+    auto same_kind = [&](int a, int b) {
+        const ReferenceElement& x = elements[a];
+        const ReferenceElement& y = elements[b];
+        if (reference.symbol[a] != reference.symbol[b] || x.label != y.label) return false;
+        double turn = std::remainder(x.angle - y.angle, 2 * M_PI);
+        return std::abs(turn) < 0.05 &&
+               std::abs(x.size - y.size) <= 0.05 * std::max(x.size, y.size);
+    };
+
+    // The interior element nearest the centroid anchors the search.
+    Vector sum{0, 0};
+    for (Point p : points) sum += p - Point{0, 0};
+    const Point centroid = Point{0, 0} + sum / static_cast<double>(n);
+    int anchor = reference.candidates.front();
+    for (int c : reference.candidates)
+        if (distance(points[c], centroid) < distance(points[anchor], centroid)) anchor = c;
+
+    std::vector<int> sample(n);
+    std::iota(sample.begin(), sample.end(), 0);
+    std::stable_sort(sample.begin(), sample.end(), [&](int a, int b) {
+        return distance(points[a], points[anchor]) < distance(points[b], points[anchor]);
+    });
+    if (sample.size() > kSample) sample.resize(kSample);
+
+    // Translations: offsets from the anchor to elements of its kind, shortest first.
+    std::vector<int> targets;
+    for (int j : sample)
+        if (j != anchor && distance(points[j], points[anchor]) <= kReach * spacing &&
+            same_kind(anchor, j))
+            targets.push_back(j);  // already by distance, ties by index
+    // A translation that holds, refined as the mean offset of the pairs it maps.
+    auto holds = [&](Vector t, Vector& refined) {
+        long support = 0, contra = 0;
+        Vector total{0, 0};
+        for (int i : sample) {
+            Point q = points[i] + t;
+            int j = grid.nearest(q, tol);
+            if (j >= 0 && same_kind(i, j)) {
+                ++support;
+                total += points[j] - points[i];
+            } else if (j >= 0 || inside.inside(q)) {
+                ++contra;
+            }
+        }
+        if (support < 6 || static_cast<double>(support) < 0.2 * static_cast<double>(sample.size()))
+            return false;
+        if (static_cast<double>(contra) > kContradictions * static_cast<double>(support + contra))
+            return false;
+        refined = total / static_cast<double>(support);
+        return true;
+    };
+    bool have1 = false, have2 = false;
+    for (int j : targets) {
+        Vector t = points[j] - points[anchor], refined;
+        if (have1 && std::abs(lattice.t1.cross(t)) < 0.2 * lattice.t1.length() * t.length())
+            continue;  // parallel to t1: a multiple of it, or a worse one
+        if (!holds(t, refined)) continue;
+        if (!have1) {
+            lattice.t1 = refined;
+            have1 = true;
+        } else {
+            lattice.t2 = refined;
+            have2 = true;
+            break;
+        }
+    }
+    if (!have2) return std::nullopt;
+    if (lattice.t1.cross(lattice.t2) < 0) lattice.t2 = -lattice.t2;
+
+    // Sites: every element reduced into the cell around the anchor, grouped within the tolerance.
+    const double det = lattice.t1.cross(lattice.t2);
+    std::vector<Vector> unwrapped_sum;
+    lattice.site_of.assign(n, -1);
+    for (std::size_t i = 0; i < n; ++i) {
+        Vector d = points[i] - points[anchor];
+        double u = d.cross(lattice.t2) / det, v = lattice.t1.cross(d) / det;
+        Vector r = d - lattice.t1 * std::floor(u + 0.5) - lattice.t2 * std::floor(v + 0.5);
+        int found = -1;
+        Vector at;
+        for (std::size_t s = 0; s < lattice.sites.size() && found < 0; ++s) {
+            const Lattice::Site& site = lattice.sites[s];
+            Vector first = points[site.elements.front()] - points[anchor];
+            Vector rep = first - lattice.t1 * std::floor(first.cross(lattice.t2) / det + 0.5) -
+                         lattice.t2 * std::floor(lattice.t1.cross(first) / det + 0.5);
+            for (int a = -1; a <= 1 && found < 0; ++a)
+                for (int b = -1; b <= 1 && found < 0; ++b) {
+                    Vector shifted = r + lattice.t1 * a + lattice.t2 * b;
+                    if ((shifted - rep).length() >= tol) continue;
+                    if (!same_kind(site.elements.front(), static_cast<int>(i)))
+                        return std::nullopt;  // two kinds on one site: not a lattice
+                    found = static_cast<int>(s);
+                    at = shifted;
+                }
+        }
+        if (found < 0) {
+            if (static_cast<int>(lattice.sites.size()) == kMaxSites) return std::nullopt;
+            found = static_cast<int>(lattice.sites.size());
+            lattice.sites.push_back({});
+            lattice.sites.back().symbol = reference.symbol[i];
+            unwrapped_sum.push_back({0, 0});
+            at = r;
+        }
+        lattice.sites[found].elements.push_back(static_cast<int>(i));
+        unwrapped_sum[found] += at;
+        lattice.site_of[i] = found;
+    }
+    for (int c : reference.candidates) lattice.sites[lattice.site_of[c]].candidates.push_back(c);
+    for (std::size_t s = 0; s < lattice.sites.size(); ++s) {
+        Lattice::Site& site = lattice.sites[s];
+        if (site.candidates.empty()) return std::nullopt;  // a site no ring can be copied from
+        site.offset = unwrapped_sum[s] / static_cast<double>(site.elements.size());
+    }
+    // The anchor's site sits at the origin.
+    const Vector shift = lattice.sites[lattice.site_of[anchor]].offset;
+    for (Lattice::Site& site : lattice.sites) site.offset -= shift;
+    return lattice;
+}
+
+}  // namespace acanthus::growth::detail
