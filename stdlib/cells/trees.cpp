@@ -2,6 +2,8 @@
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 
+#include "context_data.hpp"
+
 namespace acanthus::cells {
 
 namespace {
@@ -72,7 +74,11 @@ Node framed_tree() {
     });
     // Top corners of openings lay the lintel before any corner brick can notch it.
     Node arch = generator("arch_stones", arch_stones());
-    return by_kind(apexes(arch, features), arches(arch, features), b);
+    Node tree = by_kind(apexes(arch, features), arches(arch, features), b);
+    return Node([tree](const FeatureRef& f, Context& c) {
+        c.data().quoined = true;  // the brick layouts bond the quoins in (quoin_rows.hpp)
+        tree(f, c);
+    });
 }
 
 Node ashlar_tree() {

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "feature_walk.hpp"  // area_of: the library's own shoelace
+
 namespace cells_test {
 
 using acanthus::Point;
@@ -60,16 +62,6 @@ inline bool is_rect(const std::vector<Point>& p, Rect& r) {
     return true;
 }
 
-inline double area(const std::vector<Point>& p) {
-    double a = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const Point& q = p[i];
-        const Point& r = p[(i + 1) % p.size()];
-        a += q.x * r.y - r.x * q.y;
-    }
-    return std::abs(a) / 2;
-}
-
 inline bool contains(const std::vector<Point>& poly, Point p) {
     bool in = false;
     for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
@@ -110,7 +102,7 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
     std::vector<Rect> bricks;
     std::vector<double> bottoms;
     for (const Cell& c : cells) {
-        double a = area(c.polygon) / face;
+        double a = acanthus::cells::detail::area_of(c.polygon) / face;
         r.smallest_piece = std::min(r.smallest_piece, a);
         r.slivers += a < 0.1;
         Rect b;

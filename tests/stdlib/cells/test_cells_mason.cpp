@@ -101,21 +101,68 @@ TEST(CellsMason, FindsHeadlessOpeningsAndClippedVoussoirs) {
     EXPECT_EQ(mason_check(f, t.cells, kCm).voussoirs_clipped, r.voussoirs_clipped + 1);
 }
 
+namespace {
+
+// The trees the checker reads: the ready ones and the rowlock tree of rules/facade.acr.
+std::map<std::string, Node> mason_trees() {
+    Node b = generator("bricks", bricks());
+    Node wb = generator("window_bottom", window_bottom());
+    Node sills = by_part(b, wb, b);
+    Node rowlock = by_kind(by_curve(generator("arch_bricks", arch_bricks()), sills),
+                           by_curve(generator("arch_bricks", arch_bricks()), sills), b);
+    return {{"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
+}
+
+Options centimetres() {
+    Options o;
+    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1;
+    return o;
+}
+
+const Bond kBrickBonds[] = {Bond::running, Bond::english, Bond::flemish, Bond::header, Bond::stack};
+
+}  // namespace
+
+// Facades no code here was tuned on (tests/stdlib/cells/facades/: a shop front with a wide
+// window and close windows, a chapel end with pointed, segmental and round heads near the wall's
+// ends, a terrace with jambs between quarter bricks), every bond and tree.
+TEST(CellsMason, UnseenFacades) {
+    const std::string dir = std::string(ACANTHUS_SOURCE_DIR) + "/tests/stdlib/cells/facades/";
+    Options o = centimetres();
+    const auto trees = mason_trees();
+    for (const char* name : {"shopfront", "chapel", "terrace"}) {
+        Facade f = Facade::from_svg_file(dir + name + ".svg");
+        for (Bond bond : kBrickBonds)
+            for (const auto& [tree_name, tree] : trees) {
+                o.bond = bond;
+                Texture t = texture(f, tree, o, 1);
+                MasonReport r = mason_check(f, t.cells, kCm);
+                std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << r
+                          << "\n";
+                SCOPED_TRACE(std::string(name) + " " + std::string(to_string(bond)) + " " +
+                             tree_name);
+                EXPECT_EQ(r.slivers, 0);
+                if (bond != Bond::stack) {
+                    std::string where;
+                    for (Point p : r.straight_at)
+                        where += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+                    // Framed: quoins bonded in (were 99-270 here); what is left is beside
+                    // lintels and raking edges, which are not in the layout yet.
+                    EXPECT_LE(r.straight_joints, tree_name == "framed" ? 7 : 0) << "at" << where;
+                    EXPECT_EQ(r.narrow_pieces, 0);
+                }
+            }
+    }
+}
+
 // Every example facade in every bond and tree; the numbers go to the log (the table).
 TEST(CellsMason, ExampleFacades) {
     const std::string dir = std::string(ACANTHUS_SOURCE_DIR) + "/examples/facades/";
-    Options o;
-    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1;
-    Node b = generator("bricks", bricks());
-    Node rowlock = by_kind(by_part(b, generator("window_bottom", window_bottom()), b),
-                           by_curve(generator("arch_bricks", arch_bricks()),
-                                    by_part(b, generator("window_bottom", window_bottom()), b)),
-                           b);
-    const std::map<std::string, Node> trees{
-        {"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
+    Options o = centimetres();
+    const std::map<std::string, Node> trees = mason_trees();
     for (const char* name : {"row-house", "gable", "oculus", "insets"}) {
         Facade f = Facade::from_svg_file(dir + name + ".svg");
-        for (Bond bond : {Bond::running, Bond::english, Bond::flemish, Bond::header, Bond::stack})
+        for (Bond bond : kBrickBonds)
             for (const auto& [tree_name, tree] : trees) {
                 o.bond = bond;
                 Texture t = texture(f, tree, o, 1);
@@ -127,17 +174,18 @@ TEST(CellsMason, ExampleFacades) {
                 // Fixed units: whole bricks keep their height, courses their gauge.
                 EXPECT_LE(r.height_deviation, 0.1);
                 EXPECT_EQ(r.slivers, 0);  // pieces under 10% of a face are left to the mortar
-                if (bond == Bond::running && tree_name == "bricks") {
-                    EXPECT_LE(r.straight_joints, 4);  // 16-30 before header rows were set off
-                }
                 if (bond != Bond::stack && tree_name != "framed") {
-                    // Closers at jambs and wall ends (row-house before them: English 68, Flemish
-                    // 124); what is left is where window-bottom headers meet the jambs.
-                    EXPECT_LE(r.straight_joints, 11);
+                    // Closers at jambs and wall ends, window-bottom rows in the layout (row-house
+                    // before them: English 68, Flemish 124, running 30).
+                    EXPECT_EQ(r.straight_joints, 0);
                     EXPECT_EQ(r.narrow_pieces, 0);  // no piece narrower than a queen closer
                     // Jamb bricks a few mm off laid whole (row-house English 44, Flemish 75
                     // before); what is left is cut by more than the joints can take up.
                     EXPECT_LE(r.shaved_bricks, 36);
+                }
+                if (tree_name == "framed" && bond != Bond::stack) {
+                    EXPECT_LE(r.straight_joints, 7);  // 297 on the row-house before quoins
+                    EXPECT_EQ(r.narrow_pieces, 0);    // were bonded in
                 }
                 if (std::string(name) != "gable") {
                     EXPECT_EQ(r.courses_off_gauge, 0);
