@@ -101,6 +101,37 @@ TEST(CellsMason, FindsHeadlessOpeningsAndClippedVoussoirs) {
     EXPECT_EQ(mason_check(f, t.cells, kCm).voussoirs_clipped, r.voussoirs_clipped + 1);
 }
 
+TEST(CellsMason, FindsAJointAtTheCrown) {
+    std::vector<FacadeShape> s;
+    s.push_back(shape(rect(0, 0, 300, 200), {"wall"}, "w"));
+    s.push_back(shape(arched(150, 180, 80, 60), {"window", "arch"}, "round"));
+    Facade f = Facade::from_shapes(std::move(s), "round.svg");
+    Options o;
+    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1;
+    Texture t = texture(f, brick_tree(), o, 1);
+    MasonReport r = mason_check(f, t.cells, kCm);
+    EXPECT_EQ(r.crowns, 1);
+    EXPECT_EQ(r.crowns_open, 0);  // an odd count, the key at the crown
+    // The ring turned half a voussoir about its centre (a semicircle of n stones: pi / 2n) puts
+    // a joint at the crown, as an even count would.
+    const Edge* arc = nullptr;
+    for (const Edge& e : f.edges())
+        if (e.arc) arc = &e;
+    ASSERT_NE(arc, nullptr);
+    const Point o2 = arc->segments.front().center;
+    long stones = 0;
+    for (const Cell& c : t.cells) stones += c.generator == "arch_stones";
+    ASSERT_GT(stones, 2);
+    const double turn = M_PI / (2.0 * static_cast<double>(stones)), cs = std::cos(turn),
+                 sn = std::sin(turn);
+    for (Cell& c : t.cells)
+        if (c.generator == "arch_stones")
+            for (Point& p : c.polygon)
+                p = {o2.x + (p.x - o2.x) * cs - (p.y - o2.y) * sn,
+                     o2.y + (p.x - o2.x) * sn + (p.y - o2.y) * cs};
+    EXPECT_EQ(mason_check(f, t.cells, kCm).crowns_open, 1);
+}
+
 namespace {
 
 // The trees the checker reads: the ready ones and the rowlock tree of rules/facade.acr.
@@ -142,6 +173,8 @@ TEST(CellsMason, UnseenFacades) {
                 SCOPED_TRACE(std::string(name) + " " + std::string(to_string(bond)) + " " +
                              tree_name);
                 EXPECT_EQ(r.slivers, 0);
+                EXPECT_EQ(r.voussoirs_clipped, 0);  // voussoirs first, the walling cut to them
+                EXPECT_EQ(r.crowns_open, 0);        // a key at every crown
                 if (bond != Bond::stack) {
                     std::string where;
                     for (Point p : r.straight_at)
@@ -174,6 +207,8 @@ TEST(CellsMason, ExampleFacades) {
                 // Fixed units: whole bricks keep their height, courses their gauge.
                 EXPECT_LE(r.height_deviation, 0.1);
                 EXPECT_EQ(r.slivers, 0);  // pieces under 10% of a face are left to the mortar
+                EXPECT_EQ(r.voussoirs_clipped, 0);
+                EXPECT_EQ(r.crowns_open, 0);
                 if (bond != Bond::stack && tree_name != "framed") {
                     // Closers at jambs and wall ends, window-bottom rows in the layout (row-house
                     // before them: English 68, Flemish 124, running 30).
