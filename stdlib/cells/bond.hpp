@@ -11,8 +11,10 @@ namespace acanthus::cells::detail {
 struct Piece {
     int start = 0;  // first unit
     int length = 0;
-    bool cut = false;   // shorter or longer than the bond's piece there (a bat or a closer)
-    bool full = false;  // every unit fully inside the face
+    bool cut = false;    // shorter or longer than the bond's piece there (a bat or a closer)
+    bool full = false;   // every unit fully inside the face
+    bool sill = false;   // a header of a window-bottom row (sill_rows.hpp)
+    bool quoin = false;  // a jamb quoin, bonded in (quoin_rows.hpp); its joints stay
 };
 
 struct BondPattern {

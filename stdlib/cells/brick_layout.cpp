@@ -7,6 +7,8 @@
 #include "brick_grid.hpp"
 #include "closers.hpp"
 #include "context_data.hpp"
+#include "quoin_rows.hpp"
+#include "sill_rows.hpp"
 
 namespace acanthus::cells::detail {
 
@@ -78,7 +80,7 @@ Rect BrickLayout::drawn(int row, int piece) const {
     return drawn(row, p.start, p.start + p.length);
 }
 
-BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o) {
+BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins) {
     BrickLayout layout;
     layout.grid = make_brick_grid(facade, face, o);
     layout.unit = (o.brick_length + o.mortar) / 4;
@@ -99,6 +101,8 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o) 
     for (int r = 0; r < rows; ++r)
         row_pieces(layout.grid, layout.bond, layout.phase, r,
                    layout.rows[static_cast<std::size_t>(r)]);
+    set_sill_rows(facade, face, layout);
+    if (quoins) set_quoin_rows(facade, face, o, layout);
     set_closers(layout);
     for (int r = 0; r < rows; ++r) {
         auto& pieces = layout.rows[static_cast<std::size_t>(r)];
@@ -119,7 +123,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o) 
 
 BrickLayout& brick_layout(Context& context, int face) {
     return context.data().layout<BrickLayout>("bricks:" + std::to_string(face), [&] {
-        return make_brick_layout(context.facade(), face, context.options());
+        return make_brick_layout(context.facade(), face, context.options(), context.data().quoined);
     });
 }
 

@@ -31,7 +31,9 @@ struct BrickLayout {
     Rect drawn(int row, int piece) const;
 };
 
-BrickLayout make_brick_layout(const Facade& facade, int face, const Options& options);
+// With `quoins`, jambs and the wall's vertical ends get quoins in the layout (quoin_rows.hpp).
+BrickLayout make_brick_layout(const Facade& facade, int face, const Options& options,
+                              bool quoins = false);
 // Cut pieces the face would have with `phase` (for the fewest-half-bricks choice and its test).
 long cut_pieces(const CourseGrid& grid, const BondPattern& bond, int phase);
 

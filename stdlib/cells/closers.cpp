@@ -1,5 +1,5 @@
-// Only the first and last two joints of a run move: inside a run the bond's own sequence already
-// staggers the joints, and moving them would put bats all over the wall.
+// Inside a run the bond's own sequence already staggers the joints, so what moves is what an
+// opening, a wall's end or a window-bottom row put over a joint of the course below.
 #include "closers.hpp"
 
 #include <algorithm>
@@ -27,6 +27,7 @@ bool run_end(const std::vector<Piece>& pieces, std::size_t k, bool left) {
 // The joint between pieces k and k + 1 moved by d units, if both stay from one to four units
 // and a piece at a run's end keeps two (it may end in a part unit at the jamb).
 bool movable(const std::vector<Piece>& pieces, std::size_t k, int d) {
+    if (pieces[k].quoin || pieces[k + 1].quoin) return false;
     const int a = pieces[k].length + d, b = pieces[k + 1].length - d;
     if (a < 1 || b < 1 || a > 4 || b > 4) return false;
     if (run_end(pieces, k, true) && a < 2) return false;
@@ -48,12 +49,6 @@ void set_closers(BrickLayout& layout) {
         auto& pieces = rows[static_cast<std::size_t>(r)];
         for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
             if (pieces[k].start + pieces[k].length != pieces[k + 1].start) continue;
-            // Within two joints of a run's end.
-            const bool near_left =
-                run_end(pieces, k, true) || (k > 0 && run_end(pieces, k - 1, true));
-            const bool near_right = run_end(pieces, k + 1, false) ||
-                                    (k + 2 < pieces.size() && run_end(pieces, k + 2, false));
-            if (!near_left && !near_right) continue;
             const int j = pieces[k + 1].start;
             if (!below.count(j)) continue;
             // Neighbouring joints of this course stay where they are: no new straight joint

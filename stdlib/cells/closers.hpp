@@ -6,9 +6,10 @@
 
 namespace acanthus::cells::detail {
 
-// Moves the joints next to each run's ends, course by course from the bottom, off the joints of
-// the course below (and, where it can, of the course above): the two pieces either side of such
-// a joint become a closer and a bat, or two bats, of one to four quarter bricks.
+// Moves each joint that falls on a joint of the course below (next to a run's end or a
+// window-bottom row: the bond itself leaves none elsewhere), course by course from the bottom, off
+// the joints of the course below (and, where it can, of the course above): the two pieces either
+// side of such a joint become a closer and a bat, or two bats, of one to four quarter bricks.
 void set_closers(BrickLayout& layout);
 
 }  // namespace acanthus::cells::detail

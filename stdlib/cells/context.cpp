@@ -98,8 +98,12 @@ Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o) {
     const bool left = r.x0 > claim.x0 + eps, right = r.x1 < claim.x1 - eps;
     // Full-height courses only, cut at one end only; short by no more than the reveal's half
     // joint (and twice the tolerance), or long by no more than the head joint may open.
-    const bool fits = short_by > 0 ? short_by <= std::min(h, 2 * o.joint_tolerance) + eps
-                                   : -short_by <= o.joint_tolerance + eps;
+    // Never by more than a quarter joint: a quarter brick is a quarter joint shorter than a unit,
+    // so two such joints moved towards each other in consecutive courses stay a quarter brick
+    // apart (no straight joint).
+    const double most = std::min(o.mortar / 4, o.joint_tolerance);
+    const bool fits =
+        short_by > 0 ? short_by <= std::min(h, 2 * most) + eps : -short_by <= most + eps;
     if (w <= 0 || std::abs(short_by) <= eps || !fits || left == right || r.y0 > drawn.y0 + eps ||
         r.y1 < drawn.y1 - eps ||
         std::abs(r.height() - (drawn.height() + o.mortar)) > o.joint_tolerance + eps)

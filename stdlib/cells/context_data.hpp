@@ -25,6 +25,7 @@ struct ContextData {
     double smallest_cell = 0;     // drawn area under which a piece is left to the mortar
     std::vector<int> near_edges;  // scratch for place()
     long expected_cells = 0;      // the estimate progress reports show; 0: unknown
+    bool quoined = false;         // brick layouts made from now on bond jamb quoins in
 
     // A new cell of the running generator and feature, built in place; the caller sets polygon.
     // Reported as progress: a whole facade is one rule body, and the watchdog takes a body that

@@ -108,8 +108,16 @@ Node by_part(Node top, Node bottom, Node sides) {
 
 Node by_curve(Node arc, Node straight) {
     return Node([=](const FeatureRef& f, Context& c) {
-        if (f.kind == FeatureKind::edge &&
-            c.facade().edges()[static_cast<std::size_t>(f.index)].arc)
+        const auto& edges = c.facade().edges();
+        bool on_arc = false;
+        if (f.kind == FeatureKind::edge) on_arc = edges[static_cast<std::size_t>(f.index)].arc;
+        if (f.kind == FeatureKind::corner) {
+            // A springing or an apex: the arch is set out from there, before any brick.
+            const Corner& k = c.facade().corners()[static_cast<std::size_t>(f.index)];
+            for (int e : {k.edge_in, k.edge_out})
+                on_arc |= e >= 0 && edges[static_cast<std::size_t>(e)].arc;
+        }
+        if (on_arc)
             arc(f, c);
         else
             straight(f, c);

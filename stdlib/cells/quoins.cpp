@@ -8,13 +8,24 @@
 #include "brick_layout.hpp"
 #include "context_data.hpp"
 #include "feature_walk.hpp"
+#include "quoin_rows.hpp"
 
 namespace acanthus::cells {
 
 namespace {
 
-void quoin(Context& c, const detail::BrickLayout& layout, const Edge& e, Point inside) {
-    int row = layout.grid.row_at(inside.y);
+void quoin(Context& c, detail::BrickLayout& layout, const Edge& e, Point inside) {
+    int row = 0;
+    // Bonded in by the layout (plumb jambs and wall ends in a framed tree): lay that piece.
+    if (const int k = detail::quoin_piece(layout, e, inside, row); k >= 0) {
+        char& taken = layout.taken[static_cast<std::size_t>(row)][static_cast<std::size_t>(k)];
+        if (taken) return;
+        taken = 1;
+        const Rect drawn = layout.drawn(row, k);
+        c.place(detail::polygon_of(layout.rect(row, k)), layout.grid.course(row), true, &drawn);
+        return;
+    }
+    row = layout.grid.row_at(inside.y);
     if (row < 0) return;
     double s = e.project(inside);
     Point on = e.at(s);
@@ -37,6 +48,7 @@ Generator quoins() {
     return [](const FeatureRef& f, Context& c) {
         const Facade& facade = c.facade();
         if (f.kind == FeatureKind::face) return;
+        c.data().quoined = true;  // layouts made from here on bond the quoins in
         const double inset = 0.25 * c.options().brick_height;
         if (f.kind == FeatureKind::corner) {
             const Corner& corner = facade.corners()[static_cast<std::size_t>(f.index)];

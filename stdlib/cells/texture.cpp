@@ -1,4 +1,5 @@
-// Running a tree over a facade in the order of [4.2]: all corners, all edges, then all faces.
+// Running a tree over a facade in the order of [4.2]: all corners, all edges (arcs first), then
+// all faces.
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/stdlib/cells.hpp>
@@ -121,8 +122,12 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options,
     for (std::size_t i = 0; i < facade.corners().size(); ++i)
         tree({FeatureKind::corner, static_cast<int>(i)}, context);
     out.stats.corners = static_cast<long>(context.cells().size());
-    for (std::size_t i = 0; i < facade.edges().size(); ++i)
-        tree({FeatureKind::edge, static_cast<int>(i)}, context);
+    // Arcs before straight edges: voussoirs are set out first and the walling cut to them, so a
+    // jamb's top brick cannot notch the springer.
+    for (bool arcs : {true, false})
+        for (std::size_t i = 0; i < facade.edges().size(); ++i)
+            if (facade.edges()[i].arc == arcs)
+                tree({FeatureKind::edge, static_cast<int>(i)}, context);
     out.stats.edges = static_cast<long>(context.cells().size()) - out.stats.corners;
     for (std::size_t i = 0; i < facade.faces().size(); ++i)
         tree({FeatureKind::face, static_cast<int>(i)}, context);

@@ -2,12 +2,14 @@
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 
+#include "context_data.hpp"
+
 namespace acanthus::cells {
 
 namespace {
 
-// Arc edges get `arch`, labelled `arch` or not (a ring of voussoirs is what a mason lays round
-// an oculus too); straight edges get `rest`.
+// Arc edges and the corners on them (springings, apexes) get `arch`, labelled `arch` or not (a
+// ring of voussoirs is what a mason lays round an oculus too); the rest gets `rest`.
 Node arches(Node arch, Node rest) { return by_curve(arch, rest); }
 
 // Opening bottoms (sill and its corners) get `wb`; the rest goes to `rest`.
@@ -26,32 +28,12 @@ Node sills(Node rest, Node wb = generator("window_bottom", window_bottom())) {
     });
 }
 
-// Corners where two arcs labelled `arch` meet (a pointed apex) get the keystone.
-Node apexes(Node arch, Node rest) {
-    return Node([arch, rest](const FeatureRef& f, Context& c) {
-        const auto& corners = c.facade().corners();
-        const auto& edges = c.facade().edges();
-        bool apex = false;
-        if (f.kind == FeatureKind::corner) {
-            const Corner& k = corners[static_cast<std::size_t>(f.index)];
-            apex = k.edge_in >= 0 && k.edge_out >= 0 &&
-                   edges[static_cast<std::size_t>(k.edge_in)].arc &&
-                   edges[static_cast<std::size_t>(k.edge_out)].arc &&
-                   std::find(k.labels.begin(), k.labels.end(), "arch") != k.labels.end();
-        }
-        if (apex)
-            arch(f, c);
-        else
-            rest(f, c);
-    });
-}
-
 }  // namespace
 
 Node brick_tree() {
     Node b = generator("bricks", bricks());
     Node arch = generator("arch_stones", arch_stones());
-    return by_kind(apexes(arch, sills(b)), arches(arch, sills(b)), b);
+    return by_kind(arches(arch, sills(b)), arches(arch, sills(b)), b);
 }
 
 Node framed_tree() {
@@ -72,14 +54,18 @@ Node framed_tree() {
     });
     // Top corners of openings lay the lintel before any corner brick can notch it.
     Node arch = generator("arch_stones", arch_stones());
-    return by_kind(apexes(arch, features), arches(arch, features), b);
+    Node tree = by_kind(arches(arch, features), arches(arch, features), b);
+    return Node([tree](const FeatureRef& f, Context& c) {
+        c.data().quoined = true;  // the brick layouts bond the quoins in (quoin_rows.hpp)
+        tree(f, c);
+    });
 }
 
 Node ashlar_tree() {
     Node a = generator("ashlar", ashlar());
     Node arch = generator("arch_stones", arch_stones());
     Node wb = generator("window_bottom", sill_stones());
-    return by_kind(apexes(arch, sills(a, wb)), arches(arch, sills(a, wb)), a);
+    return by_kind(arches(arch, sills(a, wb)), arches(arch, sills(a, wb)), a);
 }
 
 Node rgb_tree() { return generator("rgb_blocks", rgb_blocks()); }

@@ -8,7 +8,11 @@ namespace acanthus::cells::detail {
 
 // `width` along the arc (the count is the stretch's length over it, rounded), `depth` per row.
 void place_voussoirs(const Edge& edge, Context& c, double width, double depth, int rows);
-// The wedge between two arcs of an arch meeting at corner `k` (a pointed apex), if any.
-void place_keystone(const Corner& k, Context& c, double depth);
+// The keystone between two arcs of an arch meeting at corner `k` at an angle (a pointed apex), if
+// any: `width` along the arcs (half each side of the apex), `depth` into the wall.
+void place_keystone(const Corner& k, Context& c, double depth, double width);
+// The skewback under a ring springing from a plumb jamb at corner `k` (a segmental arch), its
+// bed at y = `bed` (SVG numbers, at or below the springing).
+void place_skewback(const Corner& k, Context& c, double depth, double bed);
 
 }  // namespace acanthus::cells::detail

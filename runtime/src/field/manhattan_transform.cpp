@@ -85,7 +85,8 @@ void manhattan_brushfire(int w, int h, const std::vector<int>& sites, std::int32
         queue.emplace_back(p, 0);
     }
     for (std::size_t head = 0; head < queue.size(); ++head) {
-        const auto [p, d] = queue[head];
+        const int p = queue[head].first;  // not a structured binding: clang 14 cannot capture one
+        const std::int32_t d = queue[head].second;
         const int i = p % w, j = p / w;
         const std::int64_t nd = static_cast<std::int64_t>(d) + 1;
         const std::int64_t nd2 = nd * nd;

@@ -1,6 +1,7 @@
 // A mason's reading of a laid wall, from its cells alone: straight joints between consecutive
 // courses, whole bricks and courses against their nominal sizes, the smallest piece, voussoirs
-// that are not whole, and openings without a head. The tests run it on every example facade in
+// that are not whole, arches with a joint at the crown instead of a key, and openings without a
+// head. The tests run it on every example facade in
 // every bond and tree (test_cells_mason.cpp); it knows nothing of how the cells were laid.
 #pragma once
 
@@ -11,6 +12,8 @@
 #include <set>
 #include <string>
 #include <vector>
+
+#include "feature_walk.hpp"  // area_of: the library's own shoelace
 
 namespace cells_test {
 
@@ -40,6 +43,9 @@ struct MasonReport {
     long narrow_pieces = 0;       // brick pieces narrower than a queen closer
     long voussoirs = 0;
     long voussoirs_clipped = 0;
+    long crowns = 0;       // tops of arches and rings (a pointed arch's apex)
+    long crowns_open = 0;  // of those, a joint at the crown instead of a key
+    std::vector<Point> open_crowns;
     long openings = 0;
     long openings_without_head = 0;
     std::vector<std::string> headless;
@@ -58,16 +64,6 @@ inline bool is_rect(const std::vector<Point>& p, Rect& r) {
             (std::abs(q.y - r.y0) > eps && std::abs(q.y - r.y1) > eps))
             return false;
     return true;
-}
-
-inline double area(const std::vector<Point>& p) {
-    double a = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const Point& q = p[i];
-        const Point& r = p[(i + 1) % p.size()];
-        a += q.x * r.y - r.x * q.y;
-    }
-    return std::abs(a) / 2;
 }
 
 inline bool contains(const std::vector<Point>& poly, Point p) {
@@ -110,7 +106,7 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
     std::vector<Rect> bricks;
     std::vector<double> bottoms;
     for (const Cell& c : cells) {
-        double a = area(c.polygon) / face;
+        double a = acanthus::cells::detail::area_of(c.polygon) / face;
         r.smallest_piece = std::min(r.smallest_piece, a);
         r.slivers += a < 0.1;
         Rect b;
@@ -196,6 +192,34 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         }
         r.voussoirs_clipped += !whole;
     }
+    // Crowns: just into the wall above the top of every arc of an opening (a pointed arch's two
+    // arcs share theirs, the apex), an arch cell and not the mortar of a joint.
+    std::vector<Point> crowns;
+    for (const auto& e : facade.edges()) {
+        if (!e.arc || !e.opening) continue;
+        double best = 0, top = 1e300;
+        const int n = 720;
+        for (int i = 0; i <= n; ++i) {
+            const double at = e.length * i / n;
+            if (e.at(at).y < top) top = e.at(at).y, best = at;
+        }
+        if (!e.closed && best > 0 && best < e.length && e.part != acanthus::cells::Part::top)
+            continue;
+        const Point p = e.at(best);
+        bool seen_before = false;
+        for (Point q : crowns) seen_before |= std::hypot(q.x - p.x, q.y - p.y) < s.mortar;
+        if (seen_before) continue;
+        crowns.push_back(p);
+        const Point probe{p.x, p.y - 0.25 * s.height};  // up, into the ring
+        bool key = false;
+        for (const Cell& c : cells)
+            if (is_head(c.generator) && contains(c.polygon, probe)) key = true;
+        ++r.crowns;
+        if (!key) {
+            ++r.crowns_open;
+            r.open_crowns.push_back(p);
+        }
+    }
     // Heads: above the middle of every top edge of an opening, a lintel, arch or soldier cell.
     std::set<std::string> seen, headless;
     for (const auto& e : facade.edges()) {
@@ -225,7 +249,8 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << r.courses_off_gauge << " (max " << r.gauge_deviation << "), smallest "
                << r.smallest_piece << " slivers " << r.slivers << " narrow " << r.narrow_pieces
                << ", voussoirs clipped " << r.voussoirs_clipped << "/" << r.voussoirs
-               << ", headless " << r.openings_without_head << "/" << r.openings;
+               << ", crowns open " << r.crowns_open << "/" << r.crowns << ", headless "
+               << r.openings_without_head << "/" << r.openings;
 }
 
 }  // namespace cells_test

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "cells_oracle.hpp"
+#include "mason_check.hpp"
 
 using namespace cells_test;
 
@@ -85,21 +86,17 @@ TEST(CellsGenerators, PointedArchGetsAKeystone) {
     for (const Cell& c : t.cells) {
         if (c.generator != "arch_stones" || c.feature != FeatureKind::corner) continue;
         ++keystones;
-        // Each side continues a radial joint of one of the arcs.
-        const auto& p = c.polygon;
-        for (std::size_t k = 0; k < p.size(); ++k) {
-            Point a = p[k], b = p[(k + 1) % p.size()];
-            acanthus::Vector d = (b - a).normalized();
-            double best = 90;
-            for (Point o : centers) {
-                acanthus::Vector r = (midpoint(a, b) - o).normalized();
-                best = std::min(best, std::acos(std::min(1.0, std::abs(d.dot(r)))) * 180 / M_PI);
-            }
-            if (std::abs(d.y) > 0.1) {
-                EXPECT_LT(best, 2.0);  // the top is a chord, not a joint
-            }
+        // A key with real width at the intrados (not a wedge from the apex): points a little way
+        // down each arc from the apex, just into the wall, are in it.
+        for (int side = 0; side < 2; ++side) {
+            const Point o = centers[side];
+            const double r = 1200, a0 = std::atan2(apex.y - o.y, apex.x - o.x);
+            const double a = a0 + (side == 0 ? -1 : 1) * 40.0 / r;
+            const Point on{o.x + r * std::cos(a), o.y + r * std::sin(a)};
+            const acanthus::Vector out = (on - o).normalized();
+            EXPECT_TRUE(mason_detail::contains(c.polygon, on + out * 15)) << "side " << side;
         }
-        EXPECT_LT(distance(p.front(), apex), 50.0);
+        EXPECT_TRUE(mason_detail::contains(c.polygon, apex + acanthus::Vector{0, -20}));
     }
     EXPECT_EQ(keystones, 1);
     Report r = check_texture(f, t, 10);

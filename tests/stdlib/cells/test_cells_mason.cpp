@@ -101,21 +101,101 @@ TEST(CellsMason, FindsHeadlessOpeningsAndClippedVoussoirs) {
     EXPECT_EQ(mason_check(f, t.cells, kCm).voussoirs_clipped, r.voussoirs_clipped + 1);
 }
 
+TEST(CellsMason, FindsAJointAtTheCrown) {
+    std::vector<FacadeShape> s;
+    s.push_back(shape(rect(0, 0, 300, 200), {"wall"}, "w"));
+    s.push_back(shape(arched(150, 180, 80, 60), {"window", "arch"}, "round"));
+    Facade f = Facade::from_shapes(std::move(s), "round.svg");
+    Options o;
+    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1;
+    Texture t = texture(f, brick_tree(), o, 1);
+    MasonReport r = mason_check(f, t.cells, kCm);
+    EXPECT_EQ(r.crowns, 1);
+    EXPECT_EQ(r.crowns_open, 0);  // an odd count, the key at the crown
+    // The ring turned half a voussoir about its centre (a semicircle of n stones: pi / 2n) puts
+    // a joint at the crown, as an even count would.
+    const Edge* arc = nullptr;
+    for (const Edge& e : f.edges())
+        if (e.arc) arc = &e;
+    ASSERT_NE(arc, nullptr);
+    const Point o2 = arc->segments.front().center;
+    long stones = 0;
+    for (const Cell& c : t.cells) stones += c.generator == "arch_stones";
+    ASSERT_GT(stones, 2);
+    const double turn = M_PI / (2.0 * static_cast<double>(stones)), cs = std::cos(turn),
+                 sn = std::sin(turn);
+    for (Cell& c : t.cells)
+        if (c.generator == "arch_stones")
+            for (Point& p : c.polygon)
+                p = {o2.x + (p.x - o2.x) * cs - (p.y - o2.y) * sn,
+                     o2.y + (p.x - o2.x) * sn + (p.y - o2.y) * cs};
+    EXPECT_EQ(mason_check(f, t.cells, kCm).crowns_open, 1);
+}
+
+namespace {
+
+// The trees the checker reads: the ready ones and the rowlock tree of rules/facade.acr.
+std::map<std::string, Node> mason_trees() {
+    Node b = generator("bricks", bricks());
+    Node wb = generator("window_bottom", window_bottom());
+    Node sills = by_part(b, wb, b);
+    Node rowlock = by_kind(by_curve(generator("arch_bricks", arch_bricks()), sills),
+                           by_curve(generator("arch_bricks", arch_bricks()), sills), b);
+    return {{"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
+}
+
+Options centimetres() {
+    Options o;
+    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1;
+    return o;
+}
+
+const Bond kBrickBonds[] = {Bond::running, Bond::english, Bond::flemish, Bond::header, Bond::stack};
+
+}  // namespace
+
+// Facades no code here was tuned on (tests/stdlib/cells/facades/: a shop front with a wide
+// window and close windows, a chapel end with pointed, segmental and round heads near the wall's
+// ends, a terrace with jambs between quarter bricks), every bond and tree.
+TEST(CellsMason, UnseenFacades) {
+    const std::string dir = std::string(ACANTHUS_SOURCE_DIR) + "/tests/stdlib/cells/facades/";
+    Options o = centimetres();
+    const auto trees = mason_trees();
+    for (const char* name : {"shopfront", "chapel", "terrace"}) {
+        Facade f = Facade::from_svg_file(dir + name + ".svg");
+        for (Bond bond : kBrickBonds)
+            for (const auto& [tree_name, tree] : trees) {
+                o.bond = bond;
+                Texture t = texture(f, tree, o, 1);
+                MasonReport r = mason_check(f, t.cells, kCm);
+                std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << r
+                          << "\n";
+                SCOPED_TRACE(std::string(name) + " " + std::string(to_string(bond)) + " " +
+                             tree_name);
+                EXPECT_EQ(r.slivers, 0);
+                EXPECT_EQ(r.voussoirs_clipped, 0);  // voussoirs first, the walling cut to them
+                EXPECT_EQ(r.crowns_open, 0);        // a key at every crown
+                if (bond != Bond::stack) {
+                    std::string where;
+                    for (Point p : r.straight_at)
+                        where += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+                    // Framed: quoins bonded in (were 99-270 here); what is left is beside
+                    // lintels and raking edges, which are not in the layout yet.
+                    EXPECT_LE(r.straight_joints, tree_name == "framed" ? 7 : 0) << "at" << where;
+                    EXPECT_EQ(r.narrow_pieces, 0);
+                }
+            }
+    }
+}
+
 // Every example facade in every bond and tree; the numbers go to the log (the table).
 TEST(CellsMason, ExampleFacades) {
     const std::string dir = std::string(ACANTHUS_SOURCE_DIR) + "/examples/facades/";
-    Options o;
-    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1;
-    Node b = generator("bricks", bricks());
-    Node rowlock = by_kind(by_part(b, generator("window_bottom", window_bottom()), b),
-                           by_curve(generator("arch_bricks", arch_bricks()),
-                                    by_part(b, generator("window_bottom", window_bottom()), b)),
-                           b);
-    const std::map<std::string, Node> trees{
-        {"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
+    Options o = centimetres();
+    const std::map<std::string, Node> trees = mason_trees();
     for (const char* name : {"row-house", "gable", "oculus", "insets"}) {
         Facade f = Facade::from_svg_file(dir + name + ".svg");
-        for (Bond bond : {Bond::running, Bond::english, Bond::flemish, Bond::header, Bond::stack})
+        for (Bond bond : kBrickBonds)
             for (const auto& [tree_name, tree] : trees) {
                 o.bond = bond;
                 Texture t = texture(f, tree, o, 1);
@@ -127,17 +207,20 @@ TEST(CellsMason, ExampleFacades) {
                 // Fixed units: whole bricks keep their height, courses their gauge.
                 EXPECT_LE(r.height_deviation, 0.1);
                 EXPECT_EQ(r.slivers, 0);  // pieces under 10% of a face are left to the mortar
-                if (bond == Bond::running && tree_name == "bricks") {
-                    EXPECT_LE(r.straight_joints, 4);  // 16-30 before header rows were set off
-                }
+                EXPECT_EQ(r.voussoirs_clipped, 0);
+                EXPECT_EQ(r.crowns_open, 0);
                 if (bond != Bond::stack && tree_name != "framed") {
-                    // Closers at jambs and wall ends (row-house before them: English 68, Flemish
-                    // 124); what is left is where window-bottom headers meet the jambs.
-                    EXPECT_LE(r.straight_joints, 11);
+                    // Closers at jambs and wall ends, window-bottom rows in the layout (row-house
+                    // before them: English 68, Flemish 124, running 30).
+                    EXPECT_EQ(r.straight_joints, 0);
                     EXPECT_EQ(r.narrow_pieces, 0);  // no piece narrower than a queen closer
                     // Jamb bricks a few mm off laid whole (row-house English 44, Flemish 75
                     // before); what is left is cut by more than the joints can take up.
                     EXPECT_LE(r.shaved_bricks, 36);
+                }
+                if (tree_name == "framed" && bond != Bond::stack) {
+                    EXPECT_LE(r.straight_joints, 7);  // 297 on the row-house before quoins
+                    EXPECT_EQ(r.narrow_pieces, 0);    // were bonded in
                 }
                 if (std::string(name) != "gable") {
                     EXPECT_EQ(r.courses_off_gauge, 0);

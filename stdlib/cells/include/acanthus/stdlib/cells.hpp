@@ -287,19 +287,25 @@ Node by_label(std::string label, Node with, Node without);
 Node by_orientation(Node horizontal, Node vertical, bool corners_horizontal = false);
 // Window analysis; features of the wall's outline go to `sides` unless `outline` is set.
 Node by_part(Node top, Node bottom, Node sides);
-Node by_curve(Node arc, Node straight);        // edges made of arcs; corners and faces are straight
+// Edges made of arcs, and corners on one (a springing or an apex, from which the arch is set out
+// before any brick is laid), go to `arc`; faces are straight.
+Node by_curve(Node arc, Node straight);
 Node by_convexity(Node convex, Node concave);  // corners; edges and faces go to `convex`
 
 // The built-in generators [5].
 Generator rgb_blocks();
 Generator bricks();         // corner, edge and face bricks in options.bond
 Generator window_bottom();  // header row under openings; a face is an InputError
-Generator arch_stones();    // voussoirs along arc edges, radial joints
-Generator arch_bricks();    // bricks on end along arcs, the grid where the arc is near vertical
-Generator ashlar();         // random ashlar on the grid tool, seeded
-Generator lintel();         // one stone over an opening, past each jamb
-Generator quoins();         // long and short stones alternating up the sides
-Generator sill_stones();    // window bottom of a stone wall: the ashlar row under each sill
+// Voussoirs along arc edges, radial joints, set out from the crown: an odd count with a key at
+// the crown of a whole arc, a keystone with real width at a pointed apex. Given a corner on an
+// arc (by_curve), it lays that arc's whole ring first, and a skewback where an arc springs from a
+// straight jamb at an angle (a segmental arch).
+Generator arch_stones();
+Generator arch_bricks();  // the same in bricks on end, a course wide (a rowlock arch)
+Generator ashlar();       // random ashlar on the grid tool, seeded
+Generator lintel();       // one stone over an opening, past each jamb
+Generator quoins();       // long and short stones alternating up the sides
+Generator sill_stones();  // window bottom of a stone wall: the ashlar row under each sill
 
 // Ready trees: bricks with window bottoms, arches and corner bricks; ashlar framed the same
 // way (its window bottoms are sill stones, placed as "window_bottom"); RGB blocks. tree_for() picks

@@ -1,0 +1,150 @@
+#include "quoin_rows.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace acanthus::cells::detail {
+
+namespace {
+
+bool plumb(const Edge& e, double eps) {
+    return !e.arc && !e.closed && e.bounds.width() <= eps && e.bounds.height() > eps;
+}
+
+// The unit against the edge on the wall's side in `row`, or -1.
+int unit_at_edge(const BrickLayout& layout, const Edge& e) {
+    const double x = e.bounds.x0;
+    const double tiny = 1e-6 * (layout.grid.xs.back() - layout.grid.xs.front());
+    return layout.grid.unit_at(e.inward(e.length / 2).x > 0 ? x + tiny : x - tiny);
+}
+
+// Puts a quoin over units [a, b) of the row's pieces; a one-unit remnant beside it joins its
+// neighbour (as bond.cpp does at a run's end), so no quarter bat is left against the quoin.
+void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right) {
+    // A pier too narrow for two quoins: this one takes what the other leaves (at least two
+    // quarters; the other gives one up when only one is left), so the pier is two quoins whose
+    // joint moves with the other's length, course by course.
+    for (Piece& p : pieces) {
+        if (!p.quoin || p.start + p.length <= a || p.start >= b) continue;
+        // Growing right from its jamb, this quoin meets the other's left end; else its right end.
+        const int free = grows_right ? p.start - a : b - (p.start + p.length);
+        if (free <= 0) return;
+        if (free == 1 && p.length >= 3) {
+            --p.length;
+            if (grows_right) ++p.start;
+        } else if (free == 1) {
+            return;
+        }
+        if (grows_right)
+            b = p.start;
+        else
+            a = p.start + p.length;
+    }
+    std::vector<Piece> out;
+    for (const Piece& p : pieces) {
+        const int s = p.start, e = p.start + p.length;
+        if (e <= a || s >= b) {
+            out.push_back(p);
+            continue;
+        }
+        if (s < a) out.push_back({s, a - s, true, false, p.sill});
+        if (e > b) out.push_back({b, e - b, true, false, p.sill});
+    }
+    Piece q{a, b - a, false, false};
+    q.quoin = true;
+    out.push_back(q);
+    std::sort(out.begin(), out.end(),
+              [](const Piece& x, const Piece& y) { return x.start < y.start; });
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        Piece& p = out[k];
+        if (p.quoin || p.length != 1) continue;
+        // The neighbour away from the quoin, in the same run.
+        const bool right_of = k > 0 && out[k - 1].quoin;
+        if (!right_of && !(k + 1 < out.size() && out[k + 1].quoin)) continue;
+        const std::size_t n = right_of ? k + 1 : k - (k > 0 ? 1 : 0);
+        if (n == k || n >= out.size() || out[n].quoin) continue;
+        const bool touching =
+            right_of ? p.start + 1 == out[n].start : out[n].start + out[n].length == p.start;
+        if (!touching) continue;
+        const int total = p.length + out[n].length;
+        const int left = std::min(p.start, out[n].start);
+        if (total <= 4) {
+            p = {left, total, true, false, p.sill};
+            out.erase(out.begin() + static_cast<std::ptrdiff_t>(n));
+            if (n < k) --k;
+        } else if (right_of) {
+            p = {left, 2, true, false, p.sill};
+            out[n] = {left + 2, total - 2, true, false, out[n].sill};
+        } else {
+            out[n] = {left, total - 2, true, false, out[n].sill};
+            p = {left + total - 2, 2, true, false, p.sill};
+        }
+    }
+    pieces = std::move(out);
+}
+
+}  // namespace
+
+void set_quoin_rows(const Facade& facade, int face, const Options& o, BrickLayout& layout) {
+    const Face& f = facade.faces()[static_cast<std::size_t>(face)];
+    const double eps = 1e-9 * std::max({1.0, std::abs(f.bounds.x1), std::abs(f.bounds.y1)});
+    const CourseGrid& g = layout.grid;
+    for (int e : f.edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        if (!plumb(edge, eps)) continue;
+        const int u = unit_at_edge(layout, edge);
+        if (u < 0) continue;
+        const bool right = edge.inward(edge.length / 2).x > 0;
+        for (int row = 0; row < g.rows(); ++row) {
+            const double mid = (g.ys[static_cast<std::size_t>(row)] + g.ys[row + 1]) / 2;
+            if (mid < edge.bounds.y0 || mid > edge.bounds.y1) continue;
+            if (g.at(row, u) == kOutside) continue;
+            const int len = g.course(row) % 2 == 0 ? o.quoin_long : o.quoin_short;
+            int a = right ? u : u - len + 1, b = right ? u + len : u + 1;
+            // Within the run.
+            int lo = u, hi = u + 1;
+            while (lo > a && lo > 0 && g.at(row, lo - 1) != kOutside) --lo;
+            while (hi < b && hi < g.units() && g.at(row, hi) != kOutside) ++hi;
+            a = lo, b = hi;
+            if (b - a < 1) continue;
+            put_quoin(layout.rows[static_cast<std::size_t>(row)], a, b, right);
+        }
+    }
+    // A pier narrow enough for two quoins (quoin, quoin or quoin, piece, quoin, at most eight
+    // quarters): the left one long or short by course, the right one the rest, so the joint
+    // between them moves course by course (else both courses could end up with one split).
+    for (int row = 0; row < g.rows(); ++row) {
+        auto& pieces = layout.rows[static_cast<std::size_t>(row)];
+        const int want = g.course(row) % 2 == 0 ? o.quoin_long : o.quoin_short;
+        for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
+            if (!pieces[k].quoin) continue;
+            std::size_t e = k + 1;
+            if (e < pieces.size() && !pieces[e].quoin) ++e;
+            if (e >= pieces.size() || !pieces[e].quoin) continue;
+            bool contiguous = true;
+            for (std::size_t i = k; i < e; ++i)
+                contiguous &= pieces[i].start + pieces[i].length == pieces[i + 1].start;
+            const int start = pieces[k].start, n = pieces[e].start + pieces[e].length - start;
+            if (!contiguous || n > 8 || n < 4) continue;
+            const int left = std::clamp(want, std::max(2, n - 4), n - 2);
+            Piece l{start, left, false, false}, r{start + left, n - left, false, false};
+            l.quoin = r.quoin = true;
+            pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(k),
+                         pieces.begin() + static_cast<std::ptrdiff_t>(e) + 1);
+            pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(k), {l, r});
+            ++k;
+        }
+    }
+}
+
+int quoin_piece(const BrickLayout& layout, const Edge& edge, Point inside, int& row) {
+    row = layout.grid.row_at(inside.y);
+    const int u = unit_at_edge(layout, edge);
+    if (row < 0 || u < 0) return -1;
+    const int k = layout.piece_of_unit[static_cast<std::size_t>(row)][static_cast<std::size_t>(u)];
+    if (k < 0 || !layout.rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(k)].quoin)
+        return -1;
+    return k;
+}
+
+}  // namespace acanthus::cells::detail
