@@ -6,7 +6,7 @@ import re
 import sys
 
 # Lowest first; docs/architecture.md explains each.
-STAGES = ["files", "geometry", "svg", "region", "proxy", "pattern", "field", "growth", "draw", "output", "program"]
+STAGES = ["files", "geometry", "svg", "region", "proxy", "pattern", "field", "symmetry", "growth", "draw", "output", "program"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 

@@ -5,10 +5,12 @@
 #include <acanthus/grid_frame.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/region.hpp>
+#include <acanthus/symmetry.hpp>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace acanthus {
@@ -30,19 +32,23 @@ struct GrowthOptions {
     long long lazy_field_pixels = 512LL * 512;
     std::vector<Point> seeds;  // empty: centre of the largest inscribed circle
     std::uint64_t rng_seed = 1;
+    // Grow under a rosette group (docs/symmetry.md): C is chosen in the fundamental domain and
+    // every committed element is placed with its images.
+    std::optional<Symmetry> symmetry;
 };
 
 // One iteration as Figure 8 shows it (built only for the iteration asked for).
 struct DebugFrame {
     long iteration = 0;
     GridFrame grid;
-    std::vector<std::uint8_t> occupancy;     // width*height; 0 free, 1 boundary, 2 element
-    std::vector<Circle> eligible;            // candidate circles that could be chosen
-    std::vector<Circle> excluded;            // candidates rejected by the exclude list
-    std::optional<Circle> chosen;            // C
-    std::vector<const Element*> candidates;  // elements within epsilon of C, tried in order
-    std::vector<const Element*> placed;      // elements before this iteration
-    std::vector<const Element*> added;       // children committed in this iteration
+    std::vector<std::uint8_t> occupancy;          // width*height; 0 free, 1 boundary, 2 element
+    std::vector<Circle> eligible;                 // candidate circles that could be chosen
+    std::vector<Circle> excluded;                 // candidates rejected by the exclude list
+    std::optional<Circle> chosen;                 // C
+    std::vector<const Element*> candidates;       // elements within epsilon of C, tried in order
+    std::vector<const Element*> placed;           // elements before this iteration
+    std::vector<const Element*> added;            // children committed in this iteration
+    std::vector<std::pair<Point, Point>> domain;  // the fundamental domain's edges (symmetry)
 };
 
 struct RuleStats {

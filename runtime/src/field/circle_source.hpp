@@ -46,6 +46,8 @@ struct CircleSourceOptions {
     double min_radius = 0;  // user units
     // Buffers of at least this many pixels keep the field lazily (field/pending_blocks.hpp).
     long long lazy_field_pixels = 512LL * 512;
+    // Pixels that may centre C (EmptyCircleFinder::set_centres); empty: every pixel.
+    std::vector<std::uint8_t> centres;
 };
 
 // The incremental engine. Sites of one placement update the field where they change it; a

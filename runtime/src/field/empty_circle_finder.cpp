@@ -104,7 +104,7 @@ bool EmptyCircleFinder::on_medial_axis(int pixel) const {
 
 bool EmptyCircleFinder::shape_eligible(int pixel) const {
     const std::int64_t d2 = field_.squared_distance(pixel);
-    if (d2 < min_d2_ || d2 == DistanceField::infinite) return false;
+    if (d2 < min_d2_ || d2 == DistanceField::infinite || !may_centre(pixel)) return false;
     return on_medial_axis(pixel) && element_may_stop(pixel);
 }
 
@@ -163,7 +163,7 @@ void EmptyCircleFinder::consider(int pixel, int i, int j, int tile, int bit) {
     // Same distance: a candidate stays one (neighbours only get lower), a blocked one stays
     // blocked; a non-candidate may have become one.
     if (!was_none && !changed) return;
-    bool eligible = d2 >= min_d2_ && d2 != DistanceField::infinite;
+    bool eligible = d2 >= min_d2_ && d2 != DistanceField::infinite && may_centre(pixel);
     if constexpr (kInside)
         eligible = eligible && crest_inside(pixel, d2);
     else
@@ -248,8 +248,8 @@ void EmptyCircleFinder::rebuild() {
     for (int j = 0; j < grid_.height; ++j) {
         const std::int32_t* row =
             field_.boundary_squared_distances() + static_cast<std::size_t>(j) * grid_.width;
-        std::int32_t* floor = boundary_floor_.data() + static_cast<std::size_t>(j >> kTileShift) *
-                                                           tiles_w_;
+        std::int32_t* floor =
+            boundary_floor_.data() + static_cast<std::size_t>(j >> kTileShift) * tiles_w_;
         for (int ti = 0; ti < tiles_w_; ++ti) {  // a tile's row at a time, in vector lanes
             const int i0 = ti << kTileShift, i1 = std::min(grid_.width, i0 + (1 << kTileShift));
             std::int32_t m = floor[ti];
@@ -479,7 +479,8 @@ std::optional<EmptyCircle> EmptyCircleFinder::find_by_scan(const CircleBlocker& 
         if (d2 == DistanceField::infinite || field_.occupancy(p) != ObstacleKind::none) continue;
         const Key k = key_of(p, d2);
         if (found && k < best) continue;
-        if (is_discarded(p, d2) || !shape_eligible(p) || blocker.blocker_inside(circle_of(p)) >= 0) continue;
+        if (is_discarded(p, d2) || !shape_eligible(p) || blocker.blocker_inside(circle_of(p)) >= 0)
+            continue;
         best = k;
         found = true;
     }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "field/circle_blocker.hpp"
@@ -28,6 +29,13 @@ class EmptyCircleFinder {
 
     // `min_radius` in user units. With a lazy field, find() trusts the tiles it must.
     EmptyCircleFinder(DistanceField& field, const GridFrame& grid, double min_radius);
+
+    // Pixels that may centre a circle (one byte each, non-zero: may); empty, the default: every
+    // pixel. A symmetry's fundamental domain (symmetry/). Set before the first search.
+    void set_centres(std::vector<std::uint8_t> allowed) { centres_ = std::move(allowed); }
+    bool may_centre(int pixel) const {
+        return centres_.empty() || centres_[static_cast<std::size_t>(pixel)] != 0;
+    }
 
     Circle circle_of(int pixel) const;
     // Radius in pixels of the conservative circle of a field value (squared distance, or
@@ -144,7 +152,8 @@ class EmptyCircleFinder {
     double min_radius_;
     double inv_width_;
     bool manhattan_;
-    std::int64_t min_d2_ = 1;  // smallest d2 whose radius is at least min_radius_
+    std::int64_t min_d2_ = 1;            // smallest d2 whose radius is at least min_radius_
+    std::vector<std::uint8_t> centres_;  // set_centres()
     int tiles_w_ = 0, tiles_h_ = 0, blocks_w_ = 0;
     int offsets_[4] = {};  // pixel index steps along the four lines of the crest test
 

@@ -21,9 +21,10 @@ class FieldCircleSource : public CircleSource {
   protected:
     FieldCircleSource(const RasterBuffer& raster, const CircleSourceOptions& options)
         : raster_(raster),
-          field_(raster.grid().width, raster.grid().height, /*with_sites=*/false,
-                 options.metric),
-          finder_(field_, raster.grid(), options.min_radius) {}
+          field_(raster.grid().width, raster.grid().height, /*with_sites=*/false, options.metric),
+          finder_(field_, raster.grid(), options.min_radius) {
+        finder_.set_centres(options.centres);
+    }
 
     // The best `limit` candidates of the field as it is, by scan.
     std::vector<Circle> scanned_candidates(std::size_t limit) const {

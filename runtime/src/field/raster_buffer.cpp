@@ -66,6 +66,12 @@ void RasterBuffer::add_proxy(const Proxy& p, ObstacleKind kind, std::vector<int>
     occupy(scratch_, kind, fresh);
 }
 
+void RasterBuffer::add_boundary(const std::vector<int>& pixels) {
+    for (int p : pixels)
+        if (occ_[p] == static_cast<std::uint8_t>(ObstacleKind::none))
+            occ_[p] = static_cast<std::uint8_t>(ObstacleKind::boundary);
+}
+
 void RasterBuffer::add_element(const Element& e, std::vector<int>& fresh) {
     for (std::size_t k = 0; k < e.proxy_count(); ++k)
         add_proxy(e.proxy(k), ObstacleKind::element, fresh);

@@ -32,6 +32,9 @@ class RasterBuffer {
     // were free to `fresh`.
     void add_element(const Element& e, std::vector<int>& fresh);
     void add_proxy(const Proxy& p, ObstacleKind kind, std::vector<int>& fresh);
+    // Makes free pixels boundary obstacles (a symmetry's core of the region, symmetry/); only
+    // before the field is computed.
+    void add_boundary(const std::vector<int>& pixels);
 
   private:
     void occupy(const std::vector<int>& pixels, ObstacleKind kind, std::vector<int>& fresh);

@@ -27,6 +27,10 @@
 #include "growth/exclude_list.hpp"
 #include "growth/ornament.hpp"
 #include "pattern/running_body.hpp"
+#include "symmetry/image_element.hpp"
+#include "symmetry/orbit.hpp"
+#include "symmetry/symmetric_core.hpp"
+#include "symmetry/symmetry_group.hpp"
 
 namespace acanthus {
 
@@ -67,16 +71,20 @@ struct GrowthEngine::Impl {
           raster(region, options.resolution),
           epsilon(options.epsilon < 0 ? 2 * raster.grid().pixel : options.epsilon),
           min_radius(options.min_radius < 0 ? raster.grid().pixel : options.min_radius),
+          group(make_group()),
           circles(make_source()),
           ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
-          env(region, ornament, exclude, options.rng_seed) {
+          env(region, ornament, exclude, options.rng_seed, group.get()) {
+        if (group) raster.add_boundary(pixels_outside_core(raster, *group));
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
     }
 
+    std::unique_ptr<SymmetryGroup> make_group() const;
     std::unique_ptr<CircleSource> make_source() const {
-        const CircleSourceOptions o{options.distance, min_radius, options.lazy_field_pixels};
+        CircleSourceOptions o{options.distance, min_radius, options.lazy_field_pixels, {}};
+        if (group) o.centres = domain_pixels(raster.grid(), *group);
         return options.reference_engine ? reference_circle_source(raster, o)
                                         : incremental_circle_source(raster, o);
     }
@@ -91,7 +99,10 @@ struct GrowthEngine::Impl {
     }
     bool any_parent_left();
     void iterate(const Circle& goal);
-    void commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
+    bool commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
+    std::vector<Circle> rule_goals(const Circle& goal) const;
+    // C's centre and its distinct images (C's centre alone without symmetry).
+    std::vector<Point> orbit_of_point(Point p) const;
     void sync_exclude_clears();
     Flow call_exhausted();
 
@@ -101,6 +112,7 @@ struct GrowthEngine::Impl {
     RasterBuffer raster;
     double epsilon;
     double min_radius;
+    std::unique_ptr<SymmetryGroup> group;  // null without --symmetry
     std::unique_ptr<CircleSource> circles;
     ExcludeList exclude;
     Ornament ornament;
@@ -126,20 +138,86 @@ struct GrowthEngine::Impl {
     std::function<void(long, long)> progress_callback;
 };
 
-void GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, Element* parent) {
+std::unique_ptr<SymmetryGroup> GrowthEngine::Impl::make_group() const {
+    if (!options.symmetry) return nullptr;
+    Point center;
+    if (options.symmetry->center) {
+        center = *options.symmetry->center;
+        if (!center.finite()) throw InputError("--symmetry-center must be two finite numbers");
+    } else {
+        center = region.largest_inscribed_circle(raster.grid().pixel / 4).center;
+    }
+    return std::make_unique<SymmetryGroup>(*options.symmetry, center);
+}
+
+// The circles a rule is offered in turn under symmetry, each inside C (so as empty) and clear
+// of its own images: C itself and (dN) C's largest circle centred on the nearest mirror, then
+// both halved again and again down to the minimum radius (at most 8 times). Children that clash
+// with their images on one try the next.
+std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal) const {
+    const double tol = ornament.tolerance();
+    std::vector<Circle> bases{goal};
+    const Point on_mirror = group->snap(goal.center, goal.radius);
+    const double moved = distance(on_mirror, goal.center);
+    if (moved > tol && moved < goal.radius) bases.push_back({on_mirror, goal.radius - moved});
+    for (Circle& c : bases) c.radius = std::min(c.radius, group->clearance(c.center, tol));
+    std::vector<Circle> out;
+    double scale = 1;
+    for (int halvings = 0; halvings <= 8; ++halvings, scale /= 2)
+        for (const Circle& c : bases)
+            if (halvings == 0 || c.radius * scale >= min_radius)
+                out.push_back({c.center, c.radius * scale});
+    return out;
+}
+
+std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
+    std::vector<Point> out{p};
+    if (!group) return out;
+    for (std::size_t k = 1; k < group->size(); ++k) {
+        const Point q = group->transforms()[k].apply(p);
+        bool seen = false;
+        for (Point o : out) seen = seen || distance(o, q) <= ornament.tolerance();
+        if (!seen) out.push_back(q);
+    }
+    return out;
+}
+
+// Commits the children of one success. Under symmetry each comes with its images, after them
+// in id order; a child whose images clash (orbit.hpp) is dropped, and when none is left nothing
+// is committed (false).
+bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, Element* parent) {
     fresh.clear();
+    std::vector<Orbit> orbits;
+    if (group) {
+        std::vector<const Element*> batch;
+        for (const auto& child : children) batch.push_back(child.get());
+        auto placeable = placeable_orbits(batch, *group, region, ornament.tolerance());
+        std::vector<std::unique_ptr<Element>> kept;
+        for (std::size_t k = 0; k < children.size(); ++k) {
+            if (!placeable[k]) continue;
+            kept.push_back(std::move(children[k]));
+            orbits.push_back(std::move(*placeable[k]));
+        }
+        if (kept.empty()) return false;
+        children = std::move(kept);
+    }
     for (auto& child : children) {
         child->parent = parent;
         child->depth = parent ? parent->depth + 1 : 0;
         child->children = 0;
     }
     const std::size_t count = children.size();
+    for (std::size_t k = 0; k < orbits.size(); ++k)
+        for (const Isometry& g : orbits[k].images)
+            children.push_back(std::make_unique<ImageElement>(*children[k], g));
+    const std::size_t placed = children.size();
     for (Element* e : ornament.add_all(std::move(children))) {
         raster.add_element(*e, fresh);
         if (can_parent(*e)) ++parents_left;
     }
     if (parent) parent->children += static_cast<int>(count);
-    circles->add_sites(fresh, count);
+    circles->add_sites(fresh, placed);
+    return true;
 }
 
 // One seed per part of the region (an outer loop with its holes) at the centre of the part's
@@ -170,11 +248,29 @@ std::vector<Point> GrowthEngine::Impl::default_seeds() const {
 void GrowthEngine::Impl::place_seeds() {
     if (!pattern.seed) throw InputError(pattern.file + ": the pattern declares no seed type");
     std::vector<Point> seeds = options.seeds;
+    if (seeds.empty() && group) {
+        // The centre (it is its own image); a centre outside the region (a frame round a
+        // hole) gives the default seeds whose images stay inside.
+        if (core_contains(region, *group, group->center()))
+            seeds.push_back(group->center());
+        else
+            for (Point s : default_seeds())
+                if (core_contains(region, *group, s)) seeds.push_back(s);
+        if (seeds.empty())
+            throw InputError("no room for a seed: every point of the region has an image under " +
+                             group->spec().name() + " outside it; give --seed X,Y");
+    }
     if (seeds.empty()) seeds = default_seeds();
     for (Point s : seeds)
         if (!s.finite() || !region.contains(s))
             throw InputError("seed " + format_number(s.x) + "," + format_number(s.y) +
                              " is outside the region " + region.name());
+    if (group)
+        for (Point s : seeds)
+            if (!core_contains(region, *group, s))
+                throw InputError("seed " + format_number(s.x) + "," + format_number(s.y) +
+                                 ": an image of it under " + group->spec().name() +
+                                 " is outside the region " + region.name());
     for (Point s : seeds) {
         std::unique_ptr<Element> e(pattern.seed->create());
         if (!e || e->proxy_count() != 1 || e->proxy(0).kind() != ProxyKind::point)
@@ -203,6 +299,9 @@ std::optional<EmptyCircle> GrowthEngine::Impl::find() {
 // the boundary is at least as near: the paper discards circles stopped by the boundary.
 std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     Circle c = found.circle;
+    // On a mirror or the centre, within a pixel: exactly there, so that an element placed on C
+    // can coincide with its images.
+    if (group) c.center = group->snap(c.center, raster.grid().pixel);
     // The raster radius is within about 1.5 pixels below the exact one; iterate() wants the
     // elements within epsilon of the exact circle too. The nearest obstacle pixel's centre is
     // at most the field's distance away (city-block distances are longer still), an element
@@ -218,7 +317,9 @@ std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     if (!std::isfinite(r)) return std::nullopt;
     const double boundary_floor =
         circles->boundary_radius_pixels(found.pixel) * raster.grid().pixel;
-    if (boundary_floor < r && region.distance_to_boundary(c.center) <= r) return std::nullopt;
+    const double boundary = group ? core_distance_to_boundary(region, *group, c.center)
+                                  : region.distance_to_boundary(c.center);
+    if (boundary_floor < r && boundary <= r) return std::nullopt;
     c.radius = r;
     return c;
 }
@@ -270,15 +371,30 @@ Flow GrowthEngine::Impl::call_exhausted() {
 }
 
 void GrowthEngine::Impl::iterate(const Circle& goal) {
-    env.set_goal(goal);
     std::vector<Element*> parents;
+    // Under symmetry, an image near C stands for its original, which sees C carried back.
+    std::vector<Circle> goals;
+    auto consider = [&](Element* e) {
+        if (!group) {
+            if (!e->sterile) parents.push_back(e);
+            return;
+        }
+        const ImageElement* image = as_image(*e);
+        Element* original = image ? &ornament.at(image->original().id) : e;
+        if (original->sterile ||
+            std::find(parents.begin(), parents.end(), original) != parents.end())
+            return;
+        parents.push_back(original);
+        Circle g = goal;
+        if (image) g.center = image->transform().inverse().apply(goal.center);
+        goals.push_back(g);
+    };
     const double reach = goal.radius + epsilon;
     if (near_goal_radius >= reach) {  // refine() found them all
         for (const auto& [e, d] : near_goal)
-            if (d <= reach && !e->sterile) parents.push_back(e);
+            if (d <= reach) consider(e);
     } else {
-        for (const auto& [e, d] : ornament.within(goal.center, reach))
-            if (!e->sterile) parents.push_back(e);
+        for (const auto& [e, d] : ornament.within(goal.center, reach)) consider(e);
     }
 
     const bool debugging = debug_callback && stats.iterations == debug_iteration;
@@ -293,30 +409,46 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         frame.chosen = goal;
         frame.candidates.assign(parents.begin(), parents.end());
         frame.placed = ornament.view();
+        if (group) {
+            const Rect b = region.bounds();
+            frame.domain = group->domain_edges(2 * std::hypot(b.width(), b.height()));
+        }
     }
 
     const std::size_t before = ornament.size();
     bool success = false;
-    for (Element* parent : parents) {
+    for (std::size_t n = 0; n < parents.size(); ++n) {
+        Element* parent = parents[n];
         const auto rules = rules_by_parent.find(&parent->type());
         if (rules == rules_by_parent.end()) continue;
         const bool could_parent = !parent->sterile;
         for (int r : rules->second) {
             if (parent->sterile) break;  // a failed rule may have made it sterile
             const RuleInfo& rule = pattern.rules[static_cast<std::size_t>(r)];
-            Result result = FAILURE;
-            std::vector<std::unique_ptr<Element>> children;
-            {
-                Environment::Scope scope(&env);
-                RuleCall call(rule, *parent);
-                result = call.run();
-                if (result == SUCCESS) children = call.take_children();
+            // Under symmetry a success whose children clash with their images is tried again
+            // on smaller circles inside C (rule_goals()); without, the one goal.
+            const std::vector<Circle> tries =
+                group ? rule_goals(goals[n]) : std::vector<Circle>{goal};
+            for (const Circle& tried : tries) {
+                if (parent->sterile) break;
+                env.set_goal(tried);
+                Result result = FAILURE;
+                std::vector<std::unique_ptr<Element>> children;
+                {
+                    Environment::Scope scope(&env);
+                    RuleCall call(rule, *parent);
+                    result = call.run();
+                    if (result == SUCCESS) children = call.take_children();
+                }
+                sync_exclude_clears();
+                if (result != SUCCESS) break;
+                if (commit(std::move(children), parent)) {
+                    success = true;
+                    break;
+                }
             }
-            sync_exclude_clears();
-            if (result == SUCCESS) {
+            if (success) {
                 ++stats.rules[static_cast<std::size_t>(r)].successes;
-                commit(std::move(children), parent);
-                success = true;
                 break;
             }
             ++stats.rules[static_cast<std::size_t>(r)].failures;
@@ -327,10 +459,10 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
 
     if (success) {
         std::vector<int> removed;
-        exclude.remove_within(goal.center, epsilon, &removed);
+        for (Point p : orbit_of_point(goal.center)) exclude.remove_within(p, epsilon, &removed);
         circles->release(removed);
     } else {
-        exclude.add(goal.center);
+        for (Point p : orbit_of_point(goal.center)) exclude.add(p);
     }
 
     if (debugging) {

@@ -8,23 +8,48 @@
 
 #include "growth/exclude_list.hpp"
 #include "growth/ornament.hpp"
+#include "symmetry/image_element.hpp"
+#include "symmetry/orbit.hpp"
+#include "symmetry/symmetric_core.hpp"
+#include "symmetry/symmetry_group.hpp"
 
 namespace acanthus::detail {
 
 class GrowthEnvironment : public Environment {
   public:
     GrowthEnvironment(const Region& region, const Ornament& ornament, ExcludeList& exclude,
-                      std::uint64_t rng_seed)
-        : region_(region), ornament_(ornament), exclude_(exclude), random_(rng_seed) {}
+                      std::uint64_t rng_seed, const SymmetryGroup* group = nullptr)
+        : region_(region),
+          ornament_(ornament),
+          exclude_(exclude),
+          random_(rng_seed),
+          group_(group) {}
 
     void set_goal(Circle c) { goal_ = c; }
 
     Circle goal() const override { return goal_; }
-    bool intersects(const Element& e) const override { return ornament_.intersects(e); }
-    bool intersects(const Proxy& p) const override { return ornament_.intersects(p); }
-    bool inside(Point p) const override { return region_.contains(p); }
-    double distance_to_boundary(Point p) const override { return region_.distance_to_boundary(p); }
-    Element* nearest_element(Point p) const override { return ornament_.nearest(p).first; }
+    // Under symmetry the placed elements include their images, and an element also intersects
+    // when one of its own images overlaps it or leaves the region: the region is its core.
+    bool intersects(const Element& e) const override {
+        return ornament_.intersects(e) ||
+               (group_ && orbit_intersects(e, *group_, region_, ornament_.tolerance()));
+    }
+    bool intersects(const Proxy& p) const override {
+        return ornament_.intersects(p) ||
+               (group_ && orbit_intersects(p, *group_, region_, ornament_.tolerance()));
+    }
+    bool inside(Point p) const override {
+        return group_ ? core_contains(region_, *group_, p) : region_.contains(p);
+    }
+    double distance_to_boundary(Point p) const override {
+        return group_ ? core_distance_to_boundary(region_, *group_, p)
+                      : region_.distance_to_boundary(p);
+    }
+    // An image stands for its original (the element a rule body can read).
+    Element* nearest_element(Point p) const override {
+        Element* e = ornament_.nearest(p).first;
+        return e ? &ornament_.at(original_of(*e).id) : nullptr;
+    }
     void clear_exclude_list() override { exclude_.clear(); }
     Random& random() override { return random_; }
     const Region* region() const override { return &region_; }
@@ -34,6 +59,7 @@ class GrowthEnvironment : public Environment {
     const Ornament& ornament_;
     ExcludeList& exclude_;
     Random random_;
+    const SymmetryGroup* group_;
     Circle goal_;
 };
 

@@ -4,6 +4,8 @@
 // the grid spans the output width. Over it: the elements in place before the iteration in thin
 // black outline, eligible candidate circles in yellow, excluded ones in green, the candidate
 // parents in thick purple, the chosen circle C dashed blue and the newly added children in orange.
+// Under symmetry, images of elements are outlined in light blue and the fundamental domain's
+// edges drawn in dashed teal.
 // The format follows the file name like render_to_file; the paper's picture is a PNG.
 #include <cairo.h>
 
@@ -14,8 +16,9 @@
 #include <memory>
 #include <string>
 
-#include "output/output_writer.hpp"
 #include "output/document.hpp"
+#include "output/output_writer.hpp"
+#include "symmetry/image_element.hpp"
 
 namespace acanthus {
 
@@ -31,6 +34,8 @@ constexpr Color excluded_color{0.0, 0.65, 0.1, 1};
 constexpr Color candidate_color{0.55, 0.1, 0.75, 1};
 constexpr Color chosen_color{0.1, 0.3, 0.95, 1};
 constexpr Color added_color{1.0, 0.5, 0.0, 1};
+constexpr Color image_color{0.35, 0.6, 0.95, 1};
+constexpr Color domain_color{0.0, 0.55, 0.55, 1};
 
 struct SurfaceDeleter {
     void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
@@ -110,8 +115,26 @@ void render_debug_frame(const std::string& path, const Region& region, const Deb
     Canvas canvas(cr);
 
     canvas.set_line_width(px);
+    std::vector<const Element*> fundamental, images;
+    for (const Element* e : frame.placed)
+        (detail::as_image(*e) ? images : fundamental).push_back(e);
+    canvas.set_color(image_color);
+    stroke_elements(canvas, images);
     canvas.set_color(placed_color);
-    stroke_elements(canvas, frame.placed);
+    stroke_elements(canvas, fundamental);
+    if (!frame.domain.empty()) {
+        double dash[] = {8 * px, 4 * px};
+        cairo_save(cr);
+        cairo_set_dash(cr, dash, 2, 0);
+        canvas.set_line_width(2 * px);
+        canvas.set_color(domain_color);
+        for (const auto& [a, b] : frame.domain) {
+            canvas.move_to(a);
+            canvas.line_to(b);
+        }
+        canvas.stroke();
+        cairo_restore(cr);
+    }
 
     canvas.set_line_width(1.5 * px);
     canvas.set_color(eligible_color);

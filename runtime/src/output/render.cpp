@@ -32,6 +32,7 @@
 #include "output/svg_fallback.hpp"
 #include "output/svg_writer.hpp"
 #include "pattern/running_body.hpp"
+#include "symmetry/image_element.hpp"
 
 namespace acanthus {
 
@@ -164,10 +165,17 @@ void draw_element(Canvas& canvas, cairo_t* cr, const Pattern& pattern, const Ele
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_source_rgb(cr, 0, 0, 0);
     if (custom) {
+        // An image (symmetry) is its original drawn under its transformation.
+        const detail::ImageElement* image = detail::as_image(element);
+        if (image) {
+            const auto m = image->transform().matrix();
+            cairo_matrix_t matrix{m[0], m[1], m[2], m[3], m[4], m[5]};
+            cairo_transform(cr, &matrix);
+        }
         try {
             const detail::RunningBody running(
                 detail::body_label(&type, pattern.file, type.line, "%draw " + type.name));
-            type.draw(canvas, element);
+            type.draw(canvas, image ? image->original() : element);
         } catch (const RuleFailure&) {
             throw;
         } catch (const std::exception& e) {
@@ -176,7 +184,8 @@ void draw_element(Canvas& canvas, cairo_t* cr, const Pattern& pattern, const Ele
             throw draw_failure(pattern, type, "unknown exception");
         }
     } else {
-        long rank = element.id >= 0 ? element.id : index;
+        const Element& ranked = detail::original_of(element);  // images share their colour
+        long rank = ranked.id >= 0 ? ranked.id : index;
         Color color = hue(detail::order_hue(rank, count));
         detail::draw_default(canvas, element, style, color, {}, curves.stroke != nullptr);
     }

@@ -101,6 +101,23 @@ std::string check_distance(const std::string& s) {
     return "--distance must be euclidean or manhattan, not '" + s + "'";
 }
 
+std::string check_symmetry(const std::string& s) {
+    try {
+        Symmetry::parse(s);
+    } catch (const UsageError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+std::string check_symmetry_center(const std::string& s) {
+    if (!parse_seed(s))
+        return "--symmetry-center expects X,Y (two numbers, e.g. --symmetry-center 150,150), "
+               "not '" +
+               s + "'";
+    return {};
+}
+
 std::string footer(const Pattern& pattern, const std::string& program) {
     std::ostringstream f;
     if (!pattern.params.empty()) {
@@ -259,6 +276,23 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->check(check_distance)
         ->group(growth_group);
 
+    const char* symmetry_group = "Symmetry";
+    std::string symmetry, symmetry_center;
+    auto* symmetry_option =
+        app.add_option("--symmetry", symmetry,
+                       "Grow a rosette: cN (N rotations) or dN (N rotations and N mirrors), "
+                       "e.g. d8; no element overlaps an image of another or of itself")
+            ->type_name("cN|dN")
+            ->check(check_symmetry)
+            ->group(symmetry_group);
+    app.add_option("--symmetry-center", symmetry_center,
+                   "Centre of the rosette (default: centre of the region's largest inscribed "
+                   "circle)")
+        ->type_name("X,Y")
+        ->check(check_symmetry_center)
+        ->needs(symmetry_option)
+        ->group(symmetry_group);
+
     const char* output_group = "Output";
     app.add_option("-o,--output", o.output,
                    "Format from the extension; '-' is SVG on stdout (default: " + o.output + ")")
@@ -330,6 +364,10 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
     }
 
     for (const std::string& s : seeds) o.growth.seeds.push_back(*parse_seed(s));
+    if (!symmetry.empty()) {
+        o.growth.symmetry = Symmetry::parse(symmetry);
+        if (!symmetry_center.empty()) o.growth.symmetry->center = *parse_seed(symmetry_center);
+    }
     if (!rng_seed.empty()) o.growth.rng_seed = *parse_rng_seed(rng_seed);
     if (!background.empty()) o.render.background = parse_color(background);
     o.render.draw_region = !no_outline;

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "output/output_writer.hpp"
+#include "symmetry/image_element.hpp"
 
 namespace acanthus::detail {
 
@@ -88,6 +89,13 @@ Json element_json(const Element& e) {
     Json proxies = Json::array();
     for (std::size_t k = 0; k < e.proxy_count(); ++k) proxies.push_back(proxy_json(e.proxy(k)));
     out["proxies"] = std::move(proxies);
+    // Under symmetry: the element this one is an image of, and the transformation (Cairo's
+    // matrix order: x' = a x + c y + e, y' = b x + d y + f).
+    if (const ImageElement* image = as_image(e)) {
+        out["image_of"] = image->original().id;
+        const auto m = image->transform().matrix();
+        out["transform"] = Json::array({m[0], m[1], m[2], m[3], m[4], m[5]});
+    }
     return out;
 }
 

@@ -1,0 +1,47 @@
+// An image of a placed element under a symmetry transformation: the original's type, its
+// proxies carried over by the transformation. The growth loop places images beside the
+// fundamental elements so that the field, the exclude list and intersection() see them; they are
+// sterile, and drawn as their original under the transformation.
+#pragma once
+
+#include <acanthus/element.hpp>
+#include <variant>
+#include <vector>
+
+#include "symmetry/isometry.hpp"
+
+namespace acanthus::detail {
+
+// The proxy `in` carried over by `g` into `out`, a proxy of the same kind.
+void transform_proxy(const Proxy& in, const Isometry& g, Proxy& out);
+
+class ImageElement final : public Element {
+  public:
+    ImageElement(const Element& original, const Isometry& transform);
+
+    const ElementType& type() const override { return original_->type(); }
+    std::size_t proxy_count() const override { return proxies_.size(); }
+    Proxy& proxy(std::size_t k) override;
+
+    const Element& original() const { return *original_; }
+    const Isometry& transform() const { return transform_; }
+
+  private:
+    using AnyProxy = std::variant<PointProxy, CircleProxy, ArcProxy, LineSegmentProxy, BezierProxy,
+                                  PolygonProxy>;
+    const Element* original_;
+    Isometry transform_;
+    std::vector<AnyProxy> proxies_;
+};
+
+// The element as an image, or null for a fundamental element.
+inline const ImageElement* as_image(const Element& e) {
+    return dynamic_cast<const ImageElement*>(&e);
+}
+// The fundamental element e stands for (e itself when it is one).
+inline const Element& original_of(const Element& e) {
+    const ImageElement* image = as_image(e);
+    return image ? image->original() : e;
+}
+
+}  // namespace acanthus::detail

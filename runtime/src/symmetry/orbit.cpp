@@ -1,0 +1,212 @@
+#include "symmetry/orbit.hpp"
+
+#include <cmath>
+#include <memory>
+
+#include "geometry/spatial_index.hpp"
+#include "proxy/overlap.hpp"
+#include "symmetry/image_element.hpp"
+
+namespace acanthus::detail {
+
+namespace {
+
+bool near(Point a, Point b, double tolerance) { return distance(a, b) <= tolerance; }
+
+bool same_angle(double a, double b, double tolerance) {
+    const double d = std::remainder(a - b, 2 * M_PI);
+    return std::abs(d) <= tolerance;
+}
+
+// A proxy of the given kind, for images of a lone proxy.
+struct AnyProxy {
+    PointProxy point;
+    CircleProxy circle;
+    ArcProxy arc;
+    LineSegmentProxy segment;
+    BezierProxy bezier;
+    PolygonProxy polygon;
+    Proxy& of(ProxyKind kind) {
+        switch (kind) {
+            case ProxyKind::point:
+                return point;
+            case ProxyKind::circle:
+                return circle;
+            case ProxyKind::arc:
+                return arc;
+            case ProxyKind::linesegment:
+                return segment;
+            case ProxyKind::bezier:
+                return bezier;
+            case ProxyKind::polygon:
+                return polygon;
+        }
+        return point;
+    }
+};
+
+bool overlaps_any(const Element& a, const Element& b, double tolerance) {
+    for (std::size_t i = 0; i < a.proxy_count(); ++i)
+        for (std::size_t j = 0; j < b.proxy_count(); ++j)
+            if (overlaps(a.proxy(i), b.proxy(j), tolerance)) return true;
+    return false;
+}
+
+bool leaves(const Element& e, const Region& region, double tolerance) {
+    for (std::size_t k = 0; k < e.proxy_count(); ++k)
+        if (leaves_region(e.proxy(k), region, tolerance)) return true;
+    return false;
+}
+
+}  // namespace
+
+bool same_place(const Proxy& a, const Proxy& b, double t) {
+    if (a.kind() != b.kind()) return false;
+    switch (a.kind()) {
+        case ProxyKind::point:
+            return near(static_cast<const PointProxy&>(a).point(),
+                        static_cast<const PointProxy&>(b).point(), t);
+        case ProxyKind::circle: {
+            const auto& p = static_cast<const CircleProxy&>(a);
+            const auto& q = static_cast<const CircleProxy&>(b);
+            return near(p.center, q.center, t) && std::abs(p.radius - q.radius) <= t;
+        }
+        case ProxyKind::arc: {
+            const auto& p = static_cast<const ArcProxy&>(a);
+            const auto& q = static_cast<const ArcProxy&>(b);
+            const double angle = t / std::max(p.radius, t);
+            return near(p.center, q.center, t) && std::abs(p.radius - q.radius) <= t &&
+                   same_angle(p.start, q.start, angle) &&
+                   std::abs((p.end - p.start) - (q.end - q.start)) <= angle;
+        }
+        case ProxyKind::linesegment: {
+            const auto& p = static_cast<const LineSegmentProxy&>(a);
+            const auto& q = static_cast<const LineSegmentProxy&>(b);
+            return (near(p.p0, q.p0, t) && near(p.p1, q.p1, t)) ||
+                   (near(p.p0, q.p1, t) && near(p.p1, q.p0, t));
+        }
+        case ProxyKind::bezier: {
+            const auto& p = static_cast<const BezierProxy&>(a);
+            const auto& q = static_cast<const BezierProxy&>(b);
+            bool forward = true, backward = true;
+            for (int k = 0; k < 4; ++k) {
+                forward = forward && near(p.c[k], q.c[k], t);
+                backward = backward && near(p.c[k], q.c[3 - k], t);
+            }
+            return forward || backward;
+        }
+        case ProxyKind::polygon: {
+            const auto& p = static_cast<const PolygonProxy&>(a).points;
+            const auto& q = static_cast<const PolygonProxy&>(b).points;
+            if (p.size() != q.size()) return false;
+            for (Point x : p) {
+                bool found = false;
+                for (Point y : q) found = found || near(x, y, t);
+                if (!found) return false;
+            }
+            return true;
+        }
+    }
+    return false;
+}
+
+bool same_place(const Element& a, const Element& b, double tolerance) {
+    if (a.proxy_count() != b.proxy_count()) return false;
+    for (std::size_t k = 0; k < a.proxy_count(); ++k)
+        if (!same_place(a.proxy(k), b.proxy(k), tolerance)) return false;
+    return true;
+}
+
+Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
+    std::vector<std::unique_ptr<ImageElement>> images;
+    std::vector<Isometry> transforms;
+    bool fixed = false;  // some image coincides with e
+    const auto& g = group.transforms();
+    for (std::size_t k = 1; k < g.size(); ++k) {
+        auto image = std::make_unique<ImageElement>(e, g[k]);
+        if (same_place(*image, e, tolerance)) {
+            fixed = true;
+            continue;
+        }
+        images.push_back(std::move(image));
+        transforms.push_back(g[k]);
+    }
+    Orbit out;
+    // g(e) = h(e) only when an image other than the identity's coincides with e: only then do
+    // the images repeat (once per coset of the stabilizer).
+    std::vector<const ImageElement*> kept;
+    for (std::size_t k = 0; k < images.size(); ++k) {
+        bool repeated = false;
+        if (fixed)
+            for (const ImageElement* other : kept)
+                repeated = repeated || same_place(*images[k], *other, tolerance);
+        if (repeated) continue;
+        kept.push_back(images[k].get());
+        out.images.push_back(transforms[k]);
+        if (out.clear && overlaps_any(*images[k], e, tolerance)) out.clear = false;
+    }
+    return out;
+}
+
+bool orbit_intersects(const Element& e, const SymmetryGroup& group, const Region& region,
+                      double tolerance) {
+    const Orbit orbit = orbit_of(e, group, tolerance);
+    if (!orbit.clear) return true;
+    for (const Isometry& g : orbit.images)
+        if (leaves(ImageElement(e, g), region, tolerance)) return true;
+    return false;
+}
+
+bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region& region,
+                      double tolerance) {
+    AnyProxy image;
+    Proxy& q = image.of(p.kind());
+    const auto& g = group.transforms();
+    for (std::size_t k = 1; k < g.size(); ++k) {
+        transform_proxy(p, g[k], q);
+        if (same_place(q, p, tolerance)) continue;
+        if (overlaps(q, p, tolerance) || leaves_region(q, region, tolerance)) return true;
+    }
+    return false;
+}
+
+std::vector<std::optional<Orbit>> placeable_orbits(const std::vector<const Element*>& batch,
+                                                   const SymmetryGroup& group, const Region& region,
+                                                   double tolerance) {
+    std::vector<std::optional<Orbit>> out;
+    out.reserve(batch.size());
+    SpatialIndex index;  // the images of the elements kept so far
+    std::vector<std::unique_ptr<ImageElement>> images;
+    for (const Element* e : batch) {
+        Orbit orbit = orbit_of(*e, group, tolerance);
+        bool ok = orbit.clear;
+        std::vector<std::unique_ptr<ImageElement>> mine;
+        for (std::size_t k = 0; ok && k < orbit.images.size(); ++k) {
+            mine.push_back(std::make_unique<ImageElement>(*e, orbit.images[k]));
+            ok = !leaves(*mine.back(), region, tolerance);
+        }
+        for (std::size_t k = 0; ok && k < e->proxy_count(); ++k) {
+            const Proxy& p = e->proxy(k);
+            ok = !index.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
+                return overlaps(p,
+                                images[static_cast<std::size_t>(en.element)]->proxy(
+                                    static_cast<std::size_t>(en.proxy)),
+                                tolerance);
+            });
+        }
+        if (!ok) {
+            out.emplace_back(std::nullopt);
+            continue;
+        }
+        for (auto& image : mine) {
+            const int id = static_cast<int>(images.size());
+            for (std::size_t k = 0; k < image->proxy_count(); ++k)
+                index.insert(id, static_cast<int>(k), image->proxy(k).bounds());
+            images.push_back(std::move(image));
+        }
+        out.emplace_back(std::move(orbit));
+    }
+    return out;
+}
+
+}  // namespace acanthus::detail

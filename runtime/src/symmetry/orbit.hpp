@@ -1,0 +1,45 @@
+// The images of an element under a symmetry group, and whether it may be placed with them: an
+// element on a mirror or the centre has fewer distinct images (those that coincide with it);
+// every other image must stay clear of it and inside the region (docs/symmetry.md).
+#pragma once
+
+#include <acanthus/element.hpp>
+#include <acanthus/region.hpp>
+#include <optional>
+#include <vector>
+
+#include "symmetry/isometry.hpp"
+#include "symmetry/symmetry_group.hpp"
+
+namespace acanthus::detail {
+
+// True when the two proxies are the same shape in the same place, within `tolerance` (a
+// segment or a curve may run the other way, a polygon start at another corner).
+bool same_place(const Proxy& a, const Proxy& b, double tolerance);
+// The same for every proxy of two elements of the same type, in order.
+bool same_place(const Element& a, const Element& b, double tolerance);
+
+struct Orbit {
+    // The transformations giving the element's distinct images other than itself.
+    std::vector<Isometry> images;
+    // False when an image that does not coincide with the element overlaps it.
+    bool clear = true;
+};
+Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance);
+
+// True when an image of the element, or of the proxy, other than itself overlaps it or leaves
+// the region (touching within `tolerance` is not overlap).
+bool orbit_intersects(const Element& e, const SymmetryGroup& group, const Region& region,
+                      double tolerance);
+bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region& region,
+                      double tolerance);
+
+// The elements one rule success commits, in order: the orbit of each that may be placed, or
+// nothing for one whose images clash with it, leave the region, or overlap an element kept
+// before it or an image of one. (Elements overlapping each other, or placed ones, are the
+// rule's business, as without symmetry.)
+std::vector<std::optional<Orbit>> placeable_orbits(const std::vector<const Element*>& batch,
+                                                   const SymmetryGroup& group, const Region& region,
+                                                   double tolerance);
+
+}  // namespace acanthus::detail

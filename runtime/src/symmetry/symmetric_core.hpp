@@ -1,0 +1,26 @@
+// The part of the region that a symmetry can fill: the points whose every image lies in the
+// region (the whole region when the group maps it onto itself), and the fundamental domain on
+// the render buffer.
+#pragma once
+
+#include <acanthus/region.hpp>
+#include <cstdint>
+#include <vector>
+
+#include "field/raster_buffer.hpp"
+#include "symmetry/symmetry_group.hpp"
+
+namespace acanthus::detail {
+
+// Free pixels of the buffer an image of which may leave the region: made boundary obstacles,
+// the field keeps circles inside the core (conservatively, as the boundary's own pixels do).
+std::vector<int> pixels_outside_core(const RasterBuffer& raster, const SymmetryGroup& group);
+// One byte per pixel of the grid, non-zero where the pixel's centre lies in the fundamental
+// domain (widened by a pixel): where C may be centred.
+std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGroup& group);
+
+bool core_contains(const Region& region, const SymmetryGroup& group, Point p);
+// Distance from p, inside the core, to the core's boundary.
+double core_distance_to_boundary(const Region& region, const SymmetryGroup& group, Point p);
+
+}  // namespace acanthus::detail

@@ -1,0 +1,310 @@
+// Growth under a rosette group (docs/symmetry.md): the group and its fundamental domain, images
+// of proxies, orbits, and the grown ornament checked as the expert would: the element set is
+// invariant under the group, nothing overlaps anything (images included), every image lies in
+// the region, and the run is deterministic.
+#include <gtest/gtest.h>
+
+#include <acanthus/error.hpp>
+#include <acanthus/growth.hpp>
+#include <acanthus/region.hpp>
+#include <acanthus/symmetry.hpp>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "fixtures/growth_tree.hpp"
+#include "proxy/overlap.hpp"
+#include "symmetry/image_element.hpp"
+#include "symmetry/orbit.hpp"
+#include "symmetry/symmetry_group.hpp"
+
+using namespace acanthus;
+using namespace acanthus::detail;
+
+namespace {
+
+bool same_isometry(const Isometry& a, const Isometry& b) {
+    const auto x = a.matrix(), y = b.matrix();
+    for (int k = 0; k < 6; ++k)
+        if (std::abs(x[k] - y[k]) > 1e-9) return false;
+    return true;
+}
+
+SymmetryGroup group_of(const std::string& name, Point center = {0, 0}) {
+    return SymmetryGroup(Symmetry::parse(name), center);
+}
+
+}  // namespace
+
+TEST(Symmetry, ParsesCyclicAndDihedralGroups) {
+    EXPECT_EQ(Symmetry::parse("c6").name(), "c6");
+    EXPECT_EQ(Symmetry::parse("D8").name(), "d8");
+    EXPECT_EQ(Symmetry::parse("c1").order, 1);
+    EXPECT_EQ(Symmetry::parse("d360").kind, Symmetry::Kind::dihedral);
+    for (const char* bad : {"", "c", "d", "x6", "c0", "d0", "c-1", "c6.5", "c 6", "c361", "p4m",
+                            "6", "cc6", "c99999999999999999999"})
+        EXPECT_THROW(Symmetry::parse(bad), UsageError) << bad;
+    try {
+        Symmetry::parse("d0");
+        FAIL();
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("1 or more"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SymmetryGroup, IsClosedUnderCompositionAndInverse) {
+    for (const char* name : {"c1", "c2", "c5", "d1", "d2", "d6", "c12"}) {
+        const SymmetryGroup g = group_of(name, {3, -7});
+        const auto& t = g.transforms();
+        const std::size_t n = static_cast<std::size_t>(Symmetry::parse(name).order);
+        EXPECT_EQ(t.size(), name[0] == 'c' ? n : 2 * n) << name;
+        EXPECT_TRUE(same_isometry(t[0], Isometry{}));
+        auto member = [&](const Isometry& x) {
+            for (const Isometry& y : t)
+                if (same_isometry(x, y)) return true;
+            return false;
+        };
+        for (const Isometry& a : t) {
+            EXPECT_TRUE(member(a.inverse())) << name;
+            EXPECT_TRUE(same_isometry(a.then(a.inverse()), Isometry{}));
+            for (const Isometry& b : t) EXPECT_TRUE(member(a.then(b))) << name;
+            EXPECT_NEAR(distance(a.apply(g.center()), g.center()), 0, 1e-12);
+        }
+    }
+}
+
+// Each orbit of a point in general position meets the fundamental domain exactly once.
+TEST(SymmetryGroup, DomainHoldsOnePointOfEachOrbit) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-50, 50);
+    for (const char* name : {"c1", "c3", "c7", "d1", "d4", "d9"}) {
+        const SymmetryGroup g = group_of(name, {10, 20});
+        for (int n = 0; n < 500; ++n) {
+            const Point p{u(rng), u(rng)};
+            int inside = 0;
+            for (const Isometry& t : g.transforms()) inside += g.in_domain(t.apply(p), 0) ? 1 : 0;
+            EXPECT_EQ(inside, 1) << name << " at " << p.x << "," << p.y;
+        }
+    }
+}
+
+TEST(SymmetryGroup, SnapsOntoMirrorsAndTheCentre) {
+    const SymmetryGroup d4 = group_of("d4", {0, 0});
+    // The first mirror is vertical; the others every 45 degrees.
+    EXPECT_NEAR(d4.snap({0.3, -20}, 0.5).x, 0, 1e-12);
+    const Point diagonal = d4.snap({10.2, 10}, 0.5);
+    EXPECT_NEAR(diagonal.x, diagonal.y, 1e-12);
+    EXPECT_EQ(d4.snap({3, 9}, 0.5).x, 3);  // far from every mirror
+    const Point centre = group_of("c5", {4, 4}).snap({4.2, 3.9}, 0.5);
+    EXPECT_EQ(centre.x, 4);
+    EXPECT_EQ(centre.y, 4);
+    EXPECT_EQ(group_of("c5").snap({0.3, -20}, 0.5).x, 0.3);  // no mirrors in cN
+    // On a mirror a point is its own image; off it, the clearance is half the way to it.
+    EXPECT_TRUE(std::isinf(group_of("d1").clearance({0, 5}, 1e-9)));
+    EXPECT_NEAR(group_of("d1").clearance({2, 5}, 1e-9), 2, 1e-12);
+}
+
+// Distances are kept: the image of a proxy is as far from the image of a point as the proxy
+// is from the point, for every kind, rotations and reflections alike.
+TEST(ImageElement, ProxiesAreCarriedOverRigidly) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-30, 30);
+    CircleProxy circle;
+    circle.set({4, 5}, 3);
+    ArcProxy arc;
+    arc.set({-3, 2}, 6, 0.3, 2.2);
+    LineSegmentProxy segment;
+    segment.set({1, 1}, {9, -4});
+    BezierProxy bezier;
+    bezier.set({0, 0}, {5, 9}, {10, -3}, {14, 2});
+    PolygonProxy polygon;
+    polygon.set({{0, 0}, {8, 1}, {6, 7}, {1, 5}});
+    PointProxy point;
+    point.set({7, -2});
+    const std::vector<const Proxy*> proxies{&circle, &arc, &segment, &bezier, &polygon, &point};
+    const SymmetryGroup g = group_of("d5", {2, 3});
+    for (const Proxy* p : proxies) {
+        CircleProxy c2;
+        ArcProxy a2;
+        LineSegmentProxy s2;
+        BezierProxy b2;
+        PolygonProxy q2;
+        PointProxy p2;
+        Proxy* out = &p2;
+        switch (p->kind()) {
+            case ProxyKind::circle:
+                out = &c2;
+                break;
+            case ProxyKind::arc:
+                out = &a2;
+                break;
+            case ProxyKind::linesegment:
+                out = &s2;
+                break;
+            case ProxyKind::bezier:
+                out = &b2;
+                break;
+            case ProxyKind::polygon:
+                out = &q2;
+                break;
+            case ProxyKind::point:
+                break;
+        }
+        for (const Isometry& t : g.transforms()) {
+            transform_proxy(*p, t, *out);
+            for (int n = 0; n < 40; ++n) {
+                const Point q{u(rng), u(rng)};
+                EXPECT_NEAR(distance_to(*out, t.apply(q)), distance_to(*p, q), 1e-9)
+                    << to_string(p->kind()) << (t.reverses() ? " reflected" : " rotated");
+            }
+        }
+    }
+}
+
+TEST(Orbit, ElementsOnTheCentreOrAMirrorHaveFewerImages) {
+    ::dots::dot on_centre, on_mirror, off, big;
+    static_cast<CircleProxy&>(on_centre.proxy(0)).set({0, 0}, 5);
+    static_cast<CircleProxy&>(on_mirror.proxy(0)).set({0, -20}, 2);
+    static_cast<CircleProxy&>(off.proxy(0)).set({5, -20}, 2);
+    static_cast<CircleProxy&>(big.proxy(0)).set({5, -20}, 8);
+    const SymmetryGroup d4 = group_of("d4");
+    const double tol = 1e-9;
+    EXPECT_TRUE(orbit_of(on_centre, d4, tol).images.empty());
+    EXPECT_TRUE(orbit_of(on_centre, d4, tol).clear);
+    EXPECT_EQ(orbit_of(on_mirror, d4, tol).images.size(), 3u);  // 8 / 2 - 1
+    EXPECT_EQ(orbit_of(off, d4, tol).images.size(), 7u);
+    EXPECT_TRUE(orbit_of(off, d4, tol).clear);
+    EXPECT_FALSE(orbit_of(big, d4, tol).clear);  // overlaps its mirror image
+    EXPECT_TRUE(orbit_intersects(big, d4, Region::from_spec("circle:100"), tol) ||
+                !orbit_of(big, d4, tol).clear);
+}
+
+namespace {
+
+struct Grown {
+    std::vector<std::unique_ptr<GrowthEngine>> keep;
+    std::vector<const Element*> elements;
+};
+
+// The expert's rules for an ornament grown under a group: every image of every element is an
+// element of the same type (to 1e-6 of the panel size), no two elements overlap, every element
+// lies in the region, images name their original and are sterile.
+void expect_symmetric_ornament(const std::vector<const Element*>& elements,
+                               const SymmetryGroup& group, const Region& region,
+                               const std::string& what) {
+    const Rect b = region.bounds();
+    const double size = std::max(b.width(), b.height());
+    const double tol = 1e-6 * size;
+    std::size_t images = 0;
+    for (const Element* e : elements) {
+        if (const ImageElement* image = as_image(*e)) {
+            ++images;
+            EXPECT_TRUE(e->sterile) << what;
+            EXPECT_FALSE(as_image(image->original())) << what;
+            EXPECT_LT(image->original().id, e->id) << what;
+        }
+        for (const Isometry& g : group.transforms()) {
+            const ImageElement image(*e, g);
+            bool found = false;
+            for (const Element* f : elements)
+                if (&f->type() == &e->type() && same_place(image, *f, tol)) {
+                    found = true;
+                    break;
+                }
+            ASSERT_TRUE(found) << what << ": an image of element " << e->id << " is missing";
+        }
+        for (std::size_t k = 0; k < e->proxy_count(); ++k)
+            ASSERT_FALSE(leaves_region(e->proxy(k), region, tol))
+                << what << ": element " << e->id << " leaves the region";
+    }
+    if (group.size() > 1) {
+        EXPECT_GT(images, 0u) << what;
+    }
+    // Seeds are markers under the first dot (as without symmetry): the dots must not overlap.
+    for (std::size_t i = 0; i < elements.size(); ++i)
+        for (std::size_t j = i + 1; j < elements.size(); ++j)
+            if (elements[i]->type().name != "seed" && elements[j]->type().name != "seed") {
+                for (std::size_t p = 0; p < elements[i]->proxy_count(); ++p)
+                    for (std::size_t q = 0; q < elements[j]->proxy_count(); ++q)
+                        ASSERT_FALSE(overlaps(elements[i]->proxy(p), elements[j]->proxy(q), tol))
+                            << what << ": elements " << elements[i]->id << " and "
+                            << elements[j]->id << " overlap";
+            }
+}
+
+struct Case {
+    std::string region;
+    std::string group;
+    std::optional<Point> center;
+};
+
+}  // namespace
+
+class SymmetricGrowth : public ::testing::TestWithParam<Case> {};
+
+TEST_P(SymmetricGrowth, OrnamentIsInvariantAndFreeOfOverlap) {
+    const Case& c = GetParam();
+    const Region region = test::region_named(c.region);
+    GrowthOptions o = test::small_options();
+    o.resolution = 160;
+    o.symmetry = Symmetry::parse(c.group);
+    o.symmetry->center = c.center;
+    ::dots::dot_count = 0;
+    const Pattern pattern = ::dots::pattern();
+    GrowthEngine engine(pattern, region, o);
+    engine.run();
+    const auto elements = engine.elements();
+    ASSERT_GT(elements.size(), 60u) << engine.stats().iterations << " iterations";
+    EXPECT_EQ(engine.stats().stop_reason, "exhausted");
+    const Point center =
+        c.center ? *c.center : region.largest_inscribed_circle(engine.grid().pixel / 4).center;
+    const SymmetryGroup group(*o.symmetry, center);
+    expect_symmetric_ornament(elements, group, region, c.region + " " + c.group);
+
+    // The same seed grows the same ornament.
+    ::dots::dot_count = 0;
+    GrowthEngine again(pattern, region, o);
+    again.run();
+    EXPECT_EQ(test::snapshot(again), test::snapshot(engine));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Rosettes, SymmetricGrowth,
+    ::testing::Values(Case{"circle:50", "d8", {}}, Case{"circle:50", "c5", {}},
+                      Case{"circle:50", "c1", {}}, Case{"rect:120,80", "d2", {}},
+                      Case{"rect:120,80", "c3", Point{50, 45}}, Case{"hole", "d4", Point{50, 40}},
+                      Case{"ellipse:60,40", "d1", {}}, Case{"circle:50", "c12", {}}),
+    [](const auto& info) {
+        std::string name = info.param.region + "_" + info.param.group;
+        for (char& ch : name)
+            if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+        return name;
+    });
+
+TEST(SymmetricGrowth, ReferenceEngineGrowsTheSameOrnament) {
+    const Region region = Region::from_spec("circle:40");
+    GrowthOptions o = test::small_options();
+    o.symmetry = Symmetry::parse("d6");
+    const auto fast = test::grow(::dots::pattern(), region, o);
+    o.reference_engine = true;
+    EXPECT_EQ(test::grow(::dots::pattern(), region, o), fast);
+}
+
+TEST(SymmetricGrowth, SeedWhoseImagesLeaveTheRegionIsRefused) {
+    const Region region = Region::from_spec("rect:100,60");
+    GrowthOptions o = test::small_options();
+    o.symmetry = Symmetry::parse("c4");
+    o.symmetry->center = Point{150, 30};
+    o.symmetry->center = Point{50, 30};
+    o.seeds = {Point{5, 5}};  // inside the rectangle, but its quarter turns are not
+    const Pattern pattern = ::dots::pattern();
+    GrowthEngine engine(pattern, region, o);
+    try {
+        engine.run();
+        FAIL() << "a seed whose images leave the region was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("image"), std::string::npos) << e.what();
+    }
+}
