@@ -101,6 +101,8 @@ struct GrowthEngine::Impl {
     void iterate(const Circle& goal);
     bool commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
     std::vector<Circle> rule_goals(const Circle& goal) const;
+    bool second_seed();
+    bool tried_second_seed = false;
     // C's centre and its distinct images (C's centre alone without symmetry).
     std::vector<Point> orbit_of_point(Point p) const;
     void sync_exclude_clears();
@@ -150,24 +152,52 @@ std::unique_ptr<SymmetryGroup> GrowthEngine::Impl::make_group() const {
     return std::make_unique<SymmetryGroup>(*options.symmetry, center);
 }
 
-// The circles a rule is offered in turn under symmetry, each inside C (so as empty) and clear
-// of its own images: C itself and (dN) C's largest circle centred on the nearest mirror, then
-// both halved again and again down to the minimum radius (at most 8 times). Children that clash
-// with their images on one try the next.
+// The circles a rule is offered in turn under symmetry, each inside C (so as empty): C itself
+// and (dN) C's largest circle centred on the nearest mirror; then both shrunk to clear their own
+// images, and halved again and again down to the minimum radius (at most 8 times). Children
+// that clash with their images on one (or a rule that failed because intersection() found such
+// a clash) try the next.
 std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal) const {
     const double tol = ornament.tolerance();
     std::vector<Circle> bases{goal};
     const Point on_mirror = group->snap(goal.center, goal.radius);
     const double moved = distance(on_mirror, goal.center);
     if (moved > tol && moved < goal.radius) bases.push_back({on_mirror, goal.radius - moved});
-    for (Circle& c : bases) c.radius = std::min(c.radius, group->clearance(c.center, tol));
-    std::vector<Circle> out;
+    std::vector<Circle> out = bases;
     double scale = 1;
     for (int halvings = 0; halvings <= 8; ++halvings, scale /= 2)
-        for (const Circle& c : bases)
-            if (halvings == 0 || c.radius * scale >= min_radius)
-                out.push_back({c.center, c.radius * scale});
+        for (const Circle& c : bases) {
+            const double r = std::min(c.radius, group->clearance(c.center, tol)) * scale;
+            if (r < c.radius && (halvings == 0 || r >= min_radius)) out.push_back({c.center, r});
+        }
     return out;
+}
+
+// A pattern whose first element leaves the centre along a curve (a vine, a stem) cannot grow
+// from a seed on the centre of a dN rosette: every curve crosses a mirror. When growth from the
+// default seed ends with nothing beyond the seed's own children, a second seed goes inside the
+// fundamental domain, on its bisector half way to the core's boundary, with its images.
+bool GrowthEngine::Impl::second_seed() {
+    if (!group || tried_second_seed || !options.seeds.empty()) return false;
+    tried_second_seed = true;
+    for (const Element* e : ornament.view())
+        if (e->depth > 1) return false;
+    const auto edges = group->domain_edges(1);
+    if (edges.empty()) return false;
+    const Point c = group->center();
+    const Vector bisector = (edges[0].second - c) + (edges[1].second - c);
+    if (bisector.length() < 1e-9) return false;
+    const double reach = core_distance_to_boundary(region, *group, c);
+    const Point s = c + bisector.normalized() * (reach / 2);
+    if (!core_contains(region, *group, s)) return false;
+    std::unique_ptr<Element> e(pattern.seed->create());
+    static_cast<PointProxy&>(e->proxy(0)).set(s);
+    std::vector<std::unique_ptr<Element>> one;
+    one.push_back(std::move(e));
+    if (!commit(std::move(one), nullptr)) return false;
+    exclude.clear();
+    sync_exclude_clears();
+    return true;
 }
 
 std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
@@ -432,6 +462,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
             for (const Circle& tried : tries) {
                 if (parent->sterile) break;
                 env.set_goal(tried);
+                const long refusals = env.orbit_refusals();
                 Result result = FAILURE;
                 std::vector<std::unique_ptr<Element>> children;
                 {
@@ -441,8 +472,9 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                     if (result == SUCCESS) children = call.take_children();
                 }
                 sync_exclude_clears();
-                if (result != SUCCESS) break;
-                if (commit(std::move(children), parent)) {
+                // A failure the element's own images did not cause is the rule's answer.
+                if (result != SUCCESS && env.orbit_refusals() == refusals) break;
+                if (result == SUCCESS && commit(std::move(children), parent)) {
                     success = true;
                     break;
                 }
@@ -491,6 +523,7 @@ void GrowthEngine::Impl::grow() {
             break;
         }
         std::optional<Circle> goal = find_goal();
+        if (!goal && second_seed()) continue;
         if (!goal) {
             stats.stop_reason = "exhausted";
             if (call_exhausted() != CONTINUE) break;
