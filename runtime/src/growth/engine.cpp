@@ -103,6 +103,7 @@ struct GrowthEngine::Impl {
     std::vector<Circle> rule_goals(const Circle& goal) const;
     bool second_seed();
     bool tried_second_seed = false;
+    EmptyCircle goal_found;  // the circle find_goal() refined last
     // C's centre and its distinct images (C's centre alone without symmetry).
     std::vector<Point> orbit_of_point(Point p) const;
     void sync_exclude_clears();
@@ -221,7 +222,10 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     if (group) {
         std::vector<const Element*> batch;
         for (const auto& child : children) batch.push_back(child.get());
-        auto placeable = placeable_orbits(batch, *group, region, ornament.tolerance());
+        auto placeable =
+            placeable_orbits(batch, *group, region, ornament.tolerance(), [&](const Proxy& p) {
+                return ornament.overlaps_any(p, [](const Element& e) { return as_image(e); });
+            });
         std::vector<std::unique_ptr<Element>> kept;
         for (std::size_t k = 0; k < children.size(); ++k) {
             if (!placeable[k]) continue;
@@ -368,7 +372,10 @@ std::optional<Circle> GrowthEngine::Impl::find_goal() {
     for (;;) {
         const std::optional<EmptyCircle> found = find();
         if (!found) return std::nullopt;
-        if (const std::optional<Circle> goal = refine(*found)) return goal;
+        if (const std::optional<Circle> goal = refine(*found)) {
+            goal_found = *found;
+            return goal;
+        }
         circles->discard(*found);
     }
 }
@@ -447,6 +454,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
 
     const std::size_t before = ornament.size();
     bool success = false;
+    bool clashed = false;  // some rule's children clashed with their own images
     for (std::size_t n = 0; n < parents.size(); ++n) {
         Element* parent = parents[n];
         const auto rules = rules_by_parent.find(&parent->type());
@@ -478,6 +486,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                     success = true;
                     break;
                 }
+                clashed = true;
             }
             if (success) {
                 ++stats.rules[static_cast<std::size_t>(r)].successes;
@@ -493,6 +502,11 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         std::vector<int> removed;
         for (Point p : orbit_of_point(goal.center)) exclude.remove_within(p, epsilon, &removed);
         circles->release(removed);
+    } else if (clashed) {
+        // The rules would place something here, only not clear of its images: this circle is
+        // dropped (until its distance changes), its neighbours stay open. An exclude point
+        // would close the whole neighbourhood, in a narrow domain all of it.
+        circles->discard(goal_found);
     } else {
         for (Point p : orbit_of_point(goal.center)) exclude.add(p);
     }

@@ -170,9 +170,9 @@ bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region& 
     return false;
 }
 
-std::vector<std::optional<Orbit>> placeable_orbits(const std::vector<const Element*>& batch,
-                                                   const SymmetryGroup& group, const Region& region,
-                                                   double tolerance) {
+std::vector<std::optional<Orbit>> placeable_orbits(
+    const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region& region,
+    double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image) {
     std::vector<std::optional<Orbit>> out;
     out.reserve(batch.size());
     SpatialIndex index;  // the images of the elements kept so far
@@ -187,6 +187,10 @@ std::vector<std::optional<Orbit>> placeable_orbits(const std::vector<const Eleme
         }
         for (std::size_t k = 0; ok && k < e->proxy_count(); ++k) {
             const Proxy& p = e->proxy(k);
+            if (hits_placed_image(p)) {
+                ok = false;
+                break;
+            }
             ok = !index.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
                 return overlaps(p,
                                 images[static_cast<std::size_t>(en.element)]->proxy(
