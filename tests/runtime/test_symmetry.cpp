@@ -177,8 +177,13 @@ TEST(Orbit, ElementsOnTheCentreOrAMirrorHaveFewerImages) {
     EXPECT_EQ(orbit_of(off, d4, tol).images.size(), 7u);
     EXPECT_TRUE(orbit_of(off, d4, tol).clear);
     EXPECT_FALSE(orbit_of(big, d4, tol).clear);  // overlaps its mirror image
-    EXPECT_TRUE(orbit_intersects(big, d4, Region::from_spec("circle:100"), tol) ||
-                !orbit_of(big, d4, tol).clear);
+    // In a disc of radius 100 about (100, 100): clear about its centre, not about another point.
+    const Region disc = Region::from_spec("circle:100");
+    ::dots::dot inside;
+    static_cast<CircleProxy&>(inside.proxy(0)).set({105, 80}, 2);
+    EXPECT_FALSE(orbit_intersects(inside, group_of("d4", {100, 100}), &disc, tol));
+    EXPECT_TRUE(orbit_intersects(inside, group_of("d4", {180, 100}), &disc, tol));
+    EXPECT_TRUE(orbit_intersects(big, d4, nullptr, tol));  // overlaps its mirror image
 }
 
 namespace {

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -74,8 +75,11 @@ struct GrowthEngine::Impl {
           group(make_group()),
           circles(make_source()),
           ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
-          env(region, ornament, exclude, options.rng_seed, group.get()) {
-        if (group) raster.add_boundary(pixels_outside_core(raster, *group));
+          env(region, ornament, exclude, options.rng_seed, group.get(), &core_region) {
+        if (group && !maps_onto_itself(region, *group, raster.grid().pixel / 4)) {
+            raster.add_boundary(pixels_outside_core(raster, *group));
+            core_region = &region;  // images may leave it
+        }
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
@@ -84,7 +88,12 @@ struct GrowthEngine::Impl {
     std::unique_ptr<SymmetryGroup> make_group() const;
     std::unique_ptr<CircleSource> make_source() const {
         CircleSourceOptions o{options.distance, min_radius, options.lazy_field_pixels, {}};
-        if (group) o.centres = domain_pixels(raster.grid(), *group);
+        if (group) {
+            o.centres = domain_pixels(raster.grid(), *group);
+            // Each placement comes with images all over the grid: the lazy field, which gains
+            // by placements being local, measured 1.6 to 2.9 times slower per element here.
+            o.lazy_field_pixels = std::numeric_limits<long long>::max();
+        }
         return options.reference_engine ? reference_circle_source(raster, o)
                                         : incremental_circle_source(raster, o);
     }
@@ -116,6 +125,8 @@ struct GrowthEngine::Impl {
     double epsilon;
     double min_radius;
     std::unique_ptr<SymmetryGroup> group;  // null without --symmetry
+    // The region when an image may leave it; null when the group maps it onto itself.
+    const Region* core_region = nullptr;
     std::unique_ptr<CircleSource> circles;
     ExcludeList exclude;
     Ornament ornament;
@@ -223,7 +234,7 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
         std::vector<const Element*> batch;
         for (const auto& child : children) batch.push_back(child.get());
         auto placeable =
-            placeable_orbits(batch, *group, region, ornament.tolerance(), [&](const Proxy& p) {
+            placeable_orbits(batch, *group, core_region, ornament.tolerance(), [&](const Proxy& p) {
                 return ornament.overlaps_any(p, [](const Element& e) { return as_image(e); });
             });
         std::vector<std::unique_ptr<Element>> kept;

@@ -18,12 +18,14 @@ namespace acanthus::detail {
 class GrowthEnvironment : public Environment {
   public:
     GrowthEnvironment(const Region& region, const Ornament& ornament, ExcludeList& exclude,
-                      std::uint64_t rng_seed, const SymmetryGroup* group = nullptr)
+                      std::uint64_t rng_seed, const SymmetryGroup* group = nullptr,
+                      const Region* const* core_region = nullptr)
         : region_(region),
           ornament_(ornament),
           exclude_(exclude),
           random_(rng_seed),
-          group_(group) {}
+          group_(group),
+          core_region_(core_region) {}
 
     void set_goal(Circle c) { goal_ = c; }
 
@@ -32,11 +34,13 @@ class GrowthEnvironment : public Environment {
     // when one of its own images overlaps it or leaves the region: the region is its core.
     bool intersects(const Element& e) const override {
         if (ornament_.intersects(e)) return true;
-        return group_ && count_orbit(orbit_intersects(e, *group_, region_, ornament_.tolerance()));
+        return group_ &&
+               count_orbit(orbit_intersects(e, *group_, *core_region_, ornament_.tolerance()));
     }
     bool intersects(const Proxy& p) const override {
         if (ornament_.intersects(p)) return true;
-        return group_ && count_orbit(orbit_intersects(p, *group_, region_, ornament_.tolerance()));
+        return group_ &&
+               count_orbit(orbit_intersects(p, *group_, *core_region_, ornament_.tolerance()));
     }
     // How many times intersection() said yes only because of the element's own images: a rule
     // that failed so may fit a smaller circle (GrowthEngine tries one).
@@ -63,6 +67,7 @@ class GrowthEnvironment : public Environment {
     ExcludeList& exclude_;
     Random random_;
     const SymmetryGroup* group_;
+    const Region* const* core_region_;  // the engine's: null when images never leave R
     mutable long orbit_refusals_ = 0;
     bool count_orbit(bool refused) const {
         if (refused) ++orbit_refusals_;
