@@ -10,11 +10,13 @@
 #include <acanthus/symmetry.hpp>
 #include <cmath>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "fixtures/growth_tree.hpp"
+#include "program/tree_json.hpp"
 #include "proxy/overlap.hpp"
 #include "symmetry/image_element.hpp"
 #include "symmetry/orbit.hpp"
@@ -177,8 +179,13 @@ TEST(Orbit, ElementsOnTheCentreOrAMirrorHaveFewerImages) {
     EXPECT_EQ(orbit_of(off, d4, tol).images.size(), 7u);
     EXPECT_TRUE(orbit_of(off, d4, tol).clear);
     EXPECT_FALSE(orbit_of(big, d4, tol).clear);  // overlaps its mirror image
-    EXPECT_TRUE(orbit_intersects(big, d4, Region::from_spec("circle:100"), tol) ||
-                !orbit_of(big, d4, tol).clear);
+    // In a disc of radius 100 about (100, 100): clear about its centre, not about another point.
+    const Region disc = Region::from_spec("circle:100");
+    ::dots::dot inside;
+    static_cast<CircleProxy&>(inside.proxy(0)).set({105, 80}, 2);
+    EXPECT_FALSE(orbit_intersects(inside, group_of("d4", {100, 100}), &disc, tol));
+    EXPECT_TRUE(orbit_intersects(inside, group_of("d4", {180, 100}), &disc, tol));
+    EXPECT_TRUE(orbit_intersects(big, d4, nullptr, tol));  // overlaps its mirror image
 }
 
 namespace {
@@ -307,4 +314,41 @@ TEST(SymmetricGrowth, SeedWhoseImagesLeaveTheRegionIsRefused) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("image"), std::string::npos) << e.what();
     }
+}
+
+// The debug frame carries the fundamental domain's edges; --json marks every image with its
+// original and the transformation that carries the original onto it.
+TEST(SymmetricGrowth, DebugFrameAndJsonShowTheImages) {
+    const Region region = Region::from_spec("circle:40");
+    GrowthOptions o = test::small_options();
+    o.symmetry = Symmetry::parse("d6");
+    ::dots::dot_count = 0;
+    const Pattern pattern = ::dots::pattern();
+    GrowthEngine engine(pattern, region, o);
+    std::size_t edges = 0, images_seen = 0;
+    engine.on_debug_frame(6, [&](const DebugFrame& frame) {
+        edges = frame.domain.size();
+        for (const Element* e : frame.placed) images_seen += as_image(*e) ? 1 : 0;
+    });
+    engine.run();
+    EXPECT_EQ(edges, 2u);
+    EXPECT_GT(images_seen, 0u);
+
+    const auto elements = engine.elements();
+    const auto tree = nlohmann::json::parse(tree_json(region, elements));
+    std::size_t marked = 0;
+    for (const auto& j : tree.at("elements")) {
+        const Element& e = *elements.at(j.at("id").get<std::size_t>());
+        ASSERT_EQ(j.contains("image_of"), as_image(e) != nullptr);
+        if (!j.contains("image_of")) continue;
+        ++marked;
+        const Element& original = *elements.at(j.at("image_of").get<std::size_t>());
+        const auto& m = j.at("transform");
+        const Isometry t{m[0], m[1], m[2], m[3], m[4], m[5]};
+        if (e.type().name != "dot") continue;
+        const Point c = static_cast<const CircleProxy&>(original.proxy(0)).center;
+        const Point image = static_cast<const CircleProxy&>(e.proxy(0)).center;
+        EXPECT_NEAR(distance(t.apply(c), image), 0, 1e-9);
+    }
+    EXPECT_GT(marked, 0u);
 }

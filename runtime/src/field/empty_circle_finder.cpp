@@ -45,6 +45,20 @@ EmptyCircleFinder::EmptyCircleFinder(DistanceField& field, const GridFrame& grid
     }
 }
 
+void EmptyCircleFinder::set_centres(std::vector<std::uint8_t> allowed) {
+    centres_ = std::move(allowed);
+    block_centres_.clear();
+    if (centres_.empty()) return;
+    // Blocks of 8 x 8 tiles, numbered as PendingBlocks numbers them.
+    block_centres_.assign(deferred_.size(), 0);
+    for (std::size_t p = 0; p < centres_.size(); ++p) {
+        if (!centres_[p]) continue;
+        const int t = tile_of(static_cast<int>(p));
+        const int ti = t % tiles_w_, tj = t / tiles_w_;
+        block_centres_[static_cast<std::size_t>((tj >> 3) * blocks_w_ + (ti >> 3))] = 1;
+    }
+}
+
 double EmptyCircleFinder::radius_pixels(std::int64_t d2) const {
     const double d = std::sqrt(static_cast<double>(d2));
     // The nearest obstacle pixel centre at city-block distance d is at least d / sqrt 2 away.
@@ -271,7 +285,7 @@ void EmptyCircleFinder::distrust_new_blocks() {
     for (int b : far.raised()) {
         // Settling the block changes only candidates of squared distance up to its reach; the
         // low word names the block.
-        if (!far.trusted(b) && far.reach(b) >= min_d2_)
+        if (!far.trusted(b) && far.reach(b) >= min_d2_ && block_may_centre(b))
             blocks_.set(static_cast<std::size_t>(b), key_of(b, far.reach(b)));
     }
     far.clear_raised();
@@ -282,7 +296,7 @@ void EmptyCircleFinder::tighten(int block, std::int64_t threshold) {
     field_.tighten(block, threshold, &settled_);
     const PendingBlocks& far = field_.far_blocks();
     // A block whose reach is below the smallest candidate's distance can hold none.
-    const bool none = far.trusted(block) || far.reach(block) < min_d2_;
+    const bool none = far.trusted(block) || far.reach(block) < min_d2_ || !block_may_centre(block);
     blocks_.set(static_cast<std::size_t>(block), none ? 0 : key_of(block, far.reach(block)));
     update(settled_);
 }

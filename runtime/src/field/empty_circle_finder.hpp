@@ -32,7 +32,7 @@ class EmptyCircleFinder {
 
     // Pixels that may centre a circle (one byte each, non-zero: may); empty, the default: every
     // pixel. A symmetry's fundamental domain (symmetry/). Set before the first search.
-    void set_centres(std::vector<std::uint8_t> allowed) { centres_ = std::move(allowed); }
+    void set_centres(std::vector<std::uint8_t> allowed);
     bool may_centre(int pixel) const {
         return centres_.empty() || centres_[static_cast<std::size_t>(pixel)] != 0;
     }
@@ -154,6 +154,12 @@ class EmptyCircleFinder {
     bool manhattan_;
     std::int64_t min_d2_ = 1;            // smallest d2 whose radius is at least min_radius_
     std::vector<std::uint8_t> centres_;  // set_centres()
+    // Per lazy-field block, whether a pixel of it may centre a circle (all, without centres_):
+    // a block that may not is never tightened for a candidate.
+    std::vector<std::uint8_t> block_centres_;
+    bool block_may_centre(int block) const {
+        return block_centres_.empty() || block_centres_[static_cast<std::size_t>(block)] != 0;
+    }
     int tiles_w_ = 0, tiles_h_ = 0, blocks_w_ = 0;
     int offsets_[4] = {};  // pixel index steps along the four lines of the crest test
 

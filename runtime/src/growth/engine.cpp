@@ -45,6 +45,8 @@ constexpr int kMaxFruitlessRounds = 16;
 // Candidate pixels a debug frame looks at (every one, in practice), before distinct_circles.
 constexpr std::size_t kDebugCandidates = 1'000'000;
 constexpr long kProgressEvery = 1000;
+// Under symmetry, commits of up to this many elements enter the field image by image.
+constexpr std::size_t kOneByOne = 16;
 
 std::string format_number(double v) {
     char buf[64];
@@ -74,8 +76,11 @@ struct GrowthEngine::Impl {
           group(make_group()),
           circles(make_source()),
           ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
-          env(region, ornament, exclude, options.rng_seed, group.get()) {
-        if (group) raster.add_boundary(pixels_outside_core(raster, *group));
+          env(region, ornament, exclude, options.rng_seed, group.get(), &core_region) {
+        if (group && !maps_onto_itself(region, *group, raster.grid().pixel / 4)) {
+            raster.add_boundary(pixels_outside_core(raster, *group));
+            core_region = &region;  // images may leave it
+        }
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
@@ -101,6 +106,9 @@ struct GrowthEngine::Impl {
     void iterate(const Circle& goal);
     bool commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
     std::vector<Circle> rule_goals(const Circle& goal) const;
+    bool second_seed();
+    bool tried_second_seed = false;
+    EmptyCircle goal_found;  // the circle find_goal() refined last
     // C's centre and its distinct images (C's centre alone without symmetry).
     std::vector<Point> orbit_of_point(Point p) const;
     void sync_exclude_clears();
@@ -113,6 +121,8 @@ struct GrowthEngine::Impl {
     double epsilon;
     double min_radius;
     std::unique_ptr<SymmetryGroup> group;  // null without --symmetry
+    // The region when an image may leave it; null when the group maps it onto itself.
+    const Region* core_region = nullptr;
     std::unique_ptr<CircleSource> circles;
     ExcludeList exclude;
     Ornament ornament;
@@ -150,24 +160,52 @@ std::unique_ptr<SymmetryGroup> GrowthEngine::Impl::make_group() const {
     return std::make_unique<SymmetryGroup>(*options.symmetry, center);
 }
 
-// The circles a rule is offered in turn under symmetry, each inside C (so as empty) and clear
-// of its own images: C itself and (dN) C's largest circle centred on the nearest mirror, then
-// both halved again and again down to the minimum radius (at most 8 times). Children that clash
-// with their images on one try the next.
+// The circles a rule is offered in turn under symmetry, each inside C (so as empty): C itself
+// and (dN) C's largest circle centred on the nearest mirror; then both shrunk to clear their own
+// images, and halved again and again down to the minimum radius (at most 8 times). Children
+// that clash with their images on one (or a rule that failed because intersection() found such
+// a clash) try the next.
 std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal) const {
     const double tol = ornament.tolerance();
     std::vector<Circle> bases{goal};
     const Point on_mirror = group->snap(goal.center, goal.radius);
     const double moved = distance(on_mirror, goal.center);
     if (moved > tol && moved < goal.radius) bases.push_back({on_mirror, goal.radius - moved});
-    for (Circle& c : bases) c.radius = std::min(c.radius, group->clearance(c.center, tol));
-    std::vector<Circle> out;
+    std::vector<Circle> out = bases;
     double scale = 1;
     for (int halvings = 0; halvings <= 8; ++halvings, scale /= 2)
-        for (const Circle& c : bases)
-            if (halvings == 0 || c.radius * scale >= min_radius)
-                out.push_back({c.center, c.radius * scale});
+        for (const Circle& c : bases) {
+            const double r = std::min(c.radius, group->clearance(c.center, tol)) * scale;
+            if (r < c.radius && (halvings == 0 || r >= min_radius)) out.push_back({c.center, r});
+        }
     return out;
+}
+
+// A pattern whose first element leaves the centre along a curve (a vine, a stem) cannot grow
+// from a seed on the centre of a dN rosette: every curve crosses a mirror. When growth from the
+// default seed ends with nothing beyond the seed's own children, a second seed goes inside the
+// fundamental domain, on its bisector half way to the core's boundary, with its images.
+bool GrowthEngine::Impl::second_seed() {
+    if (!group || tried_second_seed || !options.seeds.empty()) return false;
+    tried_second_seed = true;
+    for (const Element* e : ornament.view())
+        if (e->depth > 1) return false;
+    const auto edges = group->domain_edges(1);
+    if (edges.empty()) return false;
+    const Point c = group->center();
+    const Vector bisector = (edges[0].second - c) + (edges[1].second - c);
+    if (bisector.length() < 1e-9) return false;
+    const double reach = core_distance_to_boundary(region, *group, c);
+    const Point s = c + bisector.normalized() * (reach / 2);
+    if (!core_contains(region, *group, s)) return false;
+    std::unique_ptr<Element> e(pattern.seed->create());
+    static_cast<PointProxy&>(e->proxy(0)).set(s);
+    std::vector<std::unique_ptr<Element>> one;
+    one.push_back(std::move(e));
+    if (!commit(std::move(one), nullptr)) return false;
+    exclude.clear();
+    sync_exclude_clears();
+    return true;
 }
 
 std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
@@ -191,7 +229,10 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     if (group) {
         std::vector<const Element*> batch;
         for (const auto& child : children) batch.push_back(child.get());
-        auto placeable = placeable_orbits(batch, *group, region, ornament.tolerance());
+        auto placeable =
+            placeable_orbits(batch, *group, core_region, ornament.tolerance(), [&](const Proxy& p) {
+                return ornament.overlaps_any(p, [](const Element& e) { return as_image(e); });
+            });
         std::vector<std::unique_ptr<Element>> kept;
         for (std::size_t k = 0; k < children.size(); ++k) {
             if (!placeable[k]) continue;
@@ -211,12 +252,20 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
         for (const Isometry& g : orbits[k].images)
             children.push_back(std::make_unique<ImageElement>(*children[k], g));
     const std::size_t placed = children.size();
+    // A few elements and their images lie all over the grid: the field takes them one at a
+    // time, each a local update, not as one placement spanning the grid (a bulk placement of a
+    // library still goes in one).
+    const bool one_by_one = group && placed > count && count <= kOneByOne;
     for (Element* e : ornament.add_all(std::move(children))) {
         raster.add_element(*e, fresh);
         if (can_parent(*e)) ++parents_left;
+        if (one_by_one) {
+            circles->add_sites(fresh, 1);
+            fresh.clear();
+        }
     }
     if (parent) parent->children += static_cast<int>(count);
-    circles->add_sites(fresh, placed);
+    if (!one_by_one) circles->add_sites(fresh, placed);
     return true;
 }
 
@@ -338,7 +387,10 @@ std::optional<Circle> GrowthEngine::Impl::find_goal() {
     for (;;) {
         const std::optional<EmptyCircle> found = find();
         if (!found) return std::nullopt;
-        if (const std::optional<Circle> goal = refine(*found)) return goal;
+        if (const std::optional<Circle> goal = refine(*found)) {
+            goal_found = *found;
+            return goal;
+        }
         circles->discard(*found);
     }
 }
@@ -417,6 +469,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
 
     const std::size_t before = ornament.size();
     bool success = false;
+    bool clashed = false;  // some rule's children clashed with their own images
     for (std::size_t n = 0; n < parents.size(); ++n) {
         Element* parent = parents[n];
         const auto rules = rules_by_parent.find(&parent->type());
@@ -432,6 +485,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
             for (const Circle& tried : tries) {
                 if (parent->sterile) break;
                 env.set_goal(tried);
+                const long refusals = env.orbit_refusals();
                 Result result = FAILURE;
                 std::vector<std::unique_ptr<Element>> children;
                 {
@@ -441,11 +495,13 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                     if (result == SUCCESS) children = call.take_children();
                 }
                 sync_exclude_clears();
-                if (result != SUCCESS) break;
-                if (commit(std::move(children), parent)) {
+                // A failure the element's own images did not cause is the rule's answer.
+                if (result != SUCCESS && env.orbit_refusals() == refusals) break;
+                if (result == SUCCESS && commit(std::move(children), parent)) {
                     success = true;
                     break;
                 }
+                clashed = true;
             }
             if (success) {
                 ++stats.rules[static_cast<std::size_t>(r)].successes;
@@ -461,6 +517,11 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         std::vector<int> removed;
         for (Point p : orbit_of_point(goal.center)) exclude.remove_within(p, epsilon, &removed);
         circles->release(removed);
+    } else if (clashed) {
+        // The rules would place something here, only not clear of its images: this circle is
+        // dropped (until its distance changes), its neighbours stay open. An exclude point
+        // would close the whole neighbourhood, in a narrow domain all of it.
+        circles->discard(goal_found);
     } else {
         for (Point p : orbit_of_point(goal.center)) exclude.add(p);
     }
@@ -491,6 +552,7 @@ void GrowthEngine::Impl::grow() {
             break;
         }
         std::optional<Circle> goal = find_goal();
+        if (!goal && second_seed()) continue;
         if (!goal) {
             stats.stop_reason = "exhausted";
             if (call_exhausted() != CONTINUE) break;

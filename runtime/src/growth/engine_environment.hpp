@@ -18,12 +18,14 @@ namespace acanthus::detail {
 class GrowthEnvironment : public Environment {
   public:
     GrowthEnvironment(const Region& region, const Ornament& ornament, ExcludeList& exclude,
-                      std::uint64_t rng_seed, const SymmetryGroup* group = nullptr)
+                      std::uint64_t rng_seed, const SymmetryGroup* group = nullptr,
+                      const Region* const* core_region = nullptr)
         : region_(region),
           ornament_(ornament),
           exclude_(exclude),
           random_(rng_seed),
-          group_(group) {}
+          group_(group),
+          core_region_(core_region) {}
 
     void set_goal(Circle c) { goal_ = c; }
 
@@ -31,13 +33,18 @@ class GrowthEnvironment : public Environment {
     // Under symmetry the placed elements include their images, and an element also intersects
     // when one of its own images overlaps it or leaves the region: the region is its core.
     bool intersects(const Element& e) const override {
-        return ornament_.intersects(e) ||
-               (group_ && orbit_intersects(e, *group_, region_, ornament_.tolerance()));
+        if (ornament_.intersects(e)) return true;
+        return group_ &&
+               count_orbit(orbit_intersects(e, *group_, *core_region_, ornament_.tolerance()));
     }
     bool intersects(const Proxy& p) const override {
-        return ornament_.intersects(p) ||
-               (group_ && orbit_intersects(p, *group_, region_, ornament_.tolerance()));
+        if (ornament_.intersects(p)) return true;
+        return group_ &&
+               count_orbit(orbit_intersects(p, *group_, *core_region_, ornament_.tolerance()));
     }
+    // How many times intersection() said yes only because of the element's own images: a rule
+    // that failed so may fit a smaller circle (GrowthEngine tries one).
+    long orbit_refusals() const { return orbit_refusals_; }
     bool inside(Point p) const override {
         return group_ ? core_contains(region_, *group_, p) : region_.contains(p);
     }
@@ -60,6 +67,12 @@ class GrowthEnvironment : public Environment {
     ExcludeList& exclude_;
     Random random_;
     const SymmetryGroup* group_;
+    const Region* const* core_region_;  // the engine's: null when images never leave R
+    mutable long orbit_refusals_ = 0;
+    bool count_orbit(bool refused) const {
+        if (refused) ++orbit_refusals_;
+        return refused;
+    }
     Circle goal_;
 };
 

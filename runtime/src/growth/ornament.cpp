@@ -115,6 +115,16 @@ bool Ornament::intersects(const Proxy& p) const {
     return false;
 }
 
+bool Ornament::overlaps_any(const Proxy& p,
+                            const std::function<bool(const Element&)>& which) const {
+    for (const auto& en : index_.query(p.bounds())) {
+        const Element& e = at(en.element);
+        if (which(e) && overlaps(p, e.proxy(static_cast<std::size_t>(en.proxy)), tolerance_))
+            return true;
+    }
+    return false;
+}
+
 bool Ornament::intersects(const Element& e) const {
     for (std::size_t k = 0; k < e.proxy_count(); ++k)
         if (intersects(e.proxy(k))) return true;

@@ -5,6 +5,7 @@
 
 #include <acanthus/element.hpp>
 #include <acanthus/region.hpp>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -45,6 +46,8 @@ class Ornament {
     // std::invalid_argument for a proxy that is not set or not finite.
     bool intersects(const Proxy& p) const;
     bool intersects(const Element& e) const;
+    // True when the proxy overlaps a placed proxy of an element `which` accepts.
+    bool overlaps_any(const Proxy& p, const std::function<bool(const Element&)>& which) const;
 
   private:
     const Region& region_;

@@ -45,16 +45,24 @@ struct AnyProxy {
     }
 };
 
+bool boxes_meet(const Rect& a, const Rect& b) {
+    return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
+}
+
 bool overlaps_any(const Element& a, const Element& b, double tolerance) {
     for (std::size_t i = 0; i < a.proxy_count(); ++i)
         for (std::size_t j = 0; j < b.proxy_count(); ++j)
-            if (overlaps(a.proxy(i), b.proxy(j), tolerance)) return true;
+            if (boxes_meet(a.proxy(i).bounds(), b.proxy(j).bounds()) &&
+                overlaps(a.proxy(i), b.proxy(j), tolerance))
+                return true;
     return false;
 }
 
-bool leaves(const Element& e, const Region& region, double tolerance) {
+// Null region: the group maps the region onto itself, an image leaves it only with its element.
+bool leaves(const Element& e, const Region* region, double tolerance) {
+    if (!region) return false;
     for (std::size_t k = 0; k < e.proxy_count(); ++k)
-        if (leaves_region(e.proxy(k), region, tolerance)) return true;
+        if (leaves_region(e.proxy(k), *region, tolerance)) return true;
     return false;
 }
 
@@ -148,7 +156,7 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     return out;
 }
 
-bool orbit_intersects(const Element& e, const SymmetryGroup& group, const Region& region,
+bool orbit_intersects(const Element& e, const SymmetryGroup& group, const Region* region,
                       double tolerance) {
     const Orbit orbit = orbit_of(e, group, tolerance);
     if (!orbit.clear) return true;
@@ -157,7 +165,7 @@ bool orbit_intersects(const Element& e, const SymmetryGroup& group, const Region
     return false;
 }
 
-bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region& region,
+bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region* region,
                       double tolerance) {
     AnyProxy image;
     Proxy& q = image.of(p.kind());
@@ -165,14 +173,15 @@ bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region& 
     for (std::size_t k = 1; k < g.size(); ++k) {
         transform_proxy(p, g[k], q);
         if (same_place(q, p, tolerance)) continue;
-        if (overlaps(q, p, tolerance) || leaves_region(q, region, tolerance)) return true;
+        if (boxes_meet(q.bounds(), p.bounds()) && overlaps(q, p, tolerance)) return true;
+        if (region && leaves_region(q, *region, tolerance)) return true;
     }
     return false;
 }
 
-std::vector<std::optional<Orbit>> placeable_orbits(const std::vector<const Element*>& batch,
-                                                   const SymmetryGroup& group, const Region& region,
-                                                   double tolerance) {
+std::vector<std::optional<Orbit>> placeable_orbits(
+    const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region* region,
+    double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image) {
     std::vector<std::optional<Orbit>> out;
     out.reserve(batch.size());
     SpatialIndex index;  // the images of the elements kept so far
@@ -187,6 +196,10 @@ std::vector<std::optional<Orbit>> placeable_orbits(const std::vector<const Eleme
         }
         for (std::size_t k = 0; ok && k < e->proxy_count(); ++k) {
             const Proxy& p = e->proxy(k);
+            if (hits_placed_image(p)) {
+                ok = false;
+                break;
+            }
             ok = !index.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
                 return overlaps(p,
                                 images[static_cast<std::size_t>(en.element)]->proxy(

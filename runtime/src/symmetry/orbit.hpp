@@ -5,6 +5,7 @@
 
 #include <acanthus/element.hpp>
 #include <acanthus/region.hpp>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -28,18 +29,20 @@ struct Orbit {
 Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance);
 
 // True when an image of the element, or of the proxy, other than itself overlaps it or leaves
-// the region (touching within `tolerance` is not overlap).
-bool orbit_intersects(const Element& e, const SymmetryGroup& group, const Region& region,
+// the region (touching within `tolerance` is not overlap). A null region: the group maps the
+// region onto itself (maps_onto_itself()), so no image leaves it unless its element does.
+bool orbit_intersects(const Element& e, const SymmetryGroup& group, const Region* region,
                       double tolerance);
-bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region& region,
+bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region* region,
                       double tolerance);
 
 // The elements one rule success commits, in order: the orbit of each that may be placed, or
 // nothing for one whose images clash with it, leave the region, or overlap an element kept
-// before it or an image of one. (Elements overlapping each other, or placed ones, are the
-// rule's business, as without symmetry.)
-std::vector<std::optional<Orbit>> placeable_orbits(const std::vector<const Element*>& batch,
-                                                   const SymmetryGroup& group, const Region& region,
-                                                   double tolerance);
+// before it or an image of one, or that overlaps a placed image (`hits_placed_image`).
+// (Elements overlapping each other, or placed fundamental ones, are the rule's business, as
+// without symmetry.)
+std::vector<std::optional<Orbit>> placeable_orbits(
+    const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region* region,
+    double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image);
 
 }  // namespace acanthus::detail

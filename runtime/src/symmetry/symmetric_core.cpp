@@ -49,6 +49,15 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
     return out;
 }
 
+bool maps_onto_itself(const Region& region, const SymmetryGroup& group, double tolerance) {
+    for (const auto& ring : region.rings(tolerance / 4))
+        for (Point p : ring)
+            for (std::size_t k = 1; k < group.size(); ++k)
+                if (region.distance_to_boundary(group.transforms()[k].apply(p)) > tolerance)
+                    return false;
+    return true;
+}
+
 bool core_contains(const Region& region, const SymmetryGroup& group, Point p) {
     for (const Isometry& g : group.transforms())
         if (!region.contains(g.apply(p))) return false;

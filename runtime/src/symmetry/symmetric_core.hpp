@@ -19,6 +19,10 @@ std::vector<int> pixels_outside_core(const RasterBuffer& raster, const SymmetryG
 // domain (widened by a pixel): where C may be centred.
 std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGroup& group);
 
+// True when the group maps the region onto itself (its boundary onto its boundary, sampled,
+// within `tolerance`): then the core is the whole region.
+bool maps_onto_itself(const Region& region, const SymmetryGroup& group, double tolerance);
+
 bool core_contains(const Region& region, const SymmetryGroup& group, Point p);
 // Distance from p, inside the core, to the core's boundary.
 double core_distance_to_boundary(const Region& region, const SymmetryGroup& group, Point p);

@@ -1,0 +1,89 @@
+// Growth under a rosette group against growth without: Appendix A's dots filling a disc of
+// radius 500 at 1024 px, without symmetry and under c6, d8 and d12, each grown --runs times (3 by
+// default, in turns), the run of median time reported. Prints a table on stderr and, last, one
+// JSON object: per group the elements (images included), the fundamental ones, the growth
+// seconds, the cost per fundamental element and per placed element, and both as a ratio to the
+// cost per element without symmetry (the issue asks 1.5 per fundamental element).
+//
+//   bench_symmetry [--runs N] [--resolution PX]
+#include <acanthus/growth.hpp>
+#include <acanthus/region.hpp>
+#include <acanthus/symmetry.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "fixtures/dots_pattern.hpp"
+#include "symmetry/image_element.hpp"
+
+namespace {
+
+struct Result {
+    std::string group;
+    long elements = 0, fundamental = 0;
+    std::vector<double> seconds;
+};
+
+void grow(Result& r, int resolution) {
+    const acanthus::Region region = acanthus::Region::from_spec("circle:500");
+    acanthus::GrowthOptions o;
+    o.resolution = resolution;
+    if (r.group != "none") o.symmetry = acanthus::Symmetry::parse(r.group);
+    dots::dot_count = 0;
+    const acanthus::Pattern pattern = dots::pattern();
+    acanthus::GrowthEngine engine(pattern, region, o);
+    const auto start = std::chrono::steady_clock::now();
+    engine.run();
+    r.seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const auto elements = engine.elements();
+    r.elements = static_cast<long>(elements.size());
+    r.fundamental = 0;
+    for (const acanthus::Element* e : elements)
+        if (!acanthus::detail::as_image(*e)) ++r.fundamental;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int runs = 3, resolution = 1024;
+    for (int k = 1; k + 1 < argc; k += 2) {
+        if (!std::strcmp(argv[k], "--runs")) runs = std::max(1, std::atoi(argv[k + 1]));
+        if (!std::strcmp(argv[k], "--resolution")) resolution = std::atoi(argv[k + 1]);
+    }
+    std::vector<Result> results{
+        {"none", 0, 0, {}}, {"c6", 0, 0, {}}, {"d8", 0, 0, {}}, {"d12", 0, 0, {}}};
+    for (int run = 0; run < runs; ++run)
+        for (Result& r : results) grow(r, resolution);
+    const double base = median(results[0].seconds) / static_cast<double>(results[0].elements);
+    std::fprintf(stderr, "%-6s %9s %11s %9s %14s %9s %14s %9s\n", "group", "elements",
+                 "fundamental", "seconds", "us/fundamental", "ratio", "us/element", "ratio");
+    std::string json = "{\"resolution\":" + std::to_string(resolution) + ",\"groups\":[";
+    for (std::size_t k = 0; k < results.size(); ++k) {
+        const Result& r = results[k];
+        const double s = median(r.seconds);
+        const double per_fundamental = s / static_cast<double>(r.fundamental);
+        const double per_element = s / static_cast<double>(r.elements);
+        std::fprintf(stderr, "%-6s %9ld %11ld %9.3f %14.1f %9.2f %14.1f %9.2f\n", r.group.c_str(),
+                     r.elements, r.fundamental, s, 1e6 * per_fundamental, per_fundamental / base,
+                     1e6 * per_element, per_element / base);
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "%s{\"group\":\"%s\",\"elements\":%ld,\"fundamental\":%ld,\"seconds\":%.4f,"
+                      "\"per_fundamental_ratio\":%.3f,\"per_element_ratio\":%.3f}",
+                      k ? "," : "", r.group.c_str(), r.elements, r.fundamental, s,
+                      per_fundamental / base, per_element / base);
+        json += line;
+    }
+    std::printf("%s]}\n", json.c_str());
+    return 0;
+}

@@ -1,0 +1,247 @@
+// Checks an ornament grown under a rosette group from the outside, as the expert would, on the
+// program's --json tree:
+//   check_symmetry TREE.json GROUP REGION
+// - the images' transformations, with the identity, are the group: as many as it has
+//   (N for cN, 2N for dN) and closed under composition;
+// - the element set is invariant: every image of every element under every transformation is an
+//   element of the same type (to 1e-6 of the panel's size);
+// - nothing leaves the region;
+// - no two elements overlap unless they are an image of two fundamental elements under one
+//   transformation (two fundamental elements touching or overlapping is the rule's business, as
+//   without symmetry; the seed markers are left out).
+// Exit 0 when all hold, 1 with the faults listed.
+#include <acanthus/region.hpp>
+#include <acanthus/symmetry.hpp>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "geometry/spatial_index.hpp"
+#include "proxy/overlap.hpp"
+#include "symmetry/image_element.hpp"
+#include "symmetry/isometry.hpp"
+#include "symmetry/orbit.hpp"
+
+using namespace acanthus;
+using namespace acanthus::detail;
+using Json = nlohmann::json;
+
+namespace {
+
+// An element as the tree gives it: its type name and its proxies.
+struct Loaded final : Element {
+    std::string type_name;
+    ElementType type_info;
+    std::vector<std::unique_ptr<Proxy, void (*)(Proxy*)>> proxies;
+    int image_of = -1;
+    Isometry transform;
+    const ElementType& type() const override { return type_info; }
+    std::size_t proxy_count() const override { return proxies.size(); }
+    Proxy& proxy(std::size_t k) override { return *proxies[k]; }
+};
+
+template <class P>
+void destroy(Proxy* p) {
+    delete static_cast<P*>(p);
+}
+
+Point point_of(const Json& j) { return {j.at(0).get<double>(), j.at(1).get<double>()}; }
+
+std::unique_ptr<Proxy, void (*)(Proxy*)> load_proxy(const Json& j) {
+    const std::string kind = j.at("kind");
+    if (kind == "point") {
+        auto* p = new PointProxy;
+        p->set(point_of(j.at("point")));
+        return {p, &destroy<PointProxy>};
+    }
+    if (kind == "circle") {
+        auto* p = new CircleProxy;
+        p->set(point_of(j.at("center")), j.at("radius").get<double>());
+        return {p, &destroy<CircleProxy>};
+    }
+    if (kind == "arc") {
+        auto* p = new ArcProxy;
+        p->set(point_of(j.at("center")), j.at("radius").get<double>(), j.at("start").get<double>(),
+               j.at("end").get<double>());
+        return {p, &destroy<ArcProxy>};
+    }
+    if (kind == "linesegment") {
+        auto* p = new LineSegmentProxy;
+        p->set(point_of(j.at("p0")), point_of(j.at("p1")));
+        return {p, &destroy<LineSegmentProxy>};
+    }
+    if (kind == "bezier") {
+        auto* p = new BezierProxy;
+        const Json& c = j.at("c");
+        p->set(point_of(c.at(0)), point_of(c.at(1)), point_of(c.at(2)), point_of(c.at(3)));
+        return {p, &destroy<BezierProxy>};
+    }
+    auto* p = new PolygonProxy;
+    std::vector<Point> points;
+    for (const Json& q : j.at("points")) points.push_back(point_of(q));
+    p->set(std::move(points));
+    return {p, &destroy<PolygonProxy>};
+}
+
+bool same(const Isometry& a, const Isometry& b) {
+    const auto x = a.matrix(), y = b.matrix();
+    for (int k = 0; k < 6; ++k)
+        if (std::abs(x[k] - y[k]) > 1e-6) return false;
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 4) {
+        std::cerr << "usage: check_symmetry TREE.json GROUP REGION\n";
+        return 2;
+    }
+    std::ifstream in(argv[1]);
+    const Json tree = Json::parse(in);
+    const Symmetry group = Symmetry::parse(argv[2]);
+    const Region region = Region::from_argument(argv[3]);
+    const Rect b = region.bounds();
+    const double tol = 1e-6 * std::max(b.width(), b.height());
+
+    std::vector<std::unique_ptr<Loaded>> elements;
+    for (const Json& j : tree.at("elements")) {
+        auto e = std::make_unique<Loaded>();
+        e->type_name = j.at("type");
+        e->type_info.name = e->type_name;
+        e->id = j.at("id");
+        for (const Json& p : j.at("proxies")) e->proxies.push_back(load_proxy(p));
+        if (j.contains("image_of")) {
+            e->image_of = j.at("image_of");
+            const Json& m = j.at("transform");
+            e->transform = {m[0], m[1], m[2], m[3], m[4], m[5]};
+        }
+        elements.push_back(std::move(e));
+    }
+    int faults = 0;
+    auto fault = [&](const std::string& what) {
+        if (++faults <= 20) std::cout << "FAULT: " << what << "\n";
+    };
+
+    // The transformations.
+    std::vector<Isometry> transforms{Isometry{}};
+    for (const auto& e : elements) {
+        if (e->image_of < 0) continue;
+        bool known = false;
+        for (const Isometry& t : transforms) known = known || same(t, e->transform);
+        if (!known) transforms.push_back(e->transform);
+    }
+    const std::size_t expected = static_cast<std::size_t>(
+        group.kind == Symmetry::Kind::cyclic ? group.order : 2 * group.order);
+    if (transforms.size() != expected)
+        fault("the images use " + std::to_string(transforms.size()) +
+              " transformations with the identity; " + group.name() + " has " +
+              std::to_string(expected));
+    for (const Isometry& s : transforms)
+        for (const Isometry& t : transforms) {
+            bool found = false;
+            for (const Isometry& u : transforms) found = found || same(s.then(t), u);
+            if (!found) fault("the transformations are not closed under composition");
+        }
+
+    // Elements by type, in a grid of cells of their first proxy's bounds centre.
+    const double cell = std::max(b.width(), b.height()) / 64;
+    auto key = [&](const Element& e) {
+        const Point c = e.proxy(0).bounds().center();
+        return std::make_pair(static_cast<long>(std::floor(c.x / cell)),
+                              static_cast<long>(std::floor(c.y / cell)));
+    };
+    std::map<std::pair<long, long>, std::vector<const Loaded*>> grid;
+    for (const auto& e : elements)
+        if (e->proxy_count() > 0) grid[key(*e)].push_back(e.get());
+
+    // The stored element of `type` in the place of `probe`, or null.
+    auto find_like = [&](const Element& probe, const std::string& type) -> Loaded* {
+        const auto [kx, ky] = key(probe);
+        for (long dx = -1; dx <= 1; ++dx)
+            for (long dy = -1; dy <= 1; ++dy) {
+                const auto it = grid.find({kx + dx, ky + dy});
+                if (it == grid.end()) continue;
+                for (const Loaded* f : it->second)
+                    if (f->type_name == type && same_place(probe, *f, tol))
+                        return const_cast<Loaded*>(f);
+            }
+        return nullptr;
+    };
+    long images = 0;
+    for (const auto& e : elements) {
+        if (e->image_of >= 0) ++images;
+        for (std::size_t k = 0; k < e->proxy_count(); ++k)
+            if (leaves_region(e->proxy(k), region, tol))
+                fault("element " + std::to_string(e->id) + " leaves the region");
+        if (e->proxy_count() == 0) continue;
+        for (const Isometry& t : transforms) {
+            const ImageElement image(*e, t);
+            const auto [kx, ky] = key(image);
+            bool found = false;
+            for (long dx = -1; dx <= 1 && !found; ++dx)
+                for (long dy = -1; dy <= 1 && !found; ++dy) {
+                    const auto it = grid.find({kx + dx, ky + dy});
+                    if (it == grid.end()) continue;
+                    for (const Loaded* f : it->second)
+                        if (f->type_name == e->type_name && same_place(image, *f, tol)) {
+                            found = true;
+                            break;
+                        }
+                }
+            if (!found) fault("an image of element " + std::to_string(e->id) + " is missing");
+        }
+    }
+
+    // Overlaps the symmetry caused.
+    SpatialIndex index;
+    for (const auto& e : elements)
+        if (e->type_name != "seed")
+            for (std::size_t k = 0; k < e->proxy_count(); ++k)
+                index.insert(e->id, static_cast<int>(k), e->proxy(k).bounds());
+    long overlaps_found = 0;
+    for (const auto& a : elements) {
+        if (a->type_name == "seed") continue;
+        for (std::size_t k = 0; k < a->proxy_count(); ++k)
+            for (const SpatialIndex::Entry& en : index.query(a->proxy(k).bounds())) {
+                if (en.element <= a->id) continue;
+                Loaded& other = *elements[static_cast<std::size_t>(en.element)];
+                // Decided as the engine decided it: in the frame where the later element is
+                // fundamental, against the stored image of the earlier one, later element
+                // first (the exact tests of curves may round a touch either way otherwise).
+                const std::size_t q = static_cast<std::size_t>(en.proxy);
+                const Isometry back = other.transform.inverse();
+                Loaded* later = other.image_of >= 0
+                                    ? elements[static_cast<std::size_t>(other.image_of)].get()
+                                    : &other;
+                ImageElement carried_back(*a, back);
+                Loaded* earlier = find_like(carried_back, a->type_name);
+                if (!(earlier ? overlaps(later->proxy(q), earlier->proxy(k), tol)
+                              : overlaps(later->proxy(q), carried_back.proxy(k), 2 * tol)))
+                    continue;
+                // A pair of fundamental elements carried by one transformation is the rule's
+                // (an element on a mirror is carried onto itself by more than one).
+                auto fundamental = [&](Loaded& e) -> Element& {
+                    return e.image_of >= 0 ? *elements[static_cast<std::size_t>(e.image_of)] : e;
+                };
+                Element& a0 = fundamental(*a);
+                Element& b0 = fundamental(other);
+                bool carried = false;
+                for (const Isometry& t : transforms)
+                    carried = carried || (same_place(ImageElement(a0, t), *a, tol) &&
+                                          same_place(ImageElement(b0, t), other, tol));
+                if (carried) continue;
+                ++overlaps_found;
+                fault("elements " + std::to_string(a->id) + " and " + std::to_string(other.id) +
+                      " overlap (an image)");
+            }
+    }
+    std::cout << elements.size() << " elements, " << images << " images, " << transforms.size()
+              << " transformations; " << faults << " faults\n";
+    return faults == 0 ? 0 : 1;
+}
