@@ -96,9 +96,14 @@ class AcanthusFill(inkex.EffectExtension):
             )
         acanthus = find_acanthus()
         params = parse_params(self.options.params)
+        # inkex gives an element a random id when asked for it (the root, a shape's parents):
+        # the drawing keeps its own, and the same run gives the same document.
+        without_id = [e for e in self.svg.iter() if isinstance(e.tag, str) and "id" not in e.attrib]
         with tempfile.TemporaryDirectory(prefix="acanthus-inkscape-") as tmp:
             for shape in shapes:
                 self.fill(shape, acanthus, rules, params, tmp)
+        for element in without_id:
+            element.attrib.pop("id", None)
 
     def fill(self, shape, acanthus, rules, params, tmp):
         """Grows into one shape and inserts the ornament layer above the drawing."""
@@ -137,11 +142,16 @@ class AcanthusFill(inkex.EffectExtension):
         """The ornament's layers as sublayers of a new layer over the shape."""
         scale, ox, oy = page_transform(bounds, PAGE_WIDTH)
         layer = self.svg.add(inkex.Layer.new(f"Acanthus {rules_name} in {sid}"))
-        layer.set_id(self.svg.get_unique_id(f"acanthus-{sid}-"))
+        # acanthus-SHAPE, or -2, -3, ... after earlier runs: the same every time, unlike
+        # get_unique_id's random digits.
+        base, n = f"acanthus-{sid}", 1
+        while self.svg.getElementById(base if n == 1 else f"{base}-{n}") is not None:
+            n += 1
+        layer.set_id(base if n == 1 else f"{base}-{n}")
         layer.transform = inkex.Transform(
             (1 / scale, 0, 0, 1 / scale, -ox / scale, -oy / scale)
         )
-        prefix = f"{sid}-"
+        prefix = layer.get_id()[len("acanthus-"):] + "-"
         for child in ornament:
             if not isinstance(child.tag, str):
                 continue

@@ -110,7 +110,7 @@ layers = [g for g in doc if isinstance(g, inkex.Layer) and g.get_id().startswith
 if len(layers) != len(selected):
     fail(f"{len(layers)} ornament layers for {len(selected)} selected shapes")
 for sid in selected:
-    layer = next((g for g in layers if g.get_id().startswith(f"acanthus-{sid}-")), None)
+    layer = next((g for g in layers if g.get_id() == f"acanthus-{sid}"), None)
     if layer is None:
         fail(f"no ornament layer for {sid}")
         continue
@@ -178,5 +178,24 @@ expect_message(run_extension(f"--id={selected[0]}", f"--rules={rules}", "--param
                ["max_radius"], "a bad parameter value")
 expect_message(run_extension(f"--id={selected[0]}", "--rules=/nonexistent.acr", drawing),
                ["does not exist"], "a missing rule file")
+
+# 4. Run again on its own output: a second ornament layer per shape, ids still unique, and
+# the same bytes as the first run gave (no random ids).
+again = run_extension(*[f"--id={i}" for i in selected], f"--rules={rules}", "--params=max_radius=2.5, rim=0.2",
+                      "--rng_seed=3", "--resolution=160", out_path)
+if again.returncode != 0:
+    fail(f"the second run exited {again.returncode}: {again.stderr}")
+else:
+    doc2 = etree.fromstring(again.stdout.encode())
+    ids2 = [e.get("id") for e in doc2.iter() if isinstance(e.tag, str) and e.get("id")]
+    if len(ids2) != len(set(ids2)):
+        fail("a second run made duplicate ids")
+    for sid in selected:
+        if doc2.find(f".//*[@id='acanthus-{sid}-2']") is None:
+            fail(f"the second run has no layer acanthus-{sid}-2")
+same = run_extension(*[f"--id={i}" for i in selected], f"--rules={rules}", "--params=max_radius=2.5, rim=0.2",
+                     "--rng_seed=3", "--resolution=160", drawing)
+if same.stdout != run.stdout:
+    fail("two runs with the same options gave different documents")
 
 sys.exit(1 if failures else 0)
