@@ -5,13 +5,19 @@ transforms: an ornament layer per shape whose every element lies inside its shap
 the drawing otherwise unchanged; a failing rule file, no selection and a bad parameter give an
 inkex message on stderr and a non-zero exit, never a traceback.
 
-Usage: check_extension.py SCRIPT ACANTHUS|- SOURCE_DIR WORK [DRAWING]
+Usage: check_extension.py [--inkscape] SCRIPT ACANTHUS|- SOURCE_DIR WORK [DRAWING]
 SCRIPT is the extension's acanthus_fill.py; with ACANTHUS '-' it must find the acanthus installed
-beside it. Exits 77 (skipped) when inkex is not installed."""
+beside it. With --inkscape, Inkscape itself runs it (under Xvfb, the extension installed in a
+fresh user folder, the dialog's values in its preferences, the menu item as an action), and
+only the filled drawing is checked. Exits 77 (skipped) when inkex is not installed."""
 
 import os
+import shutil
+import signal
 import subprocess
 import sys
+import tempfile
+from xml.sax.saxutils import quoteattr
 
 EXTENSIONS = "/usr/share/inkscape/extensions"
 sys.path.insert(0, EXTENSIONS)
@@ -23,13 +29,20 @@ except ImportError as err:
     print(f"SKIP: inkex not importable ({err}); scripts/install-deps installs inkscape")
     sys.exit(77)
 
-script, acanthus, source, work = sys.argv[1:5]
-drawing = sys.argv[5] if len(sys.argv) > 5 else os.path.join(source, "tests/inkscape/drawing.svg")
+args = sys.argv[1:]
+in_inkscape = args[:1] == ["--inkscape"]
+if in_inkscape:
+    args = args[1:]
+    if not shutil.which("inkscape") or not shutil.which("xvfb-run"):
+        print("SKIP: inkscape or xvfb-run not installed (scripts/install-deps)")
+        sys.exit(77)
+script, acanthus, source, work = args[:4]
+drawing = args[4] if len(args) > 4 else os.path.join(source, "tests/inkscape/drawing.svg")
 os.makedirs(work, exist_ok=True)
 env = dict(os.environ, PYTHONPATH=EXTENSIONS)
 env.pop("ACANTHUS_EXECUTABLE", None)
 if acanthus != "-":
-    env["ACANTHUS_EXECUTABLE"] = acanthus
+    env["ACANTHUS_EXECUTABLE"] = os.path.abspath(acanthus)  # Inkscape runs scripts elsewhere
 failures = []
 
 
@@ -88,15 +101,55 @@ source_doc = inkex.load_svg(drawing).getroot()
 selected = [e.get("id") for e in source_doc.iter() if e.get("data-select") == "yes"] or ["heart", "oval"]
 rules = os.path.join(source, "rules/dots.acr")
 
+OPTIONS = {"rules": rules, "params": "max_radius=2.5, rim=0.2", "rng_seed": "3", "resolution": "160"}
+
+
+def run_in_inkscape(out_path):
+    """Extensions > Render > Acanthus on the selection, without its dialog, as Inkscape runs it."""
+    home = tempfile.mkdtemp(dir=work, prefix="home-")
+    extensions = os.path.join(home, ".config", "inkscape", "extensions")
+    os.makedirs(extensions)
+    for name in ("acanthus_fill.inx", "acanthus_fill.py"):
+        shutil.copy(os.path.join(os.path.dirname(script), name), extensions)
+    values = " ".join(f"org.acanthus.fill.{k}={quoteattr(v)}" for k, v in OPTIONS.items())
+    with open(os.path.join(home, ".config", "inkscape", "preferences.xml"), "w", encoding="utf-8") as f:
+        f.write('<?xml version="1.0" encoding="UTF-8" standalone="no"?>\n<inkscape '
+                'xmlns:sodipodi="http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd" '
+                'xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape" version="1">\n'
+                f'  <group id="extensions" {values}/>\n</inkscape>\n')
+    actions = f"select-by-id:{','.join(selected)};org.acanthus.fill.noprefs;export-filename:{out_path};export-do"
+    inkscape_env = dict(env, HOME=home)
+    inkscape_env.pop("XDG_CONFIG_HOME", None)
+    # An extension error is a modal dialog in Inkscape's window, which nobody closes here: a
+    # time limit, then the whole session (xvfb-run, Xvfb, inkscape) is stopped.
+    inkscape = subprocess.Popen(["xvfb-run", "-a", "inkscape", "--with-gui", "--batch-process",
+                                 f"--actions={actions}", drawing], stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, text=True, env=inkscape_env, start_new_session=True)
+    try:
+        output, _ = inkscape.communicate(timeout=120)
+    except subprocess.TimeoutExpired:
+        os.killpg(inkscape.pid, signal.SIGKILL)
+        inkscape.communicate()
+        fail("inkscape did not finish in 120 s (an error dialog?)")
+        sys.exit(1)
+    if inkscape.returncode != 0 or not os.path.isfile(out_path):
+        fail(f"inkscape exited {inkscape.returncode}: {output}")
+        sys.exit(1)
+
+
 # 1. Two selected shapes filled.
-run = run_extension(*[f"--id={i}" for i in selected], f"--rules={rules}", "--params=max_radius=2.5, rim=0.2",
-                    "--rng_seed=3", "--resolution=160", drawing)
-if run.returncode != 0:
-    fail(f"the extension exited {run.returncode}: {run.stderr}")
-    sys.exit(1)
 out_path = os.path.join(work, "filled.svg")
-with open(out_path, "w", encoding="utf-8") as f:
-    f.write(run.stdout)
+if in_inkscape:
+    if os.path.exists(out_path):
+        os.remove(out_path)
+    run_in_inkscape(out_path)
+else:
+    run = run_extension(*[f"--id={i}" for i in selected], *[f"--{k}={v}" for k, v in OPTIONS.items()], drawing)
+    if run.returncode != 0:
+        fail(f"the extension exited {run.returncode}: {run.stderr}")
+        sys.exit(1)
+    with open(out_path, "w", encoding="utf-8") as f:
+        f.write(run.stdout)
 doc = inkex.load_svg(out_path).getroot()
 ids = [e.get("id") for e in doc.iter() if isinstance(e.tag, str) and e.get("id")]
 if len(ids) != len(set(ids)):
@@ -152,6 +205,10 @@ for sid in selected:
     if max(spread) > 0.15 * max(max(bx) - min(bx), max(by) - min(by)):
         fail(f"{sid}: the ornament does not reach the shape's sides (gaps {spread})")
     print(f"{sid}: {len(circles)} dots inside, largest overlap {over:.3f} (pixel {pixel:.3f})")
+
+
+if in_inkscape:
+    sys.exit(1 if failures else 0)
 
 
 def expect_message(run, needles, what):
