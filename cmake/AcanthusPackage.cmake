@@ -38,8 +38,11 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/panels/" DESTINATION "${CMAKE_
   FILES_MATCHING PATTERN "*.svg")
 
 acanthus_stdlib_get(ACANTHUS_CONFIG_DEPENDENCIES PACKAGES)
+acanthus_stdlib_get(ACANTHUS_CONFIG_RUNTIME_PACKAGES RUNTIME_PACKAGES)
+acanthus_stdlib_get(ACANTHUS_CONFIG_RUNTIME_PKG_TARGETS RUNTIME_PKG_TARGETS)
+acanthus_stdlib_get(runtime_pc_modules RUNTIME_PKG_CONFIG)
 acanthus_stdlib_get(stdlib_pc_modules PKG_CONFIG)
-set(ACANTHUS_PC_REQUIRES cairo pugixml 2geom polyclipping ${stdlib_pc_modules})
+set(ACANTHUS_PC_REQUIRES ${runtime_pc_modules} ${stdlib_pc_modules})
 list(REMOVE_DUPLICATES ACANTHUS_PC_REQUIRES)
 list(JOIN ACANTHUS_PC_REQUIRES " " ACANTHUS_PC_REQUIRES)
 set(ACANTHUS_PC_LIBS "-lacanthus_stdlib -lacanthus")

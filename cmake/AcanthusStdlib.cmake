@@ -5,18 +5,20 @@
 include_guard(GLOBAL)
 
 # acanthus_stdlib_dependency(NAME name TARGET target [PACKAGE package [VERSION version]]
-#                            [PKG_CONFIG module...] [HEADER_ONLY])
+#                            [PKG_CONFIG module...] [HEADER_ONLY] [RUNTIME])
 #
 # An external package that libraries may name in DEPENDS: the imported TARGET they build with
 # (found now with find_package(PACKAGE) unless it exists; a macro, so that the target is seen
 # where it is declared and below), and what a consumer of libacanthus_stdlib.a links (PACKAGE
-# for find_dependency, pkg-config modules). HEADER_ONLY packages reach no consumer.
+# for find_dependency, pkg-config modules). HEADER_ONLY packages reach no consumer. RUNTIME:
+# libacanthus.a itself uses it, so the runtime links it, `acanthus build` links its modules,
+# acanthus.pc requires them and AcanthusConfig.cmake finds it (acanthus_stdlib_get RUNTIME_*).
 macro(acanthus_stdlib_dependency)
-  cmake_parse_arguments(_acanthus_dep "HEADER_ONLY" "NAME;TARGET;PACKAGE;VERSION" "PKG_CONFIG"
-    ${ARGN})
+  cmake_parse_arguments(_acanthus_dep "HEADER_ONLY;RUNTIME" "NAME;TARGET;PACKAGE;VERSION"
+    "PKG_CONFIG" ${ARGN})
   if(NOT _acanthus_dep_NAME OR NOT _acanthus_dep_TARGET OR _acanthus_dep_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "acanthus_stdlib_dependency: use NAME name TARGET target [PACKAGE p "
-      "[VERSION v]] [PKG_CONFIG module...] [HEADER_ONLY]")
+      "[VERSION v]] [PKG_CONFIG module...] [HEADER_ONLY] [RUNTIME]")
   endif()
   if(NOT TARGET ${_acanthus_dep_TARGET} AND _acanthus_dep_PACKAGE)
     find_package(${_acanthus_dep_PACKAGE} ${_acanthus_dep_VERSION} REQUIRED)
@@ -26,21 +28,31 @@ macro(acanthus_stdlib_dependency)
       "${_acanthus_dep_TARGET}")
   endif()
   set_property(GLOBAL APPEND PROPERTY ACANTHUS_STDLIB_DEPENDENCIES "${_acanthus_dep_NAME}")
+  if(_acanthus_dep_RUNTIME)
+    set_property(GLOBAL APPEND PROPERTY ACANTHUS_RUNTIME_DEPENDENCIES "${_acanthus_dep_NAME}")
+  endif()
   foreach(_acanthus_field TARGET PACKAGE PKG_CONFIG HEADER_ONLY)
     set_property(GLOBAL PROPERTY ACANTHUS_STDLIB_DEP_${_acanthus_dep_NAME}_${_acanthus_field}
       "${_acanthus_dep_${_acanthus_field}}")
   endforeach()
 endmacro()
 
-# The runtime's own dependencies (found by the top-level CMakeLists.txt) and CGAL.
+# The runtime's own dependencies (RUNTIME; the only list of them: found by the top-level
+# CMakeLists.txt, which includes this file before runtime/), and what only the stdlib uses.
+acanthus_stdlib_dependency(NAME Cairo TARGET PkgConfig::CAIRO PKG_CONFIG cairo RUNTIME)
+# lib2geom's headers call GLib, GSL and double-conversion, which 2geom.pc does not require.
+acanthus_stdlib_dependency(NAME 2Geom TARGET 2Geom::2geom PACKAGE 2Geom
+  PKG_CONFIG 2geom glib-2.0 gsl double-conversion RUNTIME)
+acanthus_stdlib_dependency(NAME pugixml TARGET pugixml::pugixml PACKAGE pugixml PKG_CONFIG pugixml
+  RUNTIME)
+acanthus_stdlib_dependency(NAME Clipper TARGET PkgConfig::POLYCLIPPING PKG_CONFIG polyclipping
+  RUNTIME)
+acanthus_stdlib_dependency(NAME Boost TARGET Boost::headers HEADER_ONLY RUNTIME)
+acanthus_stdlib_dependency(NAME nlohmann_json TARGET nlohmann_json::nlohmann_json HEADER_ONLY
+  RUNTIME)
 acanthus_stdlib_dependency(NAME CGAL TARGET CGAL::CGAL PACKAGE CGAL VERSION 5.5
   PKG_CONFIG mpfr gmp)  # header-only, but its exact arithmetic links GMP and MPFR
-acanthus_stdlib_dependency(NAME 2Geom TARGET 2Geom::2geom PACKAGE 2Geom PKG_CONFIG 2geom)
-acanthus_stdlib_dependency(NAME pugixml TARGET pugixml::pugixml PACKAGE pugixml PKG_CONFIG pugixml)
-acanthus_stdlib_dependency(NAME Clipper TARGET PkgConfig::POLYCLIPPING PKG_CONFIG polyclipping)
-acanthus_stdlib_dependency(NAME Boost TARGET Boost::headers HEADER_ONLY)
 acanthus_stdlib_dependency(NAME Eigen3 TARGET Eigen3::Eigen HEADER_ONLY)
-acanthus_stdlib_dependency(NAME nlohmann_json TARGET nlohmann_json::nlohmann_json HEADER_ONLY)
 
 # acanthus_stdlib_library(NAME name SOURCES file.cpp... [DEPENDS dep...] [TESTS file.cpp...]
 #                         [TEST_DEPENDS dep...] [INTERNAL])
@@ -134,10 +146,43 @@ endfunction()
 #   PACKAGES       CMake packages a consumer of libacanthus_stdlib.a finds (find_dependency)
 #   LINK_TARGETS   the imported targets libacanthus_stdlib.a links
 #   PKG_CONFIG     the pkg-config modules it links
+# and over the runtime's dependencies (declared RUNTIME):
+#   RUNTIME_LINK_TARGETS   imported targets libacanthus.a links (not header-only)
+#   RUNTIME_HEADER_ONLY    header-only targets it compiles with
+#   RUNTIME_PKG_CONFIG     pkg-config modules a program linking libacanthus.a needs
+#   RUNTIME_PACKAGES       CMake packages AcanthusConfig.cmake finds for it
+#   RUNTIME_PKG_TARGETS    PREFIX=module[,module]... for each PkgConfig::PREFIX target it links
 function(acanthus_stdlib_get out_var what)
   get_property(names GLOBAL PROPERTY ACANTHUS_STDLIB_LIBRARIES)
   set(result "")
-  if(what STREQUAL "LIBRARIES")
+  if(what MATCHES "^RUNTIME_")
+    get_property(runtime_deps GLOBAL PROPERTY ACANTHUS_RUNTIME_DEPENDENCIES)
+    foreach(dep IN LISTS runtime_deps)
+      foreach(field TARGET PACKAGE PKG_CONFIG HEADER_ONLY)
+        get_property(dep_${field} GLOBAL PROPERTY ACANTHUS_STDLIB_DEP_${dep}_${field})
+      endforeach()
+      if(what STREQUAL "RUNTIME_HEADER_ONLY")
+        if(dep_HEADER_ONLY)
+          list(APPEND result ${dep_TARGET})
+        endif()
+      elseif(dep_HEADER_ONLY)
+        continue()
+      elseif(what STREQUAL "RUNTIME_LINK_TARGETS")
+        list(APPEND result ${dep_TARGET})
+      elseif(what STREQUAL "RUNTIME_PKG_CONFIG")
+        list(APPEND result ${dep_PKG_CONFIG})
+      elseif(what STREQUAL "RUNTIME_PACKAGES")
+        list(APPEND result ${dep_PACKAGE})
+      elseif(what STREQUAL "RUNTIME_PKG_TARGETS")
+        if(dep_TARGET MATCHES "^PkgConfig::(.+)$")
+          list(JOIN dep_PKG_CONFIG "," modules)
+          list(APPEND result "${CMAKE_MATCH_1}=${modules}")
+        endif()
+      else()
+        message(FATAL_ERROR "acanthus_stdlib_get: unknown field '${what}'")
+      endif()
+    endforeach()
+  elseif(what STREQUAL "LIBRARIES")
     set(result "${names}")
   elseif(what STREQUAL "RULE_DIR")
     get_property(result GLOBAL PROPERTY ACANTHUS_STDLIB_RULE_DIR)

@@ -2,7 +2,8 @@
 #include "output/layer_order.hpp"
 
 #include <algorithm>
-#include <map>
+#include <cstdint>
+#include <functional>
 
 namespace acanthus::detail {
 
@@ -15,17 +16,30 @@ std::vector<const ElementType*> layer_order(const std::vector<const Element*>& e
         if (index_of(&e->type()) == types.size()) types.push_back(&e->type());
     std::size_t n = types.size();
 
-    // before[a][b]: sibling pairs with an `a` placed earlier than a `b`; each parent's children
-    // in placement order, counted by type so that the pass stays linear in the elements.
+    // before[a][b]: sibling pairs with an `a` placed earlier than a `b`. Children sorted by
+    // parent, then placement, are counted by type one parent at a time: linear after the sort,
+    // and 16 bytes an element (a map of counts per parent took 30 MB at 444,626 dots).
+    struct Child {
+        const Element* parent;
+        std::uint32_t order, type;
+    };
+    std::vector<Child> children;
+    for (std::size_t k = 0; k < elements.size(); ++k)
+        if (elements[k]->parent)
+            children.push_back({elements[k]->parent, static_cast<std::uint32_t>(k),
+                                static_cast<std::uint32_t>(index_of(&elements[k]->type()))});
+    std::sort(children.begin(), children.end(), [](const Child& x, const Child& y) {
+        return x.parent != y.parent ? std::less<const Element*>()(x.parent, y.parent)
+                                    : x.order < y.order;
+    });
     std::vector<std::vector<long>> before(n, std::vector<long>(n, 0));
-    std::map<const Element*, std::vector<long>> seen;  // parent -> children so far per type
-    for (const Element* e : elements) {
-        if (!e->parent) continue;
-        std::vector<long>& counts = seen[e->parent];
-        counts.resize(n, 0);
-        std::size_t b = index_of(&e->type());
-        for (std::size_t a = 0; a < n; ++a) before[a][b] += counts[a];
-        ++counts[b];
+    std::vector<long> counts(n, 0);  // the current parent's children so far, per type
+    for (std::size_t k = 0; k < children.size(); ++k) {
+        if (k == 0 || children[k].parent != children[k - 1].parent)
+            std::fill(counts.begin(), counts.end(), 0);
+        std::size_t t = children[k].type;
+        for (std::size_t a = 0; a < n; ++a) before[a][t] += counts[a];
+        ++counts[t];
     }
 
     std::vector<const ElementType*> order;

@@ -255,8 +255,7 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
             const Element& element = *elements[static_cast<std::size_t>(index)];
             if (&element.type() != type) continue;
             long id = element.id >= 0 ? element.id : index;
-            svg.begin_element(type->name, id, element.parent ? element.parent->id : -1,
-                              element.depth);
+            svg.begin_element(type->name, id, element.parent ? element.parent->id : -1);
             if (!is_drawn(pattern, element, style, curves)) {
                 svg.end_element();  // an empty group: every element is in the file
                 continue;

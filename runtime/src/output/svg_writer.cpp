@@ -54,11 +54,14 @@ Point device(const cairo_matrix_t& m, double x, double y) {
     return {m.xx * x + m.xy * y + m.x0, m.yx * x + m.yy * y + m.y0};
 }
 
-std::string point_text(Point p) { return svg_number(p.x) + " " + svg_number(p.y); }
-
 }  // namespace
 
-std::string svg_number(double value) { return fixed(value, 2); }
+int svg_digits(int width, int height) {
+    double side = std::max({width, height, 1});
+    return std::clamp(static_cast<int>(std::ceil(std::log10(20000.0 / side) - 1e-9)), 0, 3);
+}
+
+std::string svg_number(double value, int digits) { return fixed(value, digits); }
 
 std::string xml_escape(std::string_view text) {
     std::string out;
@@ -88,7 +91,7 @@ std::string xml_escape(std::string_view text) {
 }
 
 SvgWriter::SvgWriter(OutputStream& out, int width, int height, const std::string& title)
-    : out_(out) {
+    : out_(out), digits_(svg_digits(width, height)) {
     std::string w = std::to_string(width), h = std::to_string(height);
     std::string head =
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -120,14 +123,14 @@ void SvgWriter::end_layer() {
     element_.clear();
 }
 
-void SvgWriter::begin_element(const std::string& type, long id, long parent, int depth) {
+void SvgWriter::begin_element(const std::string& type, long id, long parent) {
     flush_shape();
     out_.write(element_);
     element_.clear();
-    std::string t = xml_escape(type), n = std::to_string(id);
-    element_ += "<g id=\"" + t + "-" + n + "\" data-type=\"" + t + "\" data-id=\"" + n +
-                "\" data-parent=\"" + (parent >= 0 ? std::to_string(parent) : "none") +
-                "\" data-depth=\"" + std::to_string(depth) + "\">";
+    // The type is the layer's and the id's prefix, the placement id the id's number, the depth
+    // in --json: only the parent is not written elsewhere (docs/rendering.md, "Groups").
+    element_ += "<g id=\"" + xml_escape(type) + "-" + std::to_string(id) + "\" data-parent=\"" +
+                (parent >= 0 ? std::to_string(parent) : "none") + "\">";
     group_start_ = element_.size();
     fallback_ = false;
 }
@@ -185,7 +188,8 @@ std::string SvgWriter::paint(cairo_t* cr, bool fill) {
         return part;
     }
     if (cairo_get_dash_count(cr) > 0) fallback_ = true;
-    part += ";stroke-width:" + svg_number(cairo_get_line_width(cr) * scale);
+    // Widths are written once per class: to 0.01 at least, as a rim of 0.75 is not one of 0.8.
+    part += ";stroke-width:" + svg_number(cairo_get_line_width(cr) * scale, std::max(digits_, 2));
     switch (cairo_get_line_cap(cr)) {
         case CAIRO_LINE_CAP_ROUND:
             part += ";stroke-linecap:round";
@@ -227,15 +231,18 @@ void SvgWriter::path(cairo_t* cr, bool fill) {
                 // Cairo's implicit move back to the start after a close: SVG does it itself.
                 if (closed && (last || (q.x == start.x && q.y == start.y))) break;
                 if (last) break;
-                d += "M" + point_text(q);
+                d += 'M';  // char then text: "M" + string trips GCC 12's -Wrestrict at -O3
+                d += point_text(q);
                 start = q;
                 break;
             }
             case CAIRO_PATH_LINE_TO:
-                d += "L" + point_text(device(m, data[1].point.x, data[1].point.y));
+                d += 'L';
+                d += point_text(device(m, data[1].point.x, data[1].point.y));
                 break;
             case CAIRO_PATH_CURVE_TO:
-                d += "C" + point_text(device(m, data[1].point.x, data[1].point.y)) + " " +
+                d += 'C';
+                d += point_text(device(m, data[1].point.x, data[1].point.y)) + " " +
                      point_text(device(m, data[2].point.x, data[2].point.y)) + " " +
                      point_text(device(m, data[3].point.x, data[3].point.y));
                 break;
@@ -267,8 +274,8 @@ void SvgWriter::circle(cairo_t* cr, Point center, double radius, bool fill) {
     Point c = device(m, center.x, center.y);
     std::string style = paint(cr, fill);
     add({"circle",
-         " cx=\"" + svg_number(c.x) + "\" cy=\"" + svg_number(c.y) + "\" r=\"" +
-             svg_number(radius * scale) + "\"",
+         " cx=\"" + number(c.x) + "\" cy=\"" + number(c.y) + "\" r=\"" + number(radius * scale) +
+             "\"",
          fill ? style : "", fill ? "" : style});
 }
 
@@ -279,7 +286,7 @@ void SvgWriter::polygon(cairo_t* cr, const std::vector<Point>& points, bool fill
     for (const Point& q : points) {
         Point p = device(m, q.x, q.y);
         if (!text.empty()) text += ' ';
-        text += svg_number(p.x) + "," + svg_number(p.y);
+        text += number(p.x) + "," + number(p.y);
     }
     std::string style = paint(cr, fill);
     add({"polygon", " points=\"" + text + "\"", fill ? style : "", fill ? "" : style});
@@ -318,7 +325,9 @@ std::string SvgWriter::class_of(const std::string& style) {
         it = classes_.emplace(style, class_order_.size()).first;
         class_order_.push_back(&it->first);
     }
-    return "s" + std::to_string(it->second);
+    std::string name = "s";  // not "s" + to_string(): GCC 12 warns (-Wrestrict) on that at -O3
+    name += std::to_string(it->second);
+    return name;
 }
 
 }  // namespace acanthus::detail

@@ -13,9 +13,12 @@
 
 namespace acanthus::detail {
 
-// Numbers in page units to 0.01 (a hundredth of a point or pixel is below any visible change),
-// without trailing zeros.
-std::string svg_number(double value);
+// Decimal digits for coordinates on a page `width` x `height`: a step of at most 1/20000 of its
+// longer side (0.01 under 2000 units, 0.1 under 20000), so rounding moves a point by at most
+// 1/40000 of the page, below a twentieth of a pixel at the page's own size.
+int svg_digits(int width, int height);
+// `value` to `digits` decimals, without trailing zeros.
+std::string svg_number(double value, int digits = 2);
 // Escapes text for an XML attribute value or element content.
 std::string xml_escape(std::string_view text);
 
@@ -28,8 +31,9 @@ class SvgWriter : public CanvasSink {
     // A layer `label`d for Inkscape with id `id`; layers do not nest.
     void begin_layer(const std::string& label, const std::string& id);
     void end_layer();
-    // One element's group; its shapes are kept until end_element() writes the group out.
-    void begin_element(const std::string& type, long id, long parent, int depth);
+    // One element's group, id TYPE-ID and data-parent (the rest of the tree is in --json); its
+    // shapes are kept until end_element() writes the group out.
+    void begin_element(const std::string& type, long id, long parent);
     // True when a shape could not be written as SVG (a gradient, a dash, a skew): the element
     // must be drawn by Cairo.
     bool needs_fallback() const { return fallback_; }
@@ -55,8 +59,11 @@ class SvgWriter : public CanvasSink {
     void add(Shape shape);
     void flush_shape();
     std::string class_of(const std::string& style);
+    std::string number(double value) const { return svg_number(value, digits_); }
+    std::string point_text(Point p) const { return number(p.x) + " " + number(p.y); }
 
     OutputStream& out_;
+    int digits_;                   // decimals of coordinates and widths (svg_digits)
     std::string element_;          // the current element's group, written at its end
     std::size_t group_start_ = 0;  // where its shapes begin in element_
     Shape pending_;                // the last shape, which a stroke of the same geometry may join
