@@ -166,7 +166,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp,
     std::error_code ec;
     fs::remove(log, ec);
     std::string error;
-    if (!prelude_failed_ && !use_precompiled_prelude(config_.toolchain, options, error)) {
+    if (!prelude_failed_ && !use_precompiled_prelude(config_.toolchain, options, error, cpp)) {
         if (cancelled) return false;
         prelude_failed_ = true;  // build without it from now on; only slower
         options.precompiled_header.clear();

@@ -521,6 +521,18 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         return httplib::Server::HandlerResponse::Handled;
     });
 
+    // On every answer: the page runs only its own script and style, loads pictures only from
+    // here (and the blob: URLs it makes of them), cannot be framed by another page (a click
+    // there would draw strokes here), and no answer is read as another type than it says.
+    server.set_default_headers({
+        {"Content-Security-Policy",
+         "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' blob: data:; "
+         "connect-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'"},
+        {"X-Content-Type-Options", "nosniff"},
+        {"X-Frame-Options", "DENY"},
+        {"Referrer-Policy", "no-referrer"},
+    });
+
     // Also the answers of the pre-routing handler and the library's own errors (>= 400).
     server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
         if (res.body.empty() && !res.has_header("Content-Type")) {

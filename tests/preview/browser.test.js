@@ -67,6 +67,18 @@ async function shot(page, name) {
   console.log("saved " + path.join(shots, name));
 }
 
+// The page works under its own Content-Security-Policy: nothing it does is refused.
+async function watchPolicy(page) {
+  await page.evaluateOnNewDocument(() => {
+    window.refused = [];
+    document.addEventListener("securitypolicyviolation", (e) => window.refused.push(e.violatedDirective + " " + e.blockedURI));
+  });
+}
+async function checkPolicy(page, what) {
+  const refused = await page.evaluate(() => window.refused);
+  check(refused.length === 0, what + ": nothing refused by the page's Content-Security-Policy " + JSON.stringify(refused));
+}
+
 async function rulesAndSliders(browser) {
   const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
   const rules = path.join(work, "bubbles.acr");
@@ -74,6 +86,7 @@ async function rulesAndSliders(browser) {
   save(rules, good);
   const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80"], work);
   const page = await browser.newPage();
+  await watchPolicy(page);
   await page.setViewport({ width: 1280, height: 760 });
   await page.goto(url);
   let rev = await waitShown(page, 0);
@@ -180,6 +193,7 @@ async function rulesAndSliders(browser) {
   check(true, "debug frame of iteration 60 shown");
   await shot(page, "preview-debug-frame.png");
   await page.click("#showrender");
+  await checkPolicy(page, "render, sliders, seeds, panels, frames");
   await page.close();
 }
 
@@ -189,6 +203,7 @@ async function growthTools(browser) {
   fs.copyFileSync(path.join(root, "rules", "arrangement.acr"), rules);
   const { url } = await startServer(rules, ["--region", path.join(root, "examples/panels/rectangle.svg")], root);
   const page = await browser.newPage();
+  await watchPolicy(page);
   await page.setViewport({ width: 1280, height: 760 });
   await page.goto(url);
   let rev = await waitShown(page, 0);
@@ -230,6 +245,7 @@ async function growthTools(browser) {
   const all = await (await fetch(url + "guides.svg")).text();
   check(/class="flow"/.test(all) && /class="spray"[^>]*stroke-width="(?!1")[0-9.]+"/.test(all) && /class="boundary"/.test(all),
         "flow, spray (with its brush width) and boundary strokes in the guides");
+  await checkPolicy(page, "growth tools");
   await page.close();
 }
 

@@ -48,6 +48,17 @@ def get_encoded(url, path, encodings="br, gzip"):
     return r.status, r.getheader("Content-Encoding"), body, seconds
 
 
+def headers_of(url, path):
+    """The answer's headers, names in lower case."""
+    host, port = url[len("http://"):].rstrip("/").split(":")
+    c = http.client.HTTPConnection(host, int(port), timeout=10)
+    c.request("GET", path)
+    r = c.getresponse()
+    r.read()
+    c.close()
+    return {k.lower(): v for k, v in r.getheaders()}
+
+
 def request_with(url, method, path, headers, timeout=60):
     host, port = url[len("http://"):].rstrip("/").split(":")
     c = http.client.HTTPConnection(host, int(port), timeout=timeout)
@@ -136,6 +147,14 @@ def main():
                 check(code in (200, 404) and encoding is None and body.startswith(start) and
                       seconds < 1, "%s with Accept-Encoding: br, gzip comes plain (%d, %s, %.3f s)"
                       % (path, code, encoding, seconds))
+            # Safety headers on every answer, errors included.
+            for path in ["/", "/preview.js", "/render.svg", "/status.json", "/nothing"]:
+                h = headers_of(server.url, path)
+                csp = h.get("content-security-policy", "")
+                check("frame-ancestors 'none'" in csp and "script-src 'self'" in csp and
+                      "default-src 'none'" in csp and h.get("x-content-type-options") ==
+                      "nosniff" and h.get("x-frame-options") == "DENY",
+                      "%s: CSP, nosniff and frame-ancestors headers (%s)" % (path, h))
             check(get_encoded(server.url, "/render.svg")[2] == first_svg,
                   "the same bytes as without Accept-Encoding")
             rules_fired = {r["rule"]: r["successes"] for r in s["metrics"]["rules"]}
@@ -159,6 +178,16 @@ def main():
             d = s["diagnostics"]
             check(s["state"] == "error" and d and d[0]["file"].endswith("bubbles.acr") and
                   d[0]["line"] == 34, "C++ error at the rule file's line 34: %s" % d)
+
+            # A misspelt standard header: the precompiled prelude takes the rule file's own
+            # standard includes, and one that does not exist is the build's error, not a stall.
+            save(rules, good + "\n%source\n#include <algoritm>\n%endsource\n")
+            s = server.wait_revision(s["revision"])
+            check(s["state"] == "error" and "algoritm" in s["output"],
+                  "a misspelt #include <algoritm> is an error: %s" % s["output"][:200])
+            save(rules, good + "\n%source\n#include <algorithm>\n%endsource\n")
+            s = server.wait_revision(s["revision"])
+            check(s["state"] == "ok", "with #include <algorithm> it renders: %s" % s["output"][:300])
 
             # Fixed again, then a parameter moved: a new picture without recompiling.
             save(rules, good)
