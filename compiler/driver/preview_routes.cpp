@@ -2,7 +2,9 @@
 
 #include <httplib.h>
 
+#include <acanthus/output_file.hpp>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -40,21 +42,12 @@ void send_file(httplib::Response& res, const fs::path& path, const char* type) {
     res.set_content(body, type);
 }
 
-// Writes `text` to a temporary name beside `path`, then renames it over `path`.
+// Writes `text` to a new temporary file beside `path` (mkstemp: never an existing name, so
+// never through a link planted there), then renames it over `path` (a link of that name is
+// replaced, not followed).
 bool write_whole_file(const fs::path& path, const std::string& text) {
-    const fs::path partial = path.string() + ".partial";
-    {
-        std::ofstream out(partial, std::ios::binary);
-        if (!(out << text) || !out.flush()) {
-            std::error_code ec;
-            fs::remove(partial, ec);
-            return false;
-        }
-    }
-    std::error_code ec;
-    fs::rename(partial, path, ec);
-    if (ec) fs::remove(partial, ec);
-    return !ec;
+    std::string error;
+    return write_file_atomically(path.string(), text, error);
 }
 
 // Responses go out as they are: the library compresses a text body with Brotli (at its slowest
@@ -115,6 +108,27 @@ class LatestFile {
 };
 
 LatestFile latest_upload;  // the latest panel dropped onto the page
+
+// Panels dropped onto the page: the latest two are kept (the last good render, which downloads
+// run again, may still use the one before), older ones are removed, not left to pile up until
+// the server stops.
+class UploadedPanels {
+  public:
+    void add(const std::string& path) {
+        std::lock_guard lock(mutex_);
+        kept_.push_back(path);
+        while (kept_.size() > 2) {
+            std::error_code ec;
+            fs::remove(kept_.front(), ec);
+            kept_.pop_front();
+        }
+    }
+
+  private:
+    std::mutex mutex_;
+    std::deque<std::string> kept_;
+};
+UploadedPanels uploaded_panels;
 LatestFile latest_guides;  // the guides file written last
 
 // The Host header's name (no port, no brackets) is an IP address, localhost or `listen_host`.
@@ -426,7 +440,13 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         static std::atomic<long> uploads{0};
         const fs::path file =
             fs::path(site.work_dir) / ("uploaded-" + std::to_string(++uploads) + ".svg");
-        std::ofstream(file, std::ios::binary) << req.body;
+        if (!write_whole_file(file, req.body)) {
+            res.status = 500;
+            res.set_content(json{{"error", "cannot write " + file.string()}}.dump(),
+                            "application/json");
+            return;
+        }
+        uploaded_panels.add(file.string());
         latest_upload.set(file.string());
         PreviewSettings s = site.job.settings();
         s.region = file.string();

@@ -3,6 +3,7 @@ good picture kept, a parameter change, an endless loop, what is refused.
 Usage: check_server.py ACANTHUS"""
 import http.client
 import os
+import re
 import shutil
 import socket
 import subprocess
@@ -252,6 +253,17 @@ def main():
             s = server.wait_revision(s["revision"])
             check(code == 200 and s["state"] == "ok" and s["settings"]["panel"] == "uploaded",
                   "an uploaded panel is used")
+            # Uploads do not pile up: four more, and only the latest two are kept.
+            star = open(os.path.join(HERE, "..", "..", "examples", "panels", "star.svg"),
+                        "rb").read()
+            for _ in range(4):
+                server.post("/panel", star, "image/svg+xml")
+            s = server.wait_revision(s["revision"])
+            uploaded = re.search(r"(\S*)/uploaded-\d+\.svg", s["command"])
+            kept = sorted(f for f in os.listdir(uploaded.group(1)) if f.startswith("uploaded-")) \
+                if uploaded else []
+            check(kept == ["uploaded-4.svg", "uploaded-5.svg"],
+                  "only the latest two uploaded panels kept: %s (%s)" % (kept, s["command"]))
             server.post("/settings", {"panel": "", "rng_seed": "1", "seeds": []})
             s = server.wait_revision(s["revision"])
 
@@ -320,6 +332,23 @@ def main():
                 check(r.status == want, "GET with Host %s: %d (%d)" % (name, want, r.status))
             code, _ = server.post("/settings", b"{not json")
             check(code == 400, "malformed settings refused (%d)" % code)
+            # Guides are written beside the rule file without following links: neither a
+            # link named like the guides file nor one named like a temporary of it is followed.
+            outside = os.path.join(work, "outside")
+            os.mkdir(outside)
+            for name in ["bubbles.guides.svg", "bubbles.guides.svg.partial"]:
+                target = os.path.join(outside, name + ".target")
+                save(target, "keep\n")
+                os.symlink(target, os.path.join(work, name))
+            code, body = server.post("/guides", {"strokes": [
+                {"kind": "flow", "width": 10, "points": [[1, 2], [30, 40]]}]})
+            guides = os.path.join(work, "bubbles.guides.svg")
+            check(code == 200 and not os.path.islink(guides) and
+                  "<polyline" in open(guides).read(), "the guides replace a link of their name")
+            check(all(open(os.path.join(outside, f)).read() == "keep\n"
+                      for f in os.listdir(outside)), "no file a link pointed to was written")
+            check(sorted(f for f in os.listdir(work) if f.startswith("bubbles.guides")) ==
+                  ["bubbles.guides.svg", "bubbles.guides.svg.partial"], "no temporary left")
             rc = server.stop()
             check(rc == 0, "Ctrl-C stops the server with status 0 (%s)" % rc)
         # Saving an imported file re-renders too.
