@@ -281,10 +281,13 @@ void RenderJob::render(long generation) {
         std::istringstream lines(messages);
         for (std::string line; std::getline(lines, line);)
             if (line.find(": iteration ") == std::string::npos) shown += line + "\n";
-        if (end.how != ChildEnd::How::exited)
+        // The limit is named only when it is what stopped the program.
+        if (end.how == ChildEnd::How::timed_out)
             shown += "acanthus: error: the program was " + describe(end, run.deadline_seconds) +
                      " (--time-limit " + std::to_string(static_cast<long>(settings.time_limit)) +
-                     " s)\n";
+                     " s and 10 s more)\n";
+        else if (end.how != ChildEnd::How::exited)
+            shown += "acanthus: error: the program was " + describe(end, 0) + "\n";
         else if (shown.empty())
             shown = "acanthus: error: the program ended with " + describe(end, 0) + "\n";
         status_.fail("run", shown, parse_diagnostics(shown), seconds_since(start));

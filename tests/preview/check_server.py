@@ -286,6 +286,14 @@ def main():
             check(answered and all(c == 200 for c in answered), "status answered during the loop")
             check(server.get("/render.svg")[0] == 200, "render still served after the loop")
 
+            # std::abort() in a body: the rule and its line, no limit named.
+            save(rules, good.replace("    $$0.order = dot_count++;",
+                                     "    $$0.order = dot_count++;\n    if (dot_count > 3) std::abort();"))
+            s = server.wait_revision(s["revision"], limit=60)
+            check(s["state"] == "error" and "aborted" in s["output"] and "dot --> dot" in
+                  s["output"] and "bubbles.acr:" in s["output"] and "time-limit" not in
+                  s["output"], "an abort names the rule and its line: %s" % s["output"].strip())
+
             # A newer save cancels a render in progress: the looping program is killed, and
             # only the newer render counts as a revision.
             looping = s["revision"]
