@@ -16,6 +16,7 @@ const page = {
   strokes: [],                         // {kind, width, points: [[x, y]...]} in region coordinates
   frames: 0,
   pictureUrl: null,
+  askedForLastGood: false,             // opened on a broken file: the last good picture asked for
   lastElements: 0,
 };
 
@@ -86,6 +87,11 @@ function update(status) {
   if (status.state === "error") { diag.textContent = status.output; diag.hidden = false; }
   else if (status.state === "ok") diag.hidden = true;
   if (status.state === "ok" && status.revision !== page.revision) loadPicture(status.revision);
+  // Opened on a broken file: the server still has the last good picture (404 when none).
+  if (status.state === "error" && page.pictureUrl === null && !page.askedForLastGood) {
+    page.askedForLastGood = true;
+    loadPicture(status.revision);
+  }
   if (status.state !== "running") page.revision = status.revision;
   document.body.dataset.revision = String(status.revision);
   document.body.dataset.state = status.state;

@@ -127,6 +127,17 @@ async function rulesAndSliders(browser) {
                                                            getComputedStyle(img).visibility !== "hidden");
   check(stillShown, "the last good picture stays while the file is broken");
   await shot(page, "preview-error.png");
+  // A page opened (or reloaded) while the file is broken: the error over the last good picture.
+  const late = await browser.newPage();
+  await late.goto(url);
+  await late.waitForFunction(() => document.body.dataset.state === "error" && document.body.dataset.shown !== undefined,
+                             { timeout: 30000, polling: 50 });
+  const lateShows = await late.$eval("#picture", (img) => img.complete && img.naturalWidth > 0 &&
+                                                         getComputedStyle(img).visibility !== "hidden");
+  const lateDiag = await late.$eval("#diagnostics", (d) => (d.hidden ? "" : d.textContent));
+  check(lateShows && lateDiag.includes("bubbles.acr:26:5: error:"),
+        "a page opened on the broken file shows the error and the last good picture");
+  await late.close();
 
   // Fixed: back to a picture.
   save(rules, good);
