@@ -1,6 +1,7 @@
 #include "driver/preview_render_job.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -46,6 +47,17 @@ bool last_progress(const std::string& text, long& iterations, long& elements, do
         found = true;
     }
     return found;
+}
+
+// What a program stopped by RLIMIT_AS shows: an allocation that threw (the runtime reports
+// std::bad_alloc), or a crash or abort where memory could not be had.
+bool out_of_memory(const ChildEnd& end, const std::string& messages) {
+    if (messages.find("bad_alloc") != std::string::npos ||
+        messages.find("out of memory") != std::string::npos ||
+        messages.find("Cannot allocate memory") != std::string::npos)
+        return true;
+    return end.how == ChildEnd::How::signaled && (end.code == SIGSEGV || end.code == SIGABRT) &&
+           messages.find("memory") != std::string::npos;
 }
 
 std::string stem_of(const std::string& path) {
@@ -241,6 +253,7 @@ void RenderJob::render(long generation) {
     run.stdout_path = out;
     run.stderr_path = err;
     run.cancel = &cancel_;
+    run.memory_limit = config_.memory_limit;
     // The program stops itself at --time-limit (and a runaway body a second later); the
     // deadline is for a program that does not.
     run.deadline_seconds = settings.time_limit + 10;
@@ -288,6 +301,9 @@ void RenderJob::render(long generation) {
                      " s and 10 s more)\n";
         else if (end.how != ChildEnd::How::exited)
             shown += "acanthus: error: the program was " + describe(end, 0) + "\n";
+        if (config_.memory_limit > 0 && out_of_memory(end, messages))
+            shown += "acanthus: error: the program ran out of memory under --memory-limit " +
+                     std::to_string(config_.memory_limit >> 20) + " MiB\n";
         else if (shown.empty())
             shown = "acanthus: error: the program ended with " + describe(end, 0) + "\n";
         status_.fail("run", shown, parse_diagnostics(shown), seconds_since(start));
@@ -313,6 +329,7 @@ ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double dead
         (fs::path(config_.work_dir) / ("extra-" + std::to_string(++counter) + ".txt")).string();
     run.stderr_path = err;
     run.cancel = &stop_extras_;
+    run.memory_limit = config_.memory_limit;
     run.deadline_seconds = deadline_seconds;
     ChildEnd end = run_child(run);
     result.ok = end.how == ChildEnd::How::exited && end.code == 0;

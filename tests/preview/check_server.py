@@ -374,6 +374,21 @@ def main():
             s = server.wait_revision(s["revision"])
             check(s["state"] == "ok" and "extra_two" in [p["name"] for p in s["params"]],
                   "saving an imported file re-renders")
+        # --memory-limit: a body that wants 1 GiB under a 256 MiB limit fails, and the
+        # message names the limit; a bad limit is refused.
+        save(rules, good.replace("    $$0.order = dot_count++;",
+                                 "    $$0.order = dot_count++;\n    if (dot_count > 3) { "
+                                 "std::vector<char> big(std::size_t(1) << 30); big[5] = 1; }"))
+        with PreviewServer(acanthus, rules, ["--region", "rect:60,40", "--memory-limit", "256M"],
+                           cwd=work) as server:
+            s = server.wait_revision(0)
+            check(s["state"] == "error" and "bad_alloc" in s["output"] and
+                  "out of memory under --memory-limit 256 MiB" in s["output"],
+                  "a run cut by --memory-limit says so: %s" % s["output"].strip())
+        bad = subprocess.run([acanthus, "preview", rules, "--memory-limit", "5"], cwd=work,
+                             capture_output=True, text=True, timeout=30)
+        check(bad.returncode == 2 and "bad --memory-limit '5'" in bad.stderr,
+              "--memory-limit 5 refused: %s" % bad.stderr.strip())
     finally:
         shutil.rmtree(work, ignore_errors=True)
     if failures:
