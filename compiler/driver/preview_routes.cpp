@@ -478,8 +478,12 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
             s.params["growth_guides"] = file.string();
             latest_guides.set(file.string());
         }
+        // The mode goes with the strokes: without it (no flow stroke left, or none at all,
+        // "Clear strokes") the rule file's own default again, not a flow without guides.
         if (body.contains("mode") && body["mode"].is_string())
             s.params["growth_mode"] = body["mode"].get<std::string>();
+        else
+            s.params.erase("growth_mode");
         site.job.set_settings(s);
         res.set_content(json{{"guides", svg.empty() ? "" : file.string()}}.dump(),
                         "application/json");

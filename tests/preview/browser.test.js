@@ -256,6 +256,15 @@ async function growthTools(browser) {
   const all = await (await fetch(url + "guides.svg")).text();
   check(/class="flow"/.test(all) && /class="spray"[^>]*stroke-width="(?!1")[0-9.]+"/.test(all) && /class="boundary"/.test(all),
         "flow, spray (with its brush width) and boundary strokes in the guides");
+  // Clear strokes: back to the rule file's own growth, a valid render, no guides or mode set.
+  await page.click("#clearstrokes");
+  await page.waitForFunction((a) => Number(document.body.dataset.revision) > a && document.body.dataset.state !== "running",
+                             { timeout: 120000, polling: 100 }, rev);
+  const cleared = await status(url);
+  check(cleared.state === "ok" && cleared.settings.params.growth_guides === undefined &&
+        cleared.settings.params.growth_mode === undefined,
+        "Clear strokes after a flow stroke renders again without guides: " + cleared.state + " " +
+        JSON.stringify(cleared.settings.params) + " " + cleared.output);
   await checkPolicy(page, "growth tools");
   await page.close();
 }
