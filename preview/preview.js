@@ -134,6 +134,9 @@ function paramRange(q) {
   return d > 0 ? [0, 2 * d] : [2 * d, 0];
 }
 
+const HEX_COLOUR = /^#[0-9a-fA-F]{6}$/;
+function unquoted(v) { return v.startsWith('"') && v.endsWith('"') ? JSON.parse(v) : v; }
+
 function buildParams(status) {
   const params = status.params || [];
   const signature = JSON.stringify(params);
@@ -178,6 +181,14 @@ function buildParams(status) {
       text.value = value.startsWith('"') && value.endsWith('"') ? JSON.parse(value) : value;
       text.addEventListener("change", () => sendSettings({ params: { [q.name]: text.value } }));
       row.append(text);
+      // A colour (a string parameter whose default is #rrggbb) gets a colour picker too.
+      if (HEX_COLOUR.test(unquoted(q.default))) {
+        const picker = document.createElement("input");
+        picker.type = "color";
+        picker.value = HEX_COLOUR.test(text.value) ? text.value.toLowerCase() : unquoted(q.default).toLowerCase();
+        picker.addEventListener("input", () => { text.value = picker.value; sendSettings({ params: { [q.name]: picker.value } }); });
+        row.append(picker);
+      }
     }
     box.append(row);
   }
@@ -192,6 +203,7 @@ function syncParams(values) {
     for (const input of row.querySelectorAll("input")) {
       if (input === document.activeElement) continue;
       if (input.type === "checkbox") input.checked = v === "true" || v === "1";
+      else if (input.type === "color") { if (HEX_COLOUR.test(unquoted(v))) input.value = unquoted(v).toLowerCase(); }
       else input.value = v;
     }
   }

@@ -269,6 +269,36 @@ async function growthTools(browser) {
   await page.close();
 }
 
+// A colour parameter (a string whose default is #rrggbb) gets a colour picker beside its text.
+async function colourPickers(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "flowers.acr");
+  fs.copyFileSync(path.join(root, "rules", "flowers.acr"), rules);
+  const { url } = await startServer(rules, ["--region", "rect:120,80"], root);
+  const page = await browser.newPage();
+  await watchPolicy(page);
+  await page.setViewport({ width: 1280, height: 760 });
+  await page.goto(url);
+  let rev = await waitShown(page, 0);
+  const pickers = await page.$$eval("#params .row", (rows) => rows.filter((r) => r.querySelector("input[type=color]"))
+    .map((r) => [r.dataset.param, r.querySelector("input[type=color]").value]));
+  check(JSON.stringify(pickers) === JSON.stringify([["petal_color", "#d8434e"], ["heart_color", "#f2c14e"], ["green", "#3f7d3a"]]),
+        "colour pickers for the colour parameters, at their defaults: " + JSON.stringify(pickers));
+  const before = await (await fetch(url + "render.svg")).text();
+  await page.$eval("#params .row[data-param=petal_color] input[type=color]", (p) => {
+    p.value = "#22aa44"; p.dispatchEvent(new Event("input", { bubbles: true }));
+  });
+  rev = await waitShown(page, rev);
+  const s = await status(url);
+  const text = await page.$eval("#params .row[data-param=petal_color] input[type=text]", (t) => t.value);
+  const after = await (await fetch(url + "render.svg")).text();
+  check(s.settings.params.petal_color === "#22aa44" && text === "#22aa44" && after !== before &&
+        /#22aa44/i.test(after) && !/#d8434e/i.test(after),
+        "picking a colour sets the parameter, its text field and the picture's petals");
+  await checkPolicy(page, "colour pickers");
+  await page.close();
+}
+
 (async () => {
   let browser;
   const watchdog = setTimeout(() => { console.log("FAIL: the browser tests took over 8 minutes"); stopServers(); process.exit(1); }, 480000);
@@ -277,6 +307,7 @@ async function growthTools(browser) {
                                        args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"] });
     await rulesAndSliders(browser);
     await growthTools(browser);
+    await colourPickers(browser);
   } catch (e) {
     console.log("FAIL: " + (e && e.stack ? e.stack : e));
     failures += 1;
