@@ -339,6 +339,16 @@ $("shuffle").addEventListener("click", () => {
   sendSettings({ rng_seed: seed });
 });
 $("panel").addEventListener("change", () => { page.seeds = []; sendSettings({ panel: $("panel").value, seeds: [] }); });
+$("copycommand").addEventListener("click", async () => {
+  try {
+    await navigator.clipboard.writeText($("command").textContent);
+    $("copied").textContent = "copied";
+  } catch (e) {  // no clipboard (an address other than 127.0.0.1 over plain http): select it
+    getSelection().selectAllChildren($("command"));
+    $("copied").textContent = "selected: press Ctrl-C";
+  }
+  setTimeout(() => { $("copied").textContent = ""; }, 3000);
+});
 $("clearseeds").addEventListener("click", () => { page.seeds = []; drawOverlay(); sendSettings({ seeds: [] }); });
 $("clearstrokes").addEventListener("click", () => { page.strokes = []; sendStrokes(); });
 

@@ -295,6 +295,14 @@ async function colourPickers(browser) {
   check(s.settings.params.petal_color === "#22aa44" && text === "#22aa44" && after !== before &&
         /#22aa44/i.test(after) && !/#d8434e/i.test(after),
         "picking a colour sets the parameter, its text field and the picture's petals");
+  // The copy button puts the command shown on the clipboard.
+  // (Headless Chromium has no system clipboard to read back: the page's call is recorded.)
+  await page.evaluate(() => { navigator.clipboard.writeText = async (t) => { window.copiedText = t; }; });
+  await page.click("#copycommand");
+  await page.waitForFunction(() => document.getElementById("copied").textContent === "copied", { timeout: 5000, polling: 50 });
+  const copied = await page.evaluate(() => window.copiedText);
+  check(copied === s.command && copied.includes("petal_color") && copied.includes("#22aa44"),
+        "Copy puts the command on the clipboard: " + copied);
   await checkPolicy(page, "colour pickers");
   await page.close();
 }
