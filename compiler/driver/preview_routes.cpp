@@ -159,6 +159,30 @@ std::string coordinate(double v) {
 
 // POST /settings: {"params": {...}, "rng_seed": "7", "panel": "heart.svg", "seeds": [[x, y]]}.
 // Each field is optional; what is given replaces the current setting.
+// A parameter value from the page that names a file (it has a '/' or names one that exists)
+// must lie, links resolved, in the rule file's folder, the examples or the server's own folder:
+// the page cannot have the program read any file the server's user can.
+bool inside(const fs::path& file, const fs::path& dir) {
+    std::error_code ec;
+    const fs::path d = fs::weakly_canonical(fs::absolute(dir, ec), ec);
+    if (ec || d.empty()) return false;
+    auto f = file.begin();
+    for (auto it = d.begin(); it != d.end(); ++it, ++f)
+        if (f == file.end() || *f != *it) return false;
+    return true;
+}
+
+bool allowed_path_value(const PreviewSite& site, const std::string& value) {
+    std::error_code ec;
+    const bool names_file = value.find('/') != std::string::npos || fs::exists(value, ec);
+    if (!names_file) return true;
+    const fs::path file = fs::weakly_canonical(fs::absolute(value, ec), ec);
+    if (ec) return false;
+    const fs::path rules_dir = fs::absolute(site.file, ec).parent_path();
+    return inside(file, rules_dir) || inside(file, fs::path(site.panels_dir).parent_path()) ||
+           inside(file, site.work_dir);
+}
+
 bool apply_settings(PreviewSite& site, const json& body, PreviewSettings& s, std::string& error) {
     if (body.contains("params")) {
         if (!body["params"].is_object()) return error = "params must be an object", false;
@@ -167,6 +191,10 @@ bool apply_settings(PreviewSite& site, const json& body, PreviewSettings& s, std
                 return error = "bad parameter name", false;
             if (value.is_null())
                 s.params.erase(name);
+            else if (value.is_string() && !allowed_path_value(site, value.get<std::string>()))
+                return error = "parameter '" + name +
+                               "' names a file outside the rule file's folder and the examples",
+                       false;
             else if (value.is_string())
                 s.params[name] = value.get<std::string>();
             else if (value.is_boolean())

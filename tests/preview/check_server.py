@@ -338,6 +338,19 @@ def main():
                 r.read()
                 c.close()
                 check(r.status == want, "GET with Host %s: %d (%d)" % (name, want, r.status))
+            # Parameters naming files: only in the rule file's folder, the examples or the
+            # server's own; links resolved first.
+            os.symlink("/etc", os.path.join(work, "etc_link"))
+            for value in ["/etc/hostname", "../../../../../../etc/hostname",
+                          os.path.join(work, "etc_link", "hostname")]:
+                code, body = server.post("/settings", {"params": {"smallest": value}})
+                check(code == 400 and "outside the rule file's folder" in body.decode(),
+                      "a parameter naming %s refused (%d)" % (value, code))
+            for value in [os.path.join(work, "bubbles.acr"),
+                          os.path.join(HERE, "..", "..", "examples", "panels", "star.svg"), "0.5"]:
+                code, _ = server.post("/settings", {"params": {"smallest": value}})
+                check(code == 200, "a parameter naming %s accepted (%d)" % (value, code))
+            server.post("/settings", {"params": {"smallest": None}})
             code, _ = server.post("/settings", b"{not json")
             check(code == 400, "malformed settings refused (%d)" % code)
             # Guides are written beside the rule file without following links: neither a
