@@ -191,7 +191,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp,
         return true;
     }
     if (cancelled) return false;
-    std::string output = read_text(log, 1u << 20);
+    std::string output = in_rule_source(read_text(log, 1u << 20));
     if (output.empty()) output = "acanthus: error: " + error + "\n";
     status_.fail("build", output, parse_diagnostics(output), 0);
     return false;

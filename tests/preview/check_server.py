@@ -179,6 +179,13 @@ def main():
             d = s["diagnostics"]
             check(s["state"] == "error" and d and d[0]["file"].endswith("bubbles.acr") and
                   d[0]["line"] == 34, "C++ error at the rule file's line 34: %s" % d)
+            # At the rule file's column, under its own source line; nothing about the
+            # generated file.
+            check(d and d[0]["column"] == 47 and
+                  "\n    double r = min( max_radius, $goal.radius ) oops;\n" + " " * 46 + "^\n"
+                  in s["output"] and "acanthus-build." not in s["output"] and
+                  "acanthus::body" not in s["output"],
+                  "C++ error at column 47 under the rule's own line: %s" % s["output"])
 
             # A misspelt standard header: the precompiled prelude takes the rule file's own
             # standard includes, and one that does not exist is the build's error, not a stall.
