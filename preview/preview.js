@@ -97,6 +97,7 @@ function update(status) {
   document.body.dataset.state = status.state;
   buildParams(status);
   syncSettings(status.settings || {});
+  followAddress(status.settings);
   fillRules(status.metrics && status.metrics.rules);
   const growth = (status.params || []).some((q) => q.name === "growth_guides");
   $("growthtools").hidden = !growth;
@@ -407,6 +408,31 @@ $("debugnext").addEventListener("click", () => { $("debugit").value = Number($("
 
 // --- start ----------------------------------------------------------------------------------
 loadPanels();
+// --- the page state in the address: a link reproduces the view ------------------------------
+// ?p.NAME=VALUE for each parameter set, rng=N, panel=NAME (one of the list), seed=X,Y each.
+function stateQuery(s) {
+  const q = new URLSearchParams();
+  for (const [k, v] of Object.entries(s.params || {})) q.append("p." + k, v);
+  if (s.rng_seed) q.set("rng", s.rng_seed);
+  if (s.panel && [...$("panel").options].some((o) => o.value === s.panel && o.value !== "uploaded")) q.set("panel", s.panel);
+  for (const seed of s.seeds || []) q.append("seed", seed);
+  return q.toString();
+}
+function followAddress(settings) {
+  const query = stateQuery(settings || {});
+  if (query !== location.search.replace(/^\?/, "")) history.replaceState(null, "", query ? "?" + query : location.pathname);
+}
+function applyAddress() {
+  const q = new URLSearchParams(location.search), change = {}, params = {};
+  for (const [k, v] of q) if (k.startsWith("p.")) params[k.slice(2)] = v;
+  if (Object.keys(params).length) change.params = params;
+  if (q.has("rng")) change.rng_seed = q.get("rng");
+  if (q.has("panel")) change.panel = q.get("panel");
+  if (q.has("seed")) change.seeds = q.getAll("seed").map((t) => t.split(",").map(Number));
+  if (Object.keys(change).length) post("/settings", change).catch(() => {});
+}
+applyAddress();
+
 const events = new EventSource("/events");
 events.onmessage = (e) => update(JSON.parse(e.data));
 window.addEventListener("resize", () => applyView());

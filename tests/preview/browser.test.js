@@ -205,6 +205,23 @@ async function rulesAndSliders(browser) {
   await shot(page, "preview-debug-frame.png");
   await page.click("#showrender");
   await checkPolicy(page, "render, sliders, seeds, panels, frames");
+
+  // The page state is in the address: a link opens the same view, and pages follow changes.
+  const linked = await browser.newPage();
+  await linked.goto(url + "?rng=7&panel=heart.svg&seed=30,30&p.max_radius=2");
+  await linked.waitForFunction(() => document.body.dataset.state === "ok" &&
+                                     /rng=7/.test(location.search) && /p.max_radius=2/.test(location.search),
+                               { timeout: 90000, polling: 100 });
+  const linkedStatus = await status(url);
+  check(linkedStatus.settings.rng_seed === "7" && linkedStatus.settings.panel === "heart.svg" &&
+        JSON.stringify(linkedStatus.settings.seeds) === JSON.stringify(["30,30"]) &&
+        linkedStatus.settings.params.max_radius === "2",
+        "a link with the page state sets it: " + JSON.stringify(linkedStatus.settings));
+  await page.waitForFunction(() => /rng=7/.test(location.search) && /panel=heart.svg/.test(location.search) &&
+                                   /seed=30%2C30/.test(location.search),
+                             { timeout: 30000, polling: 100 });
+  check(true, "the other page's address follows: " + await page.evaluate(() => location.search));
+  await linked.close();
   await page.close();
 }
 
