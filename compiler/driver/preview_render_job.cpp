@@ -60,6 +60,18 @@ bool out_of_memory(const ChildEnd& end, const std::string& messages) {
            messages.find("memory") != std::string::npos;
 }
 
+// The program stops growing at --time-limit and still draws what grew, exiting 0; only its
+// growth seconds tell (a growth that finishes by itself within 5% of the limit is rare).
+std::string cut_by_time_limit(const PreviewStatus::json& metrics, double time_limit) {
+    if (time_limit <= 0 || !metrics.contains("seconds") || !metrics["seconds"].is_object())
+        return {};
+    const double growth = metrics["seconds"].value("growth", 0.0);
+    if (growth < 0.95 * time_limit) return {};
+    std::ostringstream text;
+    text << "cut by --time-limit " << time_limit << " s: the growth did not finish";
+    return text.str();
+}
+
 std::string stem_of(const std::string& path) {
     std::string stem = fs::path(path).stem().string();
     return stem.empty() ? "pattern" : stem;
@@ -287,7 +299,8 @@ void RenderJob::render(long generation) {
             good_arguments_ = arguments;
         }
         status_.set_timing("grow", seconds_since(grow_start));
-        status_.succeed(read_text(svg), metrics, seconds_since(start));
+        status_.succeed(read_text(svg), metrics, seconds_since(start),
+                        cut_by_time_limit(metrics, settings.time_limit));
     } else {
         // Only the program's error lines: the progress lines are noise here.
         std::string shown;

@@ -123,7 +123,8 @@ def main():
         with PreviewServer(acanthus, rules, ["--region", "rect:80,50", "--body-time-limit", "2",
                                              "--time-limit", "8"], cwd=work) as server:
             s = server.wait_revision(0)
-            check(s["state"] == "ok" and s["elements"] > 10, "first render ok with elements")
+            check(s["state"] == "ok" and s["elements"] > 10 and s["phase"] == "done",
+                  "first render ok with elements")
             check(s["params"][0] == {"name": "max_radius", "type": "double", "default": "3.0",
                                      "range": ["0.5", "10"]}, "params with the declared range")
             check([p["type"] for p in s["params"]] == ["double", "double", "bool"], "param types")
@@ -405,6 +406,14 @@ def main():
             check(s["state"] == "error" and "bad_alloc" in s["output"] and
                   "out of memory under --memory-limit 256 MiB" in s["output"],
                   "a run cut by --memory-limit says so: %s" % s["output"].strip())
+        # A growth cut by --time-limit is a picture, but the status says which limit cut it.
+        save(rules, good)
+        with PreviewServer(acanthus, rules, ["--region", "rect:4000,4000", "--time-limit", "0.3"],
+                           cwd=work) as server:
+            s = server.wait_revision(0)
+            check(s["state"] == "ok" and "cut by --time-limit 0.3 s" in s["phase"] and
+                  "cut by --time-limit" in s["output"],
+                  "a growth cut by the time limit says so: %s / %s" % (s["phase"], s["output"]))
         bad = subprocess.run([acanthus, "preview", rules, "--memory-limit", "5"], cwd=work,
                              capture_output=True, text=True, timeout=30)
         check(bad.returncode == 2 and "bad --memory-limit '5'" in bad.stderr,
