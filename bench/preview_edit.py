@@ -173,4 +173,5 @@ def main():
         shutil.rmtree(cache, ignore_errors=True)
 
 
-main()
+if __name__ == "__main__":
+    main()

@@ -16,6 +16,7 @@ const page = {
   strokes: [],                         // {kind, width, points: [[x, y]...]} in region coordinates
   frames: 0,
   pictureUrl: null,
+  askedForLastGood: false,             // opened on a broken file: the last good picture asked for
   lastElements: 0,
 };
 
@@ -86,11 +87,17 @@ function update(status) {
   if (status.state === "error") { diag.textContent = status.output; diag.hidden = false; }
   else if (status.state === "ok") diag.hidden = true;
   if (status.state === "ok" && status.revision !== page.revision) loadPicture(status.revision);
+  // Opened on a broken file: the server still has the last good picture (404 when none).
+  if (status.state === "error" && page.pictureUrl === null && !page.askedForLastGood) {
+    page.askedForLastGood = true;
+    loadPicture(status.revision);
+  }
   if (status.state !== "running") page.revision = status.revision;
   document.body.dataset.revision = String(status.revision);
   document.body.dataset.state = status.state;
   buildParams(status);
   syncSettings(status.settings || {});
+  followAddress(status.settings);
   fillRules(status.metrics && status.metrics.rules);
   const growth = (status.params || []).some((q) => q.name === "growth_guides");
   $("growthtools").hidden = !growth;
@@ -101,8 +108,11 @@ async function loadPicture(revision) {
   const r = await fetch(`/render.svg?revision=${revision}`);
   if (!r.ok) return;
   const text = await r.text();
-  const doc = new DOMParser().parseFromString(text, "image/svg+xml");
-  const root = doc.documentElement, vb = (root.getAttribute("viewBox") || "").split(/[\s,]+/).map(Number);
+  // The viewBox from the root element's tag alone: parsing the whole document here cost as
+  // much again as the <img> decoding it (a fifth of a second for a 5 MB render).
+  const open = /<svg\b[^>]*>/.exec(text.slice(0, 4096));
+  const box = open && /\bviewBox\s*=\s*["']([^"']*)["']/.exec(open[0]);
+  const vb = box ? box[1].trim().split(/[\s,]+/).map(Number) : [];
   const first = page.pictureUrl === null;
   if (vb.length === 4 && vb[2] > 0) page.size = { width: vb[2], height: vb[3] };
   const url = URL.createObjectURL(new Blob([text], { type: "image/svg+xml" }));
@@ -124,6 +134,9 @@ function paramRange(q) {
   if (d === 0) return [0, q.type === "int" || q.type === "long" ? 10 : 1];
   return d > 0 ? [0, 2 * d] : [2 * d, 0];
 }
+
+const HEX_COLOUR = /^#[0-9a-fA-F]{6}$/;
+function unquoted(v) { return v.startsWith('"') && v.endsWith('"') ? JSON.parse(v) : v; }
 
 function buildParams(status) {
   const params = status.params || [];
@@ -169,6 +182,14 @@ function buildParams(status) {
       text.value = value.startsWith('"') && value.endsWith('"') ? JSON.parse(value) : value;
       text.addEventListener("change", () => sendSettings({ params: { [q.name]: text.value } }));
       row.append(text);
+      // A colour (a string parameter whose default is #rrggbb) gets a colour picker too.
+      if (HEX_COLOUR.test(unquoted(q.default))) {
+        const picker = document.createElement("input");
+        picker.type = "color";
+        picker.value = HEX_COLOUR.test(text.value) ? text.value.toLowerCase() : unquoted(q.default).toLowerCase();
+        picker.addEventListener("input", () => { text.value = picker.value; sendSettings({ params: { [q.name]: picker.value } }); });
+        row.append(picker);
+      }
     }
     box.append(row);
   }
@@ -183,6 +204,7 @@ function syncParams(values) {
     for (const input of row.querySelectorAll("input")) {
       if (input === document.activeElement) continue;
       if (input.type === "checkbox") input.checked = v === "true" || v === "1";
+      else if (input.type === "color") { if (HEX_COLOUR.test(unquoted(v))) input.value = unquoted(v).toLowerCase(); }
       else input.value = v;
     }
   }
@@ -318,6 +340,16 @@ $("shuffle").addEventListener("click", () => {
   sendSettings({ rng_seed: seed });
 });
 $("panel").addEventListener("change", () => { page.seeds = []; sendSettings({ panel: $("panel").value, seeds: [] }); });
+$("copycommand").addEventListener("click", async () => {
+  try {
+    await navigator.clipboard.writeText($("command").textContent);
+    $("copied").textContent = "copied";
+  } catch (e) {  // no clipboard (an address other than 127.0.0.1 over plain http): select it
+    getSelection().selectAllChildren($("command"));
+    $("copied").textContent = "selected: press Ctrl-C";
+  }
+  setTimeout(() => { $("copied").textContent = ""; }, 3000);
+});
 $("clearseeds").addEventListener("click", () => { page.seeds = []; drawOverlay(); sendSettings({ seeds: [] }); });
 $("clearstrokes").addEventListener("click", () => { page.strokes = []; sendStrokes(); });
 
@@ -376,6 +408,31 @@ $("debugnext").addEventListener("click", () => { $("debugit").value = Number($("
 
 // --- start ----------------------------------------------------------------------------------
 loadPanels();
+// --- the page state in the address: a link reproduces the view ------------------------------
+// ?p.NAME=VALUE for each parameter set, rng=N, panel=NAME (one of the list), seed=X,Y each.
+function stateQuery(s) {
+  const q = new URLSearchParams();
+  for (const [k, v] of Object.entries(s.params || {})) q.append("p." + k, v);
+  if (s.rng_seed) q.set("rng", s.rng_seed);
+  if (s.panel && [...$("panel").options].some((o) => o.value === s.panel && o.value !== "uploaded")) q.set("panel", s.panel);
+  for (const seed of s.seeds || []) q.append("seed", seed);
+  return q.toString();
+}
+function followAddress(settings) {
+  const query = stateQuery(settings || {});
+  if (query !== location.search.replace(/^\?/, "")) history.replaceState(null, "", query ? "?" + query : location.pathname);
+}
+function applyAddress() {
+  const q = new URLSearchParams(location.search), change = {}, params = {};
+  for (const [k, v] of q) if (k.startsWith("p.")) params[k.slice(2)] = v;
+  if (Object.keys(params).length) change.params = params;
+  if (q.has("rng")) change.rng_seed = q.get("rng");
+  if (q.has("panel")) change.panel = q.get("panel");
+  if (q.has("seed")) change.seeds = q.getAll("seed").map((t) => t.split(",").map(Number));
+  if (Object.keys(change).length) post("/settings", change).catch(() => {});
+}
+applyAddress();
+
 const events = new EventSource("/events");
 events.onmessage = (e) => update(JSON.parse(e.data));
 window.addEventListener("resize", () => applyView());

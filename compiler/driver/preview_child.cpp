@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -82,6 +83,18 @@ ChildEnd run_child(const ChildRun& run) {
     if (rc != 0) {
         end.error = "cannot run '" + run.argv[0] + "': " + std::strerror(rc);
         return end;
+    }
+    // posix_spawn returns once the child has run exec: the limit is in place before the
+    // program's own code allocates anything worth counting.
+    if (run.memory_limit > 0) {
+        const rlimit limit{run.memory_limit, run.memory_limit};
+        if (prlimit(pid, RLIMIT_AS, &limit, nullptr) != 0) {
+            kill_group(pid);
+            while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+            }
+            end.error = std::string("cannot limit the program's memory: ") + std::strerror(errno);
+            return end;
+        }
     }
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();

@@ -17,6 +17,7 @@ struct ChildRun {
     double deadline_seconds = 0;                // 0: none
     const std::atomic<bool>* cancel = nullptr;  // set: kill the child and return
     std::function<void()> on_poll;              // called about ten times a second while it runs
+    unsigned long long memory_limit = 0;        // bytes of address space (RLIMIT_AS); 0: none
 };
 
 struct ChildEnd {

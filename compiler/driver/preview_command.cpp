@@ -35,18 +35,45 @@ constexpr std::size_t kKeptIdleThreads = 8;  // a browser keeps about six connec
 int usage(const std::string& message) {
     std::cerr << "acanthus: error: " << message
               << "\nUsage: acanthus preview [-I DIR]... [-O LEVEL] FILE.acr [program options] "
-                 "[--port N] [--host ADDR]\n";
+                 "[--port N] [--host ADDR] [--memory-limit SIZE]\n";
     return kBadUsage;
 }
 
-// Takes --port and --host out of `args`.
+// A quarter of the machine's memory: the live render, two downloads and a compiler can run at
+// once without one runaway body taking the machine down.
+unsigned long long default_memory_limit() {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || page <= 0) return 0;
+    return static_cast<unsigned long long>(pages) * static_cast<unsigned long long>(page) / 4;
+}
+
+// "2048" or "2048M" (MiB), "2G" (GiB), "0" (no limit) -> bytes.
+bool parse_memory_limit(const std::string& value, unsigned long long& bytes) {
+    std::string digits = value;
+    unsigned shift = 20;
+    if (!digits.empty() && (digits.back() == 'G' || digits.back() == 'g')) {
+        shift = 30;
+        digits.pop_back();
+    } else if (!digits.empty() && (digits.back() == 'M' || digits.back() == 'm')) {
+        digits.pop_back();
+    }
+    if (digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+    const unsigned long long n = std::stoull(digits);
+    if (n > 0 && (n << shift) < (64ull << 20)) return false;  // too little to start a program
+    bytes = n << shift;
+    return true;
+}
+
+// Takes --port, --host and --memory-limit out of `args`.
 bool take_server_options(std::vector<std::string>& args, int& port, std::string& host,
-                         std::string& error) {
+                         unsigned long long& memory_limit, std::string& error) {
     std::vector<std::string> rest;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         std::string name = a.substr(0, a.find('=')), value;
-        if (name != "--port" && name != "--host") {
+        if (name != "--port" && name != "--host" && name != "--memory-limit") {
             rest.push_back(a);
             continue;
         }
@@ -57,6 +84,13 @@ bool take_server_options(std::vector<std::string>& args, int& port, std::string&
         } else {
             error = "'" + name + "' needs a value";
             return false;
+        }
+        if (name == "--memory-limit") {
+            if (!parse_memory_limit(value, memory_limit))
+                return error = "bad --memory-limit '" + value +
+                               "' (MiB, or with M or G: 2048, 512M, 2G; at least 64M; 0 for none)",
+                       false;
+            continue;
         }
         if (name == "--host") {
             if (value.empty()) return error = "'--host' needs an address", false;
@@ -109,7 +143,8 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
     std::vector<std::string> args = program_args;
     int port = kDefaultPort;
     std::string host = "127.0.0.1", error;
-    if (!take_server_options(args, port, host, error)) return usage(error);
+    unsigned long long memory_limit = default_memory_limit();
+    if (!take_server_options(args, port, host, memory_limit, error)) return usage(error);
     PreviewSettings settings;
     if (!settings.take(args, error)) return usage(error);
     std::error_code ec;
@@ -150,7 +185,7 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
     int code = 0;
     {
         PreviewStatus status;
-        PreviewConfig config{input, includes, toolchain, fast, work};
+        PreviewConfig config{input, includes, toolchain, fast, work, memory_limit};
         std::atomic<bool> stopping{false};
         httplib::Server server;
         server.set_payload_max_length(kMaxRequestBody);

@@ -1,5 +1,7 @@
 #include "driver/preview_diagnostics.hpp"
 
+#include <algorithm>
+#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -30,6 +32,86 @@ std::vector<PreviewDiagnostic> parse_diagnostics(const std::string& output) {
             else
                 out.push_back({m[1], 0, 0, message});
         }
+    }
+    return out;
+}
+
+namespace {
+
+// Line `n` (1-based) of `file`, without its newline; false when there is none.
+bool line_of(const std::string& file, int n, std::string& out) {
+    std::ifstream in(file, std::ios::binary);
+    for (int i = 1; in && i <= n; ++i)
+        if (!std::getline(in, out)) return false;
+    return static_cast<bool>(in) || !out.empty();
+}
+
+// The column in `source` of column `column` (1-based) of `generated`, the same line after the
+// compiler rewrote it ($goal -> acanthus::body::goal()): a column in the common start stays, one
+// in the common end keeps its distance from the end, one in between goes to the changed part.
+int source_column(const std::string& generated, const std::string& source, int column) {
+    std::size_t head = 0;
+    while (head < generated.size() && head < source.size() && generated[head] == source[head])
+        ++head;
+    std::size_t tail = 0;
+    while (tail < generated.size() - head && tail < source.size() - head &&
+           generated[generated.size() - 1 - tail] == source[source.size() - 1 - tail])
+        ++tail;
+    const std::size_t c = static_cast<std::size_t>(column > 0 ? column - 1 : 0);
+    if (c < head) return column;
+    if (c >= generated.size() - tail) {
+        const std::size_t from_end = generated.size() - c;
+        return static_cast<int>(source.size() - std::min(from_end, source.size())) + 1;
+    }
+    return static_cast<int>(head) + 1;
+}
+
+}  // namespace
+
+std::string in_rule_source(const std::string& output) {
+    static const std::regex located(R"(^(.+\.acr):(\d+):(\d+): (.*)$)");
+    static const std::regex gcc_excerpt(R"(^(\s*\d+ \| )(.*)$)");
+    static const std::regex temporary(R"(^(In file included from )?[^ ]*/acanthus-build\.[^/ ]+/)");
+    std::vector<std::string> lines;
+    std::istringstream in(output);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    std::string out;
+    std::smatch m;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string& line = lines[i];
+        // The generated file is gone when the page shows this: its lines and their excerpts.
+        if (std::regex_search(line, m, temporary)) {
+            while (i + 1 < lines.size() && !lines[i + 1].empty() && lines[i + 1][0] == ' ') ++i;
+            continue;
+        }
+        std::string source;
+        if (!std::regex_match(line, m, located) || i + 1 >= lines.size() ||
+            !line_of(m[1], std::stoi(m[2]), source)) {
+            out += line + "\n";
+            continue;
+        }
+        const std::string file = m[1], at = m[2], message = m[4];
+        const int column = std::stoi(m[3]);
+        std::string prefix, generated = lines[i + 1];
+        std::smatch e;
+        if (std::regex_match(lines[i + 1], e, gcc_excerpt)) {
+            prefix = e[1];
+            generated = e[2];
+        }
+        if (generated == source) {
+            out += line + "\n";
+            continue;
+        }
+        const int mapped = source_column(generated, source, column);
+        out += file + ":" + at + ":" + std::to_string(mapped) + ": " + message + "\n";
+        out += prefix + source + "\n";
+        std::string caret = prefix;
+        if (!prefix.empty()) caret = std::string(prefix.size() - 2, ' ') + "| ";
+        out += caret + std::string(static_cast<std::size_t>(mapped - 1), ' ') + "^\n";
+        ++i;  // the excerpt; then its caret and fix-it lines, which were for the generated line
+        while (i + 1 < lines.size() && !lines[i + 1].empty() && lines[i + 1][0] == ' ' &&
+               !std::regex_match(lines[i + 1], e, gcc_excerpt))
+            ++i;
     }
     return out;
 }

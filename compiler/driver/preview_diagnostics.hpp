@@ -18,4 +18,9 @@ struct PreviewDiagnostic {
 // Messages without a location (`acanthus: error: ...`) have file set, line and column 0.
 std::vector<PreviewDiagnostic> parse_diagnostics(const std::string& output);
 
+// The C++ compiler's output as about the rule file: a diagnostic located in a .acr file (through
+// the #line directives) whose excerpt is generated code gets the rule file's own line, the
+// column mapped onto it and a caret there; lines about the generated file (deleted by then) go.
+std::string in_rule_source(const std::string& output);
+
 }  // namespace acanthus

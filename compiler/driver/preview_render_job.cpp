@@ -1,6 +1,7 @@
 #include "driver/preview_render_job.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -46,6 +47,29 @@ bool last_progress(const std::string& text, long& iterations, long& elements, do
         found = true;
     }
     return found;
+}
+
+// What a program stopped by RLIMIT_AS shows: an allocation that threw (the runtime reports
+// std::bad_alloc), or a crash or abort where memory could not be had.
+bool out_of_memory(const ChildEnd& end, const std::string& messages) {
+    if (messages.find("bad_alloc") != std::string::npos ||
+        messages.find("out of memory") != std::string::npos ||
+        messages.find("Cannot allocate memory") != std::string::npos)
+        return true;
+    return end.how == ChildEnd::How::signaled && (end.code == SIGSEGV || end.code == SIGABRT) &&
+           messages.find("memory") != std::string::npos;
+}
+
+// The program stops growing at --time-limit and still draws what grew, exiting 0; only its
+// growth seconds tell (a growth that finishes by itself within 5% of the limit is rare).
+std::string cut_by_time_limit(const PreviewStatus::json& metrics, double time_limit) {
+    if (time_limit <= 0 || !metrics.contains("seconds") || !metrics["seconds"].is_object())
+        return {};
+    const double growth = metrics["seconds"].value("growth", 0.0);
+    if (growth < 0.95 * time_limit) return {};
+    std::ostringstream text;
+    text << "cut by --time-limit " << time_limit << " s: the growth did not finish";
+    return text.str();
 }
 
 std::string stem_of(const std::string& path) {
@@ -166,7 +190,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp,
     std::error_code ec;
     fs::remove(log, ec);
     std::string error;
-    if (!prelude_failed_ && !use_precompiled_prelude(config_.toolchain, options, error)) {
+    if (!prelude_failed_ && !use_precompiled_prelude(config_.toolchain, options, error, cpp)) {
         if (cancelled) return false;
         prelude_failed_ = true;  // build without it from now on; only slower
         options.precompiled_header.clear();
@@ -179,7 +203,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp,
         return true;
     }
     if (cancelled) return false;
-    std::string output = read_text(log, 1u << 20);
+    std::string output = in_rule_source(read_text(log, 1u << 20));
     if (output.empty()) output = "acanthus: error: " + error + "\n";
     status_.fail("build", output, parse_diagnostics(output), 0);
     return false;
@@ -241,6 +265,7 @@ void RenderJob::render(long generation) {
     run.stdout_path = out;
     run.stderr_path = err;
     run.cancel = &cancel_;
+    run.memory_limit = config_.memory_limit;
     // The program stops itself at --time-limit (and a runaway body a second later); the
     // deadline is for a program that does not.
     run.deadline_seconds = settings.time_limit + 10;
@@ -274,17 +299,24 @@ void RenderJob::render(long generation) {
             good_arguments_ = arguments;
         }
         status_.set_timing("grow", seconds_since(grow_start));
-        status_.succeed(read_text(svg), metrics, seconds_since(start));
+        status_.succeed(read_text(svg), metrics, seconds_since(start),
+                        cut_by_time_limit(metrics, settings.time_limit));
     } else {
         // Only the program's error lines: the progress lines are noise here.
         std::string shown;
         std::istringstream lines(messages);
         for (std::string line; std::getline(lines, line);)
             if (line.find(": iteration ") == std::string::npos) shown += line + "\n";
-        if (end.how != ChildEnd::How::exited)
+        // The limit is named only when it is what stopped the program.
+        if (end.how == ChildEnd::How::timed_out)
             shown += "acanthus: error: the program was " + describe(end, run.deadline_seconds) +
                      " (--time-limit " + std::to_string(static_cast<long>(settings.time_limit)) +
-                     " s)\n";
+                     " s and 10 s more)\n";
+        else if (end.how != ChildEnd::How::exited)
+            shown += "acanthus: error: the program was " + describe(end, 0) + "\n";
+        if (config_.memory_limit > 0 && out_of_memory(end, messages))
+            shown += "acanthus: error: the program ran out of memory under --memory-limit " +
+                     std::to_string(config_.memory_limit >> 20) + " MiB\n";
         else if (shown.empty())
             shown = "acanthus: error: the program ended with " + describe(end, 0) + "\n";
         status_.fail("run", shown, parse_diagnostics(shown), seconds_since(start));
@@ -310,6 +342,7 @@ ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double dead
         (fs::path(config_.work_dir) / ("extra-" + std::to_string(++counter) + ".txt")).string();
     run.stderr_path = err;
     run.cancel = &stop_extras_;
+    run.memory_limit = config_.memory_limit;
     run.deadline_seconds = deadline_seconds;
     ChildEnd end = run_child(run);
     result.ok = end.how == ChildEnd::How::exited && end.code == 0;

@@ -24,7 +24,8 @@ struct PreviewConfig {
     std::vector<std::string> includes;  // -I
     Toolchain toolchain;
     BuildOptions build;
-    std::string work_dir;  // the server's own temporary directory
+    std::string work_dir;                 // the server's own temporary directory
+    unsigned long long memory_limit = 0;  // bytes of address space for each program run; 0: none
 };
 
 // A program run besides the live render: a download, frames, a debug frame.

@@ -2,7 +2,9 @@
 
 #include <httplib.h>
 
+#include <acanthus/output_file.hpp>
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -40,21 +42,12 @@ void send_file(httplib::Response& res, const fs::path& path, const char* type) {
     res.set_content(body, type);
 }
 
-// Writes `text` to a temporary name beside `path`, then renames it over `path`.
+// Writes `text` to a new temporary file beside `path` (mkstemp: never an existing name, so
+// never through a link planted there), then renames it over `path` (a link of that name is
+// replaced, not followed).
 bool write_whole_file(const fs::path& path, const std::string& text) {
-    const fs::path partial = path.string() + ".partial";
-    {
-        std::ofstream out(partial, std::ios::binary);
-        if (!(out << text) || !out.flush()) {
-            std::error_code ec;
-            fs::remove(partial, ec);
-            return false;
-        }
-    }
-    std::error_code ec;
-    fs::rename(partial, path, ec);
-    if (ec) fs::remove(partial, ec);
-    return !ec;
+    std::string error;
+    return write_file_atomically(path.string(), text, error);
 }
 
 // Responses go out as they are: the library compresses a text body with Brotli (at its slowest
@@ -115,6 +108,27 @@ class LatestFile {
 };
 
 LatestFile latest_upload;  // the latest panel dropped onto the page
+
+// Panels dropped onto the page: the latest two are kept (the last good render, which downloads
+// run again, may still use the one before), older ones are removed, not left to pile up until
+// the server stops.
+class UploadedPanels {
+  public:
+    void add(const std::string& path) {
+        std::lock_guard lock(mutex_);
+        kept_.push_back(path);
+        while (kept_.size() > 2) {
+            std::error_code ec;
+            fs::remove(kept_.front(), ec);
+            kept_.pop_front();
+        }
+    }
+
+  private:
+    std::mutex mutex_;
+    std::deque<std::string> kept_;
+};
+UploadedPanels uploaded_panels;
 LatestFile latest_guides;  // the guides file written last
 
 // The Host header's name (no port, no brackets) is an IP address, localhost or `listen_host`.
@@ -145,6 +159,30 @@ std::string coordinate(double v) {
 
 // POST /settings: {"params": {...}, "rng_seed": "7", "panel": "heart.svg", "seeds": [[x, y]]}.
 // Each field is optional; what is given replaces the current setting.
+// A parameter value from the page that names a file (it has a '/' or names one that exists)
+// must lie, links resolved, in the rule file's folder, the examples or the server's own folder:
+// the page cannot have the program read any file the server's user can.
+bool inside(const fs::path& file, const fs::path& dir) {
+    std::error_code ec;
+    const fs::path d = fs::weakly_canonical(fs::absolute(dir, ec), ec);
+    if (ec || d.empty()) return false;
+    auto f = file.begin();
+    for (auto it = d.begin(); it != d.end(); ++it, ++f)
+        if (f == file.end() || *f != *it) return false;
+    return true;
+}
+
+bool allowed_path_value(const PreviewSite& site, const std::string& value) {
+    std::error_code ec;
+    const bool names_file = value.find('/') != std::string::npos || fs::exists(value, ec);
+    if (!names_file) return true;
+    const fs::path file = fs::weakly_canonical(fs::absolute(value, ec), ec);
+    if (ec) return false;
+    const fs::path rules_dir = fs::absolute(site.file, ec).parent_path();
+    return inside(file, rules_dir) || inside(file, fs::path(site.panels_dir).parent_path()) ||
+           inside(file, site.work_dir);
+}
+
 bool apply_settings(PreviewSite& site, const json& body, PreviewSettings& s, std::string& error) {
     if (body.contains("params")) {
         if (!body["params"].is_object()) return error = "params must be an object", false;
@@ -153,6 +191,10 @@ bool apply_settings(PreviewSite& site, const json& body, PreviewSettings& s, std
                 return error = "bad parameter name", false;
             if (value.is_null())
                 s.params.erase(name);
+            else if (value.is_string() && !allowed_path_value(site, value.get<std::string>()))
+                return error = "parameter '" + name +
+                               "' names a file outside the rule file's folder and the examples",
+                       false;
             else if (value.is_string())
                 s.params[name] = value.get<std::string>();
             else if (value.is_boolean())
@@ -426,7 +468,13 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         static std::atomic<long> uploads{0};
         const fs::path file =
             fs::path(site.work_dir) / ("uploaded-" + std::to_string(++uploads) + ".svg");
-        std::ofstream(file, std::ios::binary) << req.body;
+        if (!write_whole_file(file, req.body)) {
+            res.status = 500;
+            res.set_content(json{{"error", "cannot write " + file.string()}}.dump(),
+                            "application/json");
+            return;
+        }
+        uploaded_panels.add(file.string());
         latest_upload.set(file.string());
         PreviewSettings s = site.job.settings();
         s.region = file.string();
@@ -458,8 +506,12 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
             s.params["growth_guides"] = file.string();
             latest_guides.set(file.string());
         }
+        // The mode goes with the strokes: without it (no flow stroke left, or none at all,
+        // "Clear strokes") the rule file's own default again, not a flow without guides.
         if (body.contains("mode") && body["mode"].is_string())
             s.params["growth_mode"] = body["mode"].get<std::string>();
+        else
+            s.params.erase("growth_mode");
         site.job.set_settings(s);
         res.set_content(json{{"guides", svg.empty() ? "" : file.string()}}.dump(),
                         "application/json");
@@ -519,6 +571,18 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         res.status = 403;
         res.set_content("cross-origin request refused\n", "text/plain");
         return httplib::Server::HandlerResponse::Handled;
+    });
+
+    // On every answer: the page runs only its own script and style, loads pictures only from
+    // here (and the blob: URLs it makes of them), cannot be framed by another page (a click
+    // there would draw strokes here), and no answer is read as another type than it says.
+    server.set_default_headers({
+        {"Content-Security-Policy",
+         "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' blob: data:; "
+         "connect-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'"},
+        {"X-Content-Type-Options", "nosniff"},
+        {"X-Frame-Options", "DENY"},
+        {"Referrer-Policy", "no-referrer"},
     });
 
     // Also the answers of the pre-routing handler and the library's own errors (>= 400).

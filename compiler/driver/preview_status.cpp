@@ -42,13 +42,14 @@ void PreviewStatus::set_command(std::string command) {
     command_ = std::move(command);
 }
 
-void PreviewStatus::succeed(std::string svg, const json& metrics, double seconds) {
+void PreviewStatus::succeed(std::string svg, const json& metrics, double seconds,
+                            const std::string& note) {
     std::lock_guard lock(mutex_);
     ++revision_;
     state_ = "ok";
-    phase_ = "done";
+    phase_ = note.empty() ? "done" : note;
     error_kind_.clear();
-    output_.clear();
+    output_ = note.empty() ? "" : note + "\n";
     diagnostics_.clear();
     svg_ = std::move(svg);
     metrics_ = metrics;

@@ -25,7 +25,8 @@ class PreviewStatus {
     // Seconds one phase of the current render took (compile, build, grow): where time goes.
     void set_timing(const std::string& phase, double seconds);
     // A render finished well: the picture and the program's --metrics.
-    void succeed(std::string svg, const json& metrics, double seconds);
+    void succeed(std::string svg, const json& metrics, double seconds,
+                 const std::string& note = {});
     // A render failed: compiler output (with diagnostics) or the program's error.
     void fail(const std::string& kind, const std::string& output,
               std::vector<PreviewDiagnostic> diagnostics, double seconds);

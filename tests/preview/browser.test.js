@@ -67,6 +67,18 @@ async function shot(page, name) {
   console.log("saved " + path.join(shots, name));
 }
 
+// The page works under its own Content-Security-Policy: nothing it does is refused.
+async function watchPolicy(page) {
+  await page.evaluateOnNewDocument(() => {
+    window.refused = [];
+    document.addEventListener("securitypolicyviolation", (e) => window.refused.push(e.violatedDirective + " " + e.blockedURI));
+  });
+}
+async function checkPolicy(page, what) {
+  const refused = await page.evaluate(() => window.refused);
+  check(refused.length === 0, what + ": nothing refused by the page's Content-Security-Policy " + JSON.stringify(refused));
+}
+
 async function rulesAndSliders(browser) {
   const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
   const rules = path.join(work, "bubbles.acr");
@@ -74,6 +86,7 @@ async function rulesAndSliders(browser) {
   save(rules, good);
   const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80"], work);
   const page = await browser.newPage();
+  await watchPolicy(page);
   await page.setViewport({ width: 1280, height: 760 });
   await page.goto(url);
   let rev = await waitShown(page, 0);
@@ -114,6 +127,17 @@ async function rulesAndSliders(browser) {
                                                            getComputedStyle(img).visibility !== "hidden");
   check(stillShown, "the last good picture stays while the file is broken");
   await shot(page, "preview-error.png");
+  // A page opened (or reloaded) while the file is broken: the error over the last good picture.
+  const late = await browser.newPage();
+  await late.goto(url);
+  await late.waitForFunction(() => document.body.dataset.state === "error" && document.body.dataset.shown !== undefined,
+                             { timeout: 30000, polling: 50 });
+  const lateShows = await late.$eval("#picture", (img) => img.complete && img.naturalWidth > 0 &&
+                                                         getComputedStyle(img).visibility !== "hidden");
+  const lateDiag = await late.$eval("#diagnostics", (d) => (d.hidden ? "" : d.textContent));
+  check(lateShows && lateDiag.includes("bubbles.acr:26:5: error:"),
+        "a page opened on the broken file shows the error and the last good picture");
+  await late.close();
 
   // Fixed: back to a picture.
   save(rules, good);
@@ -180,6 +204,24 @@ async function rulesAndSliders(browser) {
   check(true, "debug frame of iteration 60 shown");
   await shot(page, "preview-debug-frame.png");
   await page.click("#showrender");
+  await checkPolicy(page, "render, sliders, seeds, panels, frames");
+
+  // The page state is in the address: a link opens the same view, and pages follow changes.
+  const linked = await browser.newPage();
+  await linked.goto(url + "?rng=7&panel=heart.svg&seed=30,30&p.max_radius=2");
+  await linked.waitForFunction(() => document.body.dataset.state === "ok" &&
+                                     /rng=7/.test(location.search) && /p.max_radius=2/.test(location.search),
+                               { timeout: 90000, polling: 100 });
+  const linkedStatus = await status(url);
+  check(linkedStatus.settings.rng_seed === "7" && linkedStatus.settings.panel === "heart.svg" &&
+        JSON.stringify(linkedStatus.settings.seeds) === JSON.stringify(["30,30"]) &&
+        linkedStatus.settings.params.max_radius === "2",
+        "a link with the page state sets it: " + JSON.stringify(linkedStatus.settings));
+  await page.waitForFunction(() => /rng=7/.test(location.search) && /panel=heart.svg/.test(location.search) &&
+                                   /seed=30%2C30/.test(location.search),
+                             { timeout: 30000, polling: 100 });
+  check(true, "the other page's address follows: " + await page.evaluate(() => location.search));
+  await linked.close();
   await page.close();
 }
 
@@ -189,6 +231,7 @@ async function growthTools(browser) {
   fs.copyFileSync(path.join(root, "rules", "arrangement.acr"), rules);
   const { url } = await startServer(rules, ["--region", path.join(root, "examples/panels/rectangle.svg")], root);
   const page = await browser.newPage();
+  await watchPolicy(page);
   await page.setViewport({ width: 1280, height: 760 });
   await page.goto(url);
   let rev = await waitShown(page, 0);
@@ -230,6 +273,54 @@ async function growthTools(browser) {
   const all = await (await fetch(url + "guides.svg")).text();
   check(/class="flow"/.test(all) && /class="spray"[^>]*stroke-width="(?!1")[0-9.]+"/.test(all) && /class="boundary"/.test(all),
         "flow, spray (with its brush width) and boundary strokes in the guides");
+  // Clear strokes: back to the rule file's own growth, a valid render, no guides or mode set.
+  await page.click("#clearstrokes");
+  await page.waitForFunction((a) => Number(document.body.dataset.revision) > a && document.body.dataset.state !== "running",
+                             { timeout: 120000, polling: 100 }, rev);
+  const cleared = await status(url);
+  check(cleared.state === "ok" && cleared.settings.params.growth_guides === undefined &&
+        cleared.settings.params.growth_mode === undefined,
+        "Clear strokes after a flow stroke renders again without guides: " + cleared.state + " " +
+        JSON.stringify(cleared.settings.params) + " " + cleared.output);
+  await checkPolicy(page, "growth tools");
+  await page.close();
+}
+
+// A colour parameter (a string whose default is #rrggbb) gets a colour picker beside its text.
+async function colourPickers(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "flowers.acr");
+  fs.copyFileSync(path.join(root, "rules", "flowers.acr"), rules);
+  const { url } = await startServer(rules, ["--region", "rect:120,80"], root);
+  const page = await browser.newPage();
+  await watchPolicy(page);
+  await page.setViewport({ width: 1280, height: 760 });
+  await page.goto(url);
+  let rev = await waitShown(page, 0);
+  const pickers = await page.$$eval("#params .row", (rows) => rows.filter((r) => r.querySelector("input[type=color]"))
+    .map((r) => [r.dataset.param, r.querySelector("input[type=color]").value]));
+  check(JSON.stringify(pickers) === JSON.stringify([["petal_color", "#d8434e"], ["heart_color", "#f2c14e"], ["green", "#3f7d3a"]]),
+        "colour pickers for the colour parameters, at their defaults: " + JSON.stringify(pickers));
+  const before = await (await fetch(url + "render.svg")).text();
+  await page.$eval("#params .row[data-param=petal_color] input[type=color]", (p) => {
+    p.value = "#22aa44"; p.dispatchEvent(new Event("input", { bubbles: true }));
+  });
+  rev = await waitShown(page, rev);
+  const s = await status(url);
+  const text = await page.$eval("#params .row[data-param=petal_color] input[type=text]", (t) => t.value);
+  const after = await (await fetch(url + "render.svg")).text();
+  check(s.settings.params.petal_color === "#22aa44" && text === "#22aa44" && after !== before &&
+        /#22aa44/i.test(after) && !/#d8434e/i.test(after),
+        "picking a colour sets the parameter, its text field and the picture's petals");
+  // The copy button puts the command shown on the clipboard.
+  // (Headless Chromium has no system clipboard to read back: the page's call is recorded.)
+  await page.evaluate(() => { navigator.clipboard.writeText = async (t) => { window.copiedText = t; }; });
+  await page.click("#copycommand");
+  await page.waitForFunction(() => document.getElementById("copied").textContent === "copied", { timeout: 5000, polling: 50 });
+  const copied = await page.evaluate(() => window.copiedText);
+  check(copied === s.command && copied.includes("petal_color") && copied.includes("#22aa44"),
+        "Copy puts the command on the clipboard: " + copied);
+  await checkPolicy(page, "colour pickers");
   await page.close();
 }
 
@@ -241,6 +332,7 @@ async function growthTools(browser) {
                                        args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"] });
     await rulesAndSliders(browser);
     await growthTools(browser);
+    await colourPickers(browser);
   } catch (e) {
     console.log("FAIL: " + (e && e.stack ? e.stack : e));
     failures += 1;

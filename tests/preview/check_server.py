@@ -3,6 +3,7 @@ good picture kept, a parameter change, an endless loop, what is refused.
 Usage: check_server.py ACANTHUS"""
 import http.client
 import os
+import re
 import shutil
 import socket
 import subprocess
@@ -46,6 +47,17 @@ def get_encoded(url, path, encodings="br, gzip"):
     seconds = time.monotonic() - start
     c.close()
     return r.status, r.getheader("Content-Encoding"), body, seconds
+
+
+def headers_of(url, path):
+    """The answer's headers, names in lower case."""
+    host, port = url[len("http://"):].rstrip("/").split(":")
+    c = http.client.HTTPConnection(host, int(port), timeout=10)
+    c.request("GET", path)
+    r = c.getresponse()
+    r.read()
+    c.close()
+    return {k.lower(): v for k, v in r.getheaders()}
 
 
 def request_with(url, method, path, headers, timeout=60):
@@ -111,7 +123,8 @@ def main():
         with PreviewServer(acanthus, rules, ["--region", "rect:80,50", "--body-time-limit", "2",
                                              "--time-limit", "8"], cwd=work) as server:
             s = server.wait_revision(0)
-            check(s["state"] == "ok" and s["elements"] > 10, "first render ok with elements")
+            check(s["state"] == "ok" and s["elements"] > 10 and s["phase"] == "done",
+                  "first render ok with elements")
             check(s["params"][0] == {"name": "max_radius", "type": "double", "default": "3.0",
                                      "range": ["0.5", "10"]}, "params with the declared range")
             check([p["type"] for p in s["params"]] == ["double", "double", "bool"], "param types")
@@ -136,6 +149,14 @@ def main():
                 check(code in (200, 404) and encoding is None and body.startswith(start) and
                       seconds < 1, "%s with Accept-Encoding: br, gzip comes plain (%d, %s, %.3f s)"
                       % (path, code, encoding, seconds))
+            # Safety headers on every answer, errors included.
+            for path in ["/", "/preview.js", "/render.svg", "/status.json", "/nothing"]:
+                h = headers_of(server.url, path)
+                csp = h.get("content-security-policy", "")
+                check("frame-ancestors 'none'" in csp and "script-src 'self'" in csp and
+                      "default-src 'none'" in csp and h.get("x-content-type-options") ==
+                      "nosniff" and h.get("x-frame-options") == "DENY",
+                      "%s: CSP, nosniff and frame-ancestors headers (%s)" % (path, h))
             check(get_encoded(server.url, "/render.svg")[2] == first_svg,
                   "the same bytes as without Accept-Encoding")
             rules_fired = {r["rule"]: r["successes"] for r in s["metrics"]["rules"]}
@@ -159,6 +180,23 @@ def main():
             d = s["diagnostics"]
             check(s["state"] == "error" and d and d[0]["file"].endswith("bubbles.acr") and
                   d[0]["line"] == 34, "C++ error at the rule file's line 34: %s" % d)
+            # At the rule file's column, under its own source line; nothing about the
+            # generated file.
+            check(d and d[0]["column"] == 47 and
+                  "\n    double r = min( max_radius, $goal.radius ) oops;\n" + " " * 46 + "^\n"
+                  in s["output"] and "acanthus-build." not in s["output"] and
+                  "acanthus::body" not in s["output"],
+                  "C++ error at column 47 under the rule's own line: %s" % s["output"])
+
+            # A misspelt standard header: the precompiled prelude takes the rule file's own
+            # standard includes, and one that does not exist is the build's error, not a stall.
+            save(rules, good + "\n%source\n#include <algoritm>\n%endsource\n")
+            s = server.wait_revision(s["revision"])
+            check(s["state"] == "error" and "algoritm" in s["output"],
+                  "a misspelt #include <algoritm> is an error: %s" % s["output"][:200])
+            save(rules, good + "\n%source\n#include <algorithm>\n%endsource\n")
+            s = server.wait_revision(s["revision"])
+            check(s["state"] == "ok", "with #include <algorithm> it renders: %s" % s["output"][:300])
 
             # Fixed again, then a parameter moved: a new picture without recompiling.
             save(rules, good)
@@ -223,6 +261,17 @@ def main():
             s = server.wait_revision(s["revision"])
             check(code == 200 and s["state"] == "ok" and s["settings"]["panel"] == "uploaded",
                   "an uploaded panel is used")
+            # Uploads do not pile up: four more, and only the latest two are kept.
+            star = open(os.path.join(HERE, "..", "..", "examples", "panels", "star.svg"),
+                        "rb").read()
+            for _ in range(4):
+                server.post("/panel", star, "image/svg+xml")
+            s = server.wait_revision(s["revision"])
+            uploaded = re.search(r"(\S*)/uploaded-\d+\.svg", s["command"])
+            kept = sorted(f for f in os.listdir(uploaded.group(1)) if f.startswith("uploaded-")) \
+                if uploaded else []
+            check(kept == ["uploaded-4.svg", "uploaded-5.svg"],
+                  "only the latest two uploaded panels kept: %s (%s)" % (kept, s["command"]))
             server.post("/settings", {"panel": "", "rng_seed": "1", "seeds": []})
             s = server.wait_revision(s["revision"])
 
@@ -244,6 +293,14 @@ def main():
                   "endless loop is an error: %s" % s["output"].strip())
             check(answered and all(c == 200 for c in answered), "status answered during the loop")
             check(server.get("/render.svg")[0] == 200, "render still served after the loop")
+
+            # std::abort() in a body: the rule and its line, no limit named.
+            save(rules, good.replace("    $$0.order = dot_count++;",
+                                     "    $$0.order = dot_count++;\n    if (dot_count > 3) std::abort();"))
+            s = server.wait_revision(s["revision"], limit=60)
+            check(s["state"] == "error" and "aborted" in s["output"] and "dot --> dot" in
+                  s["output"] and "bubbles.acr:" in s["output"] and "time-limit" not in
+                  s["output"], "an abort names the rule and its line: %s" % s["output"].strip())
 
             # A newer save cancels a render in progress: the looping program is killed, and
             # only the newer render counts as a revision.
@@ -289,8 +346,38 @@ def main():
                 r.read()
                 c.close()
                 check(r.status == want, "GET with Host %s: %d (%d)" % (name, want, r.status))
+            # Parameters naming files: only in the rule file's folder, the examples or the
+            # server's own; links resolved first.
+            os.symlink("/etc", os.path.join(work, "etc_link"))
+            for value in ["/etc/hostname", "../../../../../../etc/hostname",
+                          os.path.join(work, "etc_link", "hostname")]:
+                code, body = server.post("/settings", {"params": {"smallest": value}})
+                check(code == 400 and "outside the rule file's folder" in body.decode(),
+                      "a parameter naming %s refused (%d)" % (value, code))
+            for value in [os.path.join(work, "bubbles.acr"),
+                          os.path.join(HERE, "..", "..", "examples", "panels", "star.svg"), "0.5"]:
+                code, _ = server.post("/settings", {"params": {"smallest": value}})
+                check(code == 200, "a parameter naming %s accepted (%d)" % (value, code))
+            server.post("/settings", {"params": {"smallest": None}})
             code, _ = server.post("/settings", b"{not json")
             check(code == 400, "malformed settings refused (%d)" % code)
+            # Guides are written beside the rule file without following links: neither a
+            # link named like the guides file nor one named like a temporary of it is followed.
+            outside = os.path.join(work, "outside")
+            os.mkdir(outside)
+            for name in ["bubbles.guides.svg", "bubbles.guides.svg.partial"]:
+                target = os.path.join(outside, name + ".target")
+                save(target, "keep\n")
+                os.symlink(target, os.path.join(work, name))
+            code, body = server.post("/guides", {"strokes": [
+                {"kind": "flow", "width": 10, "points": [[1, 2], [30, 40]]}]})
+            guides = os.path.join(work, "bubbles.guides.svg")
+            check(code == 200 and not os.path.islink(guides) and
+                  "<polyline" in open(guides).read(), "the guides replace a link of their name")
+            check(all(open(os.path.join(outside, f)).read() == "keep\n"
+                      for f in os.listdir(outside)), "no file a link pointed to was written")
+            check(sorted(f for f in os.listdir(work) if f.startswith("bubbles.guides")) ==
+                  ["bubbles.guides.svg", "bubbles.guides.svg.partial"], "no temporary left")
             rc = server.stop()
             check(rc == 0, "Ctrl-C stops the server with status 0 (%s)" % rc)
         # Saving an imported file re-renders too.
@@ -308,6 +395,29 @@ def main():
             s = server.wait_revision(s["revision"])
             check(s["state"] == "ok" and "extra_two" in [p["name"] for p in s["params"]],
                   "saving an imported file re-renders")
+        # --memory-limit: a body that wants 1 GiB under a 256 MiB limit fails, and the
+        # message names the limit; a bad limit is refused.
+        save(rules, good.replace("    $$0.order = dot_count++;",
+                                 "    $$0.order = dot_count++;\n    if (dot_count > 3) { "
+                                 "std::vector<char> big(std::size_t(1) << 30); big[5] = 1; }"))
+        with PreviewServer(acanthus, rules, ["--region", "rect:60,40", "--memory-limit", "256M"],
+                           cwd=work) as server:
+            s = server.wait_revision(0)
+            check(s["state"] == "error" and "bad_alloc" in s["output"] and
+                  "out of memory under --memory-limit 256 MiB" in s["output"],
+                  "a run cut by --memory-limit says so: %s" % s["output"].strip())
+        # A growth cut by --time-limit is a picture, but the status says which limit cut it.
+        save(rules, good)
+        with PreviewServer(acanthus, rules, ["--region", "rect:4000,4000", "--time-limit", "0.3"],
+                           cwd=work) as server:
+            s = server.wait_revision(0)
+            check(s["state"] == "ok" and "cut by --time-limit 0.3 s" in s["phase"] and
+                  "cut by --time-limit" in s["output"],
+                  "a growth cut by the time limit says so: %s / %s" % (s["phase"], s["output"]))
+        bad = subprocess.run([acanthus, "preview", rules, "--memory-limit", "5"], cwd=work,
+                             capture_output=True, text=True, timeout=30)
+        check(bad.returncode == 2 and "bad --memory-limit '5'" in bad.stderr,
+              "--memory-limit 5 refused: %s" % bad.stderr.strip())
     finally:
         shutil.rmtree(work, ignore_errors=True)
     if failures:

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <fstream>
 #include <future>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -35,6 +36,56 @@ TEST(PreviewDiagnostics, AcanthusAndGccLinesNotesSkipped) {
     EXPECT_EQ(d[1].column, 41);
     EXPECT_EQ(d[2].file, "acanthus");
     EXPECT_EQ(d[2].line, 0);
+}
+
+// A rule file whose line 2 is a body line the compiler rewrote ($goal).
+std::string rule_file_with_body_line() {
+    const std::string path = ::testing::TempDir() + "in_rule_source.acr";
+    std::ofstream(path) << "%rule\n    double r = min( max_radius, $goal.radius ) oops;\n";
+    return path;
+}
+
+TEST(PreviewDiagnostics, ClangErrorsShowTheRuleLineAndItsColumn) {
+    const std::string rule = rule_file_with_body_line();
+    const std::string out =
+        rule +
+        ":2:64: error: expected ';' at end of declaration\n"
+        "    double r = min( max_radius, acanthus::body::goal().radius ) oops;\n"
+        "                                                               ^\n"
+        "                                                               ;\n"
+        "/tmp/acanthus-build.Ab12Cd/in_rule_source.cpp:90:5: note: declared here\n"
+        "    int goal();\n"
+        "    ^\n"
+        "1 error generated.\n";
+    EXPECT_EQ(in_rule_source(out), rule +
+                                       ":2:47: error: expected ';' at end of declaration\n"
+                                       "    double r = min( max_radius, $goal.radius ) oops;\n"
+                                       "                                              ^\n"
+                                       "1 error generated.\n");
+    // A column inside the rewritten part goes to its start in the rule file.
+    const std::string inside =
+        rule +
+        ":2:40: error: no member named 'goal'\n"
+        "    double r = min( max_radius, acanthus::body::goal().radius ) oops;\n";
+    EXPECT_NE(in_rule_source(inside).find(":2:33: error"), std::string::npos);
+}
+
+TEST(PreviewDiagnostics, GccErrorsShowTheRuleLineAndItsColumn) {
+    const std::string rule = rule_file_with_body_line();
+    const std::string out =
+        rule +
+        ":2:64: error: expected ',' or ';' before 'oops'\n"
+        "    2 |     double r = min( max_radius, acanthus::body::goal().radius ) oops;\n"
+        "      |                                                               ^~~~~\n"
+        "In file included from /tmp/acanthus-build.Xy/p.cpp:1:\n";
+    EXPECT_EQ(in_rule_source(out),
+              rule +
+                  ":2:47: error: expected ',' or ';' before 'oops'\n"
+                  "    2 |     double r = min( max_radius, $goal.radius ) oops;\n"
+                  "      |                                               ^\n");
+    // Lines the compiler printed from the rule file itself are left as they are.
+    const std::string own = rule + ":1:1: error: x\n%rule\n^\n";
+    EXPECT_EQ(in_rule_source(own), own);
 }
 
 TEST(PreviewDiagnostics, ProgramRuleFailureLocatedAtTheRule) {

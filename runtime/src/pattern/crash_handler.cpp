@@ -23,6 +23,8 @@ const char* why(int signal) {
             return "crashed: invalid memory access (bus error)";
         case SIGFPE:
             return "crashed: arithmetic error (integer division by zero?)";
+        case SIGABRT:
+            return "aborted (std::abort, a failed assert or an uncaught error in a destructor)";
         default:
             return "crashed";
     }
@@ -52,7 +54,7 @@ void install_crash_handler() {
     action.sa_sigaction = on_crash;
     action.sa_flags = SA_SIGINFO | SA_ONSTACK | SA_NODEFER;
     sigemptyset(&action.sa_mask);
-    for (int signal : {SIGSEGV, SIGBUS, SIGFPE}) sigaction(signal, &action, nullptr);
+    for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGABRT}) sigaction(signal, &action, nullptr);
 }
 
 }  // namespace acanthus::detail

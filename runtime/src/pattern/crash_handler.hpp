@@ -5,7 +5,8 @@
 
 namespace acanthus::detail {
 
-// Installs an alternate signal stack and handlers for SIGSEGV, SIGBUS and SIGFPE. Idempotent.
+// Installs an alternate signal stack and handlers for SIGSEGV, SIGBUS, SIGFPE and SIGABRT.
+// Idempotent.
 void install_crash_handler();
 
 }  // namespace acanthus::detail
