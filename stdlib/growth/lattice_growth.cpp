@@ -41,14 +41,16 @@ void Synthesis::complete_lattice() {
         bool planted = false;
         const std::vector<int> motifs = placed_;
         for (int id : motifs) {
-            const Node& n = pattern_[id];
-            if (!n.alive || !n.placed()) continue;
-            for (const RingSlot& slot : reference_.rings[n.source]) {
-                Lattice::Spot spot = lattice_->nearest(origin_, n.position + slot.offset);
+            if (!pattern_[id].alive || !pattern_[id].placed()) continue;
+            // Copied: planting adds nodes, which may move the pattern's storage.
+            const Point at = pattern_[id].position;
+            const auto source = pattern_[id].source;
+            for (const RingSlot& slot : reference_.rings[source]) {
+                Lattice::Spot spot = lattice_->nearest(origin_, at + slot.offset);
                 if (spot.residual > kOffLattice * spacing_) continue;
                 if (!options_.fill_holes && !reopened_.count(spot)) continue;
                 if (planted_spots_.count(spot) && !reopened_.count(spot)) continue;
-                if (plant_on_lattice(spot, n.position) < 0) continue;
+                if (plant_on_lattice(spot, at) < 0) continue;
                 planted_spots_.insert(spot);
                 reopened_.erase(spot);
                 planted = true;
