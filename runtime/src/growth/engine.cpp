@@ -366,8 +366,8 @@ std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     if (!std::isfinite(r)) return std::nullopt;
     const double boundary_floor =
         circles->boundary_radius_pixels(found.pixel) * raster.grid().pixel;
-    const double boundary = group ? core_distance_to_boundary(region, *group, c.center)
-                                  : region.distance_to_boundary(c.center);
+    const double boundary = core_region ? core_distance_to_boundary(region, *group, c.center)
+                                        : region.distance_to_boundary(c.center);
     if (boundary_floor < r && boundary <= r) return std::nullopt;
     c.radius = r;
     return c;
