@@ -249,8 +249,10 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     }
     const std::size_t count = children.size();
     for (std::size_t k = 0; k < orbits.size(); ++k)
-        for (const Isometry& g : orbits[k].images)
-            children.push_back(std::make_unique<ImageElement>(*children[k], g));
+        for (auto& image : orbits[k].elements) {
+            image->depth = children[k]->depth;  // made before the child had its place
+            children.push_back(std::move(image));
+        }
     const std::size_t placed = children.size();
     // A few elements and their images lie all over the grid: the field takes them one at a
     // time, each a local update, not as one placement spanning the grid (a bulk placement of a
