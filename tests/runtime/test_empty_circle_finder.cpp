@@ -259,12 +259,12 @@ TEST(EmptyCircleFinder, LazyFieldFindMatchesScanOfExactField) {
     }
 }
 
-// Centres allowed only in a band of whole 64-pixel blocks (as a symmetry's fundamental domain
-// allows only some): the lazy field then leaves out the blocks more than one block from the
-// band (PendingBlocks::set_centre_blocks) and the changes there go undecided, as the
-// incremental circle source does. C must still be the scan's over the exact field, which
-// needs the blocks next to the band exact: a crest test on the band's edge reads them.
-TEST(EmptyCircleFinder, LazyFieldLeavingOutBlocksFarFromTheCentresMatchesScan) {
+// Centres allowed only in a band (as a symmetry's fundamental domain allows only some): the lazy
+// field then leaves out the 8 x 8 tiles more than one tile from the band
+// (PendingBlocks::set_centre_tiles) and the changes there go undecided, as the incremental
+// circle source does. C must still be the scan's over the exact field, which needs the tiles
+// next to the band exact: a crest test on the band's edge reads them.
+TEST(EmptyCircleFinder, LazyFieldLeavingOutTilesFarFromTheCentresMatchesScan) {
     for (const auto metric :
          {acanthus::DistanceMetric::euclidean, acanthus::DistanceMetric::manhattan}) {
         acanthus::Random rng(metric == acanthus::DistanceMetric::euclidean ? 11 : 12);
@@ -272,7 +272,7 @@ TEST(EmptyCircleFinder, LazyFieldLeavingOutBlocksFarFromTheCentresMatchesScan) {
             const int w = static_cast<int>(rng.uniform_int(330, 400));
             const int h = static_cast<int>(rng.uniform_int(200, 260));
             auto occ = framed(w, h);
-            // Centres: block columns 2 and 3, all rows (pixels 128..255).
+            // Centres: pixels 128..255 of every row (tile columns 16 to 31).
             std::vector<std::uint8_t> centres(static_cast<std::size_t>(w) * h, 0);
             for (int j = 0; j < h; ++j)
                 for (int i = 128; i < 256; ++i) centres[static_cast<std::size_t>(j * w + i)] = 1;
@@ -289,7 +289,7 @@ TEST(EmptyCircleFinder, LazyFieldLeavingOutBlocksFarFromTheCentresMatchesScan) {
             EmptyCircleFinder scan(exact, grid(w, h), min_radius);
             finder.set_centres(centres);
             scan.set_centres(centres);
-            lazy.far_blocks().set_centre_blocks(finder.block_centres());
+            lazy.far_blocks().set_centre_tiles(finder.tile_centres());
             lazy.compute(occ);
             exact.compute(occ);
             finder.rebuild();
@@ -301,7 +301,7 @@ TEST(EmptyCircleFinder, LazyFieldLeavingOutBlocksFarFromTheCentresMatchesScan) {
                     << "scene " << scene << " step " << step;
                 if (!inc) break;
                 // A dot against the circle's edge, and one mirrored across the band's left
-                // edge (an image, most of them in blocks left out).
+                // edge (an image, most of them in tiles left out).
                 const int ci = inc->pixel % w, cj = inc->pixel / w;
                 const double a = rng.uniform(0, 6.283), reach = std::sqrt(double(inc->d2));
                 const int di = static_cast<int>(std::lround(std::cos(a) * reach * 0.8));

@@ -345,8 +345,8 @@ TEST(SymmetricGrowth, ReferenceEngineGrowsTheSameOrnament) {
     EXPECT_EQ(test::grow(::dots::pattern(), region, o), fast);
 }
 
-// The lazy field leaves out the blocks far from the fundamental domain (docs/symmetry.md,
-// "Speed"): at 384 px the grid has 6 x 6 blocks of 64 px, most of them out of reach of a d6 or
+// The lazy field leaves out the tiles far from the fundamental domain (docs/symmetry.md,
+// "Speed"): at 384 px the grid has 48 x 48 tiles of 8 px, most of them out of reach of a d6 or
 // c5 wedge, and the tree must still be the reference engine's, which measures every pixel.
 TEST(SymmetricGrowth, LazyFieldOverTheDomainGrowsTheReferenceOrnament) {
     struct Case {

@@ -21,7 +21,7 @@ class IncrementalCircleSource final : public FieldCircleSource {
         const long long pixels = static_cast<long long>(raster.grid().width) * raster.grid().height;
         field_.set_lazy(pixels >= options.lazy_field_pixels);
         // The far field need not keep exact the blocks far from every allowed centre.
-        if (field_.lazy()) field_.far_blocks().set_centre_blocks(finder_.block_centres());
+        if (field_.lazy()) field_.far_blocks().set_centre_tiles(finder_.tile_centres());
     }
 
     void start() override {
