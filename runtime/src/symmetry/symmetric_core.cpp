@@ -47,10 +47,10 @@ std::vector<int> pixels_outside_core(const RasterBuffer& raster, const SymmetryG
 std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGroup& group) {
     std::vector<std::uint8_t> out(static_cast<std::size_t>(grid.width) * grid.height, 0);
     // in_domain() takes an arc tangent per pixel. Most pixels are decided without one by their
-    // angle to the wedge's bisector, compared through its cosine: inside the wedge's half angle
-    // they are in, beyond it by more than the widening allows at their radius (at least
-    // kFar pixels out) they are out; a margin keeps rounding from deciding otherwise than
-    // in_domain(), which decides the rest (the centre, and thin bands along the edges).
+    // angle to the wedge's bisector: inside the wedge's half angle they are in, beyond it by
+    // more than the widening allows at their radius (at least kFar pixels out) they are out; a
+    // margin keeps rounding from deciding otherwise than in_domain(), which decides the rest
+    // (the centre, and thin bands along the edges).
     constexpr double kFar = 64, kMargin = 1e-9;
     const double tol = grid.pixel;
     const std::vector<std::pair<Point, Point>> edges = group.domain_edges(1);
@@ -69,23 +69,50 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
     const bool can_be_out = far_angle + kMargin < M_PI;
     const double cos_out = std::cos(far_angle);
     const Point center = group.center();
-    for (int j = 0; j < grid.height; ++j)
-        for (int i = 0; i < grid.width; ++i) {
-            const Point p = grid.center_of(i, j);
-            auto& cell = out[static_cast<std::size_t>(j * grid.width + i)];
+    auto decide = [&](int i, int j) {
+        const Point p = grid.center_of(i, j);
+        auto& cell = out[static_cast<std::size_t>(j * grid.width + i)];
+        if (cheap) {
+            const Vector v = p - center;
+            const double r = std::sqrt(v.dot(v));  // hypot's care is not needed here
+            if (r > kFar * tol) {
+                const double cosine = bisector.dot(v) / r;
+                if (cosine >= cos_in + kMargin) {
+                    cell = 1;
+                    return;
+                }
+                if (can_be_out && cosine <= cos_out - kMargin) return;
+            }
+        }
+        cell = group.in_domain(p, tol) ? 1 : 0;
+    };
+    // A whole 8 x 8 tile at once when every pixel centre of it is seen from the centre within
+    // `spread` of the tile's middle and that decides them all alike; pixel by pixel otherwise.
+    constexpr int kTile = 8;
+    const double spread_radius = (kTile - 1) / 2.0 * M_SQRT2 * grid.pixel;
+    for (int j0 = 0; j0 < grid.height; j0 += kTile)
+        for (int i0 = 0; i0 < grid.width; i0 += kTile) {
+            const int i1 = std::min(grid.width, i0 + kTile), j1 = std::min(grid.height, j0 + kTile);
             if (cheap) {
-                const Vector v = p - center;
-                const double r = std::sqrt(v.dot(v));  // hypot's care is not needed here
-                if (r > kFar * tol) {
-                    const double cosine = bisector.dot(v) / r;
-                    if (cosine >= cos_in + kMargin) {
-                        cell = 1;
+                const Point mid =
+                    grid.center_of(i0, j0) + Vector(1, 1) * ((kTile - 1) / 2.0 * grid.pixel);
+                const Vector v = mid - center;
+                const double r = std::sqrt(v.dot(v));
+                if (r > spread_radius + kFar * tol) {
+                    const double theta = std::acos(std::clamp(bisector.dot(v) / r, -1.0, 1.0));
+                    const double spread = std::asin(spread_radius / r);
+                    const bool in = theta + spread < half - kMargin;
+                    const bool away = can_be_out && theta - spread > far_angle + kMargin;
+                    if (in || away) {
+                        for (int j = j0; j < j1; ++j)
+                            std::fill(out.begin() + j * grid.width + i0,
+                                      out.begin() + j * grid.width + i1, in ? 1 : 0);
                         continue;
                     }
-                    if (can_be_out && cosine <= cos_out - kMargin) continue;
                 }
             }
-            cell = group.in_domain(p, tol) ? 1 : 0;
+            for (int j = j0; j < j1; ++j)
+                for (int i = i0; i < i1; ++i) decide(i, j);
         }
     return out;
 }
