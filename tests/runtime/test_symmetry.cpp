@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "proxy/overlap.hpp"
 #include "symmetry/image_element.hpp"
 #include "symmetry/orbit.hpp"
+#include "symmetry/symmetric_core.hpp"
 #include "symmetry/symmetry_group.hpp"
 
 using namespace acanthus;
@@ -90,6 +92,50 @@ TEST(SymmetryGroup, DomainHoldsOnePointOfEachOrbit) {
             EXPECT_EQ(inside, 1) << name << " at " << p.x << "," << p.y;
         }
     }
+}
+
+// The domain's pixels (where C may be centred) are those in_domain() accepts, pixel by pixel,
+// for every kind of group, about the grid's centre and off it (the fast path decides most
+// pixels without in_domain()).
+TEST(SymmetryGroup, DomainPixelsAreThoseInTheDomain) {
+    GridFrame grid;
+    grid.width = 300;
+    grid.height = 220;
+    grid.pixel = 0.5;
+    grid.x0 = -20;
+    grid.y0 = -30;
+    for (const char* name : {"c1", "c2", "c3", "c6", "d1", "d2", "d5", "d12", "c60"})
+        for (Point c : {Point{55, 25}, Point{3.25, 71}, Point{60, 150}}) {
+            const SymmetryGroup g = group_of(name, c);
+            const std::vector<std::uint8_t> pixels = domain_pixels(grid, g);
+            long mismatches = 0, in = 0;
+            for (int j = 0; j < grid.height; ++j)
+                for (int i = 0; i < grid.width; ++i) {
+                    const bool want = g.in_domain(grid.center_of(i, j), grid.pixel);
+                    const bool got = pixels[static_cast<std::size_t>(j * grid.width + i)] != 0;
+                    mismatches += want != got;
+                    in += got;
+                }
+            EXPECT_EQ(mismatches, 0) << name << " about " << c.x << "," << c.y;
+            EXPECT_GT(in, 0) << name;
+        }
+}
+
+// Whether a group maps a panel onto itself (then the core is the whole panel).
+TEST(SymmetryGroup, KnowsWhenItMapsTheRegionOntoItself) {
+    const Region circle = Region::from_spec("circle:100");
+    const Point o = circle.bounds().center();
+    const Region rect = Region::from_spec("rect:200,100");
+    const Point m = rect.bounds().center();
+    const double tol = 0.25;
+    EXPECT_TRUE(maps_onto_itself(circle, group_of("c7", o), tol));
+    EXPECT_TRUE(maps_onto_itself(circle, group_of("d12", o), tol));
+    EXPECT_FALSE(maps_onto_itself(circle, group_of("c7", o + Vector(1, 0)), tol));
+    EXPECT_TRUE(maps_onto_itself(rect, group_of("d2", m), tol));
+    EXPECT_TRUE(maps_onto_itself(rect, group_of("c2", m), tol));
+    EXPECT_FALSE(maps_onto_itself(rect, group_of("c4", m), tol));
+    EXPECT_FALSE(maps_onto_itself(rect, group_of("d1", m + Vector(0.5, 0)), tol));
+    EXPECT_TRUE(maps_onto_itself(rect, group_of("d1", m + Vector(0, 7)), tol));
 }
 
 TEST(SymmetryGroup, SnapsOntoMirrorsAndTheCentre) {
@@ -297,6 +343,30 @@ TEST(SymmetricGrowth, ReferenceEngineGrowsTheSameOrnament) {
     const auto fast = test::grow(::dots::pattern(), region, o);
     o.reference_engine = true;
     EXPECT_EQ(test::grow(::dots::pattern(), region, o), fast);
+}
+
+// The lazy field leaves out the tiles far from the fundamental domain (docs/symmetry.md,
+// "Speed"): at 384 px the grid has 48 x 48 tiles of 8 px, most of them out of reach of a d6 or
+// c5 wedge, and the tree must still be the reference engine's, which measures every pixel.
+TEST(SymmetricGrowth, LazyFieldOverTheDomainGrowsTheReferenceOrnament) {
+    struct Case {
+        const char* region;
+        const char* group;
+        std::optional<Point> center;
+    };
+    for (const Case& c : {Case{"circle:40", "d6", {}}, Case{"circle:40", "c5", {}},
+                          Case{"rect:120,80", "c3", Point{50, 45}}}) {
+        const Region region = Region::from_spec(c.region);
+        GrowthOptions o;
+        o.resolution = 384;
+        o.lazy_field_pixels = 0;  // lazy at any size
+        o.symmetry = Symmetry::parse(c.group);
+        o.symmetry->center = c.center;
+        const auto fast = test::grow(::dots::pattern(), region, o);
+        EXPECT_GT(fast.size(), 100u) << c.region << " " << c.group;
+        o.reference_engine = true;
+        EXPECT_EQ(test::grow(::dots::pattern(), region, o), fast) << c.region << " " << c.group;
+    }
 }
 
 TEST(SymmetricGrowth, SeedWhoseImagesLeaveTheRegionIsRefused) {

@@ -59,6 +59,15 @@ void EmptyCircleFinder::set_centres(std::vector<std::uint8_t> allowed) {
     }
 }
 
+std::vector<std::uint8_t> EmptyCircleFinder::tile_centres() const {
+    std::vector<std::uint8_t> out;
+    if (centres_.empty()) return out;
+    out.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
+    for (std::size_t p = 0; p < centres_.size(); ++p)
+        if (centres_[p]) out[static_cast<std::size_t>(tile_of(static_cast<int>(p)))] = 1;
+    return out;
+}
+
 double EmptyCircleFinder::radius_pixels(std::int64_t d2) const {
     const double d = std::sqrt(static_cast<double>(d2));
     // The nearest obstacle pixel centre at city-block distance d is at least d / sqrt 2 away.

@@ -33,6 +33,9 @@ class EmptyCircleFinder {
     // Pixels that may centre a circle (one byte each, non-zero: may); empty, the default: every
     // pixel. A symmetry's fundamental domain (symmetry/). Set before the first search.
     void set_centres(std::vector<std::uint8_t> allowed);
+    // Per tile (numbered as tile_of() numbers them), whether a pixel of it may centre a
+    // circle; empty: all.
+    std::vector<std::uint8_t> tile_centres() const;
     bool may_centre(int pixel) const {
         return centres_.empty() || centres_[static_cast<std::size_t>(pixel)] != 0;
     }

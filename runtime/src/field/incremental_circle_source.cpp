@@ -18,9 +18,10 @@ class IncrementalCircleSource final : public FieldCircleSource {
   public:
     IncrementalCircleSource(const RasterBuffer& raster, const CircleSourceOptions& options)
         : FieldCircleSource(raster, options) {
-        const long long pixels =
-            static_cast<long long>(raster.grid().width) * raster.grid().height;
+        const long long pixels = static_cast<long long>(raster.grid().width) * raster.grid().height;
         field_.set_lazy(pixels >= options.lazy_field_pixels);
+        // The far field need not keep exact the blocks far from every allowed centre.
+        if (field_.lazy()) field_.far_blocks().set_centre_tiles(finder_.tile_centres());
     }
 
     void start() override {
@@ -37,6 +38,12 @@ class IncrementalCircleSource final : public FieldCircleSource {
         }
         changed_.clear();
         field_.add_sites(fresh, ObstacleKind::element, &changed_);
+        // A change in a block the far field leaves out is next to no pixel that may centre a
+        // circle: nothing there needs deciding.
+        if (field_.lazy()) {
+            const PendingBlocks& far = field_.far_blocks();
+            std::erase_if(changed_, [&](int p) { return !far.keeps(p); });
+        }
         finder_.update(changed_);
     }
 
@@ -92,10 +99,10 @@ class IncrementalCircleSource final : public FieldCircleSource {
         if (field_.lazy()) {
             const int reach = static_cast<int>(
                 std::ceil(std::sqrt(static_cast<double>(field_.far_blocks().largest_bound()))));
-            const long long cols = (std::min(w - 1, x1 + reach) >> 3) -
-                                   (std::max(0, x0 - reach) >> 3) + 1;
-            const long long rows = (std::min(h - 1, y1 + reach) >> 3) -
-                                   (std::max(0, y0 - reach) >> 3) + 1;
+            const long long cols =
+                (std::min(w - 1, x1 + reach) >> 3) - (std::max(0, x0 - reach) >> 3) + 1;
+            const long long rows =
+                (std::min(h - 1, y1 + reach) >> 3) - (std::max(0, y0 - reach) >> 3) + 1;
             reach_tiles = cols * rows;
         }
         return static_cast<double>(runs) * static_cast<double>(reach_tiles) >

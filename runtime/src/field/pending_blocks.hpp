@@ -26,6 +26,17 @@ class PendingBlocks {
     // in `metric` (city-block distances squared for Manhattan).
     void reset(int width, int height, const std::int32_t* d2, DistanceMetric metric);
 
+    // Per tile (numbered as tile_of() numbers them), whether a pixel of it may centre a circle;
+    // empty: all (symmetry/ allows only a fundamental domain). A tile more than one tile from
+    // every such tile is left out from the next reset() on: its bound is 0, so nothing is
+    // deferred to it, and its stored distances go stale (too large). No candidate there can be
+    // chosen, and a crest test of a pixel that may centre one reads only its own and the
+    // neighbouring tiles, which are kept.
+    void set_centre_tiles(std::vector<std::uint8_t> tiles) { centre_tiles_ = std::move(tiles); }
+    // False for a pixel of a tile left out (set_centre_tiles()).
+    bool keeps(int pixel) const {
+        return kept_.empty() || kept_[static_cast<std::size_t>(tile_of(pixel))] != 0;
+    }
     int count() const { return blocks_w_ * blocks_h_; }
     // >= every squared distance in the field.
     std::int64_t largest_bound() const { return static_cast<std::int64_t>(groups_.max()); }
@@ -184,12 +195,14 @@ class PendingBlocks {
 
     int width_ = 0, height_ = 0, blocks_w_ = 0, blocks_h_ = 0, tiles_w_ = 0, tiles_h_ = 0;
     bool manhattan_ = false;
-    std::vector<Pending> pending_;         // per block
-    std::vector<std::int32_t> bound_;      // per block: >= every squared distance in it
-    std::vector<std::uint64_t> inexact_;   // per block: its tiles with blobs to measure
-    std::vector<std::uint8_t> untrusted_;  // per block
-    std::vector<std::int64_t> reach_;      // per block not trusted
-    std::vector<std::uint8_t> in_raised_;  // per block: listed in raised_
+    std::vector<std::uint8_t> centre_tiles_;  // set_centre_tiles()
+    std::vector<std::uint8_t> kept_;          // per tile, after reset(); empty: all
+    std::vector<Pending> pending_;            // per block
+    std::vector<std::int32_t> bound_;         // per block: >= every squared distance in it
+    std::vector<std::uint64_t> inexact_;      // per block: its tiles with blobs to measure
+    std::vector<std::uint8_t> untrusted_;     // per block
+    std::vector<std::int64_t> reach_;         // per block not trusted
+    std::vector<std::uint8_t> in_raised_;     // per block: listed in raised_
     std::vector<int> raised_;
     std::vector<int> made_exact_;
     // Per tile slot: above every squared distance it will hold once measured, or equal to the

@@ -249,8 +249,10 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     }
     const std::size_t count = children.size();
     for (std::size_t k = 0; k < orbits.size(); ++k)
-        for (const Isometry& g : orbits[k].images)
-            children.push_back(std::make_unique<ImageElement>(*children[k], g));
+        for (auto& image : orbits[k].elements) {
+            image->depth = children[k]->depth;  // made before the child had its place
+            children.push_back(std::move(image));
+        }
     const std::size_t placed = children.size();
     // A few elements and their images lie all over the grid: the field takes them one at a
     // time, each a local update, not as one placement spanning the grid (a bulk placement of a
@@ -366,8 +368,8 @@ std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     if (!std::isfinite(r)) return std::nullopt;
     const double boundary_floor =
         circles->boundary_radius_pixels(found.pixel) * raster.grid().pixel;
-    const double boundary = group ? core_distance_to_boundary(region, *group, c.center)
-                                  : region.distance_to_boundary(c.center);
+    const double boundary = core_region ? core_distance_to_boundary(region, *group, c.center)
+                                        : region.distance_to_boundary(c.center);
     if (boundary_floor < r && boundary <= r) return std::nullopt;
     c.radius = r;
     return c;

@@ -45,12 +45,14 @@ class GrowthEnvironment : public Environment {
     // How many times intersection() said yes only because of the element's own images: a rule
     // that failed so may fit a smaller circle (GrowthEngine tries one).
     long orbit_refusals() const { return orbit_refusals_; }
+    // The core is the region itself when the group maps the region onto itself (then no
+    // image needs measuring).
     bool inside(Point p) const override {
-        return group_ ? core_contains(region_, *group_, p) : region_.contains(p);
+        return core_differs() ? core_contains(region_, *group_, p) : region_.contains(p);
     }
     double distance_to_boundary(Point p) const override {
-        return group_ ? core_distance_to_boundary(region_, *group_, p)
-                      : region_.distance_to_boundary(p);
+        return core_differs() ? core_distance_to_boundary(region_, *group_, p)
+                              : region_.distance_to_boundary(p);
     }
     // An image stands for its original (the element a rule body can read).
     Element* nearest_element(Point p) const override {
@@ -69,6 +71,7 @@ class GrowthEnvironment : public Environment {
     const SymmetryGroup* group_;
     const Region* const* core_region_;  // the engine's: null when images never leave R
     mutable long orbit_refusals_ = 0;
+    bool core_differs() const { return group_ && core_region_ && *core_region_; }
     bool count_orbit(bool refused) const {
         if (refused) ++orbit_refusals_;
         return refused;

@@ -152,6 +152,7 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
         kept.push_back(images[k].get());
         out.images.push_back(transforms[k]);
         if (out.clear && overlaps_any(*images[k], e, tolerance)) out.clear = false;
+        out.elements.push_back(std::move(images[k]));  // `kept` still points to it
     }
     return out;
 }
@@ -185,15 +186,13 @@ std::vector<std::optional<Orbit>> placeable_orbits(
     std::vector<std::optional<Orbit>> out;
     out.reserve(batch.size());
     SpatialIndex index;  // the images of the elements kept so far
-    std::vector<std::unique_ptr<ImageElement>> images;
-    for (const Element* e : batch) {
+    std::vector<ImageElement*> images;
+    for (std::size_t n = 0; n < batch.size(); ++n) {
+        const Element* e = batch[n];
         Orbit orbit = orbit_of(*e, group, tolerance);
         bool ok = orbit.clear;
-        std::vector<std::unique_ptr<ImageElement>> mine;
-        for (std::size_t k = 0; ok && k < orbit.images.size(); ++k) {
-            mine.push_back(std::make_unique<ImageElement>(*e, orbit.images[k]));
-            ok = !leaves(*mine.back(), region, tolerance);
-        }
+        for (std::size_t k = 0; ok && k < orbit.elements.size(); ++k)
+            ok = !leaves(*orbit.elements[k], region, tolerance);
         for (std::size_t k = 0; ok && k < e->proxy_count(); ++k) {
             const Proxy& p = e->proxy(k);
             if (hits_placed_image(p)) {
@@ -211,12 +210,14 @@ std::vector<std::optional<Orbit>> placeable_orbits(
             out.emplace_back(std::nullopt);
             continue;
         }
-        for (auto& image : mine) {
-            const int id = static_cast<int>(images.size());
-            for (std::size_t k = 0; k < image->proxy_count(); ++k)
-                index.insert(id, static_cast<int>(k), image->proxy(k).bounds());
-            images.push_back(std::move(image));
-        }
+        // The last element's images are checked by no later one.
+        if (n + 1 < batch.size())
+            for (const auto& image : orbit.elements) {
+                const int id = static_cast<int>(images.size());
+                for (std::size_t k = 0; k < image->proxy_count(); ++k)
+                    index.insert(id, static_cast<int>(k), image->proxy(k).bounds());
+                images.push_back(image.get());
+            }
         out.emplace_back(std::move(orbit));
     }
     return out;

@@ -6,9 +6,11 @@
 #include <acanthus/element.hpp>
 #include <acanthus/region.hpp>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
+#include "symmetry/image_element.hpp"
 #include "symmetry/isometry.hpp"
 #include "symmetry/symmetry_group.hpp"
 
@@ -23,6 +25,9 @@ bool same_place(const Element& a, const Element& b, double tolerance);
 struct Orbit {
     // The transformations giving the element's distinct images other than itself.
     std::vector<Isometry> images;
+    // Those images, in the same order: the growth loop places them (they refer to the
+    // element, which must outlive them).
+    std::vector<std::unique_ptr<ImageElement>> elements;
     // False when an image that does not coincide with the element overlaps it.
     bool clear = true;
 };

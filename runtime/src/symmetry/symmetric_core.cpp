@@ -1,6 +1,10 @@
 #include "symmetry/symmetric_core.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geometry/spatial_index.hpp"
 
 namespace acanthus::detail {
 
@@ -42,19 +46,113 @@ std::vector<int> pixels_outside_core(const RasterBuffer& raster, const SymmetryG
 
 std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGroup& group) {
     std::vector<std::uint8_t> out(static_cast<std::size_t>(grid.width) * grid.height, 0);
-    for (int j = 0; j < grid.height; ++j)
-        for (int i = 0; i < grid.width; ++i)
-            out[static_cast<std::size_t>(j * grid.width + i)] =
-                group.in_domain(grid.center_of(i, j), grid.pixel) ? 1 : 0;
+    // in_domain() takes an arc tangent per pixel. Most pixels are decided without one by their
+    // angle to the wedge's bisector: inside the wedge's half angle they are in, beyond it by
+    // more than the widening allows at their radius (at least kFar pixels out) they are out; a
+    // margin keeps rounding from deciding otherwise than in_domain(), which decides the rest
+    // (the centre, and thin bands along the edges).
+    constexpr double kFar = 64, kMargin = 1e-9;
+    const double tol = grid.pixel;
+    const std::vector<std::pair<Point, Point>> edges = group.domain_edges(1);
+    const bool cheap = edges.size() == 2;
+    Vector bisector(0, 0);
+    double half = 0;
+    if (cheap) {
+        const Vector u0 = edges[0].second - edges[0].first;
+        half = group.wedge() / 2;
+        // The bisector: the first edge turned by half the wedge (as in_domain() measures).
+        const double c = std::cos(half), sn = std::sin(half);
+        bisector = Vector(u0.x * c - u0.y * sn, u0.x * sn + u0.y * c);
+    }
+    const double cos_in = std::cos(half);
+    const double far_angle = half + 1 / kFar;
+    const bool can_be_out = far_angle + kMargin < M_PI;
+    const double cos_out = std::cos(far_angle);
+    const Point center = group.center();
+    auto decide = [&](int i, int j) {
+        const Point p = grid.center_of(i, j);
+        auto& cell = out[static_cast<std::size_t>(j * grid.width + i)];
+        if (cheap) {
+            const Vector v = p - center;
+            const double r = std::sqrt(v.dot(v));  // hypot's care is not needed here
+            if (r > kFar * tol) {
+                const double cosine = bisector.dot(v) / r;
+                if (cosine >= cos_in + kMargin) {
+                    cell = 1;
+                    return;
+                }
+                if (can_be_out && cosine <= cos_out - kMargin) return;
+            }
+        }
+        cell = group.in_domain(p, tol) ? 1 : 0;
+    };
+    // A whole 8 x 8 tile at once when every pixel centre of it is seen from the centre within
+    // `spread` of the tile's middle and that decides them all alike; pixel by pixel otherwise.
+    constexpr int kTile = 8;
+    const double spread_radius = (kTile - 1) / 2.0 * M_SQRT2 * grid.pixel;
+    for (int j0 = 0; j0 < grid.height; j0 += kTile)
+        for (int i0 = 0; i0 < grid.width; i0 += kTile) {
+            const int i1 = std::min(grid.width, i0 + kTile), j1 = std::min(grid.height, j0 + kTile);
+            if (cheap) {
+                const Point mid =
+                    grid.center_of(i0, j0) + Vector(1, 1) * ((kTile - 1) / 2.0 * grid.pixel);
+                const Vector v = mid - center;
+                const double r = std::sqrt(v.dot(v));
+                if (r > spread_radius + kFar * tol) {
+                    const double theta = std::acos(std::clamp(bisector.dot(v) / r, -1.0, 1.0));
+                    const double spread = std::asin(spread_radius / r);
+                    const bool in = theta + spread < half - kMargin;
+                    const bool away = can_be_out && theta - spread > far_angle + kMargin;
+                    if (in || away) {
+                        for (int j = j0; j < j1; ++j)
+                            std::fill(out.begin() + j * grid.width + i0,
+                                      out.begin() + j * grid.width + i1, in ? 1 : 0);
+                        continue;
+                    }
+                }
+            }
+            for (int j = j0; j < j1; ++j)
+                for (int i = i0; i < i1; ++i) decide(i, j);
+        }
     return out;
 }
 
 bool maps_onto_itself(const Region& region, const SymmetryGroup& group, double tolerance) {
-    for (const auto& ring : region.rings(tolerance / 4))
+    // Each sampled point's images are measured against the flattened boundary first (an
+    // R-tree of its segments): the flattening is within `slack` of the curves both ways, so
+    // only an image within `slack` of the threshold needs the exact (costly) distance.
+    const double flatten = tolerance / 4, slack = 2 * flatten;
+    const auto rings = region.rings(flatten);
+    std::vector<std::pair<SpatialIndex::Entry, Rect>> entries;
+    for (std::size_t r = 0; r < rings.size(); ++r)
+        for (std::size_t k = 0; k < rings[r].size(); ++k) {  // the last closes the ring
+            const Point a = rings[r][k], b = rings[r][(k + 1) % rings[r].size()];
+            entries.push_back({{static_cast<int>(r), static_cast<int>(k)},
+                               Rect{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                                    std::max(a.y, b.y)}});
+        }
+    if (entries.empty()) return true;
+    const SpatialIndex segments(entries);
+    auto to_segment = [&](Point q, SpatialIndex::Entry e) {
+        const auto& ring = rings[static_cast<std::size_t>(e.element)];
+        const Point a = ring[static_cast<std::size_t>(e.proxy)];
+        const Point b = ring[(static_cast<std::size_t>(e.proxy) + 1) % ring.size()];
+        const Vector ab = b - a;
+        const double len2 = ab.dot(ab);
+        const double t = len2 > 0 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+        return distance(q, a + ab * t);
+    };
+    for (const auto& ring : rings)
         for (Point p : ring)
-            for (std::size_t k = 1; k < group.size(); ++k)
-                if (region.distance_to_boundary(group.transforms()[k].apply(p)) > tolerance)
+            for (std::size_t k = 1; k < group.size(); ++k) {
+                const Point q = group.transforms()[k].apply(p);
+                double d = std::numeric_limits<double>::infinity();
+                for (const SpatialIndex::Entry& e : segments.within(q, tolerance + slack))
+                    d = std::min(d, to_segment(q, e));
+                if (d <= tolerance - slack) continue;
+                if (d > tolerance + slack || region.distance_to_boundary(q) > tolerance)
                     return false;
+            }
     return true;
 }
 

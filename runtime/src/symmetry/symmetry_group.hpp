@@ -20,6 +20,8 @@ class SymmetryGroup {
     // the reflections.
     const std::vector<Isometry>& transforms() const { return transforms_; }
     std::size_t size() const { return transforms_.size(); }
+    // The fundamental domain's angle: 2 pi / N (cN) or pi / N (dN).
+    double wedge() const { return wedge_; }
 
     // True when p lies in the fundamental domain, a wedge of angle 2 pi / N (cN) or pi / N (dN)
     // whose first edge points up from the centre, widened by `tolerance` on each side.
