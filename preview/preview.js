@@ -18,6 +18,9 @@ const page = {
   pictureUrl: null,
   askedForLastGood: false,             // opened on a broken file: the last good picture asked for
   lastElements: 0,
+  pictureTicket: 0,                    // the latest picture asked for (see loadPicture)
+  showingPartial: false,               // the picture is the growth so far, not a finished render
+  partialAsked: 0, partialWanted: 0, partialBusy: false,
 };
 
 // --- where the region lands on the page (runtime/src/output/page_layout.cpp) ---------------
@@ -87,6 +90,9 @@ function update(status) {
   if (status.state === "error") { diag.textContent = status.output; diag.hidden = false; }
   else if (status.state === "ok") diag.hidden = true;
   if (status.state === "ok" && status.revision !== page.revision) loadPicture(status.revision);
+  // The growth so far while it grows; a render that failed goes back to the last good picture.
+  if (status.state === "running" && status.partial) loadPartial(status.partial);
+  if (status.state === "error" && page.showingPartial) loadPicture(status.revision);
   // Opened on a broken file: the server still has the last good picture (404 when none).
   if (status.state === "error" && page.pictureUrl === null && !page.askedForLastGood) {
     page.askedForLastGood = true;
@@ -104,10 +110,28 @@ function update(status) {
   for (const el of document.querySelectorAll(".growth")) el.hidden = !growth;
 }
 
-async function loadPicture(revision) {
-  const r = await fetch(`/render.svg?revision=${revision}`);
-  if (!r.ok) return;
+// A picture of the growth so far (/partial.svg, number n): one fetch at a time, the latest wins.
+function loadPartial(n) {
+  if (n <= page.partialAsked) return;
+  if (page.partialBusy) { page.partialWanted = n; return; }
+  page.partialAsked = n;
+  page.partialBusy = true;
+  loadPicture(null, n).finally(() => {
+    page.partialBusy = false;
+    const s = page.status;
+    if (page.partialWanted > page.partialAsked && s && s.state === "running") loadPartial(page.partialWanted);
+  });
+}
+
+// The render of `revision`, or with `partial` the growth so far. A later call wins over an
+// earlier one still loading.
+async function loadPicture(revision, partial) {
+  const ticket = ++page.pictureTicket;
+  const r = await fetch(partial ? `/partial.svg?n=${partial}` : `/render.svg?revision=${revision}`);
+  if (!r.ok || ticket !== page.pictureTicket) return;
   const text = await r.text();
+  if (ticket !== page.pictureTicket) return;
+  page.showingPartial = Boolean(partial);
   // The viewBox from the root element's tag alone: parsing the whole document here cost as
   // much again as the <img> decoding it (a fifth of a second for a 5 MB render).
   const open = /<svg\b[^>]*>/.exec(text.slice(0, 4096));
@@ -118,7 +142,9 @@ async function loadPicture(revision) {
   const url = URL.createObjectURL(new Blob([text], { type: "image/svg+xml" }));
   const img = $("picture");
   img.onload = () => { if (page.pictureUrl) URL.revokeObjectURL(page.pictureUrl); page.pictureUrl = url;
-                       document.body.dataset.shown = String(revision); };
+                       document.body.dataset.picture = partial ? "partial" : "render";
+                       if (partial) document.body.dataset.partial = String(partial);
+                       else document.body.dataset.shown = String(revision); };
   img.src = url;
   for (const el of [img, $("frame"), $("overlay")]) {
     el.style.width = page.size.width + "px"; el.style.height = page.size.height + "px";

@@ -1,5 +1,7 @@
 #include "driver/preview_render_job.hpp"
 
+#include <sys/stat.h>
+
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -71,6 +73,24 @@ std::string cut_by_time_limit(const PreviewStatus::json& metrics, double time_li
     text << "cut by --time-limit " << time_limit << " s: the growth did not finish";
     return text.str();
 }
+
+// Whether a file the program replaces (by rename) is there anew since the last look.
+class PartialWatch {
+  public:
+    bool changed(const std::string& path) {
+        struct stat st {};
+        if (::stat(path.c_str(), &st) != 0 || st.st_size == 0) return false;
+        const bool fresh = st.st_ino != inode_ || st.st_mtim.tv_sec != mtime_.tv_sec ||
+                           st.st_mtim.tv_nsec != mtime_.tv_nsec;
+        inode_ = st.st_ino;
+        mtime_ = st.st_mtim;
+        return fresh;
+    }
+
+  private:
+    ino_t inode_ = 0;
+    timespec mtime_{};
+};
 
 std::string stem_of(const std::string& path) {
     std::string stem = fs::path(path).stem().string();
@@ -253,11 +273,12 @@ void RenderJob::render(long generation) {
     const std::string tree = (dir / ("tree-" + tag + ".json")).string();
     const std::string out = (dir / ("metrics-" + tag + ".json")).string();
     const std::string err = (dir / ("messages-" + tag + ".txt")).string();
+    const std::string partial = (dir / ("partial-" + tag + ".svg")).string();
     ChildRun run;
     run.argv = program;
     std::vector<std::string> arguments = settings.arguments();
     run.argv.insert(run.argv.end(), arguments.begin(), arguments.end());
-    run.argv.insert(run.argv.end(), {"-o", svg, "--metrics", "--progress"});
+    run.argv.insert(run.argv.end(), {"-o", svg, "--metrics", "--progress", "--partial", partial});
     // The page needs the region's bounds (to place seeds and strokes); the element tree that
     // carries them is large, so it is written only when the region changed.
     const bool need_bounds = region_bounds_.is_null() || bounds_region_ != settings.region;
@@ -269,16 +290,19 @@ void RenderJob::render(long generation) {
     // The program stops itself at --time-limit (and a runaway body a second later); the
     // deadline is for a program that does not.
     run.deadline_seconds = settings.time_limit + 10;
+    PartialWatch partial_seen;
     run.on_poll = [&] {
         long iterations = 0, elements = 0;
         double seconds = 0;
         if (last_progress(read_text(err, 1u << 20), iterations, elements, seconds))
             status_.progress(iterations, elements, seconds);
+        // The program replaces the file by a rename: a new one is a new inode or time.
+        if (partial_seen.changed(partial)) status_.set_partial(read_text(partial));
     };
     ChildEnd end = run_child(run);
     std::error_code ec;
     if (end.how == ChildEnd::How::cancelled) {
-        for (const std::string& f : {svg, tree, out, err}) fs::remove(f, ec);
+        for (const std::string& f : {svg, tree, out, err, partial}) fs::remove(f, ec);
         return;
     }
     std::string messages = read_text(err, 1u << 20);
@@ -321,7 +345,7 @@ void RenderJob::render(long generation) {
             shown = "acanthus: error: the program ended with " + describe(end, 0) + "\n";
         status_.fail("run", shown, parse_diagnostics(shown), seconds_since(start));
     }
-    for (const std::string& f : {svg, tree, out, err}) fs::remove(f, ec);
+    for (const std::string& f : {svg, tree, out, err, partial}) fs::remove(f, ec);
 }
 
 ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double deadline_seconds) {

@@ -362,6 +362,18 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         res.set_content(svg, "image/svg+xml");
     });
 
+    // The growth so far, while a render grows (the program's --partial); 404 otherwise.
+    get("/partial.svg", [&site](const httplib::Request&, httplib::Response& res) {
+        std::string svg = site.status.partial_svg();
+        if (svg.empty()) {
+            res.status = 404;
+            res.set_content("no partial picture now\n", "text/plain");
+            return;
+        }
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(svg, "image/svg+xml");
+    });
+
     for (const char* ext : {"pdf", "png"}) {
         const std::string e = ext;
         get("/render." + e, [&site, e](const httplib::Request&, httplib::Response& res) {

@@ -14,6 +14,7 @@ void PreviewStatus::begin(const std::string& phase) {
     state_ = "running";
     phase_ = phase;
     if (phase == "compiling") progress_iterations_ = progress_elements_ = 0, progress_seconds_ = 0;
+    partial_svg_.clear();
     changed();
 }
 
@@ -23,6 +24,13 @@ void PreviewStatus::progress(long iterations, long elements, double seconds) {
     progress_iterations_ = iterations;
     progress_elements_ = elements;
     progress_seconds_ = seconds;
+    changed();
+}
+
+void PreviewStatus::set_partial(std::string svg) {
+    std::lock_guard lock(mutex_);
+    partial_svg_ = std::move(svg);
+    ++partial_;
     changed();
 }
 
@@ -52,6 +60,7 @@ void PreviewStatus::succeed(std::string svg, const json& metrics, double seconds
     output_ = note.empty() ? "" : note + "\n";
     diagnostics_.clear();
     svg_ = std::move(svg);
+    partial_svg_.clear();
     metrics_ = metrics;
     elements_ = metrics.value("elements", 0L);
     seconds_ = seconds;
@@ -67,6 +76,7 @@ void PreviewStatus::fail(const std::string& kind, const std::string& output,
     error_kind_ = kind;
     output_ = output;
     diagnostics_ = std::move(diagnostics);
+    partial_svg_.clear();
     seconds_ = seconds;
     changed();
 }
@@ -99,12 +109,19 @@ PreviewStatus::json PreviewStatus::to_json() const {
              {{"iterations", progress_iterations_},
               {"elements", progress_elements_},
               {"seconds", progress_seconds_}}},
+            // The number of the partial picture /partial.svg has now; 0 when it has none.
+            {"partial", partial_svg_.empty() ? 0 : partial_},
             {"version", version_}};
 }
 
 std::string PreviewStatus::svg() const {
     std::lock_guard lock(mutex_);
     return svg_;
+}
+
+std::string PreviewStatus::partial_svg() const {
+    std::lock_guard lock(mutex_);
+    return partial_svg_;
 }
 
 long PreviewStatus::revision() const {

@@ -20,6 +20,8 @@ class PreviewStatus {
     // A render began: compiling, then building, then growing.
     void begin(const std::string& phase);
     void progress(long iterations, long elements, double seconds);
+    // A picture of the growth so far (the program's --partial), while it grows.
+    void set_partial(std::string svg);
     void set_params(std::vector<ParamSummary> params);
     void set_command(std::string command);
     // Seconds one phase of the current render took (compile, build, grow): where time goes.
@@ -33,6 +35,7 @@ class PreviewStatus {
 
     json to_json() const;
     std::string svg() const;
+    std::string partial_svg() const;  // empty when the render in progress has drawn none
     long revision() const;
     // Waits until the version passes `seen` or `timeout_ms` ran out; returns the version.
     long wait_for_change(long seen, int timeout_ms) const;
@@ -54,6 +57,8 @@ class PreviewStatus {
     std::vector<ParamSummary> params_;
     json metrics_ = json::object();
     std::string svg_;
+    std::string partial_svg_;
+    long partial_ = 0;  // how many partial pictures the server has had, ever
     std::string command_;
     json timings_ = json::object();
     long elements_ = 0;

@@ -324,15 +324,77 @@ async function colourPickers(browser) {
   await page.close();
 }
 
+// While it grows, the page shows the growth so far (/partial.svg, about every 0.1 s), each
+// picture with more of it; a render that fails after some growth goes back to the last good one.
+async function partialPictures(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "bubbles.acr");
+  // Each new dot waits 2 ms: a growth of a second or two, whatever the machine.
+  // (split and join: String.replace would read the rule file's `$$` as a pattern.)
+  const swap = (text, from, to) => text.split(from).join(to);
+  const slow = swap(swap(fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8"),
+                         "%source\n", "%source\n#include <thread>\n"),
+                    "    $$0.order = dot_count++;\n    return SUCCESS;\n}\n%endrule\n\n%draw",
+                    "    $$0.order = dot_count++;\n    std::this_thread::sleep_for( std::chrono::milliseconds( 2 ) );\n" +
+                    "    return SUCCESS;\n}\n%endrule\n\n%draw");
+  check(slow.includes("sleep_for"), "the slow fixture is made");
+  save(rules, slow);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:160,120"], work);
+  const page = await browser.newPage();
+  await watchPolicy(page);
+  await page.setViewport({ width: 1280, height: 760 });
+  // Every partial picture the page shows (its number), and the dots in each the server sent.
+  await page.evaluateOnNewDocument(() => {
+    window.partials = [];
+    new MutationObserver(() => {
+      if (document.body.dataset.picture === "partial") window.partials.push(Number(document.body.dataset.partial));
+    }).observe(document, { attributes: true, subtree: true, attributeFilter: ["data-partial", "data-picture"] });
+  });
+  const dots = {};
+  page.on("response", async (r) => {
+    const m = /\/partial\.svg\?n=(\d+)/.exec(r.url());
+    if (m && r.ok()) dots[m[1]] = ((await r.text()).match(/<circle/g) || []).length;
+  });
+  await page.goto(url);
+  let rev = await waitShown(page, 0);
+  const shownDots = async (from) => (await page.evaluate((f) => window.partials.slice(f), from)).map((n) => dots[n]);
+  const first = await shownDots(0);
+  const final = await (await fetch(url + "render.svg")).text();
+  const finalDots = (final.match(/<circle/g) || []).length;
+  const s = await status(url);
+  check(first.length >= 2, `the page showed the growth so far while it grew (${first.length} pictures in ` +
+        `${s.timings.grow.toFixed(2)} s of growth)`);
+  check(first.length > 0 && first.every((d, i) => d > 0 && (i === 0 || d >= first[i - 1])) &&
+        first[first.length - 1] < finalDots,
+        "each partial picture has more of the growth, all fewer dots than the finished one: " +
+        JSON.stringify(first) + " then " + finalDots);
+  check(await page.evaluate(() => document.body.dataset.picture) === "render", "the finished picture replaces the last partial one");
+  await checkPolicy(page, "partial pictures");
+
+  // A body that fails after a while: partial pictures, then the error over the last good picture.
+  const seen = await page.evaluate(() => window.partials.length);
+  save(rules, swap(slow, "    $$0.order = dot_count++;\n    std::this_thread",
+                   "    if ( dot_count > 300 ) throw std::runtime_error( \"late\" );\n" +
+                   "    $$0.order = dot_count++;\n    std::this_thread"));
+  rev = await waitShown(page, rev, "error");
+  await page.waitForFunction(() => document.body.dataset.picture === "render", { timeout: 10000, polling: 50 });
+  const late = await shownDots(seen);
+  const back = await page.evaluate(() => document.body.dataset.picture);
+  check(late.length >= 1 && late.every((d) => d > 0 && d <= 301) && back === "render",
+        `a render that fails after ${late.length} partial picture(s) (${JSON.stringify(late)} dots) goes back to the last good picture`);
+  await page.close();
+}
+
 (async () => {
   let browser;
   const watchdog = setTimeout(() => { console.log("FAIL: the browser tests took over 8 minutes"); stopServers(); process.exit(1); }, 480000);
   try {
     browser = await puppeteer.launch({ executablePath: chromium, headless: "new",
                                        args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"] });
-    await rulesAndSliders(browser);
-    await growthTools(browser);
-    await colourPickers(browser);
+    // ACANTHUS_BROWSER_TESTS=name,name runs only those.
+    const only = (process.env.ACANTHUS_BROWSER_TESTS || "").split(",").filter(Boolean);
+    for (const test of [rulesAndSliders, growthTools, colourPickers, partialPictures])
+      if (!only.length || only.includes(test.name)) await test(browser);
   } catch (e) {
     console.log("FAIL: " + (e && e.stack ? e.stack : e));
     failures += 1;

@@ -131,6 +131,9 @@ def main():
             code, first_svg, ctype = server.get("/render.svg")
             check(code == 200 and ctype.startswith("image/svg+xml") and b"<svg" in first_svg,
                   "/render.svg serves the render")
+            # The growth so far is served only while a render grows.
+            check(s["partial"] == 0 and server.get("/partial.svg")[0] == 404,
+                  "no partial picture once the render is done (partial %s)" % s["partial"])
             # --port 0 took a free port and printed it; a second preview on that port is refused.
             port = int(server.url.rstrip("/").rsplit(":", 1)[1])
             check(port > 0, "--port 0 printed the port it took (%d)" % port)
