@@ -105,6 +105,7 @@ function update(status) {
   syncSettings(status.settings || {});
   followAddress(status.settings);
   fillRules(status.metrics && status.metrics.rules);
+  if (status.state === "ok") fillFidelity(status.metrics && status.metrics.growth);
   const growth = (status.params || []).some((q) => q.name === "growth_guides");
   $("growthtools").hidden = !growth;
   for (const el of document.querySelectorAll(".growth")) el.hidden = !growth;
@@ -258,6 +259,54 @@ function fillRules(rules) {
     tr.insertCell().textContent = r.rule;
     for (const v of [r.line, r.successes, r.failures]) { const c = tr.insertCell(); c.className = "n"; c.textContent = v; }
   }
+}
+
+// --- the growth library's fidelity report (--metrics "growth"): how the result keeps the
+// reference's spacing, symbol mix and neighbourhoods (docs/stdlib/growth.md#fidelity-report).
+function fillFidelity(g) {
+  $("fidelity").hidden = !g;
+  if (!g) return;
+  const body = $("fidelitytable").tBodies[0];
+  body.textContent = "";
+  const pct = (v) => (typeof v === "number" ? (100 * v).toFixed(1) + "%" : "–");
+  const num = (v, d = 2) => (typeof v === "number" ? v.toFixed(d) : "–");
+  const row = (name, result, reference, off, label = name) => {
+    const tr = body.insertRow();
+    tr.insertCell().textContent = label;
+    const r = tr.insertCell(); r.className = "n" + (off ? " off" : ""); r.textContent = result;
+    const f = tr.insertCell(); f.className = "n"; f.textContent = reference;
+    tr.dataset.key = name;
+  };
+  row("motifs", `${g.motifs}` + (g.restarts ? ` (${g.restarts} restarts)` : ""), "");
+  row("NN median", num(g.nn_median, 3), "1", Math.abs((g.nn_median || 0) - 1) > 0.1);
+  const same = g.same_symbol_neighbours || {};
+  row("same-symbol pairs", pct(same.result), pct(same.reference),
+      Math.abs((same.result || 0) - (same.reference || 0)) > 0.1);
+  for (const [name, share] of Object.entries(g.symbols || {}))
+    row(name, pct(share.result), pct(share.reference), Math.abs(share.result - share.reference) > 0.05, `“${name}” share`);
+  const d = g.defects || {};
+  row("defects", `${pct(d.share)} of ${d.interior || 0}`, "");
+  row("largest hole", num(g.largest_hole), "", (g.largest_hole || 0) > 1.5);
+  // The histogram: a pair of bars per bin, result in front.
+  const h = g.nn_histogram || {}, svg = $("nnhistogram");
+  svg.textContent = "";
+  const bins = Math.max((h.result || []).length, (h.reference || []).length);
+  const top = Math.max(1e-9, ...(h.result || []), ...(h.reference || []));
+  const w = 210 / Math.max(1, bins);
+  for (const [kind, dx] of [["reference", 0], ["result", w * 0.3]]) {
+    (h[kind] || []).forEach((v, i) => {
+      const r = document.createElementNS(SVGNS, "rect"), height = 56 * v / top;
+      r.setAttribute("x", i * w + dx); r.setAttribute("width", w * 0.7);
+      r.setAttribute("y", 58 - height); r.setAttribute("height", height);
+      r.setAttribute("class", "bar-" + kind);
+      svg.appendChild(r);
+    });
+  }
+  // The reference's spacing: NN 1.
+  const one = document.createElementNS(SVGNS, "line");
+  for (const [k, v] of [["x1", w * 1 / (h.bin || 0.1)], ["x2", w * 1 / (h.bin || 0.1)], ["y1", 0], ["y2", 60]]) one.setAttribute(k, v);
+  one.setAttribute("class", "nn-one");
+  svg.appendChild(one);
 }
 
 // --- zoom and pan ---------------------------------------------------------------------------

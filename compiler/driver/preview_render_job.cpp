@@ -270,7 +270,6 @@ void RenderJob::render(long generation) {
     const fs::path dir(config_.work_dir);
     const std::string tag = std::to_string(generation);
     const std::string svg = (dir / ("render-" + tag + ".svg")).string();
-    const std::string tree = (dir / ("tree-" + tag + ".json")).string();
     const std::string out = (dir / ("metrics-" + tag + ".json")).string();
     const std::string err = (dir / ("messages-" + tag + ".txt")).string();
     const std::string partial = (dir / ("partial-" + tag + ".svg")).string();
@@ -279,10 +278,6 @@ void RenderJob::render(long generation) {
     std::vector<std::string> arguments = settings.arguments();
     run.argv.insert(run.argv.end(), arguments.begin(), arguments.end());
     run.argv.insert(run.argv.end(), {"-o", svg, "--metrics", "--progress", "--partial", partial});
-    // The page needs the region's bounds (to place seeds and strokes); the element tree that
-    // carries them is large, so it is written only when the region changed.
-    const bool need_bounds = region_bounds_.is_null() || bounds_region_ != settings.region;
-    if (need_bounds) run.argv.insert(run.argv.end(), {"--json", tree});
     run.stdout_path = out;
     run.stderr_path = err;
     run.cancel = &cancel_;
@@ -302,19 +297,15 @@ void RenderJob::render(long generation) {
     ChildEnd end = run_child(run);
     std::error_code ec;
     if (end.how == ChildEnd::How::cancelled) {
-        for (const std::string& f : {svg, tree, out, err, partial}) fs::remove(f, ec);
+        for (const std::string& f : {svg, out, err, partial}) fs::remove(f, ec);
         return;
     }
     std::string messages = read_text(err, 1u << 20);
     if (end.how == ChildEnd::How::exited && end.code == 0) {
         PreviewStatus::json metrics = PreviewStatus::json::object();
         try {
+            // (with the region's bounds, where the page places seeds and strokes)
             metrics = PreviewStatus::json::parse(read_text(out));
-            if (need_bounds) {
-                region_bounds_ = PreviewStatus::json::parse(read_text(tree)).at("region");
-                bounds_region_ = settings.region;
-            }
-            metrics["region"] = region_bounds_;
         } catch (const std::exception&) {
         }
         {
@@ -345,7 +336,7 @@ void RenderJob::render(long generation) {
             shown = "acanthus: error: the program ended with " + describe(end, 0) + "\n";
         status_.fail("run", shown, parse_diagnostics(shown), seconds_since(start));
     }
-    for (const std::string& f : {svg, tree, out, err, partial}) fs::remove(f, ec);
+    for (const std::string& f : {svg, out, err, partial}) fs::remove(f, ec);
 }
 
 ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double deadline_seconds) {

@@ -73,9 +73,6 @@ class RenderJob {
     std::string host_;  // empty: not built yet, or failed
     bool host_failed_ = false;
     std::vector<std::string> good_program_;
-    // The region's bounds and area from the last --json tree, for the region they belong to.
-    PreviewStatus::json region_bounds_;
-    std::string bounds_region_;
     std::vector<std::string> good_arguments_;
     FileWatcher watcher_;
     std::thread thread_;

@@ -95,6 +95,7 @@ async function rulesAndSliders(browser) {
   check(JSON.stringify(sliders[0]) === JSON.stringify(["max_radius", "0.5", "10"]),
         "a slider per numeric parameter, with the declared range: " + JSON.stringify(sliders));
   check(await page.$("#params input[type=checkbox]") !== null, "a checkbox for the bool parameter");
+  check(await page.$eval("#fidelity", (d) => d.hidden), "no fidelity panel without the growth library");
   const rulesShown = await page.$$eval("#rules tbody tr", (rows) => rows.map((r) => r.cells[0].textContent));
   check(rulesShown.includes("dot --> dot"), "per-rule metrics in the page");
   const firstSvg = await (await fetch(url + "render.svg")).text();
@@ -237,6 +238,23 @@ async function growthTools(browser) {
   let rev = await waitShown(page, 0);
   const before = await (await fetch(url + "render.svg")).text();
   check(await page.$eval("#modes button[data-mode=flow]", (b) => !b.hidden), "growth tools shown for a growth rule file");
+  // The growth library's fidelity report, from --metrics, in a panel of its own.
+  const g = (await status(url)).metrics.growth;
+  const fidelity = await page.evaluate(() => ({
+    hidden: document.getElementById("fidelity").hidden,
+    rows: Object.fromEntries([...document.querySelectorAll("#fidelitytable tbody tr")]
+      .map((r) => [r.dataset.key, [...r.cells].slice(1).map((c) => c.textContent)])),
+    bars: document.querySelectorAll("#nnhistogram rect").length,
+  }));
+  check(g && !fidelity.hidden && fidelity.rows.motifs[0] === String(g.motifs) &&
+        fidelity.rows["NN median"][0] === g.nn_median.toFixed(3) &&
+        Object.keys(g.symbols).every((k) => fidelity.rows[k][1] === (100 * g.symbols[k].reference).toFixed(1) + "%") &&
+        fidelity.rows["largest hole"][0] === g.largest_hole.toFixed(2) &&
+        fidelity.bars === g.nn_histogram.result.length + g.nn_histogram.reference.length,
+        "the fidelity panel shows the growth report: " + JSON.stringify(fidelity));
+  const region = (await status(url)).metrics.region;
+  check(region && region.bounds.length === 4 && region.bounds[2] > region.bounds[0] && region.area > 0,
+        "--metrics carries the region's bounds: " + JSON.stringify(region));
   await page.click("#modes button[data-mode=flow]");
   const view = await (await page.$("#picture")).boundingBox();
   const y = view.y + view.height * 0.5;

@@ -303,7 +303,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
             detail::coverage(region, elements, detail::rendered_line_width(region, o.render.width));
         std::cout << detail::metrics_json(pattern, stats, static_cast<long>(elements.size()), cover,
                                           seconds_since(start), render_seconds,
-                                          o.growth.reference_engine)
+                                          o.growth.reference_engine, &region)
                   << std::endl;
         if (!std::cout) throw InputError("cannot write the metrics to stdout");
     }
