@@ -18,7 +18,7 @@ const page = {
   pictureUrl: null,
   askedForLastGood: false,             // opened on a broken file: the last good picture asked for
   lastElements: 0,
-  pictureTicket: 0,                    // the latest picture asked for (see loadPicture)
+  pictureTicket: 0,                    // the latest render asked for (see loadPicture)
   showingPartial: false,               // the picture is the growth so far, not a finished render
   partialAsked: 0, partialWanted: 0, partialBusy: false,
 };
@@ -89,6 +89,7 @@ function update(status) {
   const diag = $("diagnostics");
   if (status.state === "error") { diag.textContent = status.output; diag.hidden = false; }
   else if (status.state === "ok") diag.hidden = true;
+  if (status.state !== "running") fillSources(status.state === "error" ? status.diagnostics : []);
   if (status.state === "ok" && status.revision !== page.revision) loadPicture(status.revision);
   // The growth so far while it grows; a render that failed goes back to the last good picture.
   if (status.state === "running" && status.partial) loadPartial(status.partial);
@@ -124,14 +125,16 @@ function loadPartial(n) {
   });
 }
 
-// The render of `revision`, or with `partial` the growth so far. A later call wins over an
-// earlier one still loading.
+// The render of `revision`, or with `partial` the growth so far. A render asked for later wins
+// over one still loading; a partial picture never replaces a render asked for after it, and
+// shows only while the render grows.
 async function loadPicture(revision, partial) {
-  const ticket = ++page.pictureTicket;
+  const ticket = partial ? page.pictureTicket : ++page.pictureTicket;
+  const stale = () => ticket !== page.pictureTicket || (partial && page.status.state !== "running");
   const r = await fetch(partial ? `/partial.svg?n=${partial}` : `/render.svg?revision=${revision}`);
-  if (!r.ok || ticket !== page.pictureTicket) return;
+  if (!r.ok || stale()) return;
   const text = await r.text();
-  if (ticket !== page.pictureTicket) return;
+  if (stale()) return;
   page.showingPartial = Boolean(partial);
   // The viewBox from the root element's tag alone: parsing the whole document here cost as
   // much again as the <img> decoding it (a fifth of a second for a 5 MB render).
@@ -258,6 +261,47 @@ function fillRules(rules) {
     if (r.successes === 0) { tr.className = "never"; tr.title = "this rule never fired"; }
     tr.insertCell().textContent = r.rule;
     for (const v of [r.line, r.successes, r.failures]) { const c = tr.insertCell(); c.className = "n"; c.textContent = v; }
+  }
+}
+
+// --- each error with its source around it, the line highlighted, the column marked; its
+// file:line opens the editor (POST /open: --editor or $VISUAL on the server).
+function fillSources(diagnostics) {
+  const box = $("sources");
+  const shown = (diagnostics || []).filter((d) => d.source && d.source.lines.length);
+  box.textContent = "";
+  box.hidden = shown.length === 0;
+  for (const d of shown) {
+    const item = document.createElement("div");
+    item.className = "source";
+    const where = document.createElement("a");
+    where.href = "#"; where.className = "open"; where.title = "open in the editor";
+    where.textContent = `${d.file}:${d.line}:${d.column}`;
+    where.addEventListener("click", (e) => {
+      e.preventDefault();
+      post("/open", { file: d.file, line: d.line, column: d.column })
+        .then(() => showNote(`opened ${d.file.split("/").pop()}:${d.line} in the editor`))
+        .catch(() => {});
+    });
+    const message = document.createElement("span");
+    message.textContent = " " + d.message;
+    item.append(where, message);
+    const pre = document.createElement("pre");
+    const width = String(d.source.first + d.source.lines.length - 1).length;
+    d.source.lines.forEach((text, i) => {
+      const number = d.source.first + i, line = document.createElement("span");
+      line.className = number === d.line ? "line hit" : "line";
+      line.textContent = `${String(number).padStart(width)} | ${text}\n`;
+      pre.appendChild(line);
+      if (number === d.line && d.column > 0) {
+        const caret = document.createElement("span");
+        caret.className = "caret";
+        caret.textContent = `${" ".repeat(width)} | ${" ".repeat(d.column - 1)}^\n`;
+        pre.appendChild(caret);
+      }
+    });
+    item.appendChild(pre);
+    box.appendChild(item);
   }
 }
 

@@ -225,7 +225,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp,
     if (cancelled) return false;
     std::string output = in_rule_source(read_text(log, 1u << 20));
     if (output.empty()) output = "acanthus: error: " + error + "\n";
-    status_.fail("build", output, parse_diagnostics(output), 0);
+    status_.fail("build", output, diagnose(output), 0);
     return false;
 }
 
@@ -250,8 +250,12 @@ void RenderJob::render(long generation) {
     bool compiled = compile_rule_file(request, true, cpp, diagnostics, &files, &params);
     files.push_back(config_.input);
     watcher_.watch(files);
+    {
+        std::lock_guard lock(mutex_);
+        source_files_ = files;
+    }
     if (!compiled) {
-        status_.fail("compile", diagnostics.str(), parse_diagnostics(diagnostics.str()),
+        status_.fail("compile", diagnostics.str(), diagnose(diagnostics.str()),
                      seconds_since(start));
         return;
     }
@@ -334,9 +338,20 @@ void RenderJob::render(long generation) {
                      std::to_string(config_.memory_limit >> 20) + " MiB\n";
         else if (shown.empty())
             shown = "acanthus: error: the program ended with " + describe(end, 0) + "\n";
-        status_.fail("run", shown, parse_diagnostics(shown), seconds_since(start));
+        status_.fail("run", shown, diagnose(shown), seconds_since(start));
     }
     for (const std::string& f : {svg, out, err, partial}) fs::remove(f, ec);
+}
+
+std::vector<std::string> RenderJob::source_files() const {
+    std::lock_guard lock(mutex_);
+    return source_files_.empty() ? std::vector<std::string>{config_.input} : source_files_;
+}
+
+std::vector<PreviewDiagnostic> RenderJob::diagnose(const std::string& output) const {
+    std::vector<PreviewDiagnostic> diagnostics = parse_diagnostics(output);
+    add_source_context(diagnostics, source_files());
+    return diagnostics;
 }
 
 ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double deadline_seconds) {

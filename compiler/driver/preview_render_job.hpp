@@ -47,6 +47,9 @@ class RenderJob {
     PreviewSettings settings() const;
     void set_settings(PreviewSettings settings);  // and render again
 
+    // The rule file and the files it imports, as the latest compile read them.
+    std::vector<std::string> source_files() const;
+
     // Runs the program of the latest good render again with `extra` arguments (outputs).
     ExtraRun run_again(const std::vector<std::string>& extra, double deadline_seconds);
 
@@ -59,6 +62,8 @@ class RenderJob {
     // (the status says why) or when cancelled.
     bool build(const std::string& stem, const std::string& cpp, std::vector<std::string>& program);
     std::string command_line(const PreviewSettings& s) const;
+    // The errors of `output`, each with the source around it.
+    std::vector<PreviewDiagnostic> diagnose(const std::string& output) const;
 
     PreviewConfig config_;
     PreviewStatus& status_;
@@ -74,6 +79,7 @@ class RenderJob {
     bool host_failed_ = false;
     std::vector<std::string> good_program_;
     std::vector<std::string> good_arguments_;
+    std::vector<std::string> source_files_;
     FileWatcher watcher_;
     std::thread thread_;
 };

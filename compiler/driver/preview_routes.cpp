@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "driver/preview_child.hpp"
+#include "driver/preview_diagnostics.hpp"
 #include "driver/preview_guides.hpp"
 #include "driver/preview_limits.hpp"
 #include "driver/preview_render_job.hpp"
@@ -455,6 +457,44 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
             }
             send_file(res, fs::path(site.panels_dir) / name, "image/svg+xml");
         });
+
+    // file:line in the page opens the user's editor there (--editor or $VISUAL); only the rule
+    // file and the files it imports can be named.
+    post("/open", [&site](const httplib::Request& req, httplib::Response& res) {
+        json body;
+        if (!parse_json(req, res, body)) return;
+        const std::string file = body.value("file", std::string());
+        const long line = body.value("line", 1L), column = body.value("column", 1L);
+        if (line < 1 || line > 100000000 || column < 0 || column > 100000000)
+            return bad_request(res, "line and column must be positive numbers");
+        bool known = false;
+        for (const std::string& f : site.job.source_files())
+            known = known || (!file.empty() && same_file_key(f) == same_file_key(file));
+        if (!known) {
+            res.status = 403;
+            res.set_content(json{{"error", "only the rule file and its imports open"}}.dump(),
+                            "application/json");
+            return;
+        }
+        if (site.editor.empty()) {
+            res.status = 409;
+            res.set_content(json{{"error",
+                                  "no editor: start the preview with --editor "
+                                  "'code -g {file}:{line}:{column}' or set $VISUAL"}}
+                                .dump(),
+                            "application/json");
+            return;
+        }
+        const std::vector<std::string> argv = editor_command(
+            site.editor, same_file_key(file), static_cast<int>(line), static_cast<int>(column));
+        std::string error;
+        if (!spawn_detached(argv, error)) {
+            res.status = 500;
+            res.set_content(json{{"error", error}}.dump(), "application/json");
+            return;
+        }
+        res.set_content(json{{"opened", argv}}.dump(), "application/json");
+    });
 
     post("/settings", [&site](const httplib::Request& req, httplib::Response& res) {
         json body;

@@ -84,9 +84,13 @@ void PreviewStatus::fail(const std::string& kind, const std::string& output,
 PreviewStatus::json PreviewStatus::to_json() const {
     std::lock_guard lock(mutex_);
     json diagnostics = json::array();
-    for (const PreviewDiagnostic& d : diagnostics_)
-        diagnostics.push_back(
-            {{"file", d.file}, {"line", d.line}, {"column", d.column}, {"message", d.message}});
+    for (const PreviewDiagnostic& d : diagnostics_) {
+        json entry = {
+            {"file", d.file}, {"line", d.line}, {"column", d.column}, {"message", d.message}};
+        if (!d.context.empty())
+            entry["source"] = {{"first", d.context_first}, {"lines", d.context}};
+        diagnostics.push_back(entry);
+    }
     json params = json::array();
     for (const ParamSummary& p : params_) {
         json entry = {{"name", p.name}, {"type", p.type}, {"default", p.default_text}};

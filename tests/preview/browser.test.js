@@ -84,7 +84,11 @@ async function rulesAndSliders(browser) {
   const rules = path.join(work, "bubbles.acr");
   const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8");
   save(rules, good);
-  const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80"], work);
+  // The editor: a script that writes down how it was called.
+  const opened = path.join(work, "opened.txt"), recorder = path.join(work, "editor.js");
+  fs.writeFileSync(recorder, `require("fs").writeFileSync(${JSON.stringify(opened)}, process.argv.slice(2).join(" "));\n`);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80", "--editor",
+                                                    `'${process.execPath}' '${recorder}' {file} {line} {column}`], work);
   const page = await browser.newPage();
   await watchPolicy(page);
   await page.setViewport({ width: 1280, height: 760 });
@@ -128,6 +132,20 @@ async function rulesAndSliders(browser) {
                                                            getComputedStyle(img).visibility !== "hidden");
   check(stillShown, "the last good picture stays while the file is broken");
   await shot(page, "preview-error.png");
+  // The source around it, the line highlighted and its column marked; file:line opens the editor.
+  const source = await page.evaluate(() => {
+    const box = document.getElementById("sources");
+    return { hidden: box.hidden, link: box.querySelector("a.open").textContent,
+             hit: box.querySelector(".line.hit").textContent, caret: box.querySelector(".caret").textContent,
+             lines: box.querySelectorAll(".line").length };
+  });
+  check(!source.hidden && source.link.endsWith("bubbles.acr:26:5") && source.hit === "26 |     $7.radius = 2;\n" &&
+        source.caret === "   |     ^\n" && source.lines === 5,
+        "the source around the error, its line highlighted and its column marked: " + JSON.stringify(source));
+  await page.click("#sources a.open");
+  for (let i = 0; i < 100 && !fs.existsSync(opened); i += 1) await new Promise((r) => setTimeout(r, 50));
+  const openedWith = fs.existsSync(opened) ? fs.readFileSync(opened, "utf8") : "not run";
+  check(openedWith === `${fs.realpathSync(rules)} 26 5`, "clicking file:line opens the editor there: " + openedWith);
   // A page opened (or reloaded) while the file is broken: the error over the last good picture.
   const late = await browser.newPage();
   await late.goto(url);
@@ -143,7 +161,8 @@ async function rulesAndSliders(browser) {
   // Fixed: back to a picture.
   save(rules, good);
   rev = await waitShown(page, rev);
-  check(await page.$eval("#diagnostics", (d) => d.hidden), "fixing the file clears the diagnostic");
+  check(await page.$eval("#diagnostics", (d) => d.hidden) && await page.$eval("#sources", (d) => d.hidden),
+        "fixing the file clears the diagnostic and its source");
   const fixedSvg = await (await fetch(url + "render.svg")).text();
 
   // A slider moved with the mouse: the program runs again with the new value.
