@@ -107,6 +107,7 @@ function update(status) {
   followAddress(status.settings);
   fillRules(status.metrics && status.metrics.rules);
   if (status.state === "ok") fillFidelity(status.metrics && status.metrics.growth);
+  if (status.state !== "running") fillRevisions(status);
   const growth = (status.params || []).some((q) => q.name === "growth_guides");
   $("growthtools").hidden = !growth;
   for (const el of document.querySelectorAll(".growth")) el.hidden = !growth;
@@ -304,6 +305,77 @@ function fillSources(diagnostics) {
     box.appendChild(item);
   }
 }
+
+// --- earlier revisions (the server keeps the last good ones): click one to see it beside
+function fillRevisions(status) {
+  const grid = $("revgrid");
+  const earlier = (status.revisions || []).filter((n) => n !== status.revision || status.state !== "ok");
+  $("revisions").hidden = earlier.length === 0;
+  const have = new Map([...grid.children].map((f) => [Number(f.dataset.revision), f]));
+  for (const [n, f] of have) if (!earlier.includes(n)) f.remove();
+  for (const n of earlier) {
+    if (have.has(n)) continue;
+    const figure = document.createElement("figure"), img = document.createElement("img");
+    const caption = document.createElement("figcaption");
+    figure.dataset.revision = String(n);
+    img.alt = `revision ${n}`; img.src = `/revision.svg?n=${n}`;
+    caption.textContent = `rev. ${n}`;
+    figure.append(img, caption);
+    figure.addEventListener("click", () => showBeside(n));
+    grid.insertBefore(figure, [...grid.children].find((f) => Number(f.dataset.revision) < n) || null);
+  }
+}
+function showBeside(n) {
+  $("besideimg").src = `/revision.svg?n=${n}`;
+  $("besidelabel").textContent = `revision ${n}`;
+  $("beside").hidden = false;
+  $("beside").dataset.revision = String(n);
+  for (const f of $("revgrid").children) f.classList.toggle("current", Number(f.dataset.revision) === n);
+  fit();
+}
+$("besideclose").addEventListener("click", () => {
+  $("beside").hidden = true;
+  for (const f of $("revgrid").children) f.classList.remove("current");
+  fit();
+});
+
+// --- the variations sheet: the render with nine other rng seeds, made two at a time (the
+// server runs two programs besides the live render); click one to take its seed.
+let variationQueue = [];
+function showVariations(first) {
+  const grid = $("vargrid");
+  grid.textContent = "";
+  variationQueue = [];
+  for (let seed = first; seed < first + 9; seed += 1) {
+    const figure = document.createElement("figure"), img = document.createElement("img");
+    const caption = document.createElement("figcaption");
+    figure.dataset.seed = String(seed);
+    img.alt = `rng seed ${seed}`;
+    caption.textContent = `seed ${seed}`;
+    figure.append(img, caption);
+    figure.addEventListener("click", () => {
+      for (const f of grid.children) f.classList.toggle("current", f === figure);
+      sendSettings({ rng_seed: String(seed) });
+    });
+    grid.appendChild(figure);
+    variationQueue.push({ img, seed, tries: 0 });
+  }
+  $("varmore").hidden = false;
+  $("varmore").onclick = () => showVariations(first + 9);
+  for (let i = 0; i < 2; i += 1) nextVariation();
+}
+function nextVariation() {
+  const v = variationQueue.shift();
+  if (!v) return;
+  v.img.onload = () => { v.img.parentElement.dataset.loaded = "1"; nextVariation(); };
+  // Busy (503: downloads running): again a little later.
+  v.img.onerror = () => { if (++v.tries < 10) setTimeout(() => { variationQueue.unshift(v); nextVariation(); }, 1000); else nextVariation(); };
+  v.img.src = `/variation.png?rng=${v.seed}&t=${Date.now()}`;
+}
+$("varshow").addEventListener("click", () => {
+  const s = (page.status && page.status.settings) || {};
+  showVariations(Number(s.rng_seed || 1) + 1);
+});
 
 // --- the growth library's fidelity report (--metrics "growth"): how the result keeps the
 // reference's spacing, symbol mix and neighbourhoods (docs/stdlib/growth.md#fidelity-report).

@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -354,7 +355,8 @@ std::vector<PreviewDiagnostic> RenderJob::diagnose(const std::string& output) co
     return diagnostics;
 }
 
-ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double deadline_seconds) {
+ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double deadline_seconds,
+                              const std::string& rng_seed) {
     ExtraRun result;
     ChildRun run;
     {
@@ -364,8 +366,21 @@ ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double dead
             return result;
         }
         run.argv = good_program_;
-        run.argv.insert(run.argv.end(), good_arguments_.begin(), good_arguments_.end());
+        // The program takes an option once: a seed or a width given here replaces the
+        // render's.
+        const auto replaced = [&](const std::string& a) {
+            return (a == "--rng-seed" && !rng_seed.empty()) ||
+                   (a == "--width" && std::find(extra.begin(), extra.end(), a) != extra.end());
+        };
+        for (std::size_t i = 0; i < good_arguments_.size(); ++i) {
+            if (replaced(good_arguments_[i])) {
+                ++i;  // and its value
+                continue;
+            }
+            run.argv.push_back(good_arguments_[i]);
+        }
     }
+    if (!rng_seed.empty()) run.argv.insert(run.argv.end(), {"--rng-seed", rng_seed});
     run.argv.insert(run.argv.end(), extra.begin(), extra.end());
     static std::atomic<long> counter{0};
     const std::string err =

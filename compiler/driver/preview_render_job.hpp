@@ -51,7 +51,9 @@ class RenderJob {
     std::vector<std::string> source_files() const;
 
     // Runs the program of the latest good render again with `extra` arguments (outputs).
-    ExtraRun run_again(const std::vector<std::string>& extra, double deadline_seconds);
+    // With `rng_seed` set: that seed in place of the render's (a variation).
+    ExtraRun run_again(const std::vector<std::string>& extra, double deadline_seconds,
+                       const std::string& rng_seed = {});
 
   private:
     void loop();

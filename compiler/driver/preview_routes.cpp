@@ -290,7 +290,7 @@ void in_run_slot(httplib::Response& res, Run&& run) {
 // (Sec-Fetch-Site; "none" is an address typed or a bookmark). Scripts send neither.
 bool changes_or_runs(const httplib::Request& req) {
     return req.method == "POST" || req.path == "/render.png" || req.path == "/render.pdf" ||
-           req.path == "/debug-frame.png";
+           req.path == "/debug-frame.png" || req.path == "/variation.png";
 }
 
 bool from_the_page(const httplib::Request& req) {
@@ -303,11 +303,12 @@ bool from_the_page(const httplib::Request& req) {
 
 // A program output made on request (a download, a debug frame) in the server's directory.
 void send_rerun(PreviewSite& site, httplib::Response& res, const std::vector<std::string>& extra,
-                const fs::path& file, const char* type, const std::string& download) {
+                const fs::path& file, const char* type, const std::string& download,
+                const std::string& rng_seed = {}) {
     ExtraRun run;
     bool ran = false;
     in_run_slot(res, [&] {
-        run = site.job.run_again(extra, 120);
+        run = site.job.run_again(extra, 120, rng_seed);
         ran = true;
     });
     if (!ran) return;
@@ -364,6 +365,21 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         res.set_content(svg, "image/svg+xml");
     });
 
+    // An earlier good render, for the page to show beside the current one.
+    get("/revision.svg", [&site](const httplib::Request& req, httplib::Response& res) {
+        const std::string n = req.get_param_value("n");
+        std::string svg;
+        if (!n.empty() && n.size() < 10 && n.find_first_not_of("0123456789") == std::string::npos)
+            svg = site.status.revision_svg(std::stol(n));
+        if (svg.empty()) {
+            res.status = 404;
+            res.set_content("no such revision kept\n", "text/plain");
+            return;
+        }
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(svg, "image/svg+xml");
+    });
+
     // The growth so far, while a render grows (the program's --partial); 404 otherwise.
     get("/partial.svg", [&site](const httplib::Request&, httplib::Response& res) {
         std::string svg = site.status.partial_svg();
@@ -404,6 +420,20 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
                    file, "image/png", "");
         std::error_code ec;
         fs::remove(svg, ec);
+    });
+
+    // The variations sheet: the render with another rng seed, small.
+    get("/variation.png", [&site](const httplib::Request& req, httplib::Response& res) {
+        const std::string rng = req.get_param_value("rng");
+        if (rng.empty() || rng.size() > 19 ||
+            rng.find_first_not_of("0123456789") != std::string::npos)
+            return bad_request(res, "rng must be a decimal number");
+        static std::atomic<long> n{0};
+        const std::string tag = std::to_string(++n);
+        const fs::path file = fs::path(site.work_dir) / ("variation-" + tag + ".png");
+        send_rerun(site, res, {"-o", file.string(), "--width", "240", "--quiet"}, file, "image/png",
+                   "", rng);
+        res.set_header("Cache-Control", "no-store");
     });
 
     // Frames of the growth: POST /frames {"every": K} makes them, GET /frames/N.png serves them.

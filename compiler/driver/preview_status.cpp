@@ -60,6 +60,9 @@ void PreviewStatus::succeed(std::string svg, const json& metrics, double seconds
     output_ = note.empty() ? "" : note + "\n";
     diagnostics_.clear();
     svg_ = std::move(svg);
+    // Kept beside: a render that draws the same as the one before is not kept twice.
+    if (kept_.empty() || kept_.back().second != svg_) kept_.emplace_back(revision_, svg_);
+    while (kept_.size() > kKeptRevisions) kept_.pop_front();
     partial_svg_.clear();
     metrics_ = metrics;
     elements_ = metrics.value("elements", 0L);
@@ -97,6 +100,8 @@ PreviewStatus::json PreviewStatus::to_json() const {
         if (!p.low.empty()) entry["range"] = {p.low, p.high};
         params.push_back(entry);
     }
+    json kept = json::array();
+    for (const auto& entry : kept_) kept.push_back(entry.first);
     return {{"revision", revision_},
             {"state", state_},
             {"phase", phase_},
@@ -113,6 +118,7 @@ PreviewStatus::json PreviewStatus::to_json() const {
              {{"iterations", progress_iterations_},
               {"elements", progress_elements_},
               {"seconds", progress_seconds_}}},
+            {"revisions", kept},
             // The number of the partial picture /partial.svg has now; 0 when it has none.
             {"partial", partial_svg_.empty() ? 0 : partial_},
             {"version", version_}};
@@ -121,6 +127,13 @@ PreviewStatus::json PreviewStatus::to_json() const {
 std::string PreviewStatus::svg() const {
     std::lock_guard lock(mutex_);
     return svg_;
+}
+
+std::string PreviewStatus::revision_svg(long revision) const {
+    std::lock_guard lock(mutex_);
+    for (const auto& [n, svg] : kept_)
+        if (n == revision) return svg;
+    return {};
 }
 
 std::string PreviewStatus::partial_svg() const {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <condition_variable>
+#include <deque>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -36,6 +37,9 @@ class PreviewStatus {
     json to_json() const;
     std::string svg() const;
     std::string partial_svg() const;  // empty when the render in progress has drawn none
+    // An earlier good render still kept (the latest kKeptRevisions), or empty.
+    std::string revision_svg(long revision) const;
+    static constexpr std::size_t kKeptRevisions = 8;
     long revision() const;
     // Waits until the version passes `seen` or `timeout_ms` ran out; returns the version.
     long wait_for_change(long seen, int timeout_ms) const;
@@ -58,6 +62,7 @@ class PreviewStatus {
     json metrics_ = json::object();
     std::string svg_;
     std::string partial_svg_;
+    std::deque<std::pair<long, std::string>> kept_;  // good renders, oldest first
     long partial_ = 0;  // how many partial pictures the server has had, ever
     std::string command_;
     json timings_ = json::object();

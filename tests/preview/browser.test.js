@@ -361,6 +361,62 @@ async function colourPickers(browser) {
   await page.close();
 }
 
+// Earlier revisions beside the current picture; the variations sheet: the render with nine
+// other rng seeds, one click takes a seed.
+async function revisionsAndVariations(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "bubbles.acr");
+  // Dots of random sizes: each rng seed grows its own picture.
+  const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8")
+    .split("min( max_radius, $goal.radius )").join("min( max_radius * rng.uniform( 0.4, 1.0 ), $goal.radius )");
+  check(good.includes("rng.uniform"), "the random fixture is made");
+  save(rules, good);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80"], work);
+  const page = await browser.newPage();
+  await watchPolicy(page);
+  await page.setViewport({ width: 1280, height: 900 });
+  await page.goto(url);
+  let rev = await waitShown(page, 0);
+  const firstSvg = await (await fetch(url + "render.svg")).text();
+  check(await page.$eval("#revisions", (d) => d.hidden), "no earlier revisions at first");
+  save(rules, good.replace("%param double max_radius = 3.0 in [0.5, 10];", "%param double max_radius = 6.0 in [0.5, 10];"));
+  rev = await waitShown(page, rev);
+  await page.waitForFunction(() => document.querySelectorAll("#revgrid figure").length === 1, { timeout: 10000, polling: 50 });
+  await page.click("#revgrid figure");
+  await page.waitForFunction(() => { const i = document.getElementById("besideimg"); return i.complete && i.naturalWidth > 0; },
+                             { timeout: 10000, polling: 50 });
+  const beside = await page.evaluate(() => ({ hidden: document.getElementById("beside").hidden,
+                                              label: document.getElementById("besidelabel").textContent,
+                                              n: document.getElementById("beside").dataset.revision }));
+  const kept = await (await fetch(url + `revision.svg?n=${beside.n}`)).text();
+  const current = await (await fetch(url + "render.svg")).text();
+  check(!beside.hidden && beside.label === `revision ${beside.n}` && kept === firstSvg && current !== firstSvg,
+        "an earlier revision shown beside the current picture: " + JSON.stringify(beside));
+  check((await fetch(url + "revision.svg?n=999")).status === 404, "a revision not kept is 404");
+  await shot(page, "preview-revisions.png");
+
+  await page.click("#varshow");
+  await page.waitForFunction(() => document.querySelectorAll("#vargrid figure[data-loaded]").length === 9,
+                             { timeout: 120000, polling: 100 });
+  const seeds = await page.$$eval("#vargrid figure", (f) => f.map((x) => x.dataset.seed));
+  check(JSON.stringify(seeds) === JSON.stringify(["2", "3", "4", "5", "6", "7", "8", "9", "10"]),
+        "nine variations, the rng seeds after the current one: " + seeds.join(" "));
+  const png = async (seed) => Buffer.from(await (await fetch(url + `variation.png?rng=${seed}`)).arrayBuffer());
+  const [a, b, a2] = [await png(4), await png(5), await png(4)];
+  check(a.subarray(0, 4).toString("latin1") === "\x89PNG" && !a.equals(b) && a.equals(a2),
+        "each variation is its own seed's picture, the same again for the same seed");
+  await shot(page, "preview-variations.png");
+  await page.click("#vargrid figure[data-seed='4']");
+  rev = await waitShown(page, rev);
+  const s = await status(url);
+  check(s.settings.rng_seed === "4" && (await page.$eval("#rng", (i) => i.value)) === "4",
+        "clicking a variation takes its seed: " + s.settings.rng_seed);
+  const cross = await fetch(url + "variation.png?rng=4", { headers: { "Sec-Fetch-Site": "cross-site" } });
+  check(cross.status === 403, "a variation is refused to another site (" + cross.status + ")");
+  await checkPolicy(page, "revisions and variations");
+  await page.close();
+}
+
 // While it grows, the page shows the growth so far (/partial.svg, about every 0.1 s), each
 // picture with more of it; a render that fails after some growth goes back to the last good one.
 async function partialPictures(browser) {
@@ -430,7 +486,7 @@ async function partialPictures(browser) {
                                        args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"] });
     // ACANTHUS_BROWSER_TESTS=name,name runs only those.
     const only = (process.env.ACANTHUS_BROWSER_TESTS || "").split(",").filter(Boolean);
-    for (const test of [rulesAndSliders, growthTools, colourPickers, partialPictures])
+    for (const test of [rulesAndSliders, growthTools, colourPickers, partialPictures, revisionsAndVariations])
       if (!only.length || only.includes(test.name)) await test(browser);
   } catch (e) {
     console.log("FAIL: " + (e && e.stack ? e.stack : e));
