@@ -624,6 +624,28 @@ function applyAddress() {
 }
 applyAddress();
 
-const events = new EventSource("/events");
-events.onmessage = (e) => update(JSON.parse(e.data));
+// --- one event stream per browser, shared by its tabs --------------------------------------
+// A browser opens about six connections per host: with an event stream each, the seventh tab
+// would never load. The tab holding the lock (Web Locks) keeps the one stream open and passes
+// every status on (BroadcastChannel); when it closes, a waiting tab takes the lock and the
+// stream over. Where a browser has neither (not a secure context: another --host), each tab
+// has its own stream.
+function followEvents() {
+  const own = () => {
+    const events = new EventSource("/events");
+    events.onmessage = (e) => { update(JSON.parse(e.data)); if (page.channel) page.channel.postMessage(e.data); };
+    return events;
+  };
+  if (!window.BroadcastChannel || !navigator.locks) { own(); return; }
+  page.channel = new BroadcastChannel("acanthus-preview-events");
+  page.channel.onmessage = (e) => { if (!page.leader) update(JSON.parse(e.data)); };
+  // Until the leader's next event: the status now.
+  fetch("/status.json").then((r) => r.json()).then((s) => { if (!page.status) update(s); }).catch(() => {});
+  navigator.locks.request("acanthus-preview-events", () => new Promise(() => {
+    page.leader = true;
+    document.body.dataset.leader = "1";
+    own();  // held until the tab closes
+  }));
+}
+followEvents();
 window.addEventListener("resize", () => applyView());

@@ -350,6 +350,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         json status = site.status.to_json();
         settings_json(site.job.settings(), site, status["settings"]);
         status["file"] = site.file;
+        status["event_streams"] = open_streams.load();  // how many /events are open now
         res.set_header("Cache-Control", "no-store");
         res.set_content(status.dump(), "application/json");
     });

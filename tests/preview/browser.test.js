@@ -417,6 +417,48 @@ async function revisionsAndVariations(browser) {
   await page.close();
 }
 
+// 20 tabs over 3 browsers (contexts) all update after a save: each browser shares one event
+// stream among its tabs (a browser opens about six connections per host); when the tab that
+// holds it closes, another takes it over.
+async function manyTabs(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "bubbles.acr");
+  const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8");
+  save(rules, good);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:60,40"], work);
+  const contexts = [];
+  for (let i = 0; i < 3; i += 1) contexts.push(await browser.createIncognitoBrowserContext());
+  const pages = [];
+  for (let i = 0; i < 20; i += 1) {
+    const page = await contexts[i % 3].newPage();
+    await page.setViewport({ width: 800, height: 600 });
+    await page.goto(url);
+    pages.push(page);
+  }
+  const shownAll = async (rev, list, what) => {
+    const results = await Promise.allSettled(list.map((p) => waitShown(p, rev - 1, "ok", 60000)));
+    const missing = results.map((r, i) => (r.status === "fulfilled" ? -1 : i)).filter((i) => i >= 0);
+    check(missing.length === 0, `${what}: all ${list.length} tabs show revision ${rev}` +
+          (missing.length ? ` (not tabs ${missing.join(", ")})` : ""));
+  };
+  await shownAll(1, pages, "opened");
+  let s = await status(url);
+  check(s.event_streams <= 3, `one event stream per browser: ${s.event_streams} open for 20 tabs in 3 browsers`);
+  save(rules, good.replace("%param double max_radius = 3.0 in [0.5, 10];", "%param double max_radius = 5.0 in [0.5, 10];"));
+  await shownAll(2, pages, "after a save");
+  // The tab holding a browser's stream closes: another of that browser takes it over.
+  const leaders = [];
+  for (const p of pages) if (await p.evaluate(() => document.body.dataset.leader === "1")) leaders.push(p);
+  check(leaders.length === 3, `one tab per browser holds the stream (${leaders.length})`);
+  await leaders[0].close();
+  const rest = pages.filter((p) => p !== leaders[0]);
+  save(rules, good.replace("%param double max_radius = 3.0 in [0.5, 10];", "%param double max_radius = 4.0 in [0.5, 10];"));
+  await shownAll(3, rest, "after the stream's tab closed and a save");
+  s = await status(url);
+  check(s.event_streams <= 3, `still one stream per browser: ${s.event_streams}`);
+  for (const c of contexts) await c.close();
+}
+
 // While it grows, the page shows the growth so far (/partial.svg, about every 0.1 s), each
 // picture with more of it; a render that fails after some growth goes back to the last good one.
 async function partialPictures(browser) {
@@ -486,7 +528,8 @@ async function partialPictures(browser) {
                                        args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"] });
     // ACANTHUS_BROWSER_TESTS=name,name runs only those.
     const only = (process.env.ACANTHUS_BROWSER_TESTS || "").split(",").filter(Boolean);
-    for (const test of [rulesAndSliders, growthTools, colourPickers, partialPictures, revisionsAndVariations])
+    for (const test of [rulesAndSliders, growthTools, colourPickers, partialPictures, revisionsAndVariations,
+                        manyTabs])
       if (!only.length || only.includes(test.name)) await test(browser);
   } catch (e) {
     console.log("FAIL: " + (e && e.stack ? e.stack : e));
