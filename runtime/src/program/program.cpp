@@ -6,6 +6,7 @@
 #include <acanthus/region.hpp>
 #include <acanthus/render.hpp>
 #include <acanthus/skeletal_stroke.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -183,13 +184,18 @@ void validate(const detail::ProgramOptions& o, const Region& region,
 
 // --partial: the growth so far, drawn every `every` seconds while it grows and published at
 // once (outside the run's all-or-none outputs), so that a viewer sees it grow. The first comes
-// after half the interval; drawing never takes more than a third of the time.
+// after half the interval; later ones wait at least four times their drawing and a fifth of the
+// time grown so far, so that they cost the growth a fifth of its time at most (large pictures
+// take tens of milliseconds to draw; at a third, spiral's growth took half as long again).
 constexpr long kPartialCheckEvery = 8;  // iterations between two looks at the clock
 
 class PartialPictures {
   public:
     PartialPictures(std::string path, double every)
-        : path_(std::move(path)), every_(every), next_(Clock::now() + seconds(every / 2)) {}
+        : path_(std::move(path)),
+          every_(every),
+          start_(Clock::now()),
+          next_(start_ + seconds(every / 2)) {}
 
     bool due() const { return !path_.empty() && Clock::now() >= next_; }
 
@@ -201,7 +207,7 @@ class PartialPictures {
             draw(path_);
         }
         const Clock::time_point end = Clock::now();
-        next_ = end + std::max(seconds(every_), 2 * (end - begin));
+        next_ = end + std::max({seconds(every_), 4 * (end - begin), (end - start_) / 5});
     }
 
   private:
@@ -210,7 +216,7 @@ class PartialPictures {
     }
     std::string path_;
     double every_;
-    Clock::time_point next_;
+    Clock::time_point start_, next_;
 };
 
 std::string frame_path(const std::string& dir, long number) {
