@@ -39,14 +39,15 @@ class PaintTimer:
         if not line.startswith("ready "):
             raise RuntimeError("the browser did not show the first picture: %r" % line)
 
-    def painted(self, revision):
-        """Seconds since the epoch when the page painted `revision` (or a later one)."""
-        self.process.stdin.write("wait %d\n" % revision)
+    def painted(self, revision, saved):
+        """Seconds since the epoch when the page painted `revision` (or a later one), and when
+        it first painted anything after `saved` (the growth so far, or that picture)."""
+        self.process.stdin.write("wait %d %d\n" % (revision, int(saved * 1000)))
         self.process.stdin.flush()
         words = self.process.stdout.readline().split()
-        if len(words) != 3 or words[2] == "none":
+        if len(words) != 4 or words[2] == "none":
             raise RuntimeError("the page did not paint revision %d" % revision)
-        return int(words[2]) / 1000.0
+        return int(words[2]) / 1000.0, int(words[3]) / 1000.0
 
     def close(self):
         self.process.stdin.close()
@@ -89,7 +90,8 @@ def edit(path, n):
 
 
 def measure(acanthus, root, rule, browser):
-    """(server seconds, painted seconds or None): medians over the edits."""
+    """(server seconds, painted seconds, first-look seconds; None without a browser): medians
+    over the edits."""
     work = tempfile.mkdtemp(prefix="acanthus-bench-preview.")
     server = timer = None
     try:
@@ -107,14 +109,16 @@ def measure(acanthus, root, rule, browser):
             raise RuntimeError("%s: %s" % (rule, first["output"]))
         if browser:
             timer = PaintTimer(browser, url)
-        times, painted = [], []
+        times, painted, looks = [], [], []
         for n in range(EDITS):
             if n > 0:  # back to the start (a cached program), then one changed body
                 restored = status(url)["revision"]
                 with open(path + ".tmp", "w") as f:
                     f.write(original)
                 os.replace(path + ".tmp", path)
-                wait_revision(url, restored)
+                back = wait_revision(url, restored)
+                if timer:  # the page caught up too: no picture of it is taken for the edit's
+                    timer.painted(back["revision"], time.time())
             time.sleep(0.2)
             before = status(url)["revision"]
             start, saved = time.monotonic(), time.time()
@@ -124,11 +128,14 @@ def measure(acanthus, root, rule, browser):
             if s["state"] != "ok":
                 raise RuntimeError("%s: %s" % (rule, s["output"]))
             if timer:
-                painted.append(timer.painted(s["revision"]) - saved)
-            print("  %s edit %d: server %.3f s, painted %s %s" % (
-                os.path.basename(rule), n, times[-1],
+                at, first = timer.painted(s["revision"], saved)
+                painted.append(at - saved)
+                looks.append(first - saved)
+            print("  %s edit %d: server %.3f s, first look %s, painted %s %s" % (
+                os.path.basename(rule), n, times[-1], "%.3f s" % looks[-1] if looks else "-",
                 "%.3f s" % painted[-1] if painted else "-", s.get("timings")), file=sys.stderr)
-        return statistics.median(times), statistics.median(painted) if painted else None
+        return (statistics.median(times), statistics.median(painted) if painted else None,
+                statistics.median(looks) if looks else None)
     finally:
         if timer:
             timer.close()
@@ -154,20 +161,22 @@ def main():
         browser, why = browser_command(root)
         if not browser:
             print("bench preview: %s: server times only" % why, file=sys.stderr)
-        seconds, painted = {}, {}
+        seconds, painted, looks = {}, {}, {}
         for f in rules:
-            server_seconds, painted_seconds = measure(acanthus, root,
-                                                      os.path.join(root, "rules", f), browser)
+            server_seconds, painted_seconds, look_seconds = measure(
+                acanthus, root, os.path.join(root, "rules", f), browser)
             name = f[:-4]
             seconds[name] = round(server_seconds, 3)
             if painted_seconds is not None:
                 painted[name] = round(painted_seconds, 3)
-            print("%s: server %.3f s, painted %s" % (
-                name, seconds[name], "%.3f s" % painted[name] if name in painted else "-"),
-                file=sys.stderr)
+                looks[name] = round(look_seconds, 3)
+            print("%s: server %.3f s, first look %s, painted %s" % (
+                name, seconds[name], "%.3f s" % looks[name] if name in looks else "-",
+                "%.3f s" % painted[name] if name in painted else "-"), file=sys.stderr)
         result = {"seconds": seconds, "max": max(seconds.values())}
         if painted:
-            result.update({"painted_seconds": painted, "painted_max": max(painted.values())})
+            result.update({"painted_seconds": painted, "painted_max": max(painted.values()),
+                           "first_look_seconds": looks, "first_look_max": max(looks.values())})
         print(json.dumps(result))
     finally:
         shutil.rmtree(cache, ignore_errors=True)

@@ -18,6 +18,9 @@ const page = {
   pictureUrl: null,
   askedForLastGood: false,             // opened on a broken file: the last good picture asked for
   lastElements: 0,
+  pictureTicket: 0,                    // the latest render asked for (see loadPicture)
+  showingPartial: false,               // the picture is the growth so far, not a finished render
+  partialAsked: 0, partialWanted: 0, partialBusy: false,
 };
 
 // --- where the region lands on the page (runtime/src/output/page_layout.cpp) ---------------
@@ -86,7 +89,11 @@ function update(status) {
   const diag = $("diagnostics");
   if (status.state === "error") { diag.textContent = status.output; diag.hidden = false; }
   else if (status.state === "ok") diag.hidden = true;
+  if (status.state !== "running") fillSources(status.state === "error" ? status.diagnostics : []);
   if (status.state === "ok" && status.revision !== page.revision) loadPicture(status.revision);
+  // The growth so far while it grows; a render that failed goes back to the last good picture.
+  if (status.state === "running" && status.partial) loadPartial(status.partial);
+  if (status.state === "error" && page.showingPartial) loadPicture(status.revision);
   // Opened on a broken file: the server still has the last good picture (404 when none).
   if (status.state === "error" && page.pictureUrl === null && !page.askedForLastGood) {
     page.askedForLastGood = true;
@@ -99,15 +106,37 @@ function update(status) {
   syncSettings(status.settings || {});
   followAddress(status.settings);
   fillRules(status.metrics && status.metrics.rules);
+  if (status.state === "ok") fillFidelity(status.metrics && status.metrics.growth);
+  if (status.state !== "running") fillRevisions(status);
   const growth = (status.params || []).some((q) => q.name === "growth_guides");
   $("growthtools").hidden = !growth;
   for (const el of document.querySelectorAll(".growth")) el.hidden = !growth;
 }
 
-async function loadPicture(revision) {
-  const r = await fetch(`/render.svg?revision=${revision}`);
-  if (!r.ok) return;
+// A picture of the growth so far (/partial.svg, number n): one fetch at a time, the latest wins.
+function loadPartial(n) {
+  if (n <= page.partialAsked) return;
+  if (page.partialBusy) { page.partialWanted = n; return; }
+  page.partialAsked = n;
+  page.partialBusy = true;
+  loadPicture(null, n).finally(() => {
+    page.partialBusy = false;
+    const s = page.status;
+    if (page.partialWanted > page.partialAsked && s && s.state === "running") loadPartial(page.partialWanted);
+  });
+}
+
+// The render of `revision`, or with `partial` the growth so far. A render asked for later wins
+// over one still loading; a partial picture never replaces a render asked for after it, and
+// shows only while the render grows.
+async function loadPicture(revision, partial) {
+  const ticket = partial ? page.pictureTicket : ++page.pictureTicket;
+  const stale = () => ticket !== page.pictureTicket || (partial && page.status.state !== "running");
+  const r = await fetch(partial ? `/partial.svg?n=${partial}` : `/render.svg?revision=${revision}`);
+  if (!r.ok || stale()) return;
   const text = await r.text();
+  if (stale()) return;
+  page.showingPartial = Boolean(partial);
   // The viewBox from the root element's tag alone: parsing the whole document here cost as
   // much again as the <img> decoding it (a fifth of a second for a 5 MB render).
   const open = /<svg\b[^>]*>/.exec(text.slice(0, 4096));
@@ -118,7 +147,9 @@ async function loadPicture(revision) {
   const url = URL.createObjectURL(new Blob([text], { type: "image/svg+xml" }));
   const img = $("picture");
   img.onload = () => { if (page.pictureUrl) URL.revokeObjectURL(page.pictureUrl); page.pictureUrl = url;
-                       document.body.dataset.shown = String(revision); };
+                       document.body.dataset.picture = partial ? "partial" : "render";
+                       if (partial) document.body.dataset.partial = String(partial);
+                       else document.body.dataset.shown = String(revision); };
   img.src = url;
   for (const el of [img, $("frame"), $("overlay")]) {
     el.style.width = page.size.width + "px"; el.style.height = page.size.height + "px";
@@ -232,6 +263,166 @@ function fillRules(rules) {
     tr.insertCell().textContent = r.rule;
     for (const v of [r.line, r.successes, r.failures]) { const c = tr.insertCell(); c.className = "n"; c.textContent = v; }
   }
+}
+
+// --- each error with its source around it, the line highlighted, the column marked; its
+// file:line opens the editor (POST /open: --editor or $VISUAL on the server).
+function fillSources(diagnostics) {
+  const box = $("sources");
+  const shown = (diagnostics || []).filter((d) => d.source && d.source.lines.length);
+  box.textContent = "";
+  box.hidden = shown.length === 0;
+  for (const d of shown) {
+    const item = document.createElement("div");
+    item.className = "source";
+    const where = document.createElement("a");
+    where.href = "#"; where.className = "open"; where.title = "open in the editor";
+    where.textContent = `${d.file}:${d.line}:${d.column}`;
+    where.addEventListener("click", (e) => {
+      e.preventDefault();
+      post("/open", { file: d.file, line: d.line, column: d.column })
+        .then(() => showNote(`opened ${d.file.split("/").pop()}:${d.line} in the editor`))
+        .catch(() => {});
+    });
+    const message = document.createElement("span");
+    message.textContent = " " + d.message;
+    item.append(where, message);
+    const pre = document.createElement("pre");
+    const width = String(d.source.first + d.source.lines.length - 1).length;
+    d.source.lines.forEach((text, i) => {
+      const number = d.source.first + i, line = document.createElement("span");
+      line.className = number === d.line ? "line hit" : "line";
+      line.textContent = `${String(number).padStart(width)} | ${text}\n`;
+      pre.appendChild(line);
+      if (number === d.line && d.column > 0) {
+        const caret = document.createElement("span");
+        caret.className = "caret";
+        caret.textContent = `${" ".repeat(width)} | ${" ".repeat(d.column - 1)}^\n`;
+        pre.appendChild(caret);
+      }
+    });
+    item.appendChild(pre);
+    box.appendChild(item);
+  }
+}
+
+// --- earlier revisions (the server keeps the last good ones): click one to see it beside
+function fillRevisions(status) {
+  const grid = $("revgrid");
+  const earlier = (status.revisions || []).filter((n) => n !== status.revision || status.state !== "ok");
+  $("revisions").hidden = earlier.length === 0;
+  const have = new Map([...grid.children].map((f) => [Number(f.dataset.revision), f]));
+  for (const [n, f] of have) if (!earlier.includes(n)) f.remove();
+  for (const n of earlier) {
+    if (have.has(n)) continue;
+    const figure = document.createElement("figure"), img = document.createElement("img");
+    const caption = document.createElement("figcaption");
+    figure.dataset.revision = String(n);
+    img.alt = `revision ${n}`; img.src = `/revision.svg?n=${n}`;
+    caption.textContent = `rev. ${n}`;
+    figure.append(img, caption);
+    figure.addEventListener("click", () => showBeside(n));
+    grid.insertBefore(figure, [...grid.children].find((f) => Number(f.dataset.revision) < n) || null);
+  }
+}
+function showBeside(n) {
+  $("besideimg").src = `/revision.svg?n=${n}`;
+  $("besidelabel").textContent = `revision ${n}`;
+  $("beside").hidden = false;
+  $("beside").dataset.revision = String(n);
+  for (const f of $("revgrid").children) f.classList.toggle("current", Number(f.dataset.revision) === n);
+  fit();
+}
+$("besideclose").addEventListener("click", () => {
+  $("beside").hidden = true;
+  for (const f of $("revgrid").children) f.classList.remove("current");
+  fit();
+});
+
+// --- the variations sheet: the render with nine other rng seeds, made two at a time (the
+// server runs two programs besides the live render); click one to take its seed.
+let variationQueue = [];
+function showVariations(first) {
+  const grid = $("vargrid");
+  grid.textContent = "";
+  variationQueue = [];
+  for (let seed = first; seed < first + 9; seed += 1) {
+    const figure = document.createElement("figure"), img = document.createElement("img");
+    const caption = document.createElement("figcaption");
+    figure.dataset.seed = String(seed);
+    img.alt = `rng seed ${seed}`;
+    caption.textContent = `seed ${seed}`;
+    figure.append(img, caption);
+    figure.addEventListener("click", () => {
+      for (const f of grid.children) f.classList.toggle("current", f === figure);
+      sendSettings({ rng_seed: String(seed) });
+    });
+    grid.appendChild(figure);
+    variationQueue.push({ img, seed, tries: 0 });
+  }
+  $("varmore").hidden = false;
+  $("varmore").onclick = () => showVariations(first + 9);
+  for (let i = 0; i < 2; i += 1) nextVariation();
+}
+function nextVariation() {
+  const v = variationQueue.shift();
+  if (!v) return;
+  v.img.onload = () => { v.img.parentElement.dataset.loaded = "1"; nextVariation(); };
+  // Busy (503: downloads running): again a little later.
+  v.img.onerror = () => { if (++v.tries < 10) setTimeout(() => { variationQueue.unshift(v); nextVariation(); }, 1000); else nextVariation(); };
+  v.img.src = `/variation.png?rng=${v.seed}&t=${Date.now()}`;
+}
+$("varshow").addEventListener("click", () => {
+  const s = (page.status && page.status.settings) || {};
+  showVariations(Number(s.rng_seed || 1) + 1);
+});
+
+// --- the growth library's fidelity report (--metrics "growth"): how the result keeps the
+// reference's spacing, symbol mix and neighbourhoods (docs/stdlib/growth.md#fidelity-report).
+function fillFidelity(g) {
+  $("fidelity").hidden = !g;
+  if (!g) return;
+  const body = $("fidelitytable").tBodies[0];
+  body.textContent = "";
+  const pct = (v) => (typeof v === "number" ? (100 * v).toFixed(1) + "%" : "–");
+  const num = (v, d = 2) => (typeof v === "number" ? v.toFixed(d) : "–");
+  const row = (name, result, reference, off, label = name) => {
+    const tr = body.insertRow();
+    tr.insertCell().textContent = label;
+    const r = tr.insertCell(); r.className = "n" + (off ? " off" : ""); r.textContent = result;
+    const f = tr.insertCell(); f.className = "n"; f.textContent = reference;
+    tr.dataset.key = name;
+  };
+  row("motifs", `${g.motifs}` + (g.restarts ? ` (${g.restarts} restarts)` : ""), "");
+  row("NN median", num(g.nn_median, 3), "1", Math.abs((g.nn_median || 0) - 1) > 0.1);
+  const same = g.same_symbol_neighbours || {};
+  row("same-symbol pairs", pct(same.result), pct(same.reference),
+      Math.abs((same.result || 0) - (same.reference || 0)) > 0.1);
+  for (const [name, share] of Object.entries(g.symbols || {}))
+    row(name, pct(share.result), pct(share.reference), Math.abs(share.result - share.reference) > 0.05, `“${name}” share`);
+  const d = g.defects || {};
+  row("defects", `${pct(d.share)} of ${d.interior || 0}`, "");
+  row("largest hole", num(g.largest_hole), "", (g.largest_hole || 0) > 1.5);
+  // The histogram: a pair of bars per bin, result in front.
+  const h = g.nn_histogram || {}, svg = $("nnhistogram");
+  svg.textContent = "";
+  const bins = Math.max((h.result || []).length, (h.reference || []).length);
+  const top = Math.max(1e-9, ...(h.result || []), ...(h.reference || []));
+  const w = 210 / Math.max(1, bins);
+  for (const [kind, dx] of [["reference", 0], ["result", w * 0.3]]) {
+    (h[kind] || []).forEach((v, i) => {
+      const r = document.createElementNS(SVGNS, "rect"), height = 56 * v / top;
+      r.setAttribute("x", i * w + dx); r.setAttribute("width", w * 0.7);
+      r.setAttribute("y", 58 - height); r.setAttribute("height", height);
+      r.setAttribute("class", "bar-" + kind);
+      svg.appendChild(r);
+    });
+  }
+  // The reference's spacing: NN 1.
+  const one = document.createElementNS(SVGNS, "line");
+  for (const [k, v] of [["x1", w * 1 / (h.bin || 0.1)], ["x2", w * 1 / (h.bin || 0.1)], ["y1", 0], ["y2", 60]]) one.setAttribute(k, v);
+  one.setAttribute("class", "nn-one");
+  svg.appendChild(one);
 }
 
 // --- zoom and pan ---------------------------------------------------------------------------
@@ -433,6 +624,28 @@ function applyAddress() {
 }
 applyAddress();
 
-const events = new EventSource("/events");
-events.onmessage = (e) => update(JSON.parse(e.data));
+// --- one event stream per browser, shared by its tabs --------------------------------------
+// A browser opens about six connections per host: with an event stream each, the seventh tab
+// would never load. The tab holding the lock (Web Locks) keeps the one stream open and passes
+// every status on (BroadcastChannel); when it closes, a waiting tab takes the lock and the
+// stream over. Where a browser has neither (not a secure context: another --host), each tab
+// has its own stream.
+function followEvents() {
+  const own = () => {
+    const events = new EventSource("/events");
+    events.onmessage = (e) => { update(JSON.parse(e.data)); if (page.channel) page.channel.postMessage(e.data); };
+    return events;
+  };
+  if (!window.BroadcastChannel || !navigator.locks) { own(); return; }
+  page.channel = new BroadcastChannel("acanthus-preview-events");
+  page.channel.onmessage = (e) => { if (!page.leader) update(JSON.parse(e.data)); };
+  // Until the leader's next event: the status now.
+  fetch("/status.json").then((r) => r.json()).then((s) => { if (!page.status) update(s); }).catch(() => {});
+  navigator.locks.request("acanthus-preview-events", () => new Promise(() => {
+    page.leader = true;
+    document.body.dataset.leader = "1";
+    own();  // held until the tab closes
+  }));
+}
+followEvents();
 window.addEventListener("resize", () => applyView());

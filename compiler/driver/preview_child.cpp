@@ -133,6 +133,23 @@ ChildEnd run_child(const ChildRun& run) {
     return end;
 }
 
+bool spawn_detached(const std::vector<std::string>& argv, std::string& error) {
+    if (argv.empty()) return error = "no command", false;
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    SpawnSetup setup;
+    setup.prepare(ChildRun{});
+    pid_t pid = 0;
+    const int rc = posix_spawnp(&pid, args[0], setup.actions(), setup.attr(), args.data(), environ);
+    if (rc != 0) return error = "cannot run '" + argv[0] + "': " + std::strerror(rc), false;
+    std::thread([pid] {
+        while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+        }
+    }).detach();
+    return true;
+}
+
 std::string describe(const ChildEnd& end, double deadline_seconds) {
     switch (end.how) {
         case ChildEnd::How::exited:

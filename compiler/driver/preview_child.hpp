@@ -28,6 +28,10 @@ struct ChildEnd {
 
 ChildEnd run_child(const ChildRun& run);
 
+// Starts a program that outlives the request (the user's editor): its own process group, no
+// output, not waited for (a thread reaps it). False with `error` when it cannot start.
+bool spawn_detached(const std::vector<std::string>& argv, std::string& error);
+
 // "exit status 3", "killed by signal 11 (Segmentation fault)", "timed out after 20 s", ...
 std::string describe(const ChildEnd& end, double deadline_seconds);
 

@@ -35,7 +35,7 @@ constexpr std::size_t kKeptIdleThreads = 8;  // a browser keeps about six connec
 int usage(const std::string& message) {
     std::cerr << "acanthus: error: " << message
               << "\nUsage: acanthus preview [-I DIR]... [-O LEVEL] FILE.acr [program options] "
-                 "[--port N] [--host ADDR] [--memory-limit SIZE]\n";
+                 "[--port N] [--host ADDR] [--memory-limit SIZE] [--editor CMD]\n";
     return kBadUsage;
 }
 
@@ -66,14 +66,16 @@ bool parse_memory_limit(const std::string& value, unsigned long long& bytes) {
     return true;
 }
 
-// Takes --port, --host and --memory-limit out of `args`.
+// Takes --port, --host, --memory-limit and --editor out of `args`.
 bool take_server_options(std::vector<std::string>& args, int& port, std::string& host,
-                         unsigned long long& memory_limit, std::string& error) {
+                         unsigned long long& memory_limit, std::string& editor,
+                         std::string& error) {
     std::vector<std::string> rest;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         std::string name = a.substr(0, a.find('=')), value;
-        if (name != "--port" && name != "--host" && name != "--memory-limit") {
+        if (name != "--port" && name != "--host" && name != "--memory-limit" &&
+            name != "--editor") {
             rest.push_back(a);
             continue;
         }
@@ -90,6 +92,11 @@ bool take_server_options(std::vector<std::string>& args, int& port, std::string&
                 return error = "bad --memory-limit '" + value +
                                "' (MiB, or with M or G: 2048, 512M, 2G; at least 64M; 0 for none)",
                        false;
+            continue;
+        }
+        if (name == "--editor") {
+            if (value.empty()) return error = "'--editor' needs a command", false;
+            editor = value;
             continue;
         }
         if (name == "--host") {
@@ -144,7 +151,9 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
     int port = kDefaultPort;
     std::string host = "127.0.0.1", error;
     unsigned long long memory_limit = default_memory_limit();
-    if (!take_server_options(args, port, host, memory_limit, error)) return usage(error);
+    const char* visual = std::getenv("VISUAL");
+    std::string editor = visual ? visual : "";
+    if (!take_server_options(args, port, host, memory_limit, editor, error)) return usage(error);
     PreviewSettings settings;
     if (!settings.take(args, error)) return usage(error);
     std::error_code ec;
@@ -235,6 +244,7 @@ int run_preview(const std::string& input, const std::vector<std::string>& includ
                              stem,
                              host,
                              (fs::path(input).parent_path() / (stem + ".guides.svg")).string(),
+                             editor,
                              stopping};
             add_routes(server, site);
             std::thread signals([&] {

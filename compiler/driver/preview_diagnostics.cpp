@@ -1,6 +1,7 @@
 #include "driver/preview_diagnostics.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -114,6 +115,74 @@ std::string in_rule_source(const std::string& output) {
             ++i;
     }
     return out;
+}
+
+std::string same_file_key(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::path p = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path : p.string();
+}
+
+void add_source_context(std::vector<PreviewDiagnostic>& diagnostics,
+                        const std::vector<std::string>& files, int around) {
+    std::vector<std::string> known;
+    for (const std::string& f : files) known.push_back(same_file_key(f));
+    for (PreviewDiagnostic& d : diagnostics) {
+        if (d.line <= 0 ||
+            std::find(known.begin(), known.end(), same_file_key(d.file)) == known.end())
+            continue;
+        std::ifstream in(d.file);
+        d.context.clear();
+        d.context_first = std::max(1, d.line - around);
+        int number = 0;
+        for (std::string line; number < d.line + around && std::getline(in, line);)
+            if (++number >= d.context_first) d.context.push_back(line.substr(0, 400));
+        if (d.context.empty()) d.context_first = 0;
+    }
+}
+
+std::vector<std::string> editor_command(const std::string& command, const std::string& file,
+                                        int line, int column) {
+    std::vector<std::string> words;
+    std::string word;
+    bool in_word = false;
+    char quote = 0;
+    for (char c : command) {
+        if (quote) {
+            if (c == quote)
+                quote = 0;
+            else
+                word += c;
+        } else if (c == '\'' || c == '"') {
+            quote = c;
+            in_word = true;
+        } else if (c == ' ' || c == '\t') {
+            if (in_word) words.push_back(word);
+            word.clear();
+            in_word = false;
+        } else {
+            word += c;
+            in_word = true;
+        }
+    }
+    if (in_word) words.push_back(word);
+    bool named = false;
+    const auto replace_all = [](std::string& text, const std::string& what, const std::string& by) {
+        for (std::size_t at = text.find(what); at != std::string::npos;
+             at = text.find(what, at + by.size()))
+            text.replace(at, what.size(), by);
+    };
+    for (std::string& w : words) {
+        named = named || w.find("{file}") != std::string::npos;
+        replace_all(w, "{line}", std::to_string(line));
+        replace_all(w, "{column}", std::to_string(column));
+        replace_all(w, "{file}", file);
+    }
+    if (!named && !words.empty()) {
+        words.push_back("+" + std::to_string(line));
+        words.push_back(file);
+    }
+    return words;
 }
 
 }  // namespace acanthus

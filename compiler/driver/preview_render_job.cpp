@@ -1,5 +1,8 @@
 #include "driver/preview_render_job.hpp"
 
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -71,6 +74,24 @@ std::string cut_by_time_limit(const PreviewStatus::json& metrics, double time_li
     text << "cut by --time-limit " << time_limit << " s: the growth did not finish";
     return text.str();
 }
+
+// Whether a file the program replaces (by rename) is there anew since the last look.
+class PartialWatch {
+  public:
+    bool changed(const std::string& path) {
+        struct stat st {};
+        if (::stat(path.c_str(), &st) != 0 || st.st_size == 0) return false;
+        const bool fresh = st.st_ino != inode_ || st.st_mtim.tv_sec != mtime_.tv_sec ||
+                           st.st_mtim.tv_nsec != mtime_.tv_nsec;
+        inode_ = st.st_ino;
+        mtime_ = st.st_mtim;
+        return fresh;
+    }
+
+  private:
+    ino_t inode_ = 0;
+    timespec mtime_{};
+};
 
 std::string stem_of(const std::string& path) {
     std::string stem = fs::path(path).stem().string();
@@ -205,7 +226,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp,
     if (cancelled) return false;
     std::string output = in_rule_source(read_text(log, 1u << 20));
     if (output.empty()) output = "acanthus: error: " + error + "\n";
-    status_.fail("build", output, parse_diagnostics(output), 0);
+    status_.fail("build", output, diagnose(output), 0);
     return false;
 }
 
@@ -230,8 +251,12 @@ void RenderJob::render(long generation) {
     bool compiled = compile_rule_file(request, true, cpp, diagnostics, &files, &params);
     files.push_back(config_.input);
     watcher_.watch(files);
+    {
+        std::lock_guard lock(mutex_);
+        source_files_ = files;
+    }
     if (!compiled) {
-        status_.fail("compile", diagnostics.str(), parse_diagnostics(diagnostics.str()),
+        status_.fail("compile", diagnostics.str(), diagnose(diagnostics.str()),
                      seconds_since(start));
         return;
     }
@@ -250,18 +275,14 @@ void RenderJob::render(long generation) {
     const fs::path dir(config_.work_dir);
     const std::string tag = std::to_string(generation);
     const std::string svg = (dir / ("render-" + tag + ".svg")).string();
-    const std::string tree = (dir / ("tree-" + tag + ".json")).string();
     const std::string out = (dir / ("metrics-" + tag + ".json")).string();
     const std::string err = (dir / ("messages-" + tag + ".txt")).string();
+    const std::string partial = (dir / ("partial-" + tag + ".svg")).string();
     ChildRun run;
     run.argv = program;
     std::vector<std::string> arguments = settings.arguments();
     run.argv.insert(run.argv.end(), arguments.begin(), arguments.end());
-    run.argv.insert(run.argv.end(), {"-o", svg, "--metrics", "--progress"});
-    // The page needs the region's bounds (to place seeds and strokes); the element tree that
-    // carries them is large, so it is written only when the region changed.
-    const bool need_bounds = region_bounds_.is_null() || bounds_region_ != settings.region;
-    if (need_bounds) run.argv.insert(run.argv.end(), {"--json", tree});
+    run.argv.insert(run.argv.end(), {"-o", svg, "--metrics", "--progress", "--partial", partial});
     run.stdout_path = out;
     run.stderr_path = err;
     run.cancel = &cancel_;
@@ -269,28 +290,27 @@ void RenderJob::render(long generation) {
     // The program stops itself at --time-limit (and a runaway body a second later); the
     // deadline is for a program that does not.
     run.deadline_seconds = settings.time_limit + 10;
+    PartialWatch partial_seen;
     run.on_poll = [&] {
         long iterations = 0, elements = 0;
         double seconds = 0;
         if (last_progress(read_text(err, 1u << 20), iterations, elements, seconds))
             status_.progress(iterations, elements, seconds);
+        // The program replaces the file by a rename: a new one is a new inode or time.
+        if (partial_seen.changed(partial)) status_.set_partial(read_text(partial));
     };
     ChildEnd end = run_child(run);
     std::error_code ec;
     if (end.how == ChildEnd::How::cancelled) {
-        for (const std::string& f : {svg, tree, out, err}) fs::remove(f, ec);
+        for (const std::string& f : {svg, out, err, partial}) fs::remove(f, ec);
         return;
     }
     std::string messages = read_text(err, 1u << 20);
     if (end.how == ChildEnd::How::exited && end.code == 0) {
         PreviewStatus::json metrics = PreviewStatus::json::object();
         try {
+            // (with the region's bounds, where the page places seeds and strokes)
             metrics = PreviewStatus::json::parse(read_text(out));
-            if (need_bounds) {
-                region_bounds_ = PreviewStatus::json::parse(read_text(tree)).at("region");
-                bounds_region_ = settings.region;
-            }
-            metrics["region"] = region_bounds_;
         } catch (const std::exception&) {
         }
         {
@@ -319,12 +339,24 @@ void RenderJob::render(long generation) {
                      std::to_string(config_.memory_limit >> 20) + " MiB\n";
         else if (shown.empty())
             shown = "acanthus: error: the program ended with " + describe(end, 0) + "\n";
-        status_.fail("run", shown, parse_diagnostics(shown), seconds_since(start));
+        status_.fail("run", shown, diagnose(shown), seconds_since(start));
     }
-    for (const std::string& f : {svg, tree, out, err}) fs::remove(f, ec);
+    for (const std::string& f : {svg, out, err, partial}) fs::remove(f, ec);
 }
 
-ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double deadline_seconds) {
+std::vector<std::string> RenderJob::source_files() const {
+    std::lock_guard lock(mutex_);
+    return source_files_.empty() ? std::vector<std::string>{config_.input} : source_files_;
+}
+
+std::vector<PreviewDiagnostic> RenderJob::diagnose(const std::string& output) const {
+    std::vector<PreviewDiagnostic> diagnostics = parse_diagnostics(output);
+    add_source_context(diagnostics, source_files());
+    return diagnostics;
+}
+
+ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double deadline_seconds,
+                              const std::string& rng_seed) {
     ExtraRun result;
     ChildRun run;
     {
@@ -334,8 +366,21 @@ ExtraRun RenderJob::run_again(const std::vector<std::string>& extra, double dead
             return result;
         }
         run.argv = good_program_;
-        run.argv.insert(run.argv.end(), good_arguments_.begin(), good_arguments_.end());
+        // The program takes an option once: a seed or a width given here replaces the
+        // render's.
+        const auto replaced = [&](const std::string& a) {
+            return (a == "--rng-seed" && !rng_seed.empty()) ||
+                   (a == "--width" && std::find(extra.begin(), extra.end(), a) != extra.end());
+        };
+        for (std::size_t i = 0; i < good_arguments_.size(); ++i) {
+            if (replaced(good_arguments_[i])) {
+                ++i;  // and its value
+                continue;
+            }
+            run.argv.push_back(good_arguments_[i]);
+        }
     }
+    if (!rng_seed.empty()) run.argv.insert(run.argv.end(), {"--rng-seed", rng_seed});
     run.argv.insert(run.argv.end(), extra.begin(), extra.end());
     static std::atomic<long> counter{0};
     const std::string err =

@@ -47,8 +47,13 @@ class RenderJob {
     PreviewSettings settings() const;
     void set_settings(PreviewSettings settings);  // and render again
 
+    // The rule file and the files it imports, as the latest compile read them.
+    std::vector<std::string> source_files() const;
+
     // Runs the program of the latest good render again with `extra` arguments (outputs).
-    ExtraRun run_again(const std::vector<std::string>& extra, double deadline_seconds);
+    // With `rng_seed` set: that seed in place of the render's (a variation).
+    ExtraRun run_again(const std::vector<std::string>& extra, double deadline_seconds,
+                       const std::string& rng_seed = {});
 
   private:
     void loop();
@@ -59,6 +64,8 @@ class RenderJob {
     // (the status says why) or when cancelled.
     bool build(const std::string& stem, const std::string& cpp, std::vector<std::string>& program);
     std::string command_line(const PreviewSettings& s) const;
+    // The errors of `output`, each with the source around it.
+    std::vector<PreviewDiagnostic> diagnose(const std::string& output) const;
 
     PreviewConfig config_;
     PreviewStatus& status_;
@@ -73,10 +80,8 @@ class RenderJob {
     std::string host_;  // empty: not built yet, or failed
     bool host_failed_ = false;
     std::vector<std::string> good_program_;
-    // The region's bounds and area from the last --json tree, for the region they belong to.
-    PreviewStatus::json region_bounds_;
-    std::string bounds_region_;
     std::vector<std::string> good_arguments_;
+    std::vector<std::string> source_files_;
     FileWatcher watcher_;
     std::thread thread_;
 };

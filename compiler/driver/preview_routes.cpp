@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "driver/preview_child.hpp"
+#include "driver/preview_diagnostics.hpp"
 #include "driver/preview_guides.hpp"
 #include "driver/preview_limits.hpp"
 #include "driver/preview_render_job.hpp"
@@ -288,7 +290,7 @@ void in_run_slot(httplib::Response& res, Run&& run) {
 // (Sec-Fetch-Site; "none" is an address typed or a bookmark). Scripts send neither.
 bool changes_or_runs(const httplib::Request& req) {
     return req.method == "POST" || req.path == "/render.png" || req.path == "/render.pdf" ||
-           req.path == "/debug-frame.png";
+           req.path == "/debug-frame.png" || req.path == "/variation.png";
 }
 
 bool from_the_page(const httplib::Request& req) {
@@ -301,11 +303,12 @@ bool from_the_page(const httplib::Request& req) {
 
 // A program output made on request (a download, a debug frame) in the server's directory.
 void send_rerun(PreviewSite& site, httplib::Response& res, const std::vector<std::string>& extra,
-                const fs::path& file, const char* type, const std::string& download) {
+                const fs::path& file, const char* type, const std::string& download,
+                const std::string& rng_seed = {}) {
     ExtraRun run;
     bool ran = false;
     in_run_slot(res, [&] {
-        run = site.job.run_again(extra, 120);
+        run = site.job.run_again(extra, 120, rng_seed);
         ran = true;
     });
     if (!ran) return;
@@ -347,6 +350,7 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         json status = site.status.to_json();
         settings_json(site.job.settings(), site, status["settings"]);
         status["file"] = site.file;
+        status["event_streams"] = open_streams.load();  // how many /events are open now
         res.set_header("Cache-Control", "no-store");
         res.set_content(status.dump(), "application/json");
     });
@@ -356,6 +360,33 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         if (svg.empty()) {
             res.status = 404;
             res.set_content("no good render yet\n", "text/plain");
+            return;
+        }
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(svg, "image/svg+xml");
+    });
+
+    // An earlier good render, for the page to show beside the current one.
+    get("/revision.svg", [&site](const httplib::Request& req, httplib::Response& res) {
+        const std::string n = req.get_param_value("n");
+        std::string svg;
+        if (!n.empty() && n.size() < 10 && n.find_first_not_of("0123456789") == std::string::npos)
+            svg = site.status.revision_svg(std::stol(n));
+        if (svg.empty()) {
+            res.status = 404;
+            res.set_content("no such revision kept\n", "text/plain");
+            return;
+        }
+        res.set_header("Cache-Control", "no-store");
+        res.set_content(svg, "image/svg+xml");
+    });
+
+    // The growth so far, while a render grows (the program's --partial); 404 otherwise.
+    get("/partial.svg", [&site](const httplib::Request&, httplib::Response& res) {
+        std::string svg = site.status.partial_svg();
+        if (svg.empty()) {
+            res.status = 404;
+            res.set_content("no partial picture now\n", "text/plain");
             return;
         }
         res.set_header("Cache-Control", "no-store");
@@ -390,6 +421,20 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
                    file, "image/png", "");
         std::error_code ec;
         fs::remove(svg, ec);
+    });
+
+    // The variations sheet: the render with another rng seed, small.
+    get("/variation.png", [&site](const httplib::Request& req, httplib::Response& res) {
+        const std::string rng = req.get_param_value("rng");
+        if (rng.empty() || rng.size() > 19 ||
+            rng.find_first_not_of("0123456789") != std::string::npos)
+            return bad_request(res, "rng must be a decimal number");
+        static std::atomic<long> n{0};
+        const std::string tag = std::to_string(++n);
+        const fs::path file = fs::path(site.work_dir) / ("variation-" + tag + ".png");
+        send_rerun(site, res, {"-o", file.string(), "--width", "240", "--quiet"}, file, "image/png",
+                   "", rng);
+        res.set_header("Cache-Control", "no-store");
     });
 
     // Frames of the growth: POST /frames {"every": K} makes them, GET /frames/N.png serves them.
@@ -443,6 +488,44 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
             }
             send_file(res, fs::path(site.panels_dir) / name, "image/svg+xml");
         });
+
+    // file:line in the page opens the user's editor there (--editor or $VISUAL); only the rule
+    // file and the files it imports can be named.
+    post("/open", [&site](const httplib::Request& req, httplib::Response& res) {
+        json body;
+        if (!parse_json(req, res, body)) return;
+        const std::string file = body.value("file", std::string());
+        const long line = body.value("line", 1L), column = body.value("column", 1L);
+        if (line < 1 || line > 100000000 || column < 0 || column > 100000000)
+            return bad_request(res, "line and column must be positive numbers");
+        bool known = false;
+        for (const std::string& f : site.job.source_files())
+            known = known || (!file.empty() && same_file_key(f) == same_file_key(file));
+        if (!known) {
+            res.status = 403;
+            res.set_content(json{{"error", "only the rule file and its imports open"}}.dump(),
+                            "application/json");
+            return;
+        }
+        if (site.editor.empty()) {
+            res.status = 409;
+            res.set_content(json{{"error",
+                                  "no editor: start the preview with --editor "
+                                  "'code -g {file}:{line}:{column}' or set $VISUAL"}}
+                                .dump(),
+                            "application/json");
+            return;
+        }
+        const std::vector<std::string> argv = editor_command(
+            site.editor, same_file_key(file), static_cast<int>(line), static_cast<int>(column));
+        std::string error;
+        if (!spawn_detached(argv, error)) {
+            res.status = 500;
+            res.set_content(json{{"error", error}}.dump(), "application/json");
+            return;
+        }
+        res.set_content(json{{"opened", argv}}.dump(), "application/json");
+    });
 
     post("/settings", [&site](const httplib::Request& req, httplib::Response& res) {
         json body;

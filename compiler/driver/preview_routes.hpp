@@ -27,6 +27,7 @@ struct PreviewSite {
     std::string stem;                 // the rule file's stem: names downloads
     std::string listen_host;          // --host: a name requests may use besides an address
     std::string guides_file;          // beside the rule file: NAME.guides.svg
+    std::string editor;               // --editor, else $VISUAL; empty: none
     const std::atomic<bool>& stopping;
 };
 

@@ -14,6 +14,7 @@ void PreviewStatus::begin(const std::string& phase) {
     state_ = "running";
     phase_ = phase;
     if (phase == "compiling") progress_iterations_ = progress_elements_ = 0, progress_seconds_ = 0;
+    partial_svg_.clear();
     changed();
 }
 
@@ -23,6 +24,13 @@ void PreviewStatus::progress(long iterations, long elements, double seconds) {
     progress_iterations_ = iterations;
     progress_elements_ = elements;
     progress_seconds_ = seconds;
+    changed();
+}
+
+void PreviewStatus::set_partial(std::string svg) {
+    std::lock_guard lock(mutex_);
+    partial_svg_ = std::move(svg);
+    ++partial_;
     changed();
 }
 
@@ -52,6 +60,10 @@ void PreviewStatus::succeed(std::string svg, const json& metrics, double seconds
     output_ = note.empty() ? "" : note + "\n";
     diagnostics_.clear();
     svg_ = std::move(svg);
+    // Kept beside: a render that draws the same as the one before is not kept twice.
+    if (kept_.empty() || kept_.back().second != svg_) kept_.emplace_back(revision_, svg_);
+    while (kept_.size() > kKeptRevisions) kept_.pop_front();
+    partial_svg_.clear();
     metrics_ = metrics;
     elements_ = metrics.value("elements", 0L);
     seconds_ = seconds;
@@ -67,6 +79,7 @@ void PreviewStatus::fail(const std::string& kind, const std::string& output,
     error_kind_ = kind;
     output_ = output;
     diagnostics_ = std::move(diagnostics);
+    partial_svg_.clear();
     seconds_ = seconds;
     changed();
 }
@@ -74,15 +87,21 @@ void PreviewStatus::fail(const std::string& kind, const std::string& output,
 PreviewStatus::json PreviewStatus::to_json() const {
     std::lock_guard lock(mutex_);
     json diagnostics = json::array();
-    for (const PreviewDiagnostic& d : diagnostics_)
-        diagnostics.push_back(
-            {{"file", d.file}, {"line", d.line}, {"column", d.column}, {"message", d.message}});
+    for (const PreviewDiagnostic& d : diagnostics_) {
+        json entry = {
+            {"file", d.file}, {"line", d.line}, {"column", d.column}, {"message", d.message}};
+        if (!d.context.empty())
+            entry["source"] = {{"first", d.context_first}, {"lines", d.context}};
+        diagnostics.push_back(entry);
+    }
     json params = json::array();
     for (const ParamSummary& p : params_) {
         json entry = {{"name", p.name}, {"type", p.type}, {"default", p.default_text}};
         if (!p.low.empty()) entry["range"] = {p.low, p.high};
         params.push_back(entry);
     }
+    json kept = json::array();
+    for (const auto& entry : kept_) kept.push_back(entry.first);
     return {{"revision", revision_},
             {"state", state_},
             {"phase", phase_},
@@ -99,12 +118,27 @@ PreviewStatus::json PreviewStatus::to_json() const {
              {{"iterations", progress_iterations_},
               {"elements", progress_elements_},
               {"seconds", progress_seconds_}}},
+            {"revisions", kept},
+            // The number of the partial picture /partial.svg has now; 0 when it has none.
+            {"partial", partial_svg_.empty() ? 0 : partial_},
             {"version", version_}};
 }
 
 std::string PreviewStatus::svg() const {
     std::lock_guard lock(mutex_);
     return svg_;
+}
+
+std::string PreviewStatus::revision_svg(long revision) const {
+    std::lock_guard lock(mutex_);
+    for (const auto& [n, svg] : kept_)
+        if (n == revision) return svg;
+    return {};
+}
+
+std::string PreviewStatus::partial_svg() const {
+    std::lock_guard lock(mutex_);
+    return partial_svg_;
 }
 
 long PreviewStatus::revision() const {

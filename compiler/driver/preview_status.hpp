@@ -3,6 +3,7 @@
 #pragma once
 
 #include <condition_variable>
+#include <deque>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -20,6 +21,8 @@ class PreviewStatus {
     // A render began: compiling, then building, then growing.
     void begin(const std::string& phase);
     void progress(long iterations, long elements, double seconds);
+    // A picture of the growth so far (the program's --partial), while it grows.
+    void set_partial(std::string svg);
     void set_params(std::vector<ParamSummary> params);
     void set_command(std::string command);
     // Seconds one phase of the current render took (compile, build, grow): where time goes.
@@ -33,6 +36,10 @@ class PreviewStatus {
 
     json to_json() const;
     std::string svg() const;
+    std::string partial_svg() const;  // empty when the render in progress has drawn none
+    // An earlier good render still kept (the latest kKeptRevisions), or empty.
+    std::string revision_svg(long revision) const;
+    static constexpr std::size_t kKeptRevisions = 8;
     long revision() const;
     // Waits until the version passes `seen` or `timeout_ms` ran out; returns the version.
     long wait_for_change(long seen, int timeout_ms) const;
@@ -54,6 +61,9 @@ class PreviewStatus {
     std::vector<ParamSummary> params_;
     json metrics_ = json::object();
     std::string svg_;
+    std::string partial_svg_;
+    std::deque<std::pair<long, std::string>> kept_;  // good renders, oldest first
+    long partial_ = 0;  // how many partial pictures the server has had, ever
     std::string command_;
     json timings_ = json::object();
     long elements_ = 0;

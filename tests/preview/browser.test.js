@@ -84,7 +84,11 @@ async function rulesAndSliders(browser) {
   const rules = path.join(work, "bubbles.acr");
   const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8");
   save(rules, good);
-  const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80"], work);
+  // The editor: a script that writes down how it was called.
+  const opened = path.join(work, "opened.txt"), recorder = path.join(work, "editor.js");
+  fs.writeFileSync(recorder, `require("fs").writeFileSync(${JSON.stringify(opened)}, process.argv.slice(2).join(" "));\n`);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80", "--editor",
+                                                    `'${process.execPath}' '${recorder}' {file} {line} {column}`], work);
   const page = await browser.newPage();
   await watchPolicy(page);
   await page.setViewport({ width: 1280, height: 760 });
@@ -95,6 +99,7 @@ async function rulesAndSliders(browser) {
   check(JSON.stringify(sliders[0]) === JSON.stringify(["max_radius", "0.5", "10"]),
         "a slider per numeric parameter, with the declared range: " + JSON.stringify(sliders));
   check(await page.$("#params input[type=checkbox]") !== null, "a checkbox for the bool parameter");
+  check(await page.$eval("#fidelity", (d) => d.hidden), "no fidelity panel without the growth library");
   const rulesShown = await page.$$eval("#rules tbody tr", (rows) => rows.map((r) => r.cells[0].textContent));
   check(rulesShown.includes("dot --> dot"), "per-rule metrics in the page");
   const firstSvg = await (await fetch(url + "render.svg")).text();
@@ -127,6 +132,20 @@ async function rulesAndSliders(browser) {
                                                            getComputedStyle(img).visibility !== "hidden");
   check(stillShown, "the last good picture stays while the file is broken");
   await shot(page, "preview-error.png");
+  // The source around it, the line highlighted and its column marked; file:line opens the editor.
+  const source = await page.evaluate(() => {
+    const box = document.getElementById("sources");
+    return { hidden: box.hidden, link: box.querySelector("a.open").textContent,
+             hit: box.querySelector(".line.hit").textContent, caret: box.querySelector(".caret").textContent,
+             lines: box.querySelectorAll(".line").length };
+  });
+  check(!source.hidden && source.link.endsWith("bubbles.acr:26:5") && source.hit === "26 |     $7.radius = 2;\n" &&
+        source.caret === "   |     ^\n" && source.lines === 5,
+        "the source around the error, its line highlighted and its column marked: " + JSON.stringify(source));
+  await page.click("#sources a.open");
+  for (let i = 0; i < 100 && !fs.existsSync(opened); i += 1) await new Promise((r) => setTimeout(r, 50));
+  const openedWith = fs.existsSync(opened) ? fs.readFileSync(opened, "utf8") : "not run";
+  check(openedWith === `${fs.realpathSync(rules)} 26 5`, "clicking file:line opens the editor there: " + openedWith);
   // A page opened (or reloaded) while the file is broken: the error over the last good picture.
   const late = await browser.newPage();
   await late.goto(url);
@@ -142,7 +161,8 @@ async function rulesAndSliders(browser) {
   // Fixed: back to a picture.
   save(rules, good);
   rev = await waitShown(page, rev);
-  check(await page.$eval("#diagnostics", (d) => d.hidden), "fixing the file clears the diagnostic");
+  check(await page.$eval("#diagnostics", (d) => d.hidden) && await page.$eval("#sources", (d) => d.hidden),
+        "fixing the file clears the diagnostic and its source");
   const fixedSvg = await (await fetch(url + "render.svg")).text();
 
   // A slider moved with the mouse: the program runs again with the new value.
@@ -237,6 +257,23 @@ async function growthTools(browser) {
   let rev = await waitShown(page, 0);
   const before = await (await fetch(url + "render.svg")).text();
   check(await page.$eval("#modes button[data-mode=flow]", (b) => !b.hidden), "growth tools shown for a growth rule file");
+  // The growth library's fidelity report, from --metrics, in a panel of its own.
+  const g = (await status(url)).metrics.growth;
+  const fidelity = await page.evaluate(() => ({
+    hidden: document.getElementById("fidelity").hidden,
+    rows: Object.fromEntries([...document.querySelectorAll("#fidelitytable tbody tr")]
+      .map((r) => [r.dataset.key, [...r.cells].slice(1).map((c) => c.textContent)])),
+    bars: document.querySelectorAll("#nnhistogram rect").length,
+  }));
+  check(g && !fidelity.hidden && fidelity.rows.motifs[0] === String(g.motifs) &&
+        fidelity.rows["NN median"][0] === g.nn_median.toFixed(3) &&
+        Object.keys(g.symbols).every((k) => fidelity.rows[k][1] === (100 * g.symbols[k].reference).toFixed(1) + "%") &&
+        fidelity.rows["largest hole"][0] === g.largest_hole.toFixed(2) &&
+        fidelity.bars === g.nn_histogram.result.length + g.nn_histogram.reference.length,
+        "the fidelity panel shows the growth report: " + JSON.stringify(fidelity));
+  const region = (await status(url)).metrics.region;
+  check(region && region.bounds.length === 4 && region.bounds[2] > region.bounds[0] && region.area > 0,
+        "--metrics carries the region's bounds: " + JSON.stringify(region));
   await page.click("#modes button[data-mode=flow]");
   const view = await (await page.$("#picture")).boundingBox();
   const y = view.y + view.height * 0.5;
@@ -324,15 +361,176 @@ async function colourPickers(browser) {
   await page.close();
 }
 
+// Earlier revisions beside the current picture; the variations sheet: the render with nine
+// other rng seeds, one click takes a seed.
+async function revisionsAndVariations(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "bubbles.acr");
+  // Dots of random sizes: each rng seed grows its own picture.
+  const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8")
+    .split("min( max_radius, $goal.radius )").join("min( max_radius * rng.uniform( 0.4, 1.0 ), $goal.radius )");
+  check(good.includes("rng.uniform"), "the random fixture is made");
+  save(rules, good);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80"], work);
+  const page = await browser.newPage();
+  await watchPolicy(page);
+  await page.setViewport({ width: 1280, height: 900 });
+  await page.goto(url);
+  let rev = await waitShown(page, 0);
+  const firstSvg = await (await fetch(url + "render.svg")).text();
+  check(await page.$eval("#revisions", (d) => d.hidden), "no earlier revisions at first");
+  save(rules, good.replace("%param double max_radius = 3.0 in [0.5, 10];", "%param double max_radius = 6.0 in [0.5, 10];"));
+  rev = await waitShown(page, rev);
+  await page.waitForFunction(() => document.querySelectorAll("#revgrid figure").length === 1, { timeout: 10000, polling: 50 });
+  await page.click("#revgrid figure");
+  await page.waitForFunction(() => { const i = document.getElementById("besideimg"); return i.complete && i.naturalWidth > 0; },
+                             { timeout: 10000, polling: 50 });
+  const beside = await page.evaluate(() => ({ hidden: document.getElementById("beside").hidden,
+                                              label: document.getElementById("besidelabel").textContent,
+                                              n: document.getElementById("beside").dataset.revision }));
+  const kept = await (await fetch(url + `revision.svg?n=${beside.n}`)).text();
+  const current = await (await fetch(url + "render.svg")).text();
+  check(!beside.hidden && beside.label === `revision ${beside.n}` && kept === firstSvg && current !== firstSvg,
+        "an earlier revision shown beside the current picture: " + JSON.stringify(beside));
+  check((await fetch(url + "revision.svg?n=999")).status === 404, "a revision not kept is 404");
+  await shot(page, "preview-revisions.png");
+
+  await page.click("#varshow");
+  await page.waitForFunction(() => document.querySelectorAll("#vargrid figure[data-loaded]").length === 9,
+                             { timeout: 120000, polling: 100 });
+  const seeds = await page.$$eval("#vargrid figure", (f) => f.map((x) => x.dataset.seed));
+  check(JSON.stringify(seeds) === JSON.stringify(["2", "3", "4", "5", "6", "7", "8", "9", "10"]),
+        "nine variations, the rng seeds after the current one: " + seeds.join(" "));
+  const png = async (seed) => Buffer.from(await (await fetch(url + `variation.png?rng=${seed}`)).arrayBuffer());
+  const [a, b, a2] = [await png(4), await png(5), await png(4)];
+  check(a.subarray(0, 4).toString("latin1") === "\x89PNG" && !a.equals(b) && a.equals(a2),
+        "each variation is its own seed's picture, the same again for the same seed");
+  await shot(page, "preview-variations.png");
+  await page.click("#vargrid figure[data-seed='4']");
+  rev = await waitShown(page, rev);
+  const s = await status(url);
+  check(s.settings.rng_seed === "4" && (await page.$eval("#rng", (i) => i.value)) === "4",
+        "clicking a variation takes its seed: " + s.settings.rng_seed);
+  const cross = await fetch(url + "variation.png?rng=4", { headers: { "Sec-Fetch-Site": "cross-site" } });
+  check(cross.status === 403, "a variation is refused to another site (" + cross.status + ")");
+  await checkPolicy(page, "revisions and variations");
+  await page.close();
+}
+
+// 20 tabs over 3 browsers (contexts) all update after a save: each browser shares one event
+// stream among its tabs (a browser opens about six connections per host); when the tab that
+// holds it closes, another takes it over.
+async function manyTabs(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "bubbles.acr");
+  const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8");
+  save(rules, good);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:60,40"], work);
+  const contexts = [];
+  for (let i = 0; i < 3; i += 1) contexts.push(await browser.createIncognitoBrowserContext());
+  const pages = [];
+  for (let i = 0; i < 20; i += 1) {
+    const page = await contexts[i % 3].newPage();
+    await page.setViewport({ width: 800, height: 600 });
+    await page.goto(url);
+    pages.push(page);
+  }
+  const shownAll = async (rev, list, what) => {
+    const results = await Promise.allSettled(list.map((p) => waitShown(p, rev - 1, "ok", 60000)));
+    const missing = results.map((r, i) => (r.status === "fulfilled" ? -1 : i)).filter((i) => i >= 0);
+    check(missing.length === 0, `${what}: all ${list.length} tabs show revision ${rev}` +
+          (missing.length ? ` (not tabs ${missing.join(", ")})` : ""));
+  };
+  await shownAll(1, pages, "opened");
+  let s = await status(url);
+  check(s.event_streams <= 3, `one event stream per browser: ${s.event_streams} open for 20 tabs in 3 browsers`);
+  save(rules, good.replace("%param double max_radius = 3.0 in [0.5, 10];", "%param double max_radius = 5.0 in [0.5, 10];"));
+  await shownAll(2, pages, "after a save");
+  // The tab holding a browser's stream closes: another of that browser takes it over.
+  const leaders = [];
+  for (const p of pages) if (await p.evaluate(() => document.body.dataset.leader === "1")) leaders.push(p);
+  check(leaders.length === 3, `one tab per browser holds the stream (${leaders.length})`);
+  await leaders[0].close();
+  const rest = pages.filter((p) => p !== leaders[0]);
+  save(rules, good.replace("%param double max_radius = 3.0 in [0.5, 10];", "%param double max_radius = 4.0 in [0.5, 10];"));
+  await shownAll(3, rest, "after the stream's tab closed and a save");
+  s = await status(url);
+  check(s.event_streams <= 3, `still one stream per browser: ${s.event_streams}`);
+  for (const c of contexts) await c.close();
+}
+
+// While it grows, the page shows the growth so far (/partial.svg, about every 0.1 s), each
+// picture with more of it; a render that fails after some growth goes back to the last good one.
+async function partialPictures(browser) {
+  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const rules = path.join(work, "bubbles.acr");
+  // Each new dot waits 2 ms: a growth of a second or two, whatever the machine.
+  // (split and join: String.replace would read the rule file's `$$` as a pattern.)
+  const swap = (text, from, to) => text.split(from).join(to);
+  const slow = swap(swap(fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8"),
+                         "%source\n", "%source\n#include <thread>\n"),
+                    "    $$0.order = dot_count++;\n    return SUCCESS;\n}\n%endrule\n\n%draw",
+                    "    $$0.order = dot_count++;\n    std::this_thread::sleep_for( std::chrono::milliseconds( 2 ) );\n" +
+                    "    return SUCCESS;\n}\n%endrule\n\n%draw");
+  check(slow.includes("sleep_for"), "the slow fixture is made");
+  save(rules, slow);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:160,120"], work);
+  const page = await browser.newPage();
+  await watchPolicy(page);
+  await page.setViewport({ width: 1280, height: 760 });
+  // Every partial picture the page shows (its number), and the dots in each the server sent.
+  await page.evaluateOnNewDocument(() => {
+    window.partials = [];
+    new MutationObserver(() => {
+      if (document.body.dataset.picture === "partial") window.partials.push(Number(document.body.dataset.partial));
+    }).observe(document, { attributes: true, subtree: true, attributeFilter: ["data-partial", "data-picture"] });
+  });
+  const dots = {};
+  page.on("response", async (r) => {
+    const m = /\/partial\.svg\?n=(\d+)/.exec(r.url());
+    if (m && r.ok()) dots[m[1]] = ((await r.text()).match(/<circle/g) || []).length;
+  });
+  await page.goto(url);
+  let rev = await waitShown(page, 0);
+  const shownDots = async (from) => (await page.evaluate((f) => window.partials.slice(f), from)).map((n) => dots[n]);
+  const first = await shownDots(0);
+  const final = await (await fetch(url + "render.svg")).text();
+  const finalDots = (final.match(/<circle/g) || []).length;
+  const s = await status(url);
+  check(first.length >= 2, `the page showed the growth so far while it grew (${first.length} pictures in ` +
+        `${s.timings.grow.toFixed(2)} s of growth)`);
+  check(first.length > 0 && first.every((d, i) => d > 0 && (i === 0 || d >= first[i - 1])) &&
+        first[first.length - 1] < finalDots,
+        "each partial picture has more of the growth, all fewer dots than the finished one: " +
+        JSON.stringify(first) + " then " + finalDots);
+  check(await page.evaluate(() => document.body.dataset.picture) === "render", "the finished picture replaces the last partial one");
+  await checkPolicy(page, "partial pictures");
+
+  // A body that fails after a while: partial pictures, then the error over the last good picture.
+  const seen = await page.evaluate(() => window.partials.length);
+  save(rules, swap(slow, "    $$0.order = dot_count++;\n    std::this_thread",
+                   "    if ( dot_count > 300 ) throw std::runtime_error( \"late\" );\n" +
+                   "    $$0.order = dot_count++;\n    std::this_thread"));
+  rev = await waitShown(page, rev, "error");
+  await page.waitForFunction(() => document.body.dataset.picture === "render", { timeout: 10000, polling: 50 });
+  const late = await shownDots(seen);
+  const back = await page.evaluate(() => document.body.dataset.picture);
+  check(late.length >= 1 && late.every((d) => d > 0 && d <= 301) && back === "render",
+        `a render that fails after ${late.length} partial picture(s) (${JSON.stringify(late)} dots) goes back to the last good picture`);
+  await page.close();
+}
+
 (async () => {
   let browser;
   const watchdog = setTimeout(() => { console.log("FAIL: the browser tests took over 8 minutes"); stopServers(); process.exit(1); }, 480000);
   try {
     browser = await puppeteer.launch({ executablePath: chromium, headless: "new",
                                        args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"] });
-    await rulesAndSliders(browser);
-    await growthTools(browser);
-    await colourPickers(browser);
+    // ACANTHUS_BROWSER_TESTS=name,name runs only those.
+    const only = (process.env.ACANTHUS_BROWSER_TESTS || "").split(",").filter(Boolean);
+    for (const test of [rulesAndSliders, growthTools, colourPickers, partialPictures, revisionsAndVariations,
+                        manyTabs])
+      if (!only.length || only.includes(test.name)) await test(browser);
   } catch (e) {
     console.log("FAIL: " + (e && e.stack ? e.stack : e));
     failures += 1;

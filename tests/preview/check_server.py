@@ -120,8 +120,14 @@ def main():
         rules = os.path.join(work, "bubbles.acr")
         good = open(os.path.join(HERE, "fixtures", "bubbles.acr")).read()
         save(rules, good)
+        # The editor: a script that writes down how it was called.
+        recorder, opened = os.path.join(work, "editor.py"), os.path.join(work, "opened.txt")
+        with open(recorder, "w") as f:
+            f.write("import sys\nopen(%r, 'w').write(' '.join(sys.argv[1:]))\n" % opened)
+        editor = "'%s' '%s' --goto {file}:{line}:{column}" % (sys.executable, recorder)
         with PreviewServer(acanthus, rules, ["--region", "rect:80,50", "--body-time-limit", "2",
-                                             "--time-limit", "8"], cwd=work) as server:
+                                             "--time-limit", "8", "--editor", editor],
+                           cwd=work) as server:
             s = server.wait_revision(0)
             check(s["state"] == "ok" and s["elements"] > 10 and s["phase"] == "done",
                   "first render ok with elements")
@@ -131,6 +137,9 @@ def main():
             code, first_svg, ctype = server.get("/render.svg")
             check(code == 200 and ctype.startswith("image/svg+xml") and b"<svg" in first_svg,
                   "/render.svg serves the render")
+            # The growth so far is served only while a render grows.
+            check(s["partial"] == 0 and server.get("/partial.svg")[0] == 404,
+                  "no partial picture once the render is done (partial %s)" % s["partial"])
             # --port 0 took a free port and printed it; a second preview on that port is refused.
             port = int(server.url.rstrip("/").rsplit(":", 1)[1])
             check(port > 0, "--port 0 printed the port it took (%d)" % port)
@@ -172,6 +181,27 @@ def main():
             check("$7" in d[0]["message"] and "26 |     $7.radius = 2;" in s["output"],
                   "message and source line as the compiler prints them")
             check(server.get("/render.svg")[1] == first_svg, "last good picture kept")
+            check(d[0].get("source") == {"first": 24, "lines": [
+                "    $$0.order = dot_count++;", "    $$.sterile = 1;", "    $7.radius = 2;",
+                "    return SUCCESS;", "}"]},
+                "the source around the error: %s" % d[0].get("source"))
+            # file:line opens the editor there; only the rule file and its imports.
+            code, body = server.post("/open", {"file": d[0]["file"], "line": 26, "column": 5})
+            deadline = time.monotonic() + 10
+            while not os.path.exists(opened) and time.monotonic() < deadline:
+                time.sleep(0.05)
+            check(code == 200 and os.path.exists(opened) and open(opened).read() ==
+                  "--goto %s:26:5" % os.path.realpath(rules),
+                  "POST /open runs --editor at the line and column: %s %s" % (
+                      code, open(opened).read() if os.path.exists(opened) else "not run"))
+            os.remove(opened)
+            for name in ["/etc/passwd", os.path.join(work, "editor.py"), ""]:
+                code, body = server.post("/open", {"file": name, "line": 1})
+                check(code == 403, "POST /open refuses %r (%d)" % (name, code))
+            check(server.post("/open", {"file": d[0]["file"], "line": -1})[0] == 400,
+                  "POST /open refuses a bad line")
+            time.sleep(0.3)
+            check(not os.path.exists(opened), "the editor ran for none of them")
 
             # A C++ error in a body shows at the rule file's line.
             save(rules, good.replace("    double r = min( max_radius, $goal.radius );",

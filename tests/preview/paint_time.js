@@ -1,8 +1,10 @@
 // When the preview page in headless Chromium painted each revision, for bench/preview_edit.py.
 // Usage: node paint_time.js URL CHROMIUM. Prints "ready REV" once the first picture is shown;
-// then for each line "wait REV" on standard input prints "painted REV MS": the wall-clock time
-// (ms since the epoch) of the first frame after the page's picture of revision REV or later
-// loaded, or "painted REV none" after 120 s.
+// then for each line "wait REV SINCE" on standard input prints "painted REV MS FIRST": MS the
+// wall-clock time (ms since the epoch) of the first frame after the page's picture of revision
+// REV or later loaded, or "painted REV none" after 120 s; FIRST the first frame painted after
+// SINCE (ms since the epoch) with the growth so far (a partial picture) or the picture itself:
+// the user's first look.
 "use strict";
 const readline = require("readline");
 const puppeteer = require("puppeteer-core");
@@ -19,10 +21,15 @@ const [url, chromium] = process.argv.slice(2);
     // the first with it on screen.
     await page.evaluateOnNewDocument(() => {
       window.paintedAt = {};
-      new MutationObserver(() => {
+      window.partialsAt = [];
+      new MutationObserver((records) => {
+        const partial = records.some((r) => r.attributeName === "data-partial");
         const rev = Number(document.body.dataset.shown);
-        requestAnimationFrame(() => requestAnimationFrame(() => { window.paintedAt[rev] = Date.now(); }));
-      }).observe(document, { attributes: true, subtree: true, attributeFilter: ["data-shown"] });
+        requestAnimationFrame(() => requestAnimationFrame(() => {
+          if (partial) window.partialsAt.push(Date.now());
+          else window.paintedAt[rev] = Date.now();
+        }));
+      }).observe(document, { attributes: true, subtree: true, attributeFilter: ["data-shown", "data-partial"] });
     });
     await page.goto(url);
     await page.waitForFunction(() => Object.keys(window.paintedAt).length > 0, { timeout: 300000, polling: 50 });
@@ -30,17 +37,19 @@ const [url, chromium] = process.argv.slice(2);
     console.log("ready " + first);
     const lines = readline.createInterface({ input: process.stdin });
     for await (const line of lines) {
-      const m = line.match(/^wait (\d+)$/);
+      const m = line.match(/^wait (\d+) (\d+)$/);
       if (!m) continue;
-      const rev = Number(m[1]);
-      let ms = "none";
+      const rev = Number(m[1]), since = Number(m[2]);
+      let ms = "none", first = "none";
       try {
         await page.waitForFunction((r) => Object.keys(window.paintedAt).some((k) => Number(k) >= r),
                                    { timeout: 120000, polling: 10 }, rev);
         ms = await page.evaluate((r) => Math.min(...Object.entries(window.paintedAt)
           .filter(([k]) => Number(k) >= r).map(([, t]) => t)), rev);
+        first = await page.evaluate((t, painted) => Math.min(painted, ...window.partialsAt.filter((p) => p >= t)),
+                                    since, ms);
       } catch (e) { /* none */ }
-      console.log(`painted ${rev} ${ms}`);
+      console.log(`painted ${rev} ${ms} ${first}`);
     }
   } finally {
     await browser.close();

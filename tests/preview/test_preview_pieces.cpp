@@ -97,6 +97,44 @@ TEST(PreviewDiagnostics, ProgramRuleFailureLocatedAtTheRule) {
     EXPECT_EQ(d[0].message, "rule 'seed --> dot': still running after 10 s");
 }
 
+TEST(PreviewDiagnostics, SourceAroundEachErrorOfTheRuleFilesOnly) {
+    const std::string dir = ::testing::TempDir();
+    const std::string rules = dir + "/context.acr", other = dir + "/other.acr";
+    {
+        std::ofstream out(rules);
+        for (int i = 1; i <= 9; ++i) out << "line " << i << "\n";
+        std::ofstream(other) << "secret\n";
+    }
+    std::vector<PreviewDiagnostic> d = {{rules, 5, 3, "bad"},
+                                        {rules, 1, 1, "first"},
+                                        {rules, 9, 2, "last"},
+                                        {other, 1, 1, "not ours"},
+                                        {rules, 0, 0, "unlocated"}};
+    // Named another way (`dir/./`): the same file.
+    add_source_context(d, {dir + "/./context.acr"});
+    EXPECT_EQ(d[0].context_first, 3);
+    EXPECT_EQ(d[0].context,
+              (std::vector<std::string>{"line 3", "line 4", "line 5", "line 6", "line 7"}));
+    EXPECT_EQ(d[1].context_first, 1);
+    EXPECT_EQ(d[1].context, (std::vector<std::string>{"line 1", "line 2", "line 3"}));
+    EXPECT_EQ(d[2].context, (std::vector<std::string>{"line 7", "line 8", "line 9"}));
+    EXPECT_TRUE(d[3].context.empty());  // not one of the rule files: never read
+    EXPECT_TRUE(d[4].context.empty());
+}
+
+TEST(PreviewEditor, PlaceholdersOrTheLineConvention) {
+    EXPECT_EQ(editor_command("code -g {file}:{line}:{column}", "/r/a b.acr", 12, 5),
+              (std::vector<std::string>{"code", "-g", "/r/a b.acr:12:5"}));
+    EXPECT_EQ(editor_command("vim", "/r/a.acr", 7, 1),
+              (std::vector<std::string>{"vim", "+7", "/r/a.acr"}));
+    // Quotes keep words together; nothing is expanded (no shell).
+    EXPECT_EQ(
+        editor_command("'/opt/my editor/bin' --line \"{line}\" $HOME {file}", "/r/{line}.acr", 3,
+                       1),
+        (std::vector<std::string>{"/opt/my editor/bin", "--line", "3", "$HOME", "/r/{line}.acr"}));
+    EXPECT_TRUE(editor_command("   ", "/r/a.acr", 1, 1).empty());
+}
+
 TEST(PreviewGuides, StrokesBecomePolylinesOfTheirClass) {
     auto body = nlohmann::json::parse(R"({"strokes": [
         {"kind": "flow", "points": [[0, 0], [10, 5]]},

@@ -199,6 +199,9 @@ TEST_F(Program, MalformedValuesAreUsageErrors) {
                                           {"--debug-frame", "0", "a.png"},
                                           {"--debug-frame", "3", "a.svg"},
                                           {"--every", "3"},
+                                          {"--partial-every", "0.5"},
+                                          {"--partial", path("partial.png")},
+                                          {"--partial", path("p.svg"), "--partial-every", "0"},
                                           {"--progress", "--quiet"},
                                           {"--metrics", "-o", "-"},
                                           {"--epsilon", "nan"}}) {
@@ -361,6 +364,29 @@ TEST_F(Program, DebugFrameAndGrowthFrames) {
     EXPECT_EQ(read(path("debug.png")).substr(0, 4), "\x89PNG");
     EXPECT_TRUE(fs::exists(path("frames/frame-000001.png")));
     EXPECT_TRUE(fs::exists(path("frames/frame-000002.png")));
+}
+
+// --partial: the growth so far, published while the run goes on (outside the run's
+// all-or-none outputs), each a whole SVG with no more elements than the finished picture.
+TEST_F(Program, PartialPicturesWhileGrowing) {
+    Outcome o = run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000",
+                     "--param", "dot_radius=2", "--partial", path("partial.svg"), "--partial-every",
+                     "0.01", "-o", path("out.svg")});
+    ASSERT_EQ(o.code, 0) << o.err;
+    const std::string partial = read(path("partial.svg"));
+    const std::string done = read(path("out.svg"));
+    ASSERT_NE(partial.find("</svg>"), std::string::npos);
+    const auto circles = [](const std::string& svg) {
+        std::size_t n = 0;
+        for (std::size_t at = svg.find("<circle"); at != std::string::npos;
+             at = svg.find("<circle", at + 1))
+            ++n;
+        return n;
+    };
+    EXPECT_GT(circles(partial), 0u);
+    EXPECT_LE(circles(partial), circles(done));
+    for (const std::string& f : files())  // no temporary left beside them
+        EXPECT_TRUE(f == "partial.svg" || f == "out.svg") << f;
 }
 
 TEST_F(Program, DebugFrameAfterTheEndWarns) {

@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "fixtures/sample_elements.hpp"
 #include "output/coverage.hpp"
 #include "program/metrics_json.hpp"
 #include "program/tree_json.hpp"
-#include "fixtures/sample_elements.hpp"
 
 using namespace acanthus;
 using namespace acanthus::detail;
@@ -138,6 +138,13 @@ TEST(MetricsJson, HasEveryKey) {
     auto r = json::parse(metrics_json(pattern, GrowthStats{}, 0, 0, 0, 0, true));
     EXPECT_EQ(r["engine"], "reference");
     EXPECT_EQ(r["rules"][1]["successes"], 0);
+    // With the region: its bounds and area, as the element tree gives them.
+    const Region region = Region::from_spec("rect:100,80");
+    auto g = json::parse(metrics_json(pattern, stats, 42, 0.625, 1.25, 0.125, false, &region));
+    EXPECT_EQ(keys(g),
+              (std::vector<std::string>{"elements", "iterations", "rules", "exclude_points",
+                                        "coverage", "seconds", "engine", "region"}));
+    EXPECT_EQ(g["region"], json::parse(R"({"bounds": [0, 0, 100, 80], "area": 8000})"));
 }
 
 TEST(Coverage, MeasuresFilledAreasAndStrokedCurves) {

@@ -16,6 +16,7 @@ namespace acanthus::detail {
 namespace {
 
 std::atomic<OutputTransaction*> g_active{nullptr};
+thread_local int t_bypass = 0;
 
 void remove_entry_files(const char* path, bool directory) noexcept {
     if (!path) return;
@@ -40,7 +41,10 @@ OutputTransaction::~OutputTransaction() {
     clear();
 }
 
-OutputTransaction* OutputTransaction::active() { return g_active.load(); }
+OutputTransaction* OutputTransaction::active() { return t_bypass > 0 ? nullptr : g_active.load(); }
+
+OutputTransaction::Bypass::Bypass() { ++t_bypass; }
+OutputTransaction::Bypass::~Bypass() { --t_bypass; }
 
 void OutputTransaction::add_file(const std::string& temporary, const std::string& target) {
     if (target.empty()) throw std::logic_error("OutputTransaction::add_file: no target");

@@ -20,6 +20,17 @@ class OutputTransaction {
     // The open transaction, or null (then writes are renamed at once).
     static OutputTransaction* active();
 
+    // While one lives, this thread's writes are renamed at once, outside the open transaction:
+    // a picture of the growth so far (--partial) is shown while the run goes on, whatever the
+    // run's end.
+    class Bypass {
+      public:
+        Bypass();
+        ~Bypass();
+        Bypass(const Bypass&) = delete;
+        Bypass& operator=(const Bypass&) = delete;
+    };
+
     // A complete temporary file that becomes `target` on commit.
     void add_file(const std::string& temporary, const std::string& target);
     // A directory this run created; removed (if still empty) when the run fails.

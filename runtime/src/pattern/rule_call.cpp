@@ -42,6 +42,11 @@ RuleCall* RuleCall::current() { return current_call; }
 
 void RuleCall::track(Element* e) { created_[e] = Role::created; }
 
+void RuleCall::add_static(Element* e) {
+    created_[e] = Role::static_child;
+    statics_.push_back(e);
+}
+
 void RuleCall::untrack(Element* e) {
     const auto it = created_.find(e);
     if (it == created_.end()) return;

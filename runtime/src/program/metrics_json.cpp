@@ -8,7 +8,7 @@ namespace acanthus::detail {
 
 std::string metrics_json(const Pattern& pattern, const GrowthStats& stats, long elements,
                          double coverage, double total_seconds, double render_seconds,
-                         bool reference_engine) {
+                         bool reference_engine, const Region* region) {
     using Json = nlohmann::ordered_json;
     Json rules = Json::array();
     for (std::size_t i = 0; i < pattern.rules.size(); ++i) {
@@ -27,6 +27,11 @@ std::string metrics_json(const Pattern& pattern, const GrowthStats& stats, long 
     out["seconds"] =
         Json{{"total", total_seconds}, {"growth", stats.seconds}, {"render", render_seconds}};
     out["engine"] = reference_engine ? "reference" : "incremental";
+    if (region) {
+        const Rect b = region->bounds();
+        out["region"] =
+            Json{{"bounds", Json::array({b.x0, b.y0, b.x1, b.y1})}, {"area", region->area()}};
+    }
     // Sections the rule libraries added (acanthus/metrics.hpp), after the runtime's own keys.
     for (const auto& [key, text] : metrics_sections())
         if (!out.contains(key)) out[key] = Json::parse(text);

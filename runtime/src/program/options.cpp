@@ -350,6 +350,18 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->check(at_least("--every", 1, 1e15))
         ->needs(frames)
         ->group(watch_group);
+    auto* partial =
+        app.add_option("--partial", o.partial,
+                       "The growth so far as SVG, replaced while it grows (a live view)")
+            ->type_name("FILE.svg")
+            ->group(watch_group);
+    app.add_option("--partial-every", o.partial_every,
+                   "With --partial: seconds between two pictures (longer when drawing one is slow)")
+        ->type_name("S")
+        ->capture_default_str()
+        ->check(at_least("--partial-every", 0.01, 3600))
+        ->needs(partial)
+        ->group(watch_group);
 
     try {
         app.parse(argc, argv);

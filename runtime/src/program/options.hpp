@@ -28,6 +28,8 @@ struct ProgramOptions {
     std::string debug_path;
     std::string frames_dir;  // --frames; empty: none
     long frames_every = 1;
+    std::string partial;         // --partial: the growth so far as SVG; empty: none
+    double partial_every = 0.1;  // --partial-every: seconds between two pictures
 };
 
 // Parses argv. Prints --help / --version to stdout and returns nullopt (exit 0). Every malformed

@@ -6,6 +6,7 @@
 #include <acanthus/region.hpp>
 #include <acanthus/render.hpp>
 #include <acanthus/skeletal_stroke.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include <iomanip>
 #include <iostream>
 #include <new>
+#include <numeric>
 #include <sstream>
 
 #include "output/coverage.hpp"
@@ -147,6 +149,11 @@ void validate(const detail::ProgramOptions& o, const Region& region,
     }
     if (!o.json.empty()) check_writable_location(o.json, "the element tree");
     if (!o.debug_path.empty()) check_writable_location(o.debug_path, "the debug frame");
+    if (!o.partial.empty()) {
+        if (format_for_path(o.partial) != OutputFormat::svg)
+            throw UsageError("--partial '" + o.partial + "' must name an .svg file");
+        check_writable_location(o.partial, "the partial picture");
+    }
     if (!o.render.stroke.empty()) check_stroke(o.render.stroke);
     detail::page_layout(region.bounds(), o.render.width);  // UsageError on an impossible page
     for (Point seed : o.growth.seeds) {
@@ -174,6 +181,43 @@ void validate(const detail::ProgramOptions& o, const Region& region,
                              "': " + (ec ? ec.message() : "not a directory"));
     }
 }
+
+// --partial: the growth so far, drawn every `every` seconds while it grows and published at
+// once (outside the run's all-or-none outputs), so that a viewer sees it grow. The first comes
+// after half the interval; later ones wait at least four times their drawing and a fifth of the
+// time grown so far, so that they cost the growth a fifth of its time at most (large pictures
+// take tens of milliseconds to draw; at a third, spiral's growth took half as long again).
+constexpr long kPartialCheckEvery = 8;  // iterations between two looks at the clock
+
+class PartialPictures {
+  public:
+    PartialPictures(std::string path, double every)
+        : path_(std::move(path)),
+          every_(every),
+          start_(Clock::now()),
+          next_(start_ + seconds(every / 2)) {}
+
+    bool due() const { return !path_.empty() && Clock::now() >= next_; }
+
+    template <class Draw>
+    void write(Draw draw) {
+        const Clock::time_point begin = Clock::now();
+        {
+            const detail::OutputTransaction::Bypass outside;
+            draw(path_);
+        }
+        const Clock::time_point end = Clock::now();
+        next_ = end + std::max({seconds(every_), 4 * (end - begin), (end - start_) / 5});
+    }
+
+  private:
+    static Clock::duration seconds(double s) {
+        return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+    }
+    std::string path_;
+    double every_;
+    Clock::time_point start_, next_;
+};
 
 std::string frame_path(const std::string& dir, long number) {
     char name[32];
@@ -216,13 +260,23 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     }
     RenderOptions frame_options = o.render;
     long frames_written = 0, last_frame_iteration = -1;
-    if (!o.frames_dir.empty()) {
-        engine.on_frame(o.frames_every,
-                        [&](long iteration, const std::vector<const Element*>& elements) {
-                            render_to_file(frame_path(o.frames_dir, ++frames_written), pattern,
-                                           region, elements, frame_options);
-                            last_frame_iteration = iteration;
-                        });
+    PartialPictures partials(o.partial, o.partial_every);
+    if (!o.frames_dir.empty() || !o.partial.empty()) {
+        // --partial looks at the clock every few iterations; --frames wants every K-th.
+        const long every = o.partial.empty()      ? o.frames_every
+                           : o.frames_dir.empty() ? kPartialCheckEvery
+                                                  : std::gcd(o.frames_every, kPartialCheckEvery);
+        engine.on_frame(every, [&](long iteration, const std::vector<const Element*>& elements) {
+            if (!o.frames_dir.empty() && iteration % o.frames_every == 0) {
+                render_to_file(frame_path(o.frames_dir, ++frames_written), pattern, region,
+                               elements, frame_options);
+                last_frame_iteration = iteration;
+            }
+            if (partials.due())
+                partials.write([&](const std::string& path) {
+                    render_to_file(path, pattern, region, elements, o.render);
+                });
+        });
     }
 
     detail::install_crash_handler();
@@ -255,7 +309,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
             detail::coverage(region, elements, detail::rendered_line_width(region, o.render.width));
         std::cout << detail::metrics_json(pattern, stats, static_cast<long>(elements.size()), cover,
                                           seconds_since(start), render_seconds,
-                                          o.growth.reference_engine)
+                                          o.growth.reference_engine, &region)
                   << std::endl;
         if (!std::cout) throw InputError("cannot write the metrics to stdout");
     }
