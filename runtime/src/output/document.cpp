@@ -110,6 +110,8 @@ void OutputDocument::create(const std::string& title) {
 }
 
 OutputDocument::~OutputDocument() {
+    // Cairo finishes an unfinished surface when it is destroyed: after an error, write nothing.
+    if (write_error_.empty()) write_error_ = "abandoned";
     cairo_destroy(cr_);
     cairo_surface_destroy(surface_);
 }
