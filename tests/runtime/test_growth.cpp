@@ -261,3 +261,20 @@ TEST(Growth, BadResolutionIsAUsageError) {
     const Region region = Region::from_spec("rect:10,10");
     EXPECT_THROW(GrowthEngine(p, region, o), acanthus::UsageError);
 }
+
+TEST(Growth, ReleasingTheGrowthStateKeepsTheElementsStatsAndGrid) {
+    const Region region = Region::from_spec("rect:100,60");
+    const Pattern pattern = dots::pattern();
+    GrowthEngine engine(pattern, region, small_options());
+    engine.run();
+    const auto tree = snapshot(engine);
+    const long iterations = engine.stats().iterations;
+    const GridFrame grid = engine.grid();
+    ASSERT_GT(tree.size(), 50u);
+    engine.release_growth_state();
+    EXPECT_EQ(snapshot(engine), tree);
+    EXPECT_EQ(engine.stats().iterations, iterations);
+    EXPECT_EQ(engine.grid().width, grid.width);
+    EXPECT_EQ(engine.grid().pixel, grid.pixel);
+    EXPECT_THROW(engine.run(), std::logic_error);
+}

@@ -18,6 +18,7 @@
 #include "fixtures/sample_elements.hpp"
 #include "fixtures/temp_dir.hpp"
 #include "output/document.hpp"
+#include "output/dsc_rewriter.hpp"
 
 using namespace acanthus;
 using namespace acanthus::detail;
@@ -342,4 +343,35 @@ TEST(Render, SkeletalStrokeReplacesCurveLines) {
     EXPECT_GT(inked(b), inked(a) + 100);           // the stem, leaf curve and arc got wider
     auto [x, y] = page_pixel(o.dots[2].c.center);  // areas are unchanged
     EXPECT_EQ(b.alpha(x, y), 0);
+}
+
+TEST(Render, DscRewriterFixesTheHeaderLinesWhateverTheChunks) {
+    const std::string in =
+        "%!PS-Adobe-3.0 EPSF-3.0\n%%CreationDate: Thu Nov 26 01:00:00 2026\n"
+        "%%BoundingBox: 3 3 197 197\n%%EndComments\n%%Page: 1 1\n%%BeginPageSetup\n"
+        "%%PageBoundingBox: 3 3 197 197\n%%EndPageSetup\nq 0 0 1 rg\n"
+        "%%BoundingBox: 1 1 1 1\n%%CreationDate: later\nQ showpage";
+    const std::string want =
+        "%!PS-Adobe-3.0 EPSF-3.0\n%%CreationDate: Sat Jan  1 00:00:00 2000\n"
+        "%%BoundingBox: 0 0 200 200\n%%EndComments\n%%Page: 1 1\n%%BeginPageSetup\n"
+        "%%PageBoundingBox: 0 0 200 200\n%%EndPageSetup\nq 0 0 1 rg\n"
+        "%%BoundingBox: 1 1 1 1\n%%CreationDate: later\nQ showpage";
+    for (std::size_t chunk = 1; chunk <= in.size(); ++chunk) {
+        std::string out;
+        detail::DscRewriter dsc({{"%%CreationDate:", "Sat Jan  1 00:00:00 2000"},
+                                 {"%%BoundingBox:", "0 0 200 200"},
+                                 {"%%PageBoundingBox:", "0 0 200 200"}},
+                                [&](std::string_view bytes) { out.append(bytes); });
+        for (std::size_t at = 0; at < in.size(); at += chunk) dsc.write(in.substr(at, chunk));
+        dsc.finish();
+        ASSERT_EQ(out, want) << "in chunks of " << chunk;
+    }
+    // A key on an unterminated last line is still rewritten.
+    std::string out;
+    detail::DscRewriter dsc({{"%%CreationDate:", "x"}},
+                            [&](std::string_view bytes) { out.append(bytes); });
+    dsc.write("%!PS\n%%Creation");
+    dsc.write("Date: y");
+    dsc.finish();
+    EXPECT_EQ(out, "%!PS\n%%CreationDate: x");
 }

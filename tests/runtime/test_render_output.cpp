@@ -1,12 +1,16 @@
 // render_to_file's writing: all or nothing (a failing %draw or a bad option leaves the old file
 // and no temporary behind), the usual file permissions, "-" for standard output.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/render.hpp>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -70,6 +74,36 @@ TEST(Render, FailedRenderLeavesNoFileAndKeepsTheOldOne) {
                  InputError);
     EXPECT_EQ(slurp(good), before);
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"ornament.svg"});
+}
+
+// In a child process: renders under a file size limit of 600 bytes; exits 0 when the render
+// failed with InputError (its message on stderr) and left the folder empty.
+[[noreturn]] void render_over_the_size_limit(const TempDir& dir, const std::string& path) {
+    sample::Ornament o;
+    std::signal(SIGXFSZ, SIG_IGN);  // write() fails with EFBIG instead
+    const rlimit limit{600, 600};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+        render_to_file(path, o.pattern, panel(), o.placed, outline(3000, "order"));
+        std::cerr << "no error";
+    } catch (const InputError& e) {
+        std::cerr << e.what();
+        std::exit(dir.entries().empty() ? 0 : 1);
+    }
+    std::exit(2);
+}
+
+// PDF, PostScript and EPS go to the temporary file as Cairo writes them: a write that fails on
+// the way (here the file size limit, as a full disk would) is an error naming the file, and
+// leaves neither a partial file nor the temporary one.
+TEST(Render, FailedWriteOnTheWayLeavesNoFile) {
+    TempDir dir;
+    for (const char* name : {"big.pdf", "big.ps", "big.eps", "big.png"}) {
+        const std::string path = dir / name;
+        EXPECT_EXIT(render_over_the_size_limit(dir, path), ::testing::ExitedWithCode(0),
+                    "cannot write '" + path + "': File too large");
+    }
+    EXPECT_TRUE(dir.entries().empty());
 }
 
 TEST(Render, WritesFilesWithTheUsualPermissions) {

@@ -82,6 +82,11 @@ class GrowthEngine {
     // Called about every `every` iterations for progress lines.
     void on_progress(std::function<void(long iteration, long elements)> callback);
 
+    // Frees what only the growth needs (the distance field, the render buffer, the spatial
+    // index: most of the growth's memory) for the rendering to reuse. Call it after run();
+    // elements(), stats() and grid() stay valid.
+    void release_growth_state();
+
     // Placed elements in placement order (seeds first); owned by the engine.
     std::vector<const Element*> elements() const;
     const GrowthStats& stats() const;

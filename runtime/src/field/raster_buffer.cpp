@@ -72,6 +72,11 @@ void RasterBuffer::add_boundary(const std::vector<int>& pixels) {
             occ_[p] = static_cast<std::uint8_t>(ObstacleKind::boundary);
 }
 
+void RasterBuffer::release() {
+    std::vector<std::uint8_t>().swap(occ_);
+    std::vector<int>().swap(scratch_);
+}
+
 void RasterBuffer::add_element(const Element& e, std::vector<int>& fresh) {
     for (std::size_t k = 0; k < e.proxy_count(); ++k)
         add_proxy(e.proxy(k), ObstacleKind::element, fresh);

@@ -35,6 +35,8 @@ class RasterBuffer {
     // Makes free pixels boundary obstacles (a symmetry's core of the region, symmetry/); only
     // before the field is computed.
     void add_boundary(const std::vector<int>& pixels);
+    // Frees the pixels once the growth is over; grid() stays.
+    void release();
 
   private:
     void occupy(const std::vector<int>& pixels, ObstacleKind kind, std::vector<int>& fresh);

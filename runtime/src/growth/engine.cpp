@@ -611,6 +611,15 @@ void GrowthEngine::on_progress(std::function<void(long iteration, long elements)
     impl_->progress_callback = std::move(callback);
 }
 
+void GrowthEngine::release_growth_state() {
+    Impl& g = *impl_;
+    g.circles.reset();
+    g.raster.release();
+    g.ornament.release_index();
+    std::vector<int>().swap(g.fresh);
+    std::vector<std::pair<Element*, double>>().swap(g.near_goal);
+}
+
 std::vector<const Element*> GrowthEngine::elements() const { return impl_->ornament.view(); }
 const GrowthStats& GrowthEngine::stats() const { return impl_->stats; }
 const GridFrame& GrowthEngine::grid() const { return impl_->raster.grid(); }

@@ -29,6 +29,8 @@ class Ornament {
     Element& at(int id) const { return *elements_[static_cast<std::size_t>(id)]; }
     std::vector<const Element*> view() const;
     double tolerance() const { return tolerance_; }
+    // Frees the spatial index once the growth is over: the queries below answer nothing after.
+    void release_index() { index_ = SpatialIndex(); }
 
     // Placed element nearest to p and its distance (ties to the smallest id), or null. The
     // search looks within `hint` first and widens fourfold until it finds one.

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "output/document.hpp"
-#include "output/output_writer.hpp"
+#include "output/output_stream.hpp"
 #include "symmetry/image_element.hpp"
 
 namespace acanthus {
@@ -95,8 +95,9 @@ void render_debug_frame(const std::string& path, const Region& region, const Deb
     if (height > 32767) throw UsageError("debug frame too high; use a smaller width");
 
     auto image = occupancy_image(frame);
+    detail::OutputStream out(path);
     detail::OutputDocument document(format, width, static_cast<int>(height),
-                                    "iteration " + std::to_string(frame.iteration));
+                                    "iteration " + std::to_string(frame.iteration), out);
     cairo_t* cr = document.context();
     cairo_save(cr);
     cairo_scale(cr, zoom, zoom);
@@ -168,7 +169,8 @@ void render_debug_frame(const std::string& path, const Region& region, const Deb
             canvas.stroke(proxy);
         }
 
-    detail::write_output(path, document.finish());
+    document.finish();
+    out.commit();
 }
 
 }  // namespace acanthus

@@ -1,4 +1,4 @@
-// Cairo surfaces for SVG, PDF, PS, EPS and PNG, written to memory and made reproducible.
+// Cairo surfaces for SVG, PDF, PS, EPS and PNG, written to memory or a file, made reproducible.
 #include "output/document.hpp"
 
 #include <cairo-pdf.h>
@@ -11,6 +11,10 @@
 #include <map>
 #include <new>
 #include <string_view>
+#include <utility>
+#include <vector>
+
+#include "output/output_stream.hpp"
 
 namespace acanthus::detail {
 
@@ -25,20 +29,55 @@ constexpr const char* fixed_ps_date = "Sat Jan  1 00:00:00 2000";
 struct OutputDocumentStream {
     static cairo_status_t write(void* closure, const unsigned char* data, unsigned int length) {
         auto* doc = static_cast<OutputDocument*>(closure);
+        if (!doc->write_error_.empty()) return CAIRO_STATUS_WRITE_ERROR;
         try {
-            doc->bytes_.append(reinterpret_cast<const char*>(data), length);
+            const std::string_view bytes(reinterpret_cast<const char*>(data), length);
+            if (doc->dsc_)
+                doc->dsc_->write(bytes);
+            else
+                doc->emit(bytes);
             return CAIRO_STATUS_SUCCESS;
+        } catch (const InputError& e) {
+            doc->write_error_ = e.what();
         } catch (const std::bad_alloc&) {
-            doc->write_failed_ = true;
-            return CAIRO_STATUS_WRITE_ERROR;
+            doc->write_error_ = "drawing the output failed: out of memory";
         }
+        return CAIRO_STATUS_WRITE_ERROR;
     }
 };
 
 OutputDocument::OutputDocument(OutputFormat format, int width, int height, const std::string& title)
     : format_(format), width_(width), height_(height) {
+    create(title);
+}
+
+OutputDocument::OutputDocument(OutputFormat format, int width, int height, const std::string& title,
+                               OutputStream& out)
+    : format_(format), width_(width), height_(height), out_(&out) {
+    create(title);
+}
+
+void OutputDocument::emit(std::string_view bytes) {
+    if (out_ && format_ != OutputFormat::svg)
+        out_->write(bytes);
+    else
+        bytes_.append(bytes);
+}
+
+void OutputDocument::create(const std::string& title) {
     auto write = &OutputDocumentStream::write;
-    switch (format) {
+    const int width = width_, height = height_;
+    if (format_ == OutputFormat::ps || format_ == OutputFormat::eps) {
+        std::vector<std::pair<std::string, std::string>> fixes{{"%%CreationDate:", fixed_ps_date}};
+        if (format_ == OutputFormat::eps) {
+            const std::string box = "0 0 " + std::to_string(width) + " " + std::to_string(height);
+            fixes.emplace_back("%%BoundingBox:", box);
+            fixes.emplace_back("%%PageBoundingBox:", box);
+        }
+        dsc_ = std::make_unique<DscRewriter>(std::move(fixes),
+                                             [this](std::string_view bytes) { emit(bytes); });
+    }
+    switch (format_) {
         case OutputFormat::svg:
             surface_ = cairo_svg_surface_create_for_stream(write, this, width, height);
             break;
@@ -54,7 +93,7 @@ OutputDocument::OutputDocument(OutputFormat format, int width, int height, const
         case OutputFormat::ps:
         case OutputFormat::eps:
             surface_ = cairo_ps_surface_create_for_stream(write, this, width, height);
-            cairo_ps_surface_set_eps(surface_, format == OutputFormat::eps);
+            cairo_ps_surface_set_eps(surface_, format_ == OutputFormat::eps);
             break;
         case OutputFormat::png:
             surface_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
@@ -71,6 +110,8 @@ OutputDocument::OutputDocument(OutputFormat format, int width, int height, const
 }
 
 OutputDocument::~OutputDocument() {
+    // Cairo finishes an unfinished surface when it is destroyed: after an error, write nothing.
+    if (write_error_.empty()) write_error_ = "abandoned";
     cairo_destroy(cr_);
     cairo_surface_destroy(surface_);
 }
@@ -87,24 +128,18 @@ std::string OutputDocument::finish() {
             status = cairo_surface_status(surface_);
         }
     }
-    if (status != CAIRO_STATUS_SUCCESS || write_failed_)
+    if (!write_error_.empty()) throw InputError(write_error_);
+    if (status != CAIRO_STATUS_SUCCESS)
         throw InputError(std::string("drawing the output failed: ") +
-                         (write_failed_ ? "out of memory" : cairo_status_to_string(status)));
-    switch (format_) {
-        case OutputFormat::svg:
-            return renumber_svg_surface_ids(bytes_);
-        case OutputFormat::eps: {
-            std::string box = "0 0 " + std::to_string(width_) + " " + std::to_string(height_);
-            replace_dsc_comment(bytes_, "%%BoundingBox:", box);
-            replace_dsc_comment(bytes_, "%%PageBoundingBox:", box);
-            [[fallthrough]];
-        }
-        case OutputFormat::ps:
-            replace_dsc_comment(bytes_, "%%CreationDate:", fixed_ps_date);
-            return std::move(bytes_);
-        default:
-            return std::move(bytes_);
+                         cairo_status_to_string(status));
+    if (dsc_) dsc_->finish();
+    if (format_ == OutputFormat::svg) {
+        std::string svg = renumber_svg_surface_ids(bytes_);
+        if (!out_) return svg;
+        out_->write(svg);
+        return {};
     }
+    return std::move(bytes_);
 }
 
 std::string renumber_svg_surface_ids(const std::string& svg) {
@@ -137,19 +172,6 @@ std::string renumber_svg_surface_ids(const std::string& svg) {
         i = digits;
     }
     return out;
-}
-
-void replace_dsc_comment(std::string& ps, const std::string& key, const std::string& value) {
-    std::size_t at = 0;
-    while ((at = ps.find(key, at)) != std::string::npos) {
-        if (at == 0 || ps[at - 1] == '\n') break;
-        at += key.size();
-    }
-    if (at == std::string::npos) return;
-    std::size_t begin = at + key.size();
-    std::size_t end = ps.find('\n', begin);
-    if (end == std::string::npos) end = ps.size();
-    ps.replace(begin, end - begin, " " + value);
 }
 
 }  // namespace acanthus::detail

@@ -27,7 +27,6 @@
 #include "output/document.hpp"
 #include "output/layer_order.hpp"
 #include "output/output_stream.hpp"
-#include "output/output_writer.hpp"
 #include "output/page_layout.hpp"
 #include "output/svg_fallback.hpp"
 #include "output/svg_writer.hpp"
@@ -308,7 +307,9 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
         return;
     }
 
-    detail::OutputDocument document(format, page.width, page.height, pattern.name);
+    // Streamed to the temporary file: Cairo's own record of the page is memory enough.
+    detail::OutputStream out(path);
+    detail::OutputDocument document(format, page.width, page.height, pattern.name, out);
     cairo_t* cr = document.context();
     if (options.background) {
         const Color& c = *options.background;
@@ -322,7 +323,8 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
     }
     draw_elements(cr, pattern, elements, style, page, curves);
 
-    detail::write_output(path, document.finish());
+    document.finish();
+    out.commit();
 }
 
 }  // namespace acanthus

@@ -285,6 +285,9 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         engine.run();
     }
     progress.finish();
+    // Growth is over: its field and buffers make room for the drawing (Cairo's vector pages keep
+    // every operation of the page until it ends).
+    engine.release_growth_state();
     // %draw bodies: the per-call limit only (--time-limit bounds growth, not rendering).
     const detail::BodyWatchdog watchdog(o.body_time_limit, 0);
     const GrowthStats& stats = engine.stats();
