@@ -65,7 +65,23 @@ Node ashlar_tree() {
     Node a = generator("ashlar", ashlar());
     Node arch = generator("arch_stones", arch_stones());
     Node wb = generator("window_bottom", sill_stones());
-    return by_kind(arches(arch, sills(a, wb)), arches(arch, sills(a, wb)), a);
+    Node lin = generator("lintel", lintel());
+    // Openings: a lintel over a straight head (its corners lay it first), sill stones under.
+    Node openings = by_part(lin, by_kind(wb, wb, a), a);
+    Node features = Node([=](const FeatureRef& f, Context& c) {
+        auto i = static_cast<std::size_t>(f.index);
+        bool opening = f.kind == FeatureKind::corner ? c.facade().corners()[i].opening
+                                                     : c.facade().edges()[i].opening;
+        if (opening)
+            openings(f, c);
+        else
+            a(f, c);
+    });
+    Node tree = by_kind(arches(arch, features), arches(arch, features), a);
+    return Node([tree](const FeatureRef& f, Context& c) {
+        c.data().stone = true;  // lintels on the ashlar grid
+        tree(f, c);
+    });
 }
 
 Node rgb_tree() { return generator("rgb_blocks", rgb_blocks()); }

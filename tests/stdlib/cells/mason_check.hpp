@@ -8,6 +8,7 @@
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <ostream>
 #include <set>
 #include <string>
@@ -25,6 +26,8 @@ using acanthus::cells::Facade;
 struct MasonSpec {
     double length = 215, height = 65, mortar = 10;  // the nominal brick and joint
     double tolerance = 3;                           // a unit or course may be this far off
+    bool stone = false;     // an ashlar wall: every rectangular cell is a stone
+    double stone_unit = 0;  // the ashlar grid's unit; 0: height + mortar
 };
 
 struct MasonReport {
@@ -36,16 +39,25 @@ struct MasonReport {
     double length_deviation = 0;  // largest |length - nominal| of a whole or shaved brick
     double height_deviation = 0;  // largest |height - nominal| of a whole brick
     long courses = 0;
-    long courses_off_gauge = 0;   // course pitches beyond the tolerance (cut courses included)
-    double gauge_deviation = 0;   // largest |pitch - gauge|
-    double smallest_piece = 1e9;  // smallest cell's area over a brick face's
-    long slivers = 0;             // cells under 10% of a brick face
-    long narrow_pieces = 0;       // brick pieces narrower than a queen closer
+    long courses_off_gauge = 0;       // course pitches beyond the tolerance (cut courses included)
+    double gauge_deviation = 0;       // largest |pitch - gauge|
+    std::vector<Point> off_gauge_at;  // (pitch, the upper line) of each course off gauge
+    double smallest_piece = 1e9;      // smallest cell's area over a brick face's
+    long slivers = 0;                 // cells under 10% of a brick face
+    long narrow_pieces = 0;           // brick pieces narrower than a queen closer
     long voussoirs = 0;
     long voussoirs_clipped = 0;
     long crowns = 0;       // tops of arches and rings (a pointed arch's apex)
     long crowns_open = 0;  // of those, a joint at the crown instead of a key
     std::vector<Point> open_crowns;
+    // Stone walls (MasonSpec::stone): every rectangular cell, jamb, sill and lintel too.
+    long stones = 0;
+    long four_way = 0;  // points where four stones meet
+    std::vector<Point> four_way_at;
+    long stones_on_end = 0;      // a tenth taller than wide (a square on a stretched grid is not),
+                                 // away from a jamb or the wall's end
+    long unit_square_pairs = 0;  // two stones of about one grid unit sharing a side
+    long unit_square_runs = 0;   // three or more in a line (counted by their middle ones)
     long openings = 0;
     long openings_without_head = 0;
     std::vector<std::string> headless;
@@ -168,7 +180,10 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         if (pitch > 1.5 * gauge) continue;  // a storey of openings or another face between
         double dev = std::abs(pitch - gauge);
         r.gauge_deviation = std::max(r.gauge_deviation, dev);
-        r.courses_off_gauge += dev > s.tolerance + 1e-9;
+        if (dev > s.tolerance + 1e-9) {
+            ++r.courses_off_gauge;
+            r.off_gauge_at.push_back({pitch, lines[i]});
+        }
     }
     // Voussoirs: whole when every vertex lies on the inner or the outer arc, a brick apart.
     for (const Cell& c : cells) {
@@ -220,6 +235,61 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             r.open_crowns.push_back(p);
         }
     }
+    // Stones: the claims' corners (the drawn rect grown by half a joint) where four meet.
+    if (s.stone) {
+        const double unit = s.stone_unit > 0 ? s.stone_unit : s.height + s.mortar;
+        const double m = s.mortar / 2;
+        std::vector<Rect> stones;
+        for (const Cell& c : cells) {
+            Rect b;
+            if (!is_rect(c.polygon, b)) continue;
+            stones.push_back({b.x0 - m, b.y0 - m, b.x1 + m, b.y1 + m});
+        }
+        r.stones = static_cast<long>(stones.size());
+        const double key = 0.01 * unit;
+        std::map<std::pair<long, long>, int> corners;
+        for (const Rect& b : stones)
+            for (double x : {b.x0, b.x1})
+                for (double y : {b.y0, b.y1})
+                    ++corners[{std::llround(x / key), std::llround(y / key)}];
+        for (const auto& [p, n] : corners)
+            if (n >= 4) {
+                ++r.four_way;
+                r.four_way_at.push_back(
+                    {static_cast<double>(p.first) * key, static_cast<double>(p.second) * key});
+            }
+        const double near = s.mortar + 1e-6;
+        for (const Rect& b : stones) {
+            if (b.height() <= b.width() * 1.1) continue;
+            bool jamb = false;
+            for (const auto& e : facade.edges())
+                if (e.vertical() && !e.arc && e.bounds.y0 < b.y1 && e.bounds.y1 > b.y0 &&
+                    (std::abs(e.bounds.x0 - b.x0) < near || std::abs(e.bounds.x0 - b.x1) < near))
+                    jamb = true;
+            r.stones_on_end += !jamb;
+        }
+        auto unit_square = [&](const Rect& b) {
+            return b.width() < 1.5 * unit && b.height() < 1.5 * unit;
+        };
+        std::vector<Rect> squares;
+        for (const Rect& b : stones)
+            if (unit_square(b)) squares.push_back(b);
+        const double eps = 0.05 * s.mortar + 1e-6;
+        std::vector<int> left(squares.size()), right(squares.size()), up(squares.size()),
+            down(squares.size());
+        for (std::size_t i = 0; i < squares.size(); ++i)
+            for (std::size_t j = 0; j < squares.size(); ++j) {
+                const Rect &a = squares[i], &b = squares[j];
+                const bool rows = std::min(a.y1, b.y1) - std::max(a.y0, b.y0) > eps;
+                const bool cols = std::min(a.x1, b.x1) - std::max(a.x0, b.x0) > eps;
+                if (rows && std::abs(a.x1 - b.x0) < eps) ++r.unit_square_pairs, right[i] = 1;
+                if (rows && std::abs(b.x1 - a.x0) < eps) left[i] = 1;
+                if (cols && std::abs(a.y1 - b.y0) < eps) ++r.unit_square_pairs, down[i] = 1;
+                if (cols && std::abs(b.y1 - a.y0) < eps) up[i] = 1;
+            }
+        for (std::size_t i = 0; i < squares.size(); ++i)
+            r.unit_square_runs += (left[i] && right[i]) || (up[i] && down[i]);
+    }
     // Heads: above the middle of every top edge of an opening, a lintel, arch or soldier cell.
     std::set<std::string> seen, headless;
     for (const auto& e : facade.edges()) {
@@ -250,7 +320,9 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << r.smallest_piece << " slivers " << r.slivers << " narrow " << r.narrow_pieces
                << ", voussoirs clipped " << r.voussoirs_clipped << "/" << r.voussoirs
                << ", crowns open " << r.crowns_open << "/" << r.crowns << ", headless "
-               << r.openings_without_head << "/" << r.openings;
+               << r.openings_without_head << "/" << r.openings << ", stones " << r.stones
+               << " four-way " << r.four_way << " on end " << r.stones_on_end
+               << " unit-square pairs " << r.unit_square_pairs << " runs " << r.unit_square_runs;
 }
 
 }  // namespace cells_test

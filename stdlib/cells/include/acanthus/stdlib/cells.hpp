@@ -138,10 +138,12 @@ class Facade {
     std::shared_ptr<const detail::FacadeData> data_;
 };
 
-// How ashlar fills a face: `merge`, the paper's (a stone per grid unit, random neighbours
-// merged up to the maximum size); `rules`, beyond the paper (laid in reading order so that no
-// four stones meet at a point and no straight joint runs along more than ashlar_max_seam stones,
-// wherever some stone size allows it).
+// How ashlar fills a face: `rules`, the default, beyond the paper (the face's layout takes the
+// edges' units too; stones laid in reading order, none on end, so that no four stones meet at a
+// point, counted against the lintels, sills and voussoirs laid before, no unit squares touch and
+// no straight joint runs along more than ashlar_max_seam stones, wherever some size allows it);
+// `merge`, the paper's (edge stones, then a stone per free grid unit, random neighbours merged up
+// to the maximum size).
 enum class AshlarMethod { merge, rules };
 AshlarMethod parse_ashlar_method(std::string_view text);  // "merge" or "rules"; InputError else
 std::string_view to_string(AshlarMethod method);
@@ -157,7 +159,7 @@ struct Options {
     double ashlar_unit = 0;    // grid of the ashlar tool; 0: brick_height + mortar
     int ashlar_max_width = 4;  // ashlar stones, in grid units
     int ashlar_max_height = 2;
-    AshlarMethod ashlar_method = AshlarMethod::merge;
+    AshlarMethod ashlar_method = AshlarMethod::rules;
     int ashlar_max_seam = 4;    // rules: no straight joint along more stones than this
     double voussoir_width = 0;  // arch stones along the arc; 0: 2 x (brick_height + mortar)
     double arch_depth = 0;      // each row's depth; 0: brick_length + mortar
