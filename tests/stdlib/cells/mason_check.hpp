@@ -39,8 +39,9 @@ struct MasonReport {
     double length_deviation = 0;  // largest |length - nominal| of a whole or shaved brick
     double height_deviation = 0;  // largest |height - nominal| of a whole brick
     long courses = 0;
-    long courses_off_gauge = 0;       // course pitches beyond the tolerance (cut courses included)
-    double gauge_deviation = 0;       // largest |pitch - gauge|
+    long courses_off_gauge = 0;  // pitches between courses of whole height beyond the tolerance
+    long cut_courses = 0;        // courses of cut height along half the wall's width or more
+    double gauge_deviation = 0;  // largest |pitch - gauge|
     std::vector<Point> off_gauge_at;  // (pitch, the upper line) of each course off gauge
     double smallest_piece = 1e9;      // smallest cell's area over a brick face's
     long slivers = 0;                 // cells under 10% of a brick face
@@ -116,7 +117,8 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
 
     // Pieces, whole units, and the head joints between neighbours in a course.
     std::vector<Rect> bricks;
-    std::vector<double> bottoms;
+    std::vector<double> bottoms;      // of bricks of whole height: the course lines
+    std::map<long long, double> cut;  // pieces of cut height: their width by bottom line
     for (const Cell& c : cells) {
         double a = acanthus::cells::detail::area_of(c.polygon) / face;
         r.smallest_piece = std::min(r.smallest_piece, a);
@@ -124,14 +126,18 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         Rect b;
         if (!coursed(c) || !is_rect(c.polygon, b)) continue;
         bricks.push_back(b);
-        bottoms.push_back(b.y1);
         const double w = b.width(), h = b.height();
+        if (std::abs(h - s.height) <= s.tolerance + 1e-9)
+            bottoms.push_back(b.y1);
+        else
+            cut[std::llround(b.y1 / (0.05 * s.mortar + 1e-9))] += w + s.mortar;
         if (std::abs(h - s.height) > 0.2 * s.height) continue;  // a cut course
         if (w < closer) ++r.narrow_pieces;
         const double nominal = std::abs(w - s.length) <= 0.12 * s.length ? s.length
                                : std::abs(w - header) <= 0.12 * header   ? header
                                                                          : 0;
-        if (nominal == 0) continue;  // a bat or closer
+        if (nominal == 0) continue;                                 // a bat or closer
+        if (std::abs(h - s.height) > s.tolerance + 1e-9) continue;  // cut in height
         r.length_deviation = std::max(r.length_deviation, std::abs(w - nominal));
         if (std::abs(w - nominal) > s.tolerance / 3) {
             ++r.shaved_bricks;
@@ -169,7 +175,9 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             r.straight_at.push_back({j.x, j.y0});
         }
     }
-    // Course pitches from the bottoms of bricks, cut courses too.
+    for (const auto& [line, width] : cut) r.cut_courses += width >= 0.5 * facade.bounds().width();
+    // Course pitches from the bottoms of bricks of whole height (pieces cut under a sill or over
+    // a head that falls within a course are the opening's; cut courses are counted above).
     std::sort(bottoms.begin(), bottoms.end());
     std::vector<double> lines;
     for (double y : bottoms)
@@ -316,12 +324,12 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
     return out << "straight " << r.straight_joints << "/" << r.head_joints << ", whole "
                << r.whole_bricks << " shaved " << r.shaved_bricks << " dev L " << r.length_deviation
                << " H " << r.height_deviation << ", courses " << r.courses << " off-gauge "
-               << r.courses_off_gauge << " (max " << r.gauge_deviation << "), smallest "
-               << r.smallest_piece << " slivers " << r.slivers << " narrow " << r.narrow_pieces
-               << ", voussoirs clipped " << r.voussoirs_clipped << "/" << r.voussoirs
-               << ", crowns open " << r.crowns_open << "/" << r.crowns << ", headless "
-               << r.openings_without_head << "/" << r.openings << ", stones " << r.stones
-               << " four-way " << r.four_way << " on end " << r.stones_on_end
+               << r.courses_off_gauge << " (max " << r.gauge_deviation << ") cut " << r.cut_courses
+               << ", smallest " << r.smallest_piece << " slivers " << r.slivers << " narrow "
+               << r.narrow_pieces << ", voussoirs clipped " << r.voussoirs_clipped << "/"
+               << r.voussoirs << ", crowns open " << r.crowns_open << "/" << r.crowns
+               << ", headless " << r.openings_without_head << "/" << r.openings << ", stones "
+               << r.stones << " four-way " << r.four_way << " on end " << r.stones_on_end
                << " unit-square pairs " << r.unit_square_pairs << " runs " << r.unit_square_runs;
 }
 
