@@ -40,16 +40,7 @@ void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right) {
         else
             a = p.start + p.length;
     }
-    std::vector<Piece> out;
-    for (const Piece& p : pieces) {
-        const int s = p.start, e = p.start + p.length;
-        if (e <= a || s >= b) {
-            out.push_back(p);
-            continue;
-        }
-        if (s < a) out.push_back({s, a - s, true, false, p.sill});
-        if (e > b) out.push_back({b, e - b, true, false, p.sill});
-    }
+    std::vector<Piece> out = cut_out(pieces, a, b);
     Piece q{a, b - a, false, false};
     q.quoin = true;
     out.push_back(q);

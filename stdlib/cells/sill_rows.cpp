@@ -110,16 +110,7 @@ void set_sill_rows(const Facade& facade, int face, BrickLayout& layout) {
                     j.back() += 1;
             }
             a = j.front(), b = j.back();
-            std::vector<Piece> out;
-            for (const Piece& p : pieces) {
-                const int s = p.start, e = p.start + p.length;
-                if (e <= a || s >= b) {
-                    out.push_back(p);
-                    continue;
-                }
-                if (s < a) out.push_back({s, a - s, true, false});
-                if (e > b) out.push_back({b, e - b, true, false});
-            }
+            std::vector<Piece> out = cut_out(pieces, a, b);
             for (std::size_t k = 0; k + 1 < j.size(); ++k)
                 out.push_back({j[k], j[k + 1] - j[k], j[k + 1] - j[k] != 2, false, true});
             std::sort(out.begin(), out.end(),
