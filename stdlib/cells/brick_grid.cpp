@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "quoin_rows.hpp"
+
 namespace acanthus::cells::detail {
 
 namespace {
@@ -73,8 +75,26 @@ CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o) {
     down.push_back(kept.front());
     double anchor = kept.front();
     const bool level_top = kept.back() <= f.bounds.y0 + eps && kept.size() >= 2;
+    // At a building corner the courses turn onto the next elevation: both faces keep the pure
+    // gauge from the ground (the mason's one gauge rod) up to their top course.
+    const bool corner = has_building_corner(facade, face);
     for (std::size_t i = 1; i < kept.size(); ++i) {
+        if (corner && !(level_top && i + 1 == kept.size())) continue;
         const double w = anchor - kept[i];
+        if (corner) {
+            const int whole = static_cast<int>(std::floor(w / g + 1e-9));
+            const double rest = w - whole * g;
+            const int n = rest <= tol ? whole : g - rest <= tol ? whole + 1 : -1;
+            if (n >= 1) {  // the top course alone takes up the rest, within the tolerance
+                for (int k = 1; k < n; ++k) down.push_back(anchor - k * g);
+            } else {
+                for (int k = 1; k <= whole; ++k) down.push_back(anchor - k * g);
+                cut_courses(anchor - whole * g, rest, g, whole, down);
+                down.pop_back();
+            }
+            down.push_back(anchor = kept[i]);
+            continue;
+        }
         const int n = static_cast<int>(std::lround(w / g));
         if (n >= 1 && std::abs(w - n * g) <= tol * n * (1 + 1e-9)) {
             for (int k = 1; k < n; ++k) down.push_back(anchor - w * k / n);

@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <map>
+#include <set>
 
 #include "cells_oracle.hpp"
 #include "mason_check.hpp"
@@ -320,6 +321,77 @@ TEST(CellsMason, AshlarWalls) {
             // most 2 (gable-lancet, between the lancet and the raking edges).
             EXPECT_LE(r.unit_square_runs, r.stones / 500);
             EXPECT_LE(r.unit_square_pairs, r.stones / 30);
+        }
+    }
+}
+
+// Two elevations meeting at a building corner (docs/stdlib/cells.md, "Building corners"): the
+// front's right end and the side's left end, labelled corner-right and corner-left. Their courses
+// stand at the same heights above the ground, and at the corner each course ends in a stretcher
+// on one face and that stretcher's end, half a brick, on the other, by turns.
+TEST(CellsMason, BuildingCornerTurns) {
+    std::vector<FacadeShape> a, b;
+    a.push_back(shape(rect(0, 0, 317.3, 241.6), {"wall", "corner-right"}, "front"));
+    a.push_back(shape(rect(61.4, 52.8, 93.1, 118.7), {"window"}, "fw"));  // sill off gauge
+    b.push_back(shape(rect(0, 0, 263.9, 241.6), {"wall", "corner-left"}, "side"));
+    b.push_back(shape(rect(120.2, 70.1, 88.6, 96.3), {"window"}, "sw"));
+    Facade front = Facade::from_shapes(std::move(a), "front.svg");
+    Facade side = Facade::from_shapes(std::move(b), "side.svg");
+    Options o = centimetres();
+    for (Bond bond : {Bond::running, Bond::english, Bond::flemish}) {
+        o.bond = bond;
+        SCOPED_TRACE(std::string(to_string(bond)));
+        Texture tf = texture(front, brick_tree(), o, 1), ts = texture(side, brick_tree(), o, 1);
+        // Course lines as heights above the ground (both walls stand on y = 241.6).
+        auto lines = [&](const Texture& t) {
+            std::set<long> out;
+            for (const Cell& c : t.cells) {
+                Rect r;
+                if (mason_detail::coursed(c) && mason_detail::is_rect(c.polygon, r) &&
+                    std::abs(r.height() - 6.5) < 0.05)
+                    out.insert(std::lround((241.6 - r.y1) * 100));
+            }
+            return out;
+        };
+        EXPECT_EQ(lines(tf), lines(ts));
+        EXPECT_GT(lines(tf).size(), 25u);
+        // The piece at the corner in each course: its length in quarter bricks, by course.
+        auto at_corner = [&](const Texture& t, double x) {
+            std::map<long, int> out;
+            for (const Cell& c : t.cells) {
+                Rect r;
+                if (!mason_detail::coursed(c) || !mason_detail::is_rect(c.polygon, r) ||
+                    std::abs(r.height() - 6.5) > 0.05 ||
+                    std::min(std::abs(r.x0 - x), std::abs(r.x1 - x)) > 0.6)
+                    continue;
+                out[std::lround((241.6 - r.y1) / 7.5)] =
+                    static_cast<int>(std::lround((r.width() + 1) / 5.625));
+            }
+            return out;
+        };
+        const auto f = at_corner(tf, 317.3), s = at_corner(ts, 0);
+        ASSERT_GT(f.size(), 25u);
+        int compared = 0;
+        for (const auto& [course, len] : f) {
+            EXPECT_TRUE(len == 2 || len == 4) << "course " << course << ": " << len;
+            if (f.count(course + 1)) {
+                EXPECT_NE(len, f.at(course + 1)) << "course " << course;
+            }
+            if (!s.count(course)) continue;
+            ++compared;
+            EXPECT_EQ(len + s.at(course), 6) << "course " << course;  // a stretcher and its end
+        }
+        EXPECT_GT(compared, 25);
+        for (const Texture* t : {&tf, &ts}) {
+            MasonReport r = mason_check(t == &tf ? front : side, t->cells, kCm);
+            std::cout << to_string(bond) << (t == &tf ? " front: " : " side: ") << r << "\n";
+            EXPECT_EQ(r.straight_joints, 0);
+            // Left: Flemish on the side, a 3.6 cm piece beside the window's right jamb in the
+            // two courses its sill and head fall within (not a corner matter).
+            EXPECT_LE(r.narrow_pieces, bond == Bond::flemish && t == &ts ? 2 : 0);
+            EXPECT_EQ(r.courses_off_gauge, 0);
+            // 241.6 cm is 32 courses and 1.6 cm: two courses of 4.6 cm under the top.
+            EXPECT_LE(r.cut_courses, 2);
         }
     }
 }
