@@ -104,6 +104,15 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
         }
     for (auto [row, u] : lone)
         c.place(detail::polygon_of(grid.cell(row, u, u + 1)), grid.course(row));
+    const double inset = 0.25 * std::min(grid.xs[1] - grid.xs[0], grid.ys[1] - grid.ys[0]);
+    for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        if (edge.arc || !edge.vertical()) continue;
+        detail::walk_edge(edge, inset, inset, [&](Point p, double) {
+            const int row = grid.row_at(p.y), u = grid.unit_at(p.x);
+            if (row >= 0 && u >= 0) rules.jamb(row, u);
+        });
+    }
     rules.lay(c.random());
     for (const detail::Stone& s : rules.stones()) {
         const Rect r{grid.xs[s.unit], grid.ys[s.row], grid.xs[s.unit + s.w], grid.ys[s.row + s.h]};

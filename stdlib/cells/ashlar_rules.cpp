@@ -13,7 +13,8 @@ AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam
       max_h_(std::max(1, max_h)),
       max_seam_(max_seam),
       first_id_(first_id),
-      owner_(static_cast<std::size_t>(g.rows()) * static_cast<std::size_t>(g.units()), kBlocked) {}
+      owner_(static_cast<std::size_t>(g.rows()) * static_cast<std::size_t>(g.units()), kBlocked),
+      jamb_(owner_.size(), 0) {}
 
 void AshlarRules::lay(Random& random) {
     for (int r = 0; r < rows_; ++r) {
@@ -62,7 +63,12 @@ int AshlarRules::faults(int r, int u, int h, int w) const {
             cross(r, u, h, w, r + h, u + w);
     // Unit squares: a last resort, and never two side by side.
     if (h == 1 && w == 1) {
-        ++f;
+        // A narrow unit (grid lines close together) alone would stand on end: worse.
+        const double uw = g_.xs[static_cast<std::size_t>(u + 1)] -
+                          g_.xs[static_cast<std::size_t>(u)],
+                     uh = g_.ys[static_cast<std::size_t>(r + 1)] -
+                          g_.ys[static_cast<std::size_t>(r)];
+        f += uh > 1.1 * uw && !jamb_[static_cast<std::size_t>(r * units_ + u)] ? 3 : 1;
         for (auto [a, b] : {std::pair{r - 1, u}, {r + 1, u}, {r, u - 1}, {r, u + 1}})
             if (const Stone* s = own(get(a, b)); s && s->h == 1 && s->w == 1) f += 2;
     }
@@ -105,6 +111,9 @@ void AshlarRules::lay_at(int r, int u, Random& random) {
                  g_.xs[static_cast<std::size_t>(u + w)] - g_.xs[static_cast<std::size_t>(u)] >=
                      g_.ys[static_cast<std::size_t>(r + h)] - g_.ys[static_cast<std::size_t>(r)]))
                 sizes.emplace_back(h, w);
+    if (jamb_[static_cast<std::size_t>(r * units_ + u)])
+        for (int h = 2; h <= max_h_; ++h)
+            if (fits(r, u, h, 1)) sizes.emplace_back(h, 1);
     for (std::size_t i = sizes.size(); i > 1; --i)  // Fisher-Yates with our own numbers
         std::swap(
             sizes[i - 1],

@@ -21,6 +21,9 @@ class AshlarRules {
     AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam, int first_id);
 
     void free(int r, int u) { at(r, u) = kEmpty; }
+    // A unit against a jamb or the wall's end: a stone starting there may stand on end, one
+    // unit wide and up to max_h high, as the paper's edge stones take random heights.
+    void jamb(int r, int u) { jamb_[static_cast<std::size_t>(r * units_ + u)] = 1; }
     void hold(int r, int u, int id) { at(r, u) = id; }
     int get(int r, int u) const {
         if (r < 0 || u < 0 || r >= rows_ || u >= units_) return kBlocked;
@@ -41,6 +44,7 @@ class AshlarRules {
     const CourseGrid& g_;
     int rows_, units_, max_w_, max_h_, max_seam_, first_id_;
     std::vector<int> owner_;
+    std::vector<char> jamb_;
     std::vector<Stone> stones_;
 };
 
