@@ -1,6 +1,6 @@
 // Lintels: one stone in the courses (or the ashlar rows of a stone wall) over an opening's
-// straight head, bearing past each jamb. The
-// head's corners lay it too (corners come first), so no corner brick notches it.
+// straight head, bearing past each jamb. The head's corners lay it too (corners come first), so
+// no corner brick notches it.
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 #include <cmath>
@@ -9,26 +9,15 @@
 #include "brick_layout.hpp"
 #include "context_data.hpp"
 #include "feature_walk.hpp"
+#include "head_edge.hpp"
 
 namespace acanthus::cells {
 
 Generator lintel() {
     return [](const FeatureRef& f, Context& c) {
-        const Facade& facade = c.facade();
-        if (f.kind == FeatureKind::face) return;
-        int head = -1;
-        if (f.kind == FeatureKind::edge) {
-            head = f.index;
-        } else {
-            const Corner& corner = facade.corners()[static_cast<std::size_t>(f.index)];
-            for (int e : {corner.edge_in, corner.edge_out})
-                if (facade.edges()[static_cast<std::size_t>(e)].part == Part::top &&
-                    !facade.edges()[static_cast<std::size_t>(e)].arc)
-                    head = e;
-        }
+        const int head = detail::head_edge(c.facade(), f);
         if (head < 0) return;
-        const Edge& e = facade.edges()[static_cast<std::size_t>(head)];
-        if (e.arc || e.part != Part::top || !e.opening) return;
+        const Edge& e = c.facade().edges()[static_cast<std::size_t>(head)];
         // On the grid the wall is laid on: the bricks' courses, or the ashlar's units in stone.
         const Options& o = c.options();
         const detail::CourseGrid& grid =

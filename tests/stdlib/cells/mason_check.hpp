@@ -88,10 +88,9 @@ inline bool contains(const std::vector<Point>& poly, Point p) {
     return in;
 }
 
-// Laid in courses of bricks (not stones, arches or coloured blocks).
+// Laid in courses of bricks (not stones, arches, soldiers on end over a head or coloured blocks).
 inline bool coursed(const Cell& c) {
-    static const std::set<std::string> kinds{"bricks", "window_bottom", "quoins", "lintel",
-                                             "soldier_course"};
+    static const std::set<std::string> kinds{"bricks", "window_bottom", "quoins", "lintel"};
     return kinds.count(c.generator) > 0;
 }
 
@@ -305,11 +304,14 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         std::string name;
         for (const std::string& l : e.labels) name += (name.empty() ? "" : " ") + l;
         seen.insert(name);
-        const double mid = e.length / 2;
-        const Point p = e.at(mid) + e.inward(mid) * (s.mortar + 0.25 * s.height);
+        // Three points a little apart, as the middle may fall on a joint between soldiers.
         bool head = false;
-        for (const Cell& c : cells)
-            if (is_head(c.generator) && contains(c.polygon, p)) head = true;
+        for (double off : {0.0, -0.3 * s.height, 0.3 * s.height}) {
+            const double at = std::clamp(e.length / 2 + off, 0.0, e.length);
+            const Point p = e.at(at) + e.inward(at) * (s.mortar + 0.25 * s.height);
+            for (const Cell& c : cells)
+                if (is_head(c.generator) && contains(c.polygon, p)) head = true;
+        }
         if (!head) headless.insert(name);
     }
     r.openings = static_cast<long>(seen.size());

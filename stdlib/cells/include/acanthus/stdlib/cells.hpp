@@ -166,6 +166,9 @@ struct Options {
     int arch_rows = 1;          // rows of arch stones
     int lintel_bearing = 2;     // lintel past each jamb, in quarter bricks
     int lintel_courses = 2;     // lintel depth, in courses
+    // brick_tree(): heads up to this span get a soldier course, wider ones a lintel; 0: six
+    // brick lengths.
+    double soldier_span = 0;
     int quoin_long = 4, quoin_short = 2;  // jamb quoins, in quarter bricks, alternating by course
     double arc_tolerance = 0;  // chord error of drawn arcs; 0: mortar / 20 (at least 1e-3)
     // texture() refuses a facade estimated above this many cells before laying any: a million
@@ -306,10 +309,13 @@ Generator arch_stones();
 Generator arch_bricks();  // the same in bricks on end, a course wide (a rowlock arch)
 Generator ashlar();       // random ashlar on the grid tool, seeded
 Generator lintel();       // one stone over an opening, past each jamb
+// Bricks on end over an opening's straight head, a brick's length high, from jamb to jamb.
+Generator soldier_course();
 Generator quoins();       // long and short stones alternating up the sides
 Generator sill_stones();  // window bottom of a stone wall: the ashlar row under each sill
 
-// Ready trees: bricks with window bottoms, arches and corner bricks; ashlar framed the same
+// Ready trees: bricks with window bottoms, arches, heads (a soldier course over a straight head
+// up to Options::soldier_span, a lintel over a wider one) and corner bricks; ashlar framed the same
 // way (its window bottoms are sill stones, placed as "window_bottom"); RGB blocks. tree_for() picks
 // bricks or ashlar from options.bond.
 Node brick_tree();
