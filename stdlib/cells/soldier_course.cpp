@@ -42,6 +42,16 @@ Generator soldier_course() {
             const Rect r{x0 + (x1 - x0) * k / n, y0, x0 + (x1 - x0) * (k + 1) / n, y1};
             c.place(detail::polygon_of(r), grid.course(row));
         }
+        // A head within a course: under the soldiers' ends, beside the jambs, the course's strip
+        // down to its bed is the soldiers' bedding (mortar: too small for a cell), so the bricks
+        // beside stay whole rectangles on their course's beds.
+        const double bed = grid.ys[static_cast<std::size_t>(row) + 1];
+        const double jl = std::min(e.bounds.x0, e.bounds.x1),
+                     jr = std::max(e.bounds.x0, e.bounds.x1);
+        if (bed > y1) {
+            if (jl > x0) c.place(detail::polygon_of({x0, y1, jl, bed}), grid.course(row));
+            if (x1 > jr) c.place(detail::polygon_of({jr, y1, x1, bed}), grid.course(row));
+        }
     };
 }
 
