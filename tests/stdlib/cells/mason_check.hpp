@@ -6,6 +6,7 @@
 #pragma once
 
 #include <acanthus/stdlib/cells.hpp>
+#include <acanthus/stdlib/cells/head_joints.hpp>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -88,21 +89,15 @@ inline bool contains(const std::vector<Point>& poly, Point p) {
     return in;
 }
 
-// Laid in courses of bricks (not stones, arches, soldiers on end over a head or coloured blocks).
-inline bool coursed(const Cell& c) {
-    static const std::set<std::string> kinds{"bricks", "window_bottom", "quoins", "lintel"};
-    return kinds.count(c.generator) > 0;
-}
+// Laid in courses of bricks: the library's own reading (head_joints.hpp), so that the
+// straight-joint map shows what this checker counts.
+using acanthus::cells::coursed;
 
 inline bool is_head(const std::string& generator) {
     static const std::set<std::string> heads{"lintel", "arch_stones", "arch_bricks",
                                              "soldier_course", "flat_arch"};
     return heads.count(generator) > 0;
 }
-
-struct Joint {
-    double x, y0, y1;  // the gap's middle and the course's drawn extent (SVG: y0 above)
-};
 
 }  // namespace mason_detail
 
@@ -115,7 +110,6 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
     const double closer = (s.length + s.mortar) / 4 - s.mortar - s.tolerance;
 
     // Pieces, whole units, and the head joints between neighbours in a course.
-    std::vector<Rect> bricks;
     std::vector<double> bottoms;      // of bricks of whole height: the course lines
     std::map<long long, double> cut;  // pieces of cut height: their width by bottom line
     for (const Cell& c : cells) {
@@ -124,7 +118,6 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         r.slivers += a < 0.1;
         Rect b;
         if (!coursed(c) || !is_rect(c.polygon, b)) continue;
-        bricks.push_back(b);
         const double w = b.width(), h = b.height();
         if (std::abs(h - s.height) <= s.tolerance + 1e-9)
             bottoms.push_back(b.y1);
@@ -145,35 +138,13 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         ++r.whole_bricks;
         r.height_deviation = std::max(r.height_deviation, std::abs(h - s.height));
     }
+    // Straight joints by the library's rule, the one the straight-joint map draws.
+    const acanthus::cells::HeadJoints hj =
+        acanthus::cells::straight_joints(cells, s.length, s.mortar);
+    r.head_joints = hj.compared;
+    r.straight_joints = static_cast<long>(hj.straight.size());
+    for (const auto& j : hj.straight) r.straight_at.push_back({j.lower.x, j.lower.y0});
     const double same = 0.05 * s.mortar + 1e-9;
-    auto row = [&](const Rect& b) { return std::llround(b.y1 / same); };
-    std::sort(bricks.begin(), bricks.end(), [&](const Rect& a, const Rect& b) {
-        return row(a) != row(b) ? row(a) < row(b) : a.x0 < b.x0;
-    });
-    std::vector<Joint> joints;
-    for (std::size_t i = 0; i + 1 < bricks.size(); ++i) {
-        const Rect &a = bricks[i], &b = bricks[i + 1];
-        if (row(a) != row(b) || std::abs(a.y0 - b.y0) > same) continue;
-        double gap = b.x0 - a.x1;
-        if (gap > 0 && gap <= 2 * s.mortar) joints.push_back({(a.x1 + b.x0) / 2, a.y0, a.y1});
-    }
-    // Each joint against those of the course right above it (its bottom a joint over our top).
-    std::sort(joints.begin(), joints.end(),
-              [](const Joint& a, const Joint& b) { return a.y1 < b.y1; });
-    for (const Joint& j : joints) {
-        auto lo = std::lower_bound(joints.begin(), joints.end(), j.y0 - 2 * s.mortar,
-                                   [](const Joint& a, double y) { return a.y1 < y; });
-        bool compared = false, straight = false;
-        for (auto it = lo; it != joints.end() && it->y1 < j.y0; ++it) {
-            compared = true;
-            straight |= std::abs(it->x - j.x) < s.length / 4 - 1e-6;
-        }
-        r.head_joints += compared;
-        if (straight) {
-            ++r.straight_joints;
-            r.straight_at.push_back({j.x, j.y0});
-        }
-    }
     for (const auto& [line, width] : cut) r.cut_courses += width >= 0.5 * facade.bounds().width();
     // Course pitches from the bottoms of bricks of whole height (pieces cut under a sill or over
     // a head that falls within a course are the opening's; cut courses are counted above).

@@ -61,6 +61,26 @@ TEST(CellsMason, FindsStraightJoints) {
     EXPECT_EQ(r.straight_joints, static_cast<long>(r.straight_at.size()));
 }
 
+// The library's rule the straight-joint map draws (head_joints.hpp): each pair is a joint and
+// the one right above it, within a quarter brick; a joint moved a quarter brick away is not one.
+TEST(CellsMason, StraightJointPairs) {
+    using acanthus::cells::straight_joints;
+    auto pairs = straight_joints(stretchers(2, 6), kCm.length, kCm.mortar);
+    ASSERT_GT(pairs.straight.size(), 30u);
+    for (const auto& sj : pairs.straight) {
+        EXPECT_LT(std::abs(sj.upper.x - sj.lower.x), kCm.length / 4);
+        EXPECT_NEAR(sj.lower.y0 - sj.upper.y1, kCm.mortar, 1e-9);  // the course right above
+        EXPECT_NEAR(sj.lower.y1 - sj.lower.y0, kCm.height, 1e-9);
+    }
+    auto offset = straight_joints(stretchers(22.5 / 4 + 0.01, 6), kCm.length, kCm.mortar);
+    EXPECT_GT(offset.compared, 30);
+    EXPECT_TRUE(offset.straight.empty());
+    // A stone course is not read: ashlar cells are not coursed bricks.
+    std::vector<Cell> stones = stretchers(2, 6);
+    for (Cell& c : stones) c.generator = "ashlar";
+    EXPECT_EQ(straight_joints(stones, kCm.length, kCm.mortar).compared, 0);
+}
+
 TEST(CellsMason, FindsStretchedBricksAndCourses) {
     std::vector<Cell> cells = stretchers(11.25, 4, 24);  // 23 cm bricks
     // A course 9 cm high across the wall (bricks drawn 8 cm): a cut course.
