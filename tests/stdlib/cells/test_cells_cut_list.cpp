@@ -190,6 +190,18 @@ TEST(CellsCutList, AshlarStonesBySize) {
     EXPECT_GT(total(rows, "lintel"), 0);
 }
 
+TEST(CellsCutList, FramedTreeQuoinsAndLintels) {
+    Facade f = example("row-house");
+    Options o = centimetres(Bond::flemish);
+    Texture t = texture(f, framed_tree(), o, 1);
+    std::vector<Row> rows = parse_csv(cut_list_csv(cut_list(f, t.cells, o, 10)));
+    EXPECT_EQ(of_generator(rows, "quoins"), count_generator(t.cells, "quoins"));
+    EXPECT_EQ(total(rows, "quoin stone"), of_generator(rows, "quoins"));  // rectangles all
+    EXPECT_GT(total(rows, "quoin stone"), 0);
+    EXPECT_EQ(total(rows, "lintel"), count_generator(t.cells, "lintel"));
+    EXPECT_EQ(total(rows, "stretcher"), count_rects(t.cells, "bricks", 21.5, 6.5));
+}
+
 TEST(CellsCutList, WritesWholeFileOrNone) {
     namespace fs = std::filesystem;
     Facade f = example("oculus");
