@@ -1,128 +1,130 @@
-// Random ashlar [5.2] on the grid tool's small units. Corners get one stone, edges stones of
-// random length (alternating depth up vertical edges). Faces: by default the paper's method (a
-// stone per free unit, random neighbours merged up to the maximum size: ashlar_merge.cpp);
-// with AshlarMethod::rules, stones laid in reading order with a random size up to the maximum,
-// chosen so that no four stones meet at a point and no straight joint runs along more than
-// `ashlar_max_seam` stones where some size allows it (merging alone cannot promise either).
-#include <acanthus/progress.hpp>
+// Random ashlar [5.2] on the grid tool's small units. By default (AshlarMethod::rules) convex
+// corners get a stone two units long and the face's joint-rules layout (ashlar_rules.cpp) takes
+// every other unit, the edges' too, so its rules hold against every stone. With
+// AshlarMethod::merge, the paper's: corners one unit stone, edges stones of random length
+// (alternating depth up vertical edges), the face a stone per free unit merged at random
+// (ashlar_merge.cpp).
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "ashlar_grid.hpp"
 #include "ashlar_merge.hpp"
-#include "context_data.hpp"
-#include "course_grid.hpp"
+#include "ashlar_rules.hpp"
+#include "clip.hpp"
 #include "feature_walk.hpp"
 
 namespace acanthus::cells {
 
 namespace {
 
-using detail::Stone;
+using detail::CourseGrid;
 
-class AshlarFace {
-  public:
-    AshlarFace(const detail::CourseGrid& g, int max_w, int max_h, int max_seam)
-        : g_(g),
-          max_w_(max_w),
-          max_h_(max_h),
-          max_seam_(max_seam),
-          owner_(static_cast<std::size_t>(g.rows() * g.units()), kBlocked) {}
+bool inside(const std::vector<Point>& poly, Point p) {  // even-odd
+    bool in = false;
+    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+        if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
+            p.x < poly[j].x + (p.y - poly[j].y) * (poly[i].x - poly[j].x) / (poly[i].y - poly[j].y))
+            in = !in;
+    return in;
+}
 
-    static constexpr int kBlocked = -2, kEmpty = -1;
-    int& at(int r, int u) { return owner_[static_cast<std::size_t>(r * g_.units() + u)]; }
-    int get(int r, int u) const {
-        if (r < 0 || u < 0 || r >= g_.rows() || u >= g_.units()) return kBlocked;
-        return owner_[static_cast<std::size_t>(r * g_.units() + u)];
+// Along other edges: runs of units in a row cut into stones of random length (`shortest` and up).
+void edge_runs(const std::vector<std::pair<int, int>>& cells, const CourseGrid& grid, int shortest,
+               Context& c) {
+    const int longest = std::max(1, c.options().ashlar_max_width);
+    for (std::size_t i = 0; i < cells.size();) {
+        int len = static_cast<int>(c.random().uniform_int(std::min(shortest, longest), longest));
+        std::size_t j = i + 1;
+        while (j < cells.size() && j - i < static_cast<std::size_t>(len) &&
+               cells[j].first == cells[i].first &&
+               std::abs(cells[j].second - cells[j - 1].second) == 1)
+            ++j;
+        int a = std::min(cells[i].second, cells[j - 1].second);
+        int b = std::max(cells[i].second, cells[j - 1].second) + 1;
+        c.place(detail::polygon_of(grid.cell(cells[i].first, a, b)), grid.course(cells[i].first));
+        i = j;
     }
-    const std::vector<Stone>& stones() const { return stones_; }
+}
 
-    // Whole rows of stones before any becomes a cell: each row is reported as progress.
-    void lay(Random& random) {
-        for (int r = 0; r < g_.rows(); ++r) {
-            for (int u = 0; u < g_.units(); ++u)
-                if (get(r, u) == kEmpty) lay_at(r, u, random);
-            report_progress("ashlar rows", r + 1, g_.rows());
-        }
+// The rules layout of a face: every unit its centre puts in a stone laid before is held by that
+// stone; the free ones are laid by the rules; stones over units the face only partly holds, or
+// others claimed in part, are clipped.
+void rules_face(int face, const CourseGrid& grid, Context& c) {
+    const Facade& facade = c.facade();
+    const Options& o = c.options();
+    FaceOccupancy& occupancy = c.face_occupancy(face);
+    const std::vector<Cell>& laid = c.cells();
+    detail::AshlarRules rules(grid, o.ashlar_max_width, o.ashlar_max_height, o.ashlar_max_seam,
+                              static_cast<int>(laid.size()) + 1);
+    const double h = o.mortar / 2;
+    // Per unit: the rectangular cell k holding it (k), one of another shape (-2 - k), or -1.
+    std::vector<int> owner(static_cast<std::size_t>(grid.rows() * grid.units()), -1);
+    for (std::size_t k = 0; k < laid.size(); ++k) {
+        const Cell& cell = laid[k];
+        if (detail::face_of(facade, {cell.feature, cell.feature_index}) != face) continue;
+        Rect b = detail::bounds_of(cell.polygon), r;
+        const bool rect = detail::axis_rect(cell.polygon, r);
+        b = {b.x0 - h, b.y0 - h, b.x1 + h, b.y1 + h};
+        const int r0 = std::max(0, grid.row_at(b.y0)), u0 = std::max(0, grid.unit_at(b.x0));
+        int r1 = grid.row_at(b.y1), u1 = grid.unit_at(b.x1);
+        if (r1 < 0) r1 = grid.rows() - 1;
+        if (u1 < 0) u1 = grid.units() - 1;
+        for (int row = r0; row <= r1; ++row)
+            for (int u = u0; u <= u1; ++u) {
+                const Point m = grid.cell(row, u, u + 1).center();
+                if (rect ? b.contains(m) : inside(cell.polygon, m))
+                    owner[static_cast<std::size_t>(row * grid.units() + u)] =
+                        rect ? static_cast<int>(k) : -2 - static_cast<int>(k);
+            }
     }
-
-  private:
-    bool fits(int r, int u, int h, int w) const {
-        for (int i = r; i < r + h; ++i)
-            for (int j = u; j < u + w; ++j)
-                if (get(i, j) != kEmpty) return false;
-        return true;
+    const double tiny = 1e-4 * std::min(grid.xs[1] - grid.xs[0], grid.ys[1] - grid.ys[0]);
+    std::vector<std::pair<int, int>> lone;  // units laid as a clipped stone each
+    for (int row = 0; row < grid.rows(); ++row)
+        for (int u = 0; u < grid.units(); ++u) {
+            const auto s = grid.at(row, u);
+            const int held = owner[static_cast<std::size_t>(row * grid.units() + u)];
+            if (s == detail::kOutside) continue;
+            if (held >= 0 || held <= -2) {
+                rules.hold(row, u, held >= 0 ? held : -2 - held);
+                // What a voussoir leaves of the unit is cut to its extrados.
+                if (held <= -2) lone.emplace_back(row, u);
+                continue;
+            }
+            const Point m = grid.cell(row, u, u + 1).center();
+            if (s == detail::kFull || !occupancy
+                                           .free_part(detail::polygon_of(
+                                               {m.x - tiny, m.y - tiny, m.x + tiny, m.y + tiny}))
+                                           .empty())
+                rules.free(row, u);
+            else
+                lone.emplace_back(row, u);
+        }
+    for (auto [row, u] : lone)
+        c.place(detail::polygon_of(grid.cell(row, u, u + 1)), grid.course(row));
+    const double inset = 0.25 * std::min(grid.xs[1] - grid.xs[0], grid.ys[1] - grid.ys[0]);
+    for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        if (edge.arc || !edge.vertical()) continue;
+        detail::walk_edge(edge, inset, inset, [&](Point p, double) {
+            const int row = grid.row_at(p.y), u = grid.unit_at(p.x);
+            if (row >= 0 && u >= 0) rules.jamb(row, u);
+        });
     }
-    // Faults the stone would make: a four-way joint at its top-right corner, a bed joint under
-    // it or a vertical joint right of it along more than max_seam stones.
-    int faults(int r, int u, int h, int w) const {
-        int f = 0;
-        int x = u + w;
-        if (get(r, x) == kEmpty && r > 0) {
-            int a = get(r - 1, x - 1), b = get(r - 1, x);
-            if (a >= 0 && b >= 0 && a != b) ++f;
-        }
-        int y = r + h, run = 1;
-        for (int j = u - 1; j >= 0;) {  // stones left whose bottom is y too
-            int s = get(y - 1, j);
-            if (s < 0 ||
-                stones_[static_cast<std::size_t>(s)].row + stones_[static_cast<std::size_t>(s)].h !=
-                    y)
-                break;
-            ++run;
-            j = stones_[static_cast<std::size_t>(s)].unit - 1;
-        }
-        for (int j = x; j < g_.units();) {
-            int s = get(y - 1, j);
-            if (s < 0 ||
-                stones_[static_cast<std::size_t>(s)].row + stones_[static_cast<std::size_t>(s)].h !=
-                    y)
-                break;
-            ++run;
-            j = stones_[static_cast<std::size_t>(s)].unit + stones_[static_cast<std::size_t>(s)].w;
-        }
-        if (run > max_seam_ && y < g_.rows() && get(y, u) != kBlocked) ++f;
-        run = 1;
-        for (int i = r - 1; i >= 0;) {  // stones above whose right side is x too
-            int s = get(i, x - 1);
-            if (s < 0 || stones_[static_cast<std::size_t>(s)].unit +
-                                 stones_[static_cast<std::size_t>(s)].w !=
-                             x)
-                break;
-            ++run;
-            i = stones_[static_cast<std::size_t>(s)].row - 1;
-        }
-        if (run > max_seam_ && get(r, x) != kBlocked) ++f;
-        return f;
+    rules.lay(c.random());
+    for (const detail::Stone& s : rules.stones()) {
+        const Rect r{grid.xs[s.unit], grid.ys[s.row], grid.xs[s.unit + s.w], grid.ys[s.row + s.h]};
+        bool full = true;
+        for (int row = s.row; row < s.row + s.h; ++row)
+            for (int u = s.unit; u < s.unit + s.w; ++u) full &= grid.at(row, u) == detail::kFull;
+        if (full && occupancy.rect_is_free(r))
+            c.place_free_rect(r, grid.course(s.row + s.h - 1));
+        else
+            c.place(detail::polygon_of(r), grid.course(s.row + s.h - 1));
     }
-    void lay_at(int r, int u, Random& random) {
-        std::vector<std::pair<int, int>> sizes;
-        for (int h = 1; h <= max_h_; ++h)
-            for (int w = 1; w <= max_w_; ++w)
-                if (fits(r, u, h, w)) sizes.emplace_back(h, w);
-        for (std::size_t i = sizes.size(); i > 1; --i)  // Fisher-Yates with our own numbers
-            std::swap(sizes[i - 1], sizes[static_cast<std::size_t>(
-                                        random.uniform_int(0, static_cast<long long>(i) - 1))]);
-        std::pair<int, int> best = sizes.front();
-        int best_faults = 1 << 30;
-        for (auto [h, w] : sizes) {
-            int f = faults(r, u, h, w);
-            if (f < best_faults) best_faults = f, best = {h, w};
-            if (f == 0) break;
-        }
-        int id = static_cast<int>(stones_.size());
-        stones_.push_back({r, u, best.first, best.second});
-        for (int i = r; i < r + best.first; ++i)
-            for (int j = u; j < u + best.second; ++j) at(i, j) = id;
-    }
-
-    const detail::CourseGrid& g_;
-    int max_w_, max_h_, max_seam_;
-    std::vector<int> owner_;
-    std::vector<Stone> stones_;
-};
+}
 
 }  // namespace
 
@@ -130,22 +132,28 @@ Generator ashlar() {
     return [](const FeatureRef& f, Context& c) {
         const Facade& facade = c.facade();
         const Options& o = c.options();
+        const bool rules = o.ashlar_method == AshlarMethod::rules;
         int face = detail::face_of(facade, f);
-        double unit = o.ashlar_unit > 0 ? o.ashlar_unit : o.brick_height + o.mortar;
-        auto& grid = c.data().layout<detail::CourseGrid>("ashlar:" + std::to_string(face), [&] {
-            return detail::make_grid(facade, face, unit, unit);
-        });
-        const double inset = 0.25 * unit;
+        const CourseGrid& grid = detail::ashlar_grid(c, face);
+        const double inset = 0.25 * detail::ashlar_unit(o);
         if (f.kind == FeatureKind::corner) {
-            Point p =
-                detail::inside_corner(facade.corners()[static_cast<std::size_t>(f.index)], inset);
+            const Corner& k = facade.corners()[static_cast<std::size_t>(f.index)];
+            if (rules && !k.convex) return;  // the face's layout takes it
+            Point p = detail::inside_corner(k, inset);
             int row = grid.row_at(p.y), u = grid.unit_at(p.x);
-            if (row >= 0 && u >= 0)
-                c.place(detail::polygon_of(grid.cell(row, u, u + 1)), grid.course(row));
+            if (row < 0 || u < 0) return;
+            int u0 = u, u1 = u + 1;
+            if (rules) {  // a stone two units long, lying along the course into the wall
+                const int v = p.x >= k.position.x ? u + 1 : u - 1;
+                if (v >= 0 && v < grid.units() && grid.at(row, v) != detail::kOutside)
+                    u0 = std::min(u, v), u1 = std::max(u, v) + 1;
+            }
+            c.place(detail::polygon_of(grid.cell(row, u0, u1)), grid.course(row));
             return;
         }
         if (f.kind == FeatureKind::edge) {
             const Edge& e = facade.edges()[static_cast<std::size_t>(f.index)];
+            if (rules) return;  // the face's layout takes the edges' units (see rules_face)
             std::set<std::pair<int, int>> seen;
             std::vector<std::pair<int, int>> cells;
             detail::walk_edge(e, inset, inset, [&](Point p, double s) {
@@ -162,53 +170,30 @@ Generator ashlar() {
                     cells.emplace_back(row, u);
                 }
             });
-            // Along other edges: runs of cells in a row cut into stones of random length.
-            for (std::size_t i = 0; i < cells.size();) {
-                int len = static_cast<int>(c.random().uniform_int(1, o.ashlar_max_width));
-                std::size_t j = i + 1;
-                while (j < cells.size() && j - i < static_cast<std::size_t>(len) &&
-                       cells[j].first == cells[i].first &&
-                       std::abs(cells[j].second - cells[j - 1].second) == 1)
-                    ++j;
-                int a = std::min(cells[i].second, cells[j - 1].second);
-                int b = std::max(cells[i].second, cells[j - 1].second) + 1;
-                c.place(detail::polygon_of(grid.cell(cells[i].first, a, b)),
-                        grid.course(cells[i].first));
-                i = j;
-            }
+            edge_runs(cells, grid, rules ? 2 : 1, c);
             return;
         }
+        if (rules) {
+            rules_face(face, grid, c);
+            return;
+        }
+        // The paper's: a stone per free unit merged at random; units the face only partly
+        // holds, or that others claimed in part, a stone each, clipped.
         FaceOccupancy& occupancy = c.face_occupancy(face);
-        AshlarFace layout(grid, o.ashlar_max_width, o.ashlar_max_height, o.ashlar_max_seam);
+        std::vector<char> free(static_cast<std::size_t>(grid.rows() * grid.units()));
         for (int row = 0; row < grid.rows(); ++row)
             for (int u = 0; u < grid.units(); ++u) {
                 auto s = grid.at(row, u);
                 if (s == detail::kOutside) continue;
                 Rect r = grid.cell(row, u, u + 1);
                 if (s == detail::kFull && occupancy.rect_is_free(r))
-                    layout.at(row, u) = AshlarFace::kEmpty;
+                    free[static_cast<std::size_t>(row * grid.units() + u)] = 1;
+                else
+                    c.place(detail::polygon_of(r), grid.course(row));
             }
-        // Units the face only partly holds, or that others claimed in part: a stone each,
-        // clipped.
-        for (int row = 0; row < grid.rows(); ++row)
-            for (int u = 0; u < grid.units(); ++u)
-                if (grid.at(row, u) != detail::kOutside &&
-                    layout.get(row, u) == AshlarFace::kBlocked)
-                    c.place(detail::polygon_of(grid.cell(row, u, u + 1)), grid.course(row));
-        std::vector<Stone> stones;
-        if (o.ashlar_method == AshlarMethod::merge) {
-            std::vector<char> free(static_cast<std::size_t>(grid.rows() * grid.units()));
-            for (int row = 0; row < grid.rows(); ++row)
-                for (int u = 0; u < grid.units(); ++u)
-                    free[static_cast<std::size_t>(row * grid.units() + u)] =
-                        layout.get(row, u) == AshlarFace::kEmpty;
-            stones = detail::merge_ashlar(free, grid.rows(), grid.units(), o.ashlar_max_width,
-                                          o.ashlar_max_height, c.random());
-        } else {
-            layout.lay(c.random());
-            stones = layout.stones();
-        }
-        for (const Stone& s : stones)
+        std::vector<detail::Stone> stones = detail::merge_ashlar(
+            free, grid.rows(), grid.units(), o.ashlar_max_width, o.ashlar_max_height, c.random());
+        for (const detail::Stone& s : stones)
             c.place_free_rect(
                 Rect{grid.xs[s.unit], grid.ys[s.row], grid.xs[s.unit + s.w], grid.ys[s.row + s.h]},
                 grid.course(s.row + s.h - 1));

@@ -81,4 +81,19 @@ void pieces_of_run(const BondPattern& bond, int course, int phase, int a, int b,
     if (out.size() - first >= 2) fix(out.size() - 1, out.size() - 2, false);
 }
 
+std::vector<Piece> cut_out(const std::vector<Piece>& pieces, int a, int b) {
+    std::vector<Piece> out;
+    out.reserve(pieces.size() + 2);
+    for (const Piece& p : pieces) {
+        const int s = p.start, e = p.start + p.length;
+        if (e <= a || s >= b) {
+            out.push_back(p);
+            continue;
+        }
+        if (s < a) out.push_back({s, a - s, true, false, p.sill});
+        if (e > b) out.push_back({b, e - b, true, false, p.sill});
+    }
+    return out;
+}
+
 }  // namespace acanthus::cells::detail

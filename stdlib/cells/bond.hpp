@@ -31,4 +31,9 @@ struct BondPattern {
 void pieces_of_run(const BondPattern& bond, int course, int phase, int a, int b,
                    std::vector<Piece>& out);
 
+// A course's pieces (in order) with units [a, b) taken out for a quoin or a window-bottom row:
+// pieces clear of it kept, those across a or b cut there (each remnant a cut piece that keeps
+// its `sill`), in order. The caller puts in what fills [a, b).
+std::vector<Piece> cut_out(const std::vector<Piece>& pieces, int a, int b);
+
 }  // namespace acanthus::cells::detail

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "quoin_rows.hpp"
+
 namespace acanthus::cells::detail {
 
 namespace {
@@ -22,22 +24,16 @@ std::vector<double> unit_lines(double x0, double x1, double q, double tol) {
     return xs;
 }
 
-// Course heights, bottom first, filling the storey `w` with gauge `g`.
-void storey(double w, double g, double tol, std::vector<double>& heights) {
-    const int n = static_cast<int>(std::lround(w / g));
-    if (n >= 1 && std::abs(w - n * g) <= tol * n * (1 + 1e-9)) {
-        heights.insert(heights.end(), static_cast<std::size_t>(n), w / n);
+// The cut course at the top of a wall whose whole courses leave `rest` (0 < rest < g): one,
+// or two of (g + rest) / 2 when one would be thinner than half a course. Lines from `at` up.
+void cut_courses(double at, double rest, double g, int whole, std::vector<double>& down) {
+    if (rest >= g / 2 || whole == 0) {
+        down.push_back(at - rest);
         return;
     }
-    const int whole = static_cast<int>(std::floor(w / g));
-    const double rest = w - whole * g;
-    if (rest >= g / 2 || whole == 0) {
-        heights.push_back(rest);
-        heights.insert(heights.end(), static_cast<std::size_t>(whole), g);
-    } else {
-        heights.insert(heights.end(), 2, (g + rest) / 2);
-        heights.insert(heights.end(), static_cast<std::size_t>(whole - 1), g);
-    }
+    down.pop_back();  // the last whole course becomes part of the two
+    down.push_back(at + g - (g + rest) / 2);
+    down.push_back(at - rest);
 }
 
 }  // namespace
@@ -67,20 +63,50 @@ CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o) {
         kept.back() = level.back();
     if (kept.empty()) kept.push_back(f.bounds.y1);
 
+    // Courses on gauge from the bottom, as the mason's gauge rod runs. A level edge is a course
+    // line when the courses since the last one reach it with no bed joint moved by more than the
+    // tolerance; otherwise it falls within a course and the bricks there are cut to it (at that
+    // opening only). A level top out of reach gets the one cut course, right under it, where
+    // the wall plate or coping hides it.
     std::vector<double> down;  // course lines, bottom first
     double y = kept.front();
     while (y < f.bounds.y1 - eps) y += g;  // below the lowest level edge: whole courses
     for (double at = y; at > kept.front() + eps; at -= g) down.push_back(at);
     down.push_back(kept.front());
-    std::vector<double> heights;
-    for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
-        heights.clear();
-        storey(kept[i] - kept[i + 1], g, tol, heights);
-        double at = kept[i];
-        for (std::size_t k = 0; k + 1 < heights.size(); ++k) down.push_back(at -= heights[k]);
-        down.push_back(kept[i + 1]);
+    double anchor = kept.front();
+    const bool level_top = kept.back() <= f.bounds.y0 + eps && kept.size() >= 2;
+    // At a building corner the courses turn onto the next elevation: both faces keep the pure
+    // gauge from the ground (the mason's one gauge rod) up to their top course.
+    const bool corner = has_building_corner(facade, face);
+    for (std::size_t i = 1; i < kept.size(); ++i) {
+        if (corner && !(level_top && i + 1 == kept.size())) continue;
+        const double w = anchor - kept[i];
+        if (corner) {
+            const int whole = static_cast<int>(std::floor(w / g + 1e-9));
+            const double rest = w - whole * g;
+            const int n = rest <= tol ? whole : g - rest <= tol ? whole + 1 : -1;
+            if (n >= 1) {  // the top course alone takes up the rest, within the tolerance
+                for (int k = 1; k < n; ++k) down.push_back(anchor - k * g);
+            } else {
+                for (int k = 1; k <= whole; ++k) down.push_back(anchor - k * g);
+                cut_courses(anchor - whole * g, rest, g, whole, down);
+                down.pop_back();
+            }
+            down.push_back(anchor = kept[i]);
+            continue;
+        }
+        const int n = static_cast<int>(std::lround(w / g));
+        if (n >= 1 && std::abs(w - n * g) <= tol * n * (1 + 1e-9)) {
+            for (int k = 1; k < n; ++k) down.push_back(anchor - w * k / n);
+            down.push_back(anchor = kept[i]);
+        } else if (level_top && i + 1 == kept.size()) {
+            const int whole = static_cast<int>(std::floor(w / g));
+            for (int k = 1; k <= whole; ++k) down.push_back(anchor - k * g);
+            cut_courses(anchor - whole * g, w - whole * g, g, whole, down);
+            anchor = kept[i];
+        }
     }
-    for (double at = kept.back(); at > f.bounds.y0 + eps;) down.push_back(at -= g);  // to the top
+    for (double at = anchor; at > f.bounds.y0 + eps;) down.push_back(at -= g);  // to the top
     grid.ys.assign(down.rbegin(), down.rend());
     classify_units(facade, face, grid);
     return grid;

@@ -1,6 +1,7 @@
 // The grid bricks are laid on: quarter bricks and courses of their nominal size, never stretched
 // to fit as the paper's grid tool does. Differences go into the joints within the tolerance, and
-// beyond it into one cut course (or closers, where the bond meets an opening or the wall's end).
+// beyond it into one cut course at the wall's top (or closers, where the bond meets an opening
+// or the wall's end).
 #pragma once
 
 #include <acanthus/stdlib/cells.hpp>
@@ -11,9 +12,10 @@ namespace acanthus::cells::detail {
 
 // Units of (length + joint) / 4 from the face's left side, the face's width taken up in the head
 // joints when each joint moves by no more than the tolerance, else a cut unit at the right end.
-// Courses of height + joint between the level edges (sills, heads, the wall's top and bottom),
-// bed joints taking up what does not divide within the tolerance, else a cut course at the
-// bottom of that storey (two, each at least half a course, when one would be thinner).
+// Courses of height + joint from the face's bottom; a level edge (sill, flat head, the wall's
+// top) is a course line where the bed joints since the last reach it within the tolerance, else
+// it falls within a course; a level top out of reach gets one cut course under it (two, each at
+// least half a course, when one would be thinner).
 CourseGrid make_brick_grid(const Facade& facade, int face, const Options& options);
 
 }  // namespace acanthus::cells::detail

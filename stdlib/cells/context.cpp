@@ -185,11 +185,15 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
                    (n = nominal_at_jamb(r, claimed, *drawn, data_->options)).width() > 0) {
             drawn_cells.push_back(detail::polygon_of(n));
         } else if (axis_rect(piece, r)) {
-            if (r.width() > 2 * h && r.height() > 2 * h)
-                drawn_cells.push_back({{r.x0 + h, r.y0 + h},
-                                       {r.x1 - h, r.y0 + h},
-                                       {r.x1 - h, r.y1 - h},
-                                       {r.x0 + h, r.y1 - h}});
+            // A cut piece keeps its course's beds: where the joints took up a course's
+            // difference, whole bricks are drawn at nominal height and so are the cut ones.
+            Rect claimed, d{r.x0 + h, r.y0 + h, r.x1 - h, r.y1 - h};
+            if (drawn && axis_rect(claim, claimed)) {
+                const double eps = 1e-9 * std::max(1.0, std::abs(r.x1) + std::abs(r.y1));
+                if (std::abs(r.y0 - claimed.y0) <= eps) d.y0 = drawn->y0;
+                if (std::abs(r.y1 - claimed.y1) <= eps) d.y1 = drawn->y1;
+            }
+            if (d.width() > 0 && d.height() > 0) drawn_cells.push_back(detail::polygon_of(d));
         } else {
             drawn_cells = detail::shrink(piece, h, scale);
         }

@@ -1,47 +1,46 @@
-// Lintels: one stone in the courses over an opening's straight head, bearing past each jamb. The
-// head's corners lay it too (corners come first), so no corner brick notches it.
+// Lintels: one stone in the courses (or the ashlar rows of a stone wall) over an opening's
+// straight head, bearing past each jamb. The head's corners lay it too (corners come first), so
+// no corner brick notches it.
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
+#include <cmath>
 
+#include "ashlar_grid.hpp"
 #include "brick_layout.hpp"
 #include "context_data.hpp"
 #include "feature_walk.hpp"
+#include "head_edge.hpp"
 
 namespace acanthus::cells {
 
 Generator lintel() {
     return [](const FeatureRef& f, Context& c) {
-        const Facade& facade = c.facade();
-        if (f.kind == FeatureKind::face) return;
-        int head = -1;
-        if (f.kind == FeatureKind::edge) {
-            head = f.index;
-        } else {
-            const Corner& corner = facade.corners()[static_cast<std::size_t>(f.index)];
-            for (int e : {corner.edge_in, corner.edge_out})
-                if (facade.edges()[static_cast<std::size_t>(e)].part == Part::top &&
-                    !facade.edges()[static_cast<std::size_t>(e)].arc)
-                    head = e;
-        }
+        const int head = detail::head_edge(c.facade(), f);
         if (head < 0) return;
-        const Edge& e = facade.edges()[static_cast<std::size_t>(head)];
-        if (e.arc || e.part != Part::top || !e.opening) return;
-        detail::BrickLayout& layout = detail::brick_layout(c, e.face);
-        Point above =
-            e.at(e.length / 2) + e.inward(e.length / 2) * (0.25 * c.options().brick_height);
-        int row = layout.grid.row_at(above.y);
+        const Edge& e = c.facade().edges()[static_cast<std::size_t>(head)];
+        // On the grid the wall is laid on: the bricks' courses, or the ashlar's units in stone.
+        const Options& o = c.options();
+        const detail::CourseGrid& grid =
+            c.data().stone ? detail::ashlar_grid(c, e.face) : detail::brick_layout(c, e.face).grid;
+        const double unit = c.data().stone ? detail::ashlar_unit(o) : o.brick_height;
+        Point above = e.at(e.length / 2) + e.inward(e.length / 2) * (0.25 * unit);
+        int row = grid.row_at(above.y);
         double tiny = 1e-6 * e.bounds.width();
-        int u0 = layout.grid.unit_at(e.bounds.x0 + tiny),
-            u1 = layout.grid.unit_at(e.bounds.x1 - tiny);
+        int u0 = grid.unit_at(e.bounds.x0 + tiny), u1 = grid.unit_at(e.bounds.x1 - tiny);
         if (row < 0 || u0 < 0 || u1 < 0) return;
-        int b = c.options().lintel_bearing;
+        // Bearing in quarter bricks; in stone, as many units as cover it.
+        int b = o.lintel_bearing;
+        if (c.data().stone)
+            b = std::max(1,
+                         static_cast<int>(std::ceil(
+                             b * (o.brick_length + o.mortar) / 4 / detail::ashlar_unit(o) - 1e-9)));
         u0 = std::max(0, u0 - b);
-        u1 = std::min(layout.grid.units(), u1 + 1 + b);
+        u1 = std::min(grid.units(), u1 + 1 + b);
         // As deep as lintel_courses courses (rows above have lower indices in SVG numbers).
-        int top = std::max(0, row - std::max(1, c.options().lintel_courses) + 1);
-        Rect r = layout.grid.cell(row, u0, u1);
-        r.y0 = layout.grid.ys[static_cast<std::size_t>(top)];
-        c.place(detail::polygon_of(r), layout.grid.course(row));
+        int top = std::max(0, row - std::max(1, o.lintel_courses) + 1);
+        Rect r = grid.cell(row, u0, u1);
+        r.y0 = grid.ys[static_cast<std::size_t>(top)];
+        c.place(detail::polygon_of(r), grid.course(row));
     };
 }
 

@@ -40,16 +40,7 @@ void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right) {
         else
             a = p.start + p.length;
     }
-    std::vector<Piece> out;
-    for (const Piece& p : pieces) {
-        const int s = p.start, e = p.start + p.length;
-        if (e <= a || s >= b) {
-            out.push_back(p);
-            continue;
-        }
-        if (s < a) out.push_back({s, a - s, true, false, p.sill});
-        if (e > b) out.push_back({b, e - b, true, false, p.sill});
-    }
+    std::vector<Piece> out = cut_out(pieces, a, b);
     Piece q{a, b - a, false, false};
     q.quoin = true;
     out.push_back(q);
@@ -133,6 +124,76 @@ void set_quoin_rows(const Facade& facade, int face, const Options& o, BrickLayou
                          pieces.begin() + static_cast<std::ptrdiff_t>(e) + 1);
             pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(k), {l, r});
             ++k;
+        }
+    }
+}
+
+namespace {
+
+// The building corner an outline edge is: -1 at the wall's left end, 1 at its right end, else 0.
+int corner_end(const Facade& facade, const Face& f, const Edge& e, double eps) {
+    if (e.opening || !plumb(e, eps)) return 0;
+    auto labelled = [&](const char* l) {
+        return std::find(e.labels.begin(), e.labels.end(), l) != e.labels.end();
+    };
+    (void)facade;
+    if (std::abs(e.bounds.x0 - f.bounds.x0) <= eps && labelled("corner-left")) return -1;
+    if (std::abs(e.bounds.x0 - f.bounds.x1) <= eps && labelled("corner-right")) return 1;
+    return 0;
+}
+
+}  // namespace
+
+bool has_building_corner(const Facade& facade, int face) {
+    const Face& f = facade.faces()[static_cast<std::size_t>(face)];
+    const double eps = 1e-9 * std::max({1.0, std::abs(f.bounds.x1), std::abs(f.bounds.y1)});
+    for (int e : f.edges)
+        if (corner_end(facade, f, facade.edges()[static_cast<std::size_t>(e)], eps) != 0)
+            return true;
+    return false;
+}
+
+void set_corner_rows(const Facade& facade, int face, BrickLayout& layout) {
+    const Face& f = facade.faces()[static_cast<std::size_t>(face)];
+    const double eps = 1e-9 * std::max({1.0, std::abs(f.bounds.x1), std::abs(f.bounds.y1)});
+    const CourseGrid& g = layout.grid;
+    for (int e : f.edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        const int end = corner_end(facade, f, edge, eps);
+        if (end == 0) continue;
+        const int u = unit_at_edge(layout, edge);
+        if (u < 0) continue;
+        for (int row = 0; row < g.rows(); ++row) {
+            const double mid = (g.ys[static_cast<std::size_t>(row)] + g.ys[row + 1]) / 2;
+            if (mid < edge.bounds.y0 || mid > edge.bounds.y1 || g.at(row, u) == kOutside) continue;
+            // Even courses: a stretcher at a left end, a stretcher's end at a right end.
+            const bool stretcher = (g.course(row) % 2 == 0) == (end < 0);
+            const int len = stretcher ? 4 : 2;
+            int a = end < 0 ? u : u - len + 1, b = end < 0 ? u + len : u + 1;
+            int lo = u, hi = u + 1;
+            while (lo > a && lo > 0 && g.at(row, lo - 1) != kOutside) --lo;
+            while (hi < b && hi < g.units() && g.at(row, hi) != kOutside) ++hi;
+            if (hi - lo < len) continue;  // a pier narrower than the brick: the bond's own
+            auto& pieces = layout.rows[static_cast<std::size_t>(row)];
+            put_quoin(pieces, lo, hi, end < 0);
+            // A half bat left beside the corner brick, a stretcher beyond it: two three-quarter
+            // bats instead, so no joint stands over the corner brick's joint in the next course.
+            for (std::size_t k = 0; k < pieces.size(); ++k) {
+                if (!pieces[k].quoin || pieces[k].start != lo) continue;
+                const std::ptrdiff_t step = end < 0 ? 1 : -1;
+                const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(k) + step, m = n + step;
+                if (m < 0 || m >= static_cast<std::ptrdiff_t>(pieces.size())) break;
+                Piece &p = pieces[static_cast<std::size_t>(n)],
+                      &q = pieces[static_cast<std::size_t>(m)];
+                if (p.quoin || q.quoin || p.sill || q.sill || p.length != 2 || q.length != 4) break;
+                const int left = std::min(p.start, q.start);
+                if (std::max(p.start, q.start) - left != (end < 0 ? 2 : 4)) break;  // touching
+                Piece& l = end < 0 ? p : q;
+                Piece& r = end < 0 ? q : p;
+                l = {left, 3, true, false};
+                r = {left + 3, 3, true, false};
+                break;
+            }
         }
     }
 }

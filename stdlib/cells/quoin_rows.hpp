@@ -9,6 +9,14 @@ namespace acanthus::cells::detail {
 
 void set_quoin_rows(const Facade& facade, int face, const Options& options, BrickLayout& layout);
 
+// Building corners: a vertical end of the wall labelled `corner-left` or `corner-right` (the wall
+// shape's class) meets another elevation. Each course's piece against it is a brick turning the
+// corner: a stretcher (four quarters) on this face, or the end of the other face's stretcher
+// (two), by turns; left ends and right ends take opposite turns, so the right end of one
+// elevation and the left end of the next bond into each other. True when the face has one.
+bool has_building_corner(const Facade& facade, int face);
+void set_corner_rows(const Facade& facade, int face, BrickLayout& layout);
+
 // The row's quoin piece at a vertical edge through point `inside` (just inside the wall), or -1.
 int quoin_piece(const BrickLayout& layout, const Edge& edge, Point inside, int& row);
 

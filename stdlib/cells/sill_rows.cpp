@@ -45,6 +45,14 @@ bool sill_span(const Facade& facade, const Edge& sill, const BrickLayout& layout
     const double inset = 0.25 * (layout.gauge - layout.mortar);
     const Point below = sill.at(sill.length / 2) + sill.inward(sill.length / 2) * inset;
     row = layout.grid.row_at(below.y);
+    // A sill that falls within a course leaving less than half of it below: the window bottom
+    // is the whole course under that, the strip between split bricks (a header thinner than half
+    // a course is no header).
+    const double y = sill.bounds.y0;
+    if (row >= 0 && row + 1 < layout.grid.rows() &&
+        layout.grid.ys[static_cast<std::size_t>(row)] < y - 1e-9 * std::max(1.0, std::abs(y)) &&
+        layout.grid.ys[static_cast<std::size_t>(row) + 1] - y < layout.gauge / 2)
+        ++row;
     const double x0 = std::min(sill.bounds.x0, sill.bounds.x1), x1 = sill.bounds.x1;
     const double tiny = 1e-6 * (x1 - x0);
     u0 = layout.grid.unit_at(x0 + tiny);
@@ -102,16 +110,7 @@ void set_sill_rows(const Facade& facade, int face, BrickLayout& layout) {
                     j.back() += 1;
             }
             a = j.front(), b = j.back();
-            std::vector<Piece> out;
-            for (const Piece& p : pieces) {
-                const int s = p.start, e = p.start + p.length;
-                if (e <= a || s >= b) {
-                    out.push_back(p);
-                    continue;
-                }
-                if (s < a) out.push_back({s, a - s, true, false});
-                if (e > b) out.push_back({b, e - b, true, false});
-            }
+            std::vector<Piece> out = cut_out(pieces, a, b);
             for (std::size_t k = 0; k + 1 < j.size(); ++k)
                 out.push_back({j[k], j[k + 1] - j[k], j[k + 1] - j[k] != 2, false, true});
             std::sort(out.begin(), out.end(),

@@ -6,8 +6,7 @@
 #include <algorithm>
 #include <string>
 
-#include "context_data.hpp"
-#include "course_grid.hpp"
+#include "ashlar_grid.hpp"
 #include "feature_walk.hpp"
 
 namespace acanthus::cells {
@@ -33,11 +32,8 @@ Generator sill_stones() {
         const Edge& sill = facade.edges()[static_cast<std::size_t>(edge_index)];
         if (!sill.opening || sill.part != Part::bottom || sill.arc) return;
         const Options& o = c.options();
-        // The ashlar generator's grid (same key, same unit): made here if it runs later.
-        const double unit = o.ashlar_unit > 0 ? o.ashlar_unit : o.brick_height + o.mortar;
-        auto& grid = c.data().layout<detail::CourseGrid>(
-            "ashlar:" + std::to_string(sill.face),
-            [&] { return detail::make_grid(facade, sill.face, unit, unit); });
+        const double unit = detail::ashlar_unit(o);
+        detail::CourseGrid& grid = detail::ashlar_grid(c, sill.face);
         Point below = sill.at(sill.length / 2) + sill.inward(sill.length / 2) * (0.25 * unit);
         int row = grid.row_at(below.y);
         double tiny = 1e-6 * sill.bounds.width();

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "context_data.hpp"
+#include "head_edge.hpp"
 
 namespace acanthus::cells {
 
@@ -12,28 +13,36 @@ namespace {
 // ring of voussoirs is what a mason lays round an oculus too); the rest gets `rest`.
 Node arches(Node arch, Node rest) { return by_curve(arch, rest); }
 
-// Opening bottoms (sill and its corners) get `wb`; the rest goes to `rest`.
-Node sills(Node rest, Node wb = generator("window_bottom", window_bottom())) {
-    Node openings = by_part(rest, by_kind(wb, wb, rest), rest);
-    return Node([openings, rest](const FeatureRef& f, Context& c) {
-        bool opening = false;
-        auto i = static_cast<std::size_t>(f.index);
-        if (f.kind == FeatureKind::corner) opening = c.facade().corners()[i].opening;
-        if (f.kind == FeatureKind::edge) opening = c.facade().edges()[i].opening;
-        // A door's bottom lies on the ground, not over wall: only openings with wall below.
-        if (opening)
-            openings(f, c);
-        else
-            rest(f, c);
-    });
-}
-
 }  // namespace
 
 Node brick_tree() {
     Node b = generator("bricks", bricks());
     Node arch = generator("arch_stones", arch_stones());
-    return by_kind(arches(arch, sills(b)), arches(arch, sills(b)), b);
+    Node wb = generator("window_bottom", window_bottom());
+    Node soldiers = generator("soldier_course", soldier_course());
+    Node lin = generator("lintel", lintel());
+    // A head by its span: a soldier course over a small opening, a lintel over a wide one.
+    Node head = Node([=](const FeatureRef& f, Context& c) {
+        const int h = detail::head_edge(c.facade(), f);
+        if (h < 0) return b(f, c);
+        const Options& o = c.options();
+        const double most = o.soldier_span > 0 ? o.soldier_span : 6 * o.brick_length;
+        if (c.facade().edges()[static_cast<std::size_t>(h)].bounds.width() <= most)
+            soldiers(f, c);
+        else
+            lin(f, c);
+    });
+    Node openings = by_part(head, by_kind(wb, wb, b), b);
+    Node features = Node([=](const FeatureRef& f, Context& c) {
+        auto i = static_cast<std::size_t>(f.index);
+        bool opening = f.kind == FeatureKind::corner ? c.facade().corners()[i].opening
+                                                     : c.facade().edges()[i].opening;
+        if (opening)
+            openings(f, c);
+        else
+            b(f, c);
+    });
+    return by_kind(arches(arch, features), arches(arch, features), b);
 }
 
 Node framed_tree() {
@@ -65,7 +74,23 @@ Node ashlar_tree() {
     Node a = generator("ashlar", ashlar());
     Node arch = generator("arch_stones", arch_stones());
     Node wb = generator("window_bottom", sill_stones());
-    return by_kind(arches(arch, sills(a, wb)), arches(arch, sills(a, wb)), a);
+    Node lin = generator("lintel", lintel());
+    // Openings: a lintel over a straight head (its corners lay it first), sill stones under.
+    Node openings = by_part(lin, by_kind(wb, wb, a), a);
+    Node features = Node([=](const FeatureRef& f, Context& c) {
+        auto i = static_cast<std::size_t>(f.index);
+        bool opening = f.kind == FeatureKind::corner ? c.facade().corners()[i].opening
+                                                     : c.facade().edges()[i].opening;
+        if (opening)
+            openings(f, c);
+        else
+            a(f, c);
+    });
+    Node tree = by_kind(arches(arch, features), arches(arch, features), a);
+    return Node([tree](const FeatureRef& f, Context& c) {
+        c.data().stone = true;  // lintels on the ashlar grid
+        tree(f, c);
+    });
 }
 
 Node rgb_tree() { return generator("rgb_blocks", rgb_blocks()); }

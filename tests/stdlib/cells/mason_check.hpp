@@ -6,8 +6,10 @@
 #pragma once
 
 #include <acanthus/stdlib/cells.hpp>
+#include <acanthus/stdlib/cells/head_joints.hpp>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <ostream>
 #include <set>
 #include <string>
@@ -25,6 +27,8 @@ using acanthus::cells::Facade;
 struct MasonSpec {
     double length = 215, height = 65, mortar = 10;  // the nominal brick and joint
     double tolerance = 3;                           // a unit or course may be this far off
+    bool stone = false;     // an ashlar wall: every rectangular cell is a stone
+    double stone_unit = 0;  // the ashlar grid's unit; 0: height + mortar
 };
 
 struct MasonReport {
@@ -36,16 +40,26 @@ struct MasonReport {
     double length_deviation = 0;  // largest |length - nominal| of a whole or shaved brick
     double height_deviation = 0;  // largest |height - nominal| of a whole brick
     long courses = 0;
-    long courses_off_gauge = 0;   // course pitches beyond the tolerance (cut courses included)
-    double gauge_deviation = 0;   // largest |pitch - gauge|
-    double smallest_piece = 1e9;  // smallest cell's area over a brick face's
-    long slivers = 0;             // cells under 10% of a brick face
-    long narrow_pieces = 0;       // brick pieces narrower than a queen closer
+    long courses_off_gauge = 0;  // pitches between courses of whole height beyond the tolerance
+    long cut_courses = 0;        // courses of cut height along half the wall's width or more
+    double gauge_deviation = 0;  // largest |pitch - gauge|
+    std::vector<Point> off_gauge_at;  // (pitch, the upper line) of each course off gauge
+    double smallest_piece = 1e9;      // smallest cell's area over a brick face's
+    long slivers = 0;                 // cells under 10% of a brick face
+    long narrow_pieces = 0;           // brick pieces narrower than a queen closer
     long voussoirs = 0;
     long voussoirs_clipped = 0;
     long crowns = 0;       // tops of arches and rings (a pointed arch's apex)
     long crowns_open = 0;  // of those, a joint at the crown instead of a key
     std::vector<Point> open_crowns;
+    // Stone walls (MasonSpec::stone): every rectangular cell, jamb, sill and lintel too.
+    long stones = 0;
+    long four_way = 0;  // points where four stones meet
+    std::vector<Point> four_way_at;
+    long stones_on_end = 0;      // a tenth taller than wide (a square on a stretched grid is not),
+                                 // away from a jamb or the wall's end
+    long unit_square_pairs = 0;  // two stones of about one grid unit sharing a side
+    long unit_square_runs = 0;   // three or more in a line (counted by their middle ones)
     long openings = 0;
     long openings_without_head = 0;
     std::vector<std::string> headless;
@@ -75,22 +89,15 @@ inline bool contains(const std::vector<Point>& poly, Point p) {
     return in;
 }
 
-// Laid in courses of bricks (not stones, arches or coloured blocks).
-inline bool coursed(const Cell& c) {
-    static const std::set<std::string> kinds{"bricks", "window_bottom", "quoins", "lintel",
-                                             "soldier_course"};
-    return kinds.count(c.generator) > 0;
-}
+// Laid in courses of bricks: the library's own reading (head_joints.hpp), so that the
+// straight-joint map shows what this checker counts.
+using acanthus::cells::coursed;
 
 inline bool is_head(const std::string& generator) {
     static const std::set<std::string> heads{"lintel", "arch_stones", "arch_bricks",
                                              "soldier_course", "flat_arch"};
     return heads.count(generator) > 0;
 }
-
-struct Joint {
-    double x, y0, y1;  // the gap's middle and the course's drawn extent (SVG: y0 above)
-};
 
 }  // namespace mason_detail
 
@@ -103,23 +110,26 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
     const double closer = (s.length + s.mortar) / 4 - s.mortar - s.tolerance;
 
     // Pieces, whole units, and the head joints between neighbours in a course.
-    std::vector<Rect> bricks;
-    std::vector<double> bottoms;
+    std::vector<double> bottoms;      // of bricks of whole height: the course lines
+    std::map<long long, double> cut;  // pieces of cut height: their width by bottom line
     for (const Cell& c : cells) {
         double a = acanthus::cells::detail::area_of(c.polygon) / face;
         r.smallest_piece = std::min(r.smallest_piece, a);
         r.slivers += a < 0.1;
         Rect b;
         if (!coursed(c) || !is_rect(c.polygon, b)) continue;
-        bricks.push_back(b);
-        bottoms.push_back(b.y1);
         const double w = b.width(), h = b.height();
+        if (std::abs(h - s.height) <= s.tolerance + 1e-9)
+            bottoms.push_back(b.y1);
+        else
+            cut[std::llround(b.y1 / (0.05 * s.mortar + 1e-9))] += w + s.mortar;
         if (std::abs(h - s.height) > 0.2 * s.height) continue;  // a cut course
         if (w < closer) ++r.narrow_pieces;
         const double nominal = std::abs(w - s.length) <= 0.12 * s.length ? s.length
                                : std::abs(w - header) <= 0.12 * header   ? header
                                                                          : 0;
-        if (nominal == 0) continue;  // a bat or closer
+        if (nominal == 0) continue;                                 // a bat or closer
+        if (std::abs(h - s.height) > s.tolerance + 1e-9) continue;  // cut in height
         r.length_deviation = std::max(r.length_deviation, std::abs(w - nominal));
         if (std::abs(w - nominal) > s.tolerance / 3) {
             ++r.shaved_bricks;
@@ -128,36 +138,16 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         ++r.whole_bricks;
         r.height_deviation = std::max(r.height_deviation, std::abs(h - s.height));
     }
+    // Straight joints by the library's rule, the one the straight-joint map draws.
+    const acanthus::cells::HeadJoints hj =
+        acanthus::cells::straight_joints(cells, s.length, s.mortar);
+    r.head_joints = hj.compared;
+    r.straight_joints = static_cast<long>(hj.straight.size());
+    for (const auto& j : hj.straight) r.straight_at.push_back({j.lower.x, j.lower.y0});
     const double same = 0.05 * s.mortar + 1e-9;
-    auto row = [&](const Rect& b) { return std::llround(b.y1 / same); };
-    std::sort(bricks.begin(), bricks.end(), [&](const Rect& a, const Rect& b) {
-        return row(a) != row(b) ? row(a) < row(b) : a.x0 < b.x0;
-    });
-    std::vector<Joint> joints;
-    for (std::size_t i = 0; i + 1 < bricks.size(); ++i) {
-        const Rect &a = bricks[i], &b = bricks[i + 1];
-        if (row(a) != row(b) || std::abs(a.y0 - b.y0) > same) continue;
-        double gap = b.x0 - a.x1;
-        if (gap > 0 && gap <= 2 * s.mortar) joints.push_back({(a.x1 + b.x0) / 2, a.y0, a.y1});
-    }
-    // Each joint against those of the course right above it (its bottom a joint over our top).
-    std::sort(joints.begin(), joints.end(),
-              [](const Joint& a, const Joint& b) { return a.y1 < b.y1; });
-    for (const Joint& j : joints) {
-        auto lo = std::lower_bound(joints.begin(), joints.end(), j.y0 - 2 * s.mortar,
-                                   [](const Joint& a, double y) { return a.y1 < y; });
-        bool compared = false, straight = false;
-        for (auto it = lo; it != joints.end() && it->y1 < j.y0; ++it) {
-            compared = true;
-            straight |= std::abs(it->x - j.x) < s.length / 4 - 1e-6;
-        }
-        r.head_joints += compared;
-        if (straight) {
-            ++r.straight_joints;
-            r.straight_at.push_back({j.x, j.y0});
-        }
-    }
-    // Course pitches from the bottoms of bricks, cut courses too.
+    for (const auto& [line, width] : cut) r.cut_courses += width >= 0.5 * facade.bounds().width();
+    // Course pitches from the bottoms of bricks of whole height (pieces cut under a sill or over
+    // a head that falls within a course are the opening's; cut courses are counted above).
     std::sort(bottoms.begin(), bottoms.end());
     std::vector<double> lines;
     for (double y : bottoms)
@@ -168,7 +158,10 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         if (pitch > 1.5 * gauge) continue;  // a storey of openings or another face between
         double dev = std::abs(pitch - gauge);
         r.gauge_deviation = std::max(r.gauge_deviation, dev);
-        r.courses_off_gauge += dev > s.tolerance + 1e-9;
+        if (dev > s.tolerance + 1e-9) {
+            ++r.courses_off_gauge;
+            r.off_gauge_at.push_back({pitch, lines[i]});
+        }
     }
     // Voussoirs: whole when every vertex lies on the inner or the outer arc, a brick apart.
     for (const Cell& c : cells) {
@@ -220,6 +213,61 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             r.open_crowns.push_back(p);
         }
     }
+    // Stones: the claims' corners (the drawn rect grown by half a joint) where four meet.
+    if (s.stone) {
+        const double unit = s.stone_unit > 0 ? s.stone_unit : s.height + s.mortar;
+        const double m = s.mortar / 2;
+        std::vector<Rect> stones;
+        for (const Cell& c : cells) {
+            Rect b;
+            if (!is_rect(c.polygon, b)) continue;
+            stones.push_back({b.x0 - m, b.y0 - m, b.x1 + m, b.y1 + m});
+        }
+        r.stones = static_cast<long>(stones.size());
+        const double key = 0.01 * unit;
+        std::map<std::pair<long, long>, int> corners;
+        for (const Rect& b : stones)
+            for (double x : {b.x0, b.x1})
+                for (double y : {b.y0, b.y1})
+                    ++corners[{std::llround(x / key), std::llround(y / key)}];
+        for (const auto& [p, n] : corners)
+            if (n >= 4) {
+                ++r.four_way;
+                r.four_way_at.push_back(
+                    {static_cast<double>(p.first) * key, static_cast<double>(p.second) * key});
+            }
+        const double near = s.mortar + 1e-6;
+        for (const Rect& b : stones) {
+            if (b.height() <= b.width() * 1.1) continue;
+            bool jamb = false;
+            for (const auto& e : facade.edges())
+                if (e.vertical() && !e.arc && e.bounds.y0 < b.y1 && e.bounds.y1 > b.y0 &&
+                    (std::abs(e.bounds.x0 - b.x0) < near || std::abs(e.bounds.x0 - b.x1) < near))
+                    jamb = true;
+            r.stones_on_end += !jamb;
+        }
+        auto unit_square = [&](const Rect& b) {
+            return b.width() < 1.5 * unit && b.height() < 1.5 * unit;
+        };
+        std::vector<Rect> squares;
+        for (const Rect& b : stones)
+            if (unit_square(b)) squares.push_back(b);
+        const double eps = 0.05 * s.mortar + 1e-6;
+        std::vector<int> left(squares.size()), right(squares.size()), up(squares.size()),
+            down(squares.size());
+        for (std::size_t i = 0; i < squares.size(); ++i)
+            for (std::size_t j = 0; j < squares.size(); ++j) {
+                const Rect &a = squares[i], &b = squares[j];
+                const bool rows = std::min(a.y1, b.y1) - std::max(a.y0, b.y0) > eps;
+                const bool cols = std::min(a.x1, b.x1) - std::max(a.x0, b.x0) > eps;
+                if (rows && std::abs(a.x1 - b.x0) < eps) ++r.unit_square_pairs, right[i] = 1;
+                if (rows && std::abs(b.x1 - a.x0) < eps) left[i] = 1;
+                if (cols && std::abs(a.y1 - b.y0) < eps) ++r.unit_square_pairs, down[i] = 1;
+                if (cols && std::abs(b.y1 - a.y0) < eps) up[i] = 1;
+            }
+        for (std::size_t i = 0; i < squares.size(); ++i)
+            r.unit_square_runs += (left[i] && right[i]) || (up[i] && down[i]);
+    }
     // Heads: above the middle of every top edge of an opening, a lintel, arch or soldier cell.
     std::set<std::string> seen, headless;
     for (const auto& e : facade.edges()) {
@@ -227,11 +275,14 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         std::string name;
         for (const std::string& l : e.labels) name += (name.empty() ? "" : " ") + l;
         seen.insert(name);
-        const double mid = e.length / 2;
-        const Point p = e.at(mid) + e.inward(mid) * (s.mortar + 0.25 * s.height);
+        // Three points a little apart, as the middle may fall on a joint between soldiers.
         bool head = false;
-        for (const Cell& c : cells)
-            if (is_head(c.generator) && contains(c.polygon, p)) head = true;
+        for (double off : {0.0, -0.3 * s.height, 0.3 * s.height}) {
+            const double at = std::clamp(e.length / 2 + off, 0.0, e.length);
+            const Point p = e.at(at) + e.inward(at) * (s.mortar + 0.25 * s.height);
+            for (const Cell& c : cells)
+                if (is_head(c.generator) && contains(c.polygon, p)) head = true;
+        }
         if (!head) headless.insert(name);
     }
     r.openings = static_cast<long>(seen.size());
@@ -246,11 +297,13 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
     return out << "straight " << r.straight_joints << "/" << r.head_joints << ", whole "
                << r.whole_bricks << " shaved " << r.shaved_bricks << " dev L " << r.length_deviation
                << " H " << r.height_deviation << ", courses " << r.courses << " off-gauge "
-               << r.courses_off_gauge << " (max " << r.gauge_deviation << "), smallest "
-               << r.smallest_piece << " slivers " << r.slivers << " narrow " << r.narrow_pieces
-               << ", voussoirs clipped " << r.voussoirs_clipped << "/" << r.voussoirs
-               << ", crowns open " << r.crowns_open << "/" << r.crowns << ", headless "
-               << r.openings_without_head << "/" << r.openings;
+               << r.courses_off_gauge << " (max " << r.gauge_deviation << ") cut " << r.cut_courses
+               << ", smallest " << r.smallest_piece << " slivers " << r.slivers << " narrow "
+               << r.narrow_pieces << ", voussoirs clipped " << r.voussoirs_clipped << "/"
+               << r.voussoirs << ", crowns open " << r.crowns_open << "/" << r.crowns
+               << ", headless " << r.openings_without_head << "/" << r.openings << ", stones "
+               << r.stones << " four-way " << r.four_way << " on end " << r.stones_on_end
+               << " unit-square pairs " << r.unit_square_pairs << " runs " << r.unit_square_runs;
 }
 
 }  // namespace cells_test

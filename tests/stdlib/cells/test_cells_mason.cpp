@@ -2,8 +2,10 @@
 // example facade in every bond and tree (centimetres, as rules/facade.acr lays them).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 #include <map>
+#include <set>
 
 #include "cells_oracle.hpp"
 #include "mason_check.hpp"
@@ -59,13 +61,47 @@ TEST(CellsMason, FindsStraightJoints) {
     EXPECT_EQ(r.straight_joints, static_cast<long>(r.straight_at.size()));
 }
 
+// The library's rule the straight-joint map draws (head_joints.hpp): each pair is a joint and
+// the one right above it, within a quarter brick; a joint moved a quarter brick away is not one.
+TEST(CellsMason, StraightJointPairs) {
+    using acanthus::cells::straight_joints;
+    auto pairs = straight_joints(stretchers(2, 6), kCm.length, kCm.mortar);
+    ASSERT_GT(pairs.straight.size(), 30u);
+    for (const auto& sj : pairs.straight) {
+        EXPECT_LT(std::abs(sj.upper.x - sj.lower.x), kCm.length / 4);
+        EXPECT_NEAR(sj.lower.y0 - sj.upper.y1, kCm.mortar, 1e-9);  // the course right above
+        EXPECT_NEAR(sj.lower.y1 - sj.lower.y0, kCm.height, 1e-9);
+    }
+    auto offset = straight_joints(stretchers(22.5 / 4 + 0.01, 6), kCm.length, kCm.mortar);
+    EXPECT_GT(offset.compared, 30);
+    EXPECT_TRUE(offset.straight.empty());
+    // A stone course is not read: ashlar cells are not coursed bricks.
+    std::vector<Cell> stones = stretchers(2, 6);
+    for (Cell& c : stones) c.generator = "ashlar";
+    EXPECT_EQ(straight_joints(stones, kCm.length, kCm.mortar).compared, 0);
+}
+
 TEST(CellsMason, FindsStretchedBricksAndCourses) {
     std::vector<Cell> cells = stretchers(11.25, 4, 24);  // 23 cm bricks
-    cells.push_back(brick(0, 61, 22.5, 70, 4));          // a course 9 cm high over the others
-    cells.push_back(brick(0, 53.5, 22.5, 61, 5));
+    // A course 9 cm high across the wall (bricks drawn 8 cm): a cut course.
+    for (double x = 0; x < 200; x += 22.5) cells.push_back(brick(x, 61, x + 22.5, 70, 4));
     MasonReport r = mason_check(plain_wall(), cells, kCm);
     EXPECT_NEAR(r.length_deviation, 1.5, 1e-9);
-    EXPECT_GE(r.courses_off_gauge, 1);
+    EXPECT_EQ(r.cut_courses, 1);
+    EXPECT_EQ(r.courses_off_gauge, 0);
+    // Whole bricks with bed joints 4 mm too thick: every course off gauge.
+    std::vector<Cell> open;
+    for (int k = 0; k < 4; ++k)
+        for (double x = 0; x < 200; x += 22.5) {
+            const double y1 = 100 - 7.9 * k - 0.5, y0 = y1 - 6.5;
+            Cell c = brick(x, 0, x + 22.5, 10, k);
+            c.polygon = {{x + 0.5, y0}, {x + 22, y0}, {x + 22, y1}, {x + 0.5, y1}};
+            open.push_back(c);
+        }
+    r = mason_check(plain_wall(), open, kCm);
+    EXPECT_EQ(r.courses_off_gauge, 3);
+    EXPECT_NEAR(r.gauge_deviation, 0.4, 1e-9);
+    EXPECT_EQ(r.cut_courses, 0);
 }
 
 TEST(CellsMason, FindsSliversAndNarrowPieces) {
@@ -88,7 +124,13 @@ TEST(CellsMason, FindsHeadlessOpeningsAndClippedVoussoirs) {
     Texture t = texture(f, brick_tree(), o, 1);
     MasonReport r = mason_check(f, t.cells, kCm);
     EXPECT_EQ(r.openings, 2);
-    ASSERT_EQ(r.headless.size(), 1u);  // the flat-headed window; the arch has its voussoirs
+    EXPECT_EQ(r.openings_without_head, 0);  // soldiers over the flat head, voussoirs round the arch
+    // Without its soldier course the flat-headed window is found headless.
+    t.cells.erase(std::remove_if(t.cells.begin(), t.cells.end(),
+                                 [](const Cell& c) { return c.generator == "soldier_course"; }),
+                  t.cells.end());
+    r = mason_check(f, t.cells, kCm);
+    ASSERT_EQ(r.headless.size(), 1u);
     EXPECT_NE(r.headless[0].find("flat"), std::string::npos);
     EXPECT_GT(r.voussoirs, 5);
     // Notch one voussoir: it is no longer whole.
@@ -99,6 +141,29 @@ TEST(CellsMason, FindsHeadlessOpeningsAndClippedVoussoirs) {
             break;
         }
     EXPECT_EQ(mason_check(f, t.cells, kCm).voussoirs_clipped, r.voussoirs_clipped + 1);
+}
+
+TEST(CellsMason, FindsFourWayJointsStonesOnEndAndUnitSquares) {
+    // Stones in a plain grid: every inner grid point is a four-way joint.
+    std::vector<Cell> cells;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 3; ++j)
+            cells.push_back(brick(30.0 * i, 15.0 * j, 30.0 * (i + 1), 15.0 * (j + 1), j, "ashlar"));
+    MasonSpec stone = kCm;
+    stone.stone = true;
+    MasonReport r = mason_check(plain_wall(), cells, stone);
+    EXPECT_EQ(r.stones, 12);
+    EXPECT_EQ(r.four_way, 6);
+    EXPECT_EQ(r.stones_on_end, 0);
+    EXPECT_EQ(mason_check(plain_wall(), cells, kCm).stones, 0);  // a brick wall: not read
+    // A stone on end in the wall, and three unit squares in a row.
+    cells.push_back(brick(150, 0, 165, 30, 0, "ashlar"));
+    for (int i = 0; i < 3; ++i)
+        cells.push_back(brick(120 + 7.5 * i, 45, 127.5 + 7.5 * i, 52.5, 3, "ashlar"));
+    r = mason_check(plain_wall(), cells, stone);
+    EXPECT_EQ(r.stones_on_end, 1);
+    EXPECT_EQ(r.unit_square_pairs, 2);
+    EXPECT_EQ(r.unit_square_runs, 1);
 }
 
 TEST(CellsMason, FindsAJointAtTheCrown) {
@@ -138,15 +203,15 @@ namespace {
 std::map<std::string, Node> mason_trees() {
     Node b = generator("bricks", bricks());
     Node wb = generator("window_bottom", window_bottom());
-    Node sills = by_part(b, wb, b);
+    Node sills = by_part(generator("soldier_course", soldier_course()), wb, b);
     Node rowlock = by_kind(by_curve(generator("arch_bricks", arch_bricks()), sills),
                            by_curve(generator("arch_bricks", arch_bricks()), sills), b);
     return {{"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
 }
 
-Options centimetres() {
+Options centimetres() {  // as rules/facade.acr lays them
     Options o;
-    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1;
+    o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1, o.joint_tolerance = 0.3;
     return o;
 }
 
@@ -156,12 +221,14 @@ const Bond kBrickBonds[] = {Bond::running, Bond::english, Bond::flemish, Bond::h
 
 // Facades no code here was tuned on (tests/stdlib/cells/facades/: a shop front with a wide
 // window and close windows, a chapel end with pointed, segmental and round heads near the wall's
-// ends, a terrace with jambs between quarter bricks), every bond and tree.
+// ends, a terrace with jambs between quarter bricks, a gable with a pointed door at a wall end,
+// a warehouse with a 4.2 m segmental arch, a stone front), every bond and tree.
 TEST(CellsMason, UnseenFacades) {
     const std::string dir = std::string(ACANTHUS_SOURCE_DIR) + "/tests/stdlib/cells/facades/";
     Options o = centimetres();
     const auto trees = mason_trees();
-    for (const char* name : {"shopfront", "chapel", "terrace"}) {
+    for (const char* name :
+         {"shopfront", "chapel", "terrace", "gable-lancet", "warehouse", "ashlar-front"}) {
         Facade f = Facade::from_svg_file(dir + name + ".svg");
         for (Bond bond : kBrickBonds)
             for (const auto& [tree_name, tree] : trees) {
@@ -175,14 +242,28 @@ TEST(CellsMason, UnseenFacades) {
                 EXPECT_EQ(r.slivers, 0);
                 EXPECT_EQ(r.voussoirs_clipped, 0);  // voussoirs first, the walling cut to them
                 EXPECT_EQ(r.crowns_open, 0);        // a key at every crown
+                // A head over every opening: soldiers or a lintel by span, arches.
+                EXPECT_EQ(r.openings_without_head, 0);
+                // Courses on gauge from the ground, sills and heads met within the joints'
+                // tolerance or cut at the opening; one cut course at most, under a level top.
+                EXPECT_EQ(r.courses_off_gauge, 0);
+                EXPECT_LE(r.cut_courses, 1);
+                EXPECT_LE(r.height_deviation, kCm.tolerance / 3);  // whole bricks within 1 mm
                 if (bond != Bond::stack) {
                     std::string where;
                     for (Point p : r.straight_at)
                         where += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
                     // Framed: quoins bonded in (were 99-270 here); what is left is beside
-                    // lintels and raking edges, which are not in the layout yet.
-                    EXPECT_LE(r.straight_joints, tree_name == "framed" ? 7 : 0) << "at" << where;
-                    EXPECT_EQ(r.narrow_pieces, 0);
+                    // lintels and raking edges, which are not in the layout yet, and up the
+                    // shop front's 41 cm pier between the wall's end and the shop window, where
+                    // the two quoins meet (20 courses; seen since cut bricks keep their course's
+                    // beds), and by a window whose head falls within a course (3).
+                    const long framed = std::string(name) == "shopfront" ? 29 : 7;
+                    EXPECT_LE(r.straight_joints, tree_name == "framed" ? framed : 0)
+                        << "at" << where;
+                    // Left: the warehouse's segmental windows leave a 3 cm piece between each
+                    // skewback and the bond.
+                    EXPECT_LE(r.narrow_pieces, std::string(name) == "warehouse" ? 2 : 0);
                 }
             }
     }
@@ -205,7 +286,7 @@ TEST(CellsMason, ExampleFacades) {
                 SCOPED_TRACE(std::string(name) + " " + std::string(to_string(bond)) + " " +
                              tree_name);
                 // Fixed units: whole bricks keep their height, courses their gauge.
-                EXPECT_LE(r.height_deviation, 0.1);
+                EXPECT_LE(r.height_deviation, kCm.tolerance / 3);
                 EXPECT_EQ(r.slivers, 0);  // pieces under 10% of a face are left to the mortar
                 EXPECT_EQ(r.voussoirs_clipped, 0);
                 EXPECT_EQ(r.crowns_open, 0);
@@ -222,13 +303,125 @@ TEST(CellsMason, ExampleFacades) {
                     EXPECT_LE(r.straight_joints, 7);  // 297 on the row-house before quoins
                     EXPECT_EQ(r.narrow_pieces, 0);    // were bonded in
                 }
-                if (std::string(name) != "gable") {
-                    EXPECT_EQ(r.courses_off_gauge, 0);
-                }
+                EXPECT_EQ(r.courses_off_gauge, 0);
+                EXPECT_LE(r.cut_courses, 1);
+                EXPECT_EQ(r.openings_without_head, 0);
             }
         o.bond = Bond::ashlar;
         MasonReport r = mason_check(f, texture(f, ashlar_tree(), o, 1).cells, kCm);
         std::cout << name << " ashlar: " << r << "\n";
         EXPECT_EQ(r.slivers, 0) << name << " ashlar";
+    }
+}
+
+// Ashlar walls: the ready tree (the joint-rules layout, lintels and sill stones) on every example
+// and unseen facade: four-way joints counted over all stones, jamb, sill and lintel stones too.
+TEST(CellsMason, AshlarWalls) {
+    const std::string root = std::string(ACANTHUS_SOURCE_DIR);
+    Options o = centimetres();
+    o.bond = Bond::ashlar;
+    MasonSpec spec = kCm;
+    spec.stone = true;
+    for (const char* name :
+         {"tests/stdlib/cells/facades/shopfront", "tests/stdlib/cells/facades/chapel",
+          "tests/stdlib/cells/facades/terrace", "tests/stdlib/cells/facades/gable-lancet",
+          "tests/stdlib/cells/facades/warehouse", "tests/stdlib/cells/facades/ashlar-front",
+          "examples/facades/row-house", "examples/facades/gable", "examples/facades/oculus",
+          "examples/facades/insets"}) {
+        Facade f = Facade::from_svg_file(root + "/" + name + ".svg");
+        for (AshlarMethod method : {AshlarMethod::rules, AshlarMethod::merge}) {
+            o.ashlar_method = method;
+            MasonReport r = mason_check(f, texture(f, ashlar_tree(), o, 1).cells, spec);
+            std::cout << name << " ashlar " << to_string(method) << ": " << r << "\n";
+            SCOPED_TRACE(std::string(name) + " " + std::string(to_string(method)));
+            EXPECT_EQ(r.slivers, 0);
+            EXPECT_EQ(r.openings_without_head, 0);  // lintels over flat heads, arches
+            EXPECT_EQ(r.crowns_open, 0);
+            if (method == AshlarMethod::merge) {
+                EXPECT_GT(r.four_way, r.stones / 50);  // the paper's merge: what the rules avoid
+                continue;
+            }
+            EXPECT_GT(r.stones, 400);
+            EXPECT_LE(r.four_way, r.stones / 100);
+            // Stones on end stand only at jambs and the wall's ends (random heights there, as
+            // the paper's edge stones); left elsewhere: single units narrower than high where
+            // nothing wider fits (0.8% at most).
+            EXPECT_LE(r.stones_on_end, r.stones / 100);
+            // Unit squares only where nothing wider fits and never three in a row; two side by
+            // side at most 0.5% of stones.
+            EXPECT_EQ(r.unit_square_runs, 0);
+            EXPECT_LE(r.unit_square_pairs, r.stones / 100);
+        }
+    }
+}
+
+// Two elevations meeting at a building corner (docs/stdlib/cells.md, "Building corners"): the
+// front's right end and the side's left end, labelled corner-right and corner-left. Their courses
+// stand at the same heights above the ground, and at the corner each course ends in a stretcher
+// on one face and that stretcher's end, half a brick, on the other, by turns.
+TEST(CellsMason, BuildingCornerTurns) {
+    std::vector<FacadeShape> a, b;
+    a.push_back(shape(rect(0, 0, 317.3, 241.6), {"wall", "corner-right"}, "front"));
+    a.push_back(shape(rect(61.4, 52.8, 93.1, 118.7), {"window"}, "fw"));  // sill off gauge
+    b.push_back(shape(rect(0, 0, 263.9, 241.6), {"wall", "corner-left"}, "side"));
+    b.push_back(shape(rect(120.2, 70.1, 88.6, 96.3), {"window"}, "sw"));
+    Facade front = Facade::from_shapes(std::move(a), "front.svg");
+    Facade side = Facade::from_shapes(std::move(b), "side.svg");
+    Options o = centimetres();
+    for (Bond bond : {Bond::running, Bond::english, Bond::flemish}) {
+        o.bond = bond;
+        SCOPED_TRACE(std::string(to_string(bond)));
+        Texture tf = texture(front, brick_tree(), o, 1), ts = texture(side, brick_tree(), o, 1);
+        // Course lines as heights above the ground (both walls stand on y = 241.6).
+        auto lines = [&](const Texture& t) {
+            std::set<long> out;
+            for (const Cell& c : t.cells) {
+                Rect r;
+                if (mason_detail::coursed(c) && mason_detail::is_rect(c.polygon, r) &&
+                    std::abs(r.height() - 6.5) < 0.05)
+                    out.insert(std::lround((241.6 - r.y1) * 100));
+            }
+            return out;
+        };
+        EXPECT_EQ(lines(tf), lines(ts));
+        EXPECT_GT(lines(tf).size(), 25u);
+        // The piece at the corner in each course: its length in quarter bricks, by course.
+        auto at_corner = [&](const Texture& t, double x) {
+            std::map<long, int> out;
+            for (const Cell& c : t.cells) {
+                Rect r;
+                if (!mason_detail::coursed(c) || !mason_detail::is_rect(c.polygon, r) ||
+                    std::abs(r.height() - 6.5) > 0.05 ||
+                    std::min(std::abs(r.x0 - x), std::abs(r.x1 - x)) > 0.6)
+                    continue;
+                out[std::lround((241.6 - r.y1) / 7.5)] =
+                    static_cast<int>(std::lround((r.width() + 1) / 5.625));
+            }
+            return out;
+        };
+        const auto f = at_corner(tf, 317.3), s = at_corner(ts, 0);
+        ASSERT_GT(f.size(), 25u);
+        int compared = 0;
+        for (const auto& [course, len] : f) {
+            EXPECT_TRUE(len == 2 || len == 4) << "course " << course << ": " << len;
+            if (f.count(course + 1)) {
+                EXPECT_NE(len, f.at(course + 1)) << "course " << course;
+            }
+            if (!s.count(course)) continue;
+            ++compared;
+            EXPECT_EQ(len + s.at(course), 6) << "course " << course;  // a stretcher and its end
+        }
+        EXPECT_GT(compared, 25);
+        for (const Texture* t : {&tf, &ts}) {
+            MasonReport r = mason_check(t == &tf ? front : side, t->cells, kCm);
+            std::cout << to_string(bond) << (t == &tf ? " front: " : " side: ") << r << "\n";
+            EXPECT_EQ(r.straight_joints, 0);
+            // Left: Flemish on the side, a 3.6 cm piece beside the window's right jamb in the
+            // two courses its sill and head fall within (not a corner matter).
+            EXPECT_LE(r.narrow_pieces, bond == Bond::flemish && t == &ts ? 2 : 0);
+            EXPECT_EQ(r.courses_off_gauge, 0);
+            // 241.6 cm is 32 courses and 1.6 cm: two courses of 4.6 cm under the top.
+            EXPECT_LE(r.cut_courses, 2);
+        }
     }
 }

@@ -138,10 +138,12 @@ class Facade {
     std::shared_ptr<const detail::FacadeData> data_;
 };
 
-// How ashlar fills a face: `merge`, the paper's (a stone per grid unit, random neighbours
-// merged up to the maximum size); `rules`, beyond the paper (laid in reading order so that no
-// four stones meet at a point and no straight joint runs along more than ashlar_max_seam stones,
-// wherever some stone size allows it).
+// How ashlar fills a face: `rules`, the default, beyond the paper (the face's layout takes the
+// edges' units too; stones laid in reading order, none on end, so that no four stones meet at a
+// point, counted against the lintels, sills and voussoirs laid before, no unit squares touch and
+// no straight joint runs along more than ashlar_max_seam stones, wherever some size allows it);
+// `merge`, the paper's (edge stones, then a stone per free grid unit, random neighbours merged up
+// to the maximum size).
 enum class AshlarMethod { merge, rules };
 AshlarMethod parse_ashlar_method(std::string_view text);  // "merge" or "rules"; InputError else
 std::string_view to_string(AshlarMethod method);
@@ -157,13 +159,16 @@ struct Options {
     double ashlar_unit = 0;    // grid of the ashlar tool; 0: brick_height + mortar
     int ashlar_max_width = 4;  // ashlar stones, in grid units
     int ashlar_max_height = 2;
-    AshlarMethod ashlar_method = AshlarMethod::merge;
+    AshlarMethod ashlar_method = AshlarMethod::rules;
     int ashlar_max_seam = 4;    // rules: no straight joint along more stones than this
     double voussoir_width = 0;  // arch stones along the arc; 0: 2 x (brick_height + mortar)
     double arch_depth = 0;      // each row's depth; 0: brick_length + mortar
     int arch_rows = 1;          // rows of arch stones
     int lintel_bearing = 2;     // lintel past each jamb, in quarter bricks
     int lintel_courses = 2;     // lintel depth, in courses
+    // brick_tree(): heads up to this span get a soldier course, wider ones a lintel; 0: six
+    // brick lengths.
+    double soldier_span = 0;
     int quoin_long = 4, quoin_short = 2;  // jamb quoins, in quarter bricks, alternating by course
     double arc_tolerance = 0;  // chord error of drawn arcs; 0: mortar / 20 (at least 1e-3)
     // texture() refuses a facade estimated above this many cells before laying any: a million
@@ -304,10 +309,13 @@ Generator arch_stones();
 Generator arch_bricks();  // the same in bricks on end, a course wide (a rowlock arch)
 Generator ashlar();       // random ashlar on the grid tool, seeded
 Generator lintel();       // one stone over an opening, past each jamb
+// Bricks on end over an opening's straight head, a brick's length high, from jamb to jamb.
+Generator soldier_course();
 Generator quoins();       // long and short stones alternating up the sides
 Generator sill_stones();  // window bottom of a stone wall: the ashlar row under each sill
 
-// Ready trees: bricks with window bottoms, arches and corner bricks; ashlar framed the same
+// Ready trees: bricks with window bottoms, arches, heads (a soldier course over a straight head
+// up to Options::soldier_span, a lintel over a wider one) and corner bricks; ashlar framed the same
 // way (its window bottoms are sill stones, placed as "window_bottom"); RGB blocks. tree_for() picks
 // bricks or ashlar from options.bond.
 Node brick_tree();

@@ -1,0 +1,134 @@
+#include "ashlar_rules.hpp"
+
+#include <acanthus/progress.hpp>
+#include <utility>
+
+namespace acanthus::cells::detail {
+
+AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam, int first_id)
+    : g_(g),
+      rows_(g.rows()),
+      units_(g.units()),
+      max_w_(std::max(1, max_w)),
+      max_h_(std::max(1, max_h)),
+      max_seam_(max_seam),
+      first_id_(first_id),
+      owner_(static_cast<std::size_t>(g.rows()) * static_cast<std::size_t>(g.units()), kBlocked),
+      jamb_(owner_.size(), 0) {}
+
+void AshlarRules::lay(Random& random) {
+    for (int r = 0; r < rows_; ++r) {
+        for (int u = 0; u < units_; ++u)
+            if (get(r, u) == kEmpty) lay_at(r, u, random);
+        report_progress("ashlar rows", r + 1, rows_);
+    }
+}
+
+const Stone* AshlarRules::own(int id) const {
+    const int k = id - first_id_;
+    return k >= 0 && k < static_cast<int>(stones_.size()) ? &stones_[static_cast<std::size_t>(k)]
+                                                          : nullptr;
+}
+
+bool AshlarRules::fits(int r, int u, int h, int w) const {
+    for (int i = r; i < r + h; ++i)
+        for (int j = u; j < u + w; ++j)
+            if (get(i, j) != kEmpty) return false;
+    return true;
+}
+
+// 1 when four stones meet at grid point (i, j) with the candidate stone laid: the four units
+// round it held by four stones. A free unit counts as a stone of its own when it is the only
+// free one there (whatever is laid on it later is a fourth stone); two free units may yet share
+// one.
+int AshlarRules::cross(int r, int u, int h, int w, int i, int j) const {
+    constexpr int kCandidate = -3, kFuture = -4;
+    int id[4], empty = 0;
+    const int at[4][2] = {{i - 1, j - 1}, {i - 1, j}, {i, j - 1}, {i, j}};
+    for (int k = 0; k < 4; ++k) {
+        const int a = at[k][0], b = at[k][1];
+        if (a >= r && a < r + h && b >= u && b < u + w)
+            id[k] = kCandidate;
+        else
+            id[k] = get(a, b);
+        if (id[k] == kBlocked) return 0;
+        if (id[k] == kEmpty) ++empty, id[k] = kFuture;
+    }
+    if (empty > 1) return 0;
+    return id[0] != id[1] && id[2] != id[3] && id[0] != id[2] && id[1] != id[3];
+}
+
+int AshlarRules::faults(int r, int u, int h, int w) const {
+    int f = cross(r, u, h, w, r, u) + cross(r, u, h, w, r, u + w) + cross(r, u, h, w, r + h, u) +
+            cross(r, u, h, w, r + h, u + w);
+    // Unit squares: a last resort, and never two side by side.
+    if (h == 1 && w == 1) {
+        // A narrow unit (grid lines close together) alone would stand on end: worse.
+        const double uw = g_.xs[static_cast<std::size_t>(u + 1)] -
+                          g_.xs[static_cast<std::size_t>(u)],
+                     uh = g_.ys[static_cast<std::size_t>(r + 1)] -
+                          g_.ys[static_cast<std::size_t>(r)];
+        f += uh > 1.1 * uw && !jamb_[static_cast<std::size_t>(r * units_ + u)] ? 3 : 1;
+        for (auto [a, b] : {std::pair{r - 1, u}, {r + 1, u}, {r, u - 1}, {r, u + 1}})
+            if (const Stone* s = own(get(a, b)); s && s->h == 1 && s->w == 1) f += 2;
+    }
+    // A bed joint under the stone along more than max_seam stones of this layout.
+    const int x = u + w, y = r + h;
+    int run = 1;
+    for (int j = u - 1; j >= 0;) {
+        const Stone* s = own(get(y - 1, j));
+        if (!s || s->row + s->h != y) break;
+        ++run;
+        j = s->unit - 1;
+    }
+    for (int j = x; j < units_;) {
+        const Stone* s = own(get(y - 1, j));
+        if (!s || s->row + s->h != y) break;
+        ++run;
+        j = s->unit + s->w;
+    }
+    if (run > max_seam_ && y < rows_ && get(y, u) != kBlocked) ++f;
+    // A side joint right of it, likewise.
+    run = 1;
+    for (int i = r - 1; i >= 0;) {
+        const Stone* s = own(get(i, x - 1));
+        if (!s || s->unit + s->w != x) break;
+        ++run;
+        i = s->row - 1;
+    }
+    if (run > max_seam_ && get(r, x) != kBlocked) ++f;
+    return f;
+}
+
+void AshlarRules::lay_at(int r, int u, Random& random) {
+    // No stone on end: as wide as high at least (measured, the grid's units need not be
+    // square), up to max_w units wide; a single unit only where nothing else fits.
+    std::vector<std::pair<int, int>> sizes;
+    for (int h = 1; h <= max_h_; ++h)
+        for (int w = h; w <= max_w_; ++w)
+            if (fits(r, u, h, w) &&
+                (h == 1 ||
+                 g_.xs[static_cast<std::size_t>(u + w)] - g_.xs[static_cast<std::size_t>(u)] >=
+                     g_.ys[static_cast<std::size_t>(r + h)] - g_.ys[static_cast<std::size_t>(r)]))
+                sizes.emplace_back(h, w);
+    if (jamb_[static_cast<std::size_t>(r * units_ + u)])
+        for (int h = 2; h <= max_h_; ++h)
+            if (fits(r, u, h, 1)) sizes.emplace_back(h, 1);
+    for (std::size_t i = sizes.size(); i > 1; --i)  // Fisher-Yates with our own numbers
+        std::swap(
+            sizes[i - 1],
+            sizes[static_cast<std::size_t>(random.uniform_int(0, static_cast<long long>(i) - 1))]);
+    std::pair<int, int> best = sizes.front();
+    int best_faults = 1 << 30;
+    for (auto [h, w] : sizes) {
+        const int f = faults(r, u, h, w);
+        if (f < best_faults) best_faults = f, best = {h, w};
+        if (f == 0) break;
+    }
+    const int id = first_id_ + static_cast<int>(stones_.size());
+    stones_.push_back({r, u, best.first, best.second});
+    for (int i = r; i < r + best.first; ++i)
+        for (int j = u; j < u + best.second; ++j) at(i, j) = id;
+}
+
+}  // namespace acanthus::cells::detail

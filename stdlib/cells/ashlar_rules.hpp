@@ -1,0 +1,51 @@
+// The joint-rules ashlar of a face: stones laid in reading order on the ashlar grid, each of a
+// random size no taller than wide, chosen so that no four stones meet at a point, no unit
+// squares touch and no straight joint runs along more than `max_seam` stones where some size
+// allows it. Stones laid before (jambs, sills, lintels, arch rings) are known by the units they
+// hold, so the rules hold against them too.
+#pragma once
+
+#include <acanthus/random.hpp>
+#include <vector>
+
+#include "ashlar_merge.hpp"  // Stone
+#include "course_grid.hpp"
+
+namespace acanthus::cells::detail {
+
+class AshlarRules {
+  public:
+    static constexpr int kBlocked = -2, kEmpty = -1;
+    // Every unit starts blocked; free() opens one for the layout, hold() gives it to a stone
+    // laid before (ids from 0, distinct from the layout's own, which count on from `first_id`).
+    AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam, int first_id);
+
+    void free(int r, int u) { at(r, u) = kEmpty; }
+    // A unit against a jamb or the wall's end: a stone starting there may stand on end, one
+    // unit wide and up to max_h high, as the paper's edge stones take random heights.
+    void jamb(int r, int u) { jamb_[static_cast<std::size_t>(r * units_ + u)] = 1; }
+    void hold(int r, int u, int id) { at(r, u) = id; }
+    int get(int r, int u) const {
+        if (r < 0 || u < 0 || r >= rows_ || u >= units_) return kBlocked;
+        return owner_[static_cast<std::size_t>(r * units_ + u)];
+    }
+    // Lays every free unit; whole rows before any becomes a cell, each reported as progress.
+    void lay(Random& random);
+    const std::vector<Stone>& stones() const { return stones_; }
+
+  private:
+    int& at(int r, int u) { return owner_[static_cast<std::size_t>(r * units_ + u)]; }
+    bool fits(int r, int u, int h, int w) const;
+    int faults(int r, int u, int h, int w) const;
+    int cross(int r, int u, int h, int w, int i, int j) const;
+    const Stone* own(int id) const;  // a stone of this layout, or null
+    void lay_at(int r, int u, Random& random);
+
+    const CourseGrid& g_;
+    int rows_, units_, max_w_, max_h_, max_seam_, first_id_;
+    std::vector<int> owner_;
+    std::vector<char> jamb_;
+    std::vector<Stone> stones_;
+};
+
+}  // namespace acanthus::cells::detail
