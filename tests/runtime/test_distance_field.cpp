@@ -409,7 +409,9 @@ TEST(DistanceField, LargeGridsMatchBruteForce) {
             }
             ASSERT_EQ(f.squared_distance(p), all) << what << " pixel " << p;
             ASSERT_EQ(f.boundary_squared_distance(p), boundary) << what << " pixel " << p;
-            if (f.nearest_site(p) >= 0) ASSERT_EQ(site_distance(f, p), all) << what;
+            if (f.nearest_site(p) >= 0) {
+                ASSERT_EQ(site_distance(f, p), all) << what;
+            }
         }
     };
     DistanceField few(w, h, /*with_sites=*/false);
