@@ -38,7 +38,7 @@ class HoleFinder {
         signed char fits = 0;  // a motif fits here: 1 yes, -1 no, 0 not asked yet
         bool open = true;
     };
-    double nearest_placed(const Arrangement& pattern, Point p, double cap) const;
+    class Placed;  // the placed motifs' centres, for nearest queries
     // Asked of the panel only for samples that could win: most never are.
     bool fits(Sample& s) const;
     double depth(Sample& s) const;

@@ -124,6 +124,9 @@ int Synthesis::next_seed() const {
 // A restart needs an empty circle a tenth wider than the spacing: a honeycomb's own holes are
 // exactly one spacing across the centre, and must stay empty.
 constexpr double kRestartRadius = 1.1;
+// Holes come largest first and a fruitless restart changes nothing, so after this many in a row
+// the smaller circles left would grow nothing either.
+constexpr int kFruitlessInARow = 16;
 
 void Synthesis::run() {
     auto begin = std::chrono::steady_clock::now();
@@ -131,19 +134,31 @@ void Synthesis::run() {
         return options_.max_elements == 0 ||
                static_cast<long>(placed_.size()) < options_.max_elements;
     };
-    do grow_front();
-    while (room() && restart());
+    grow_front();
+    for (int in_a_row = 0;
+         room() && in_a_row < kFruitlessInARow && options_.fill_holes && !starts_.empty();) {
+        Hole hole;
+        ++stats_.hole_searches;
+        if (!holes().find(pattern_, kRestartRadius * spacing_, hole)) break;
+        const std::size_t before = placed_.size();
+        if (restart(hole)) grow_front();
+        if (placed_.size() > before) {
+            // Grown: the circle is smaller now; only its middle is never offered again.
+            holes_->exclude(hole.center, 0.5 * spacing_);
+            in_a_row = 0;
+        } else {
+            // Nothing grew: the whole circle is closed, so no restart is tried there twice.
+            holes_->exclude(hole.center, hole.radius);
+            ++stats_.fruitless;
+            ++in_a_row;
+        }
+    }
     if (on_lattice() && room()) repair_lattice();
     stats_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
-bool Synthesis::restart() {
-    if (!options_.fill_holes || starts_.empty()) return false;
-    Hole hole;
-    if (!holes().find(pattern_, kRestartRadius * spacing_, hole)) return false;
-    // Whatever grows from here, this circle is not offered again.
-    holes_->exclude(hole.center, 0.5 * spacing_);
+bool Synthesis::restart(const Hole& hole) {
     ++stats_.restarts;
     // Next to motifs, the seed goes where one of them wants a neighbour (an open slot of its
     // reference ring, nearest the hole's centre), so a lattice continues in phase; in an empty
@@ -171,7 +186,7 @@ bool Synthesis::restart() {
     if (on_lattice()) {
         // The lattice continues in phase, also in an empty lobe.
         Lattice::Spot spot = lattice_->nearest(origin_, at);
-        if (pattern_.nearest(spot.at, 0.5 * spacing_, -1) >= 0) return true;
+        if (pattern_.nearest(spot.at, 0.5 * spacing_, -1) >= 0) return false;
         at = spot.at;
         symbol = lattice_->sites[static_cast<std::size_t>(spot.site)].symbol;
     }
@@ -298,10 +313,10 @@ void Synthesis::grow(int id) {
         target.push_back({offsets[k], n.symbol, n.source});
         target_nodes.push_back(neighbours[k]);
     }
-    Choice choice = choose(
-        pattern_[id], target,
-        options_.two_ring && !on_lattice() ? outer_ring(id, target_nodes) : std::vector<OuterEntry>{},
-        *candidates);
+    Choice choice = choose(pattern_[id], target,
+                           options_.two_ring && !on_lattice() ? outer_ring(id, target_nodes)
+                                                              : std::vector<OuterEntry>{},
+                           *candidates);
     if (choice.element < 0) return drop(id);
     double scale = random_.uniform(options_.scale_min, options_.scale_max);
     double jitter = options_.angle_jitter > 0
@@ -329,7 +344,8 @@ void Synthesis::grow(int id) {
     if (lattice_ && !phase_) {
         // The first motif puts the lattice down: its site's point is where it stands.
         phase_ = true;
-        origin_ = n.position - lattice_->sites[static_cast<std::size_t>(lattice_->site_of[c])].offset;
+        origin_ =
+            n.position - lattice_->sites[static_cast<std::size_t>(lattice_->site_of[c])].offset;
     }
     const auto& ring = reference_.rings[c];
     for (std::size_t i = 0; i < target_nodes.size(); ++i) {

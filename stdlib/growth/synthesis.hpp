@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "arrangement.hpp"
-#include "flow_field.hpp"
 #include "fidelity.hpp"
+#include "flow_field.hpp"
 #include "hole_finder.hpp"
 #include "lattice.hpp"
 #include "neighbourhood_match.hpp"
@@ -55,9 +55,9 @@ class Synthesis {
 
     int next_seed() const;
     void grow_front();
-    // Plants a seed in the largest empty circle that holds a motif at the reference's spacing,
-    // linked to the motifs around it; false when no such circle is left.
-    bool restart();
+    // Plants a seed in `hole` (the largest empty circle that holds a motif at the reference's
+    // spacing), linked to the motifs around it; false when none could be planted.
+    bool restart(const Hole& hole);
     HoleFinder& holes();  // made on first use, over the starts planted by then
     void grow(int seed);
     Choice choose(const Node& seed, const std::vector<RingEntry>& target,
@@ -104,7 +104,7 @@ class Synthesis {
     double spacing_ = 1;
     std::optional<HoleFinder> holes_;
     std::optional<Lattice> lattice_;
-    bool phase_ = false;        // the lattice's origin is set (by the first motif)
+    bool phase_ = false;  // the lattice's origin is set (by the first motif)
     Point origin_;
     std::set<Lattice::Spot> planted_spots_;  // completion seeds, each point once
     std::set<Lattice::Spot> reopened_;       // emptied by the repair

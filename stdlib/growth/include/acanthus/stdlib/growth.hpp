@@ -173,15 +173,17 @@ struct Motif {
 };
 
 struct SynthesisStats {
-    long steps = 0;      // seeds taken from the queue
-    long seeds = 0;      // seeds made (start, ring and l_long seeds)
-    long dropped = 0;    // seeds dropped: outside, no match, motif does not fit
-    long merged = 0;     // l_short merges
-    long restarts = 0;   // seeds planted in empty circles after the growth front stopped
-    int lattice_sites = 0;  // sites per cell of the reference's lattice (0: none, or not used)
-    long completed = 0;     // seeds planted on empty lattice points next to motifs
-    long repaired = 0;      // motifs removed by the lattice repair (and grown again)
-    double seconds = 0;  // wall time (reported only, never used)
+    long steps = 0;          // seeds taken from the queue
+    long seeds = 0;          // seeds made (start, ring and l_long seeds)
+    long dropped = 0;        // seeds dropped: outside, no match, motif does not fit
+    long merged = 0;         // l_short merges
+    long restarts = 0;       // seeds planted in empty circles after the growth front stopped
+    long fruitless = 0;      // restarts from which no motif grew (each circle then closed for good)
+    long hole_searches = 0;  // searches for the largest empty circle
+    int lattice_sites = 0;   // sites per cell of the reference's lattice (0: none, or not used)
+    long completed = 0;      // seeds planted on empty lattice points next to motifs
+    long repaired = 0;       // motifs removed by the lattice repair (and grown again)
+    double seconds = 0;      // wall time (reported only, never used)
     double relax_seconds = 0;
     // How far the result is from the reference's offsets: RMS over the links between motifs of
     // |actual offset - wanted offset|, in mean reference edge lengths (what eq. 5 minimizes).
