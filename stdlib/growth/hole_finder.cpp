@@ -104,7 +104,7 @@ bool HoleFinder::find(const Arrangement& pattern, double at_least, Hole& hole) {
         if (!s.open) continue;
         double free = placed.nearest(s.at, cap);
         if (free < at_least || !fits(s)) {
-            s.open = false;  // motifs are never taken away, so it stays covered
+            s.open = false;  // until reopen_covered()
             continue;
         }
         double score = std::min(free, depth(s) + spacing_);
@@ -121,7 +121,12 @@ bool HoleFinder::find(const Arrangement& pattern, double at_least, Hole& hole) {
 
 void HoleFinder::exclude(Point p, double radius) {
     for (Sample& s : samples_)
-        if (distance(s.at, p) <= radius) s.open = false;
+        if (distance(s.at, p) <= radius) s.open = false, s.excluded = true;
+}
+
+void HoleFinder::reopen_covered() {
+    for (Sample& s : samples_)
+        if (!s.excluded && s.fits >= 0) s.open = true;
 }
 
 double HoleFinder::largest(const Arrangement& pattern) {

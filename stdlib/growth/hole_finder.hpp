@@ -28,6 +28,9 @@ class HoleFinder {
     bool find(const Arrangement& pattern, double at_least, Hole& hole);
     // Never offer this sample's neighbourhood again (a restart there placed nothing).
     void exclude(Point p, double radius);
+    // Samples set aside because a motif was near are asked again: relaxation moves motifs, so
+    // one may have left. Excluded samples stay out.
+    void reopen_covered();
     // The largest empty circle over all samples that can hold a motif (0 when none).
     double largest(const Arrangement& pattern);
 
@@ -37,6 +40,7 @@ class HoleFinder {
         double depth = -1;     // panel clearance, for ties (-1: not asked yet)
         signed char fits = 0;  // a motif fits here: 1 yes, -1 no, 0 not asked yet
         bool open = true;
+        bool excluded = false;
     };
     class Placed;  // the placed motifs' centres, for nearest queries
     // Asked of the panel only for samples that could win: most never are.

@@ -73,6 +73,10 @@ class Synthesis {
     void relax_around(int centre);
     bool still_valid(int id) const;
     int priority(int symbol) const;
+    // Options::w4: how far `symbol` is over its reference share among the placed motifs and the
+    // waiting seeds (as count_coming() last counted them).
+    double excess(int symbol) const;
+    void count_coming();
 
     // On a lattice (lattice.hpp; Options::lattice, mode none): every seed is put on the lattice
     // point nearest it before it grows, or dropped when none is within a third of the spacing;
@@ -112,6 +116,11 @@ class Synthesis {
     std::set<std::pair<double, int>> queue_;  // (distance from the start, node)
     std::vector<Point> starts_;
     std::vector<int> placed_;
+    int restart_seed_ = -1;                // the last restart's seed
+    std::vector<long> placed_per_symbol_;  // per symbol id
+    std::vector<double> reference_share_;  // per symbol id
+    std::vector<long> coming_;             // per symbol id: placed and waiting (count_coming)
+    long coming_total_ = 0;
     SynthesisStats stats_;
 };
 

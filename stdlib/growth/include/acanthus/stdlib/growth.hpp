@@ -102,10 +102,14 @@ class Reference {
 
 struct Options {
     Mode mode = Mode::none;
-    bool relax = true;      // section 5.5 least squares after every growth step
-    double w1 = 1.0;        // position difference, per mean reference edge length
-    double w2 = 1.0;        // symbol differs
-    double w3 = 100.0;      // the same reference element (sub-id): avoids copying it verbatim
+    bool relax = true;  // section 5.5 least squares after every growth step
+    double w1 = 1.0;    // position difference, per mean reference edge length
+    double w2 = 1.0;    // symbol differs
+    double w3 = 100.0;  // the same reference element (sub-id): avoids copying it verbatim
+    // Beyond the paper: per neighbour a candidate would add, how far that neighbour's symbol is
+    // already over its reference share (in shares: 0.05 is 5 points), so the mix stays the
+    // reference's in small panels too. 0: the paper's error.
+    double w4 = 20.0;
     long max_elements = 0;  // 0: until no seed is left
     // When the growth front stops, restart it in the largest empty circle that holds a motif at
     // the reference's spacing, until none is left (false: stop with the front, as the paper).
