@@ -253,7 +253,8 @@ def case_bad_input():
               'empty-group.svg: <g id="forgotten"> (line 1): carries data-symbol="b" but owns no shape'),
              ("guides", ["--param", f"growth_guides={bad / 'guides.svg'}"], "guides.svg"),
              ("mode", ["--param", "growth_mode=sideways"], "sideways"),
-             ("flow-without-strokes", ["--param", "growth_mode=flow"], "flow stroke")]
+             ("flow-without-strokes", ["--param", "growth_mode=flow"], "flow stroke"),
+             ("negative-w4", ["--param", "growth_w4=-1"], "w4 must be finite and >= 0")]
     for name, args, named in cases:
         _, p = run("bad-" + name, *args, expect=1)
         out = WORK / f"bad-{name}.svg"
