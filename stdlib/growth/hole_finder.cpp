@@ -38,13 +38,13 @@ class HoleFinder::Placed {
 };
 
 HoleFinder::HoleFinder(const Panel& panel, const std::vector<Point>& starts, double spacing,
-                       double motif_radius, double tolerance)
+                       double motif_radius, double tolerance, double max_samples)
     : panel_(panel), spacing_(spacing), motif_radius_(motif_radius), tolerance_(tolerance) {
     Rect box = panel.bounds();
     if (!(spacing > 0) || !(box.width() > 0) || !(box.height() > 0)) return;
     // A quarter spacing finds a hole's radius within a fifth of a spacing; a huge panel gets a
-    // coarser grid so that the search stays under about 250,000 samples (each asks the panel).
-    double step = std::max(spacing / 4, std::sqrt(box.width() * box.height() / 2.5e5));
+    // coarser grid so that the search stays under `max_samples`.
+    double step = std::max(spacing / 4, std::sqrt(box.width() * box.height() / max_samples));
     const long nx = static_cast<long>(std::ceil(box.width() / step));
     const long ny = static_cast<long>(std::ceil(box.height() / step));
     auto at = [&](long i, long j) {

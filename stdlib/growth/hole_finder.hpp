@@ -19,9 +19,9 @@ struct Hole {
 class HoleFinder {
   public:
     // `spacing`: the reference's nearest-neighbour distance; `motif_radius`: the smallest motif
-    // that may go in a hole.
+    // that may go in a hole; `max_samples`: the grid is coarser beyond it (each asks the panel).
     HoleFinder(const Panel& panel, const std::vector<Point>& starts, double spacing,
-               double motif_radius, double tolerance);
+               double motif_radius, double tolerance, double max_samples = 2.5e5);
 
     // The sample that can hold a motif farthest from every placed node (ties: deepest in the
     // panel), when its distance reaches `at_least`; samples nearer than that are done for good.

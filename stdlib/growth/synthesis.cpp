@@ -240,7 +240,14 @@ HoleFinder& Synthesis::holes() {
     if (!holes_) {
         double smallest = INFINITY;
         for (double r : reference_.radius) smallest = std::min(smallest, r);
-        holes_.emplace(panel_, starts_, spacing_, smallest * options_.scale_min, tolerance_);
+        // A few hundred samples per motif that may still be placed are plenty: a cap of 40 motifs
+        // in a panel that holds a million needs no fine grid over all of it.
+        double budget = 2.5e5;
+        if (options_.max_elements > 0)
+            budget = std::min(budget,
+                              std::max(4096.0, 256.0 * static_cast<double>(options_.max_elements)));
+        holes_.emplace(panel_, starts_, spacing_, smallest * options_.scale_min, tolerance_,
+                       budget);
     }
     return *holes_;
 }
