@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <acanthus/error.hpp>
+#include <algorithm>
 #include <cmath>
 
 namespace acanthus::growth::detail {
@@ -31,6 +32,7 @@ FlowField::FlowField(const std::vector<std::vector<Point>>& strokes, double spac
         total += l;
     }
     if (strokes.empty()) throw InputError(source + ": flow mode needs at least one flow stroke");
+    max_samples = std::max<std::size_t>(max_samples, 1);
     if (!(spacing > 0)) spacing = total / 100;
     spacing = std::max(spacing, total / static_cast<double>(max_samples));
     // Walk each stroke by arc length, one sample per `spacing`, at least one per stroke.
@@ -47,6 +49,18 @@ FlowField::FlowField(const std::vector<std::vector<Point>>& strokes, double spac
             }
             walked += seg;
         }
+    }
+    // Every stroke gives at least one sample, so thousands of short strokes would give thousands
+    // of them, and the dense solve below grows with their cube: thinned evenly to the budget.
+    if (samples_.size() > max_samples) {
+        const std::size_t all = samples_.size();
+        for (std::size_t k = 0; k < max_samples; ++k) {
+            const std::size_t from = k * all / max_samples;
+            samples_[k] = samples_[from];
+            directions_[k] = directions_[from];
+        }
+        samples_.resize(max_samples);
+        directions_.resize(max_samples);
     }
     // Centre and scale the samples so that the system is well conditioned at any unit.
     double sx = 0, sy = 0;

@@ -11,7 +11,8 @@ namespace acanthus::growth::detail {
 
 class FlowField {
   public:
-    // Samples every `spacing` along each stroke (fewer when there would be over `max_samples`).
+    // Samples every `spacing` along each stroke, never more than `max_samples` in all (fewer
+    // per stroke, and with more strokes than that, evenly chosen ones).
     // Throws InputError naming `source` and the stroke for one with no length or a non-finite
     // point.
     FlowField(const std::vector<std::vector<Point>>& strokes, double spacing,

@@ -96,8 +96,8 @@ namespace {
 
 void check_options(const Options& o) {
     auto bad = [](const std::string& why) { throw InputError("growth: " + why); };
-    for (double w : {o.w1, o.w2, o.w3})
-        if (!std::isfinite(w) || w < 0) bad("weights w1, w2, w3 must be finite and >= 0");
+    for (double w : {o.w1, o.w2, o.w3, o.w4})
+        if (!std::isfinite(w) || w < 0) bad("weights w1, w2, w3, w4 must be finite and >= 0");
     if (!(o.scale_min > 0) || !(o.scale_max >= o.scale_min) || !std::isfinite(o.scale_max))
         bad("scale range must satisfy 0 < scale_min <= scale_max");
     if (!std::isfinite(o.angle_jitter) || o.angle_jitter < 0) bad("angle_jitter must be >= 0");

@@ -1,19 +1,50 @@
 #include "hole_finder.hpp"
 
 #include <algorithm>
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <deque>
+#include <iterator>
 
 namespace acanthus::growth::detail {
 
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+
+// The placed motifs' centres, packed once per search: a sample far from every motif then costs
+// a logarithmic query, where the arrangement's grid would visit every cell out to the motif.
+class HoleFinder::Placed {
+  public:
+    explicit Placed(const Arrangement& pattern) {
+        std::vector<BPoint> points;
+        for (const Node& n : pattern.nodes())
+            if (n.placed()) points.emplace_back(n.position.x, n.position.y);
+        tree_ = Tree(points.begin(), points.end());
+    }
+    // The distance to the nearest placed centre, or `cap` when none is nearer.
+    double nearest(Point p, double cap) const {
+        double best = cap;
+        const BPoint q(p.x, p.y);
+        for (auto it = tree_.qbegin(bgi::nearest(q, 1)); it != tree_.qend(); ++it)
+            best = std::min(best, bg::distance(*it, q));
+        return best;
+    }
+
+  private:
+    using BPoint = bg::model::point<double, 2, bg::cs::cartesian>;
+    using Tree = bgi::rtree<BPoint, bgi::quadratic<16>>;
+    Tree tree_;
+};
+
 HoleFinder::HoleFinder(const Panel& panel, const std::vector<Point>& starts, double spacing,
-                       double motif_radius, double tolerance)
+                       double motif_radius, double tolerance, double max_samples)
     : panel_(panel), spacing_(spacing), motif_radius_(motif_radius), tolerance_(tolerance) {
     Rect box = panel.bounds();
     if (!(spacing > 0) || !(box.width() > 0) || !(box.height() > 0)) return;
     // A quarter spacing finds a hole's radius within a fifth of a spacing; a huge panel gets a
-    // coarser grid so that the search stays under about a million samples.
-    double step = std::max(spacing / 4, std::sqrt(box.width() * box.height() / 1e6));
+    // coarser grid so that the search stays under `max_samples`.
+    double step = std::max(spacing / 4, std::sqrt(box.width() * box.height() / max_samples));
     const long nx = static_cast<long>(std::ceil(box.width() / step));
     const long ny = static_cast<long>(std::ceil(box.height() / step));
     auto at = [&](long i, long j) {
@@ -64,32 +95,25 @@ double HoleFinder::depth(Sample& s) const {
     return s.depth;
 }
 
-double HoleFinder::nearest_placed(const Arrangement& pattern, Point p, double cap) const {
-    double best = cap;
-    for (int id : pattern.near(p, cap)) {
-        const Node& n = pattern[id];
-        if (n.placed()) best = std::min(best, distance(n.position, p));
-    }
-    return best;
-}
-
 bool HoleFinder::find(const Arrangement& pattern, double at_least, Hole& hole) {
     // Beyond three spacings every sample is empty enough; depth then picks the middle of a lobe.
     const double cap = std::max(3 * spacing_, at_least);
+    const Placed placed(pattern);
     double best_score = -1;
     for (Sample& s : samples_) {
         if (!s.open) continue;
-        // A small search settles most samples; only the open ones look farther.
-        double free = nearest_placed(pattern, s.at, at_least);
-        if (free >= at_least) free = nearest_placed(pattern, s.at, cap);
+        double free = placed.nearest(s.at, cap);
         if (free < at_least || !fits(s)) {
-            s.open = false;  // motifs are never taken away, so it stays covered
+            s.open = false;  // until reopen_covered()
             continue;
         }
         double score = std::min(free, depth(s) + spacing_);
         if (score > best_score) {
             best_score = score;
             hole = {s.at, free};
+            // Nothing scores above the cap, and ties go to the first sample: the search is over
+            // (an empty panel would otherwise ask about every sample on every search).
+            if (score >= cap) break;
         }
     }
     return best_score >= 0;
@@ -97,19 +121,20 @@ bool HoleFinder::find(const Arrangement& pattern, double at_least, Hole& hole) {
 
 void HoleFinder::exclude(Point p, double radius) {
     for (Sample& s : samples_)
-        if (distance(s.at, p) <= radius) s.open = false;
+        if (distance(s.at, p) <= radius) s.open = false, s.excluded = true;
+}
+
+void HoleFinder::reopen_covered() {
+    for (Sample& s : samples_)
+        if (!s.excluded && s.fits >= 0) s.open = true;
 }
 
 double HoleFinder::largest(const Arrangement& pattern) {
     double best = 0;
     const double cap = 1e3 * spacing_;
+    const Placed placed(pattern);
     for (Sample& s : samples_) {
-        // Grow the search until it meets a motif: holes are usually small.
-        double free = cap;
-        for (double r = spacing_; r < cap; r *= 4) {
-            free = nearest_placed(pattern, s.at, r);
-            if (free < r) break;
-        }
+        double free = placed.nearest(s.at, cap);
         if (free > best && fits(s)) best = free;
     }
     return best;

@@ -19,15 +19,18 @@ struct Hole {
 class HoleFinder {
   public:
     // `spacing`: the reference's nearest-neighbour distance; `motif_radius`: the smallest motif
-    // that may go in a hole.
+    // that may go in a hole; `max_samples`: the grid is coarser beyond it (each asks the panel).
     HoleFinder(const Panel& panel, const std::vector<Point>& starts, double spacing,
-               double motif_radius, double tolerance);
+               double motif_radius, double tolerance, double max_samples = 2.5e5);
 
     // The sample that can hold a motif farthest from every placed node (ties: deepest in the
     // panel), when its distance reaches `at_least`; samples nearer than that are done for good.
     bool find(const Arrangement& pattern, double at_least, Hole& hole);
     // Never offer this sample's neighbourhood again (a restart there placed nothing).
     void exclude(Point p, double radius);
+    // Samples set aside because a motif was near are asked again: relaxation moves motifs, so
+    // one may have left. Excluded samples stay out.
+    void reopen_covered();
     // The largest empty circle over all samples that can hold a motif (0 when none).
     double largest(const Arrangement& pattern);
 
@@ -37,8 +40,9 @@ class HoleFinder {
         double depth = -1;     // panel clearance, for ties (-1: not asked yet)
         signed char fits = 0;  // a motif fits here: 1 yes, -1 no, 0 not asked yet
         bool open = true;
+        bool excluded = false;
     };
-    double nearest_placed(const Arrangement& pattern, Point p, double cap) const;
+    class Placed;  // the placed motifs' centres, for nearest queries
     // Asked of the panel only for samples that could win: most never are.
     bool fits(Sample& s) const;
     double depth(Sample& s) const;

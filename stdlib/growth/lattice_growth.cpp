@@ -64,6 +64,7 @@ void Synthesis::complete_lattice() {
 
 void Synthesis::remove_motif(int id) {
     reopened_.insert(lattice_->nearest(origin_, pattern_[id].position));
+    --placed_per_symbol_[static_cast<std::size_t>(pattern_[id].symbol)];
     pattern_.kill(id);
     placed_.erase(std::find(placed_.begin(), placed_.end(), id));
     ++stats_.repaired;

@@ -64,6 +64,11 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         lattice_ = detect_lattice(reference);
         if (lattice_) stats_.lattice_sites = static_cast<int>(lattice_->sites.size());
     }
+    placed_per_symbol_.assign(reference.symbols.size(), 0);
+    reference_share_.assign(reference.symbols.size(), 0.0);
+    for (int s : reference.symbol)
+        reference_share_[static_cast<std::size_t>(s)] +=
+            1.0 / static_cast<double>(reference.symbol.size());
     for (const std::string& name : reference.symbols) {
         auto it = options.priority.find(name);
         priority_.push_back(it == options.priority.end() ? 0 : it->second);
@@ -72,6 +77,26 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
 }
 
 int Synthesis::priority(int symbol) const { return symbol >= 0 ? priority_[symbol] : 0; }
+
+double Synthesis::excess(int symbol) const {
+    if (symbol < 0 || coming_total_ == 0) return 0.0;
+    const auto s = static_cast<std::size_t>(symbol);
+    return static_cast<double>(coming_[s]) / static_cast<double>(coming_total_) -
+           reference_share_[s];
+}
+
+void Synthesis::count_coming() {
+    // The seeds waiting with a symbol are motifs of it to come: counted, so that a symbol the
+    // front already carries too much of is not added again.
+    coming_ = placed_per_symbol_;
+    coming_total_ = static_cast<long>(placed_.size());
+    for (auto [d, id] : queue_) {
+        const int symbol = pattern_[id].symbol;
+        if (symbol < 0) continue;
+        ++coming_[static_cast<std::size_t>(symbol)];
+        ++coming_total_;
+    }
+}
 
 int Synthesis::plant(const std::vector<Point>& starts) {
     int planted = 0;
@@ -124,6 +149,9 @@ int Synthesis::next_seed() const {
 // A restart needs an empty circle a tenth wider than the spacing: a honeycomb's own holes are
 // exactly one spacing across the centre, and must stay empty.
 constexpr double kRestartRadius = 1.1;
+// Holes come largest first and a fruitless restart changes nothing, so after this many in a row
+// the smaller circles left would grow nothing either.
+constexpr int kFruitlessInARow = 16;
 
 void Synthesis::run() {
     auto begin = std::chrono::steady_clock::now();
@@ -131,19 +159,38 @@ void Synthesis::run() {
         return options_.max_elements == 0 ||
                static_cast<long>(placed_.size()) < options_.max_elements;
     };
-    do grow_front();
-    while (room() && restart());
+    grow_front();
+    bool reopened = false;  // since the last motif placed
+    for (int in_a_row = 0;
+         room() && in_a_row < kFruitlessInARow && options_.fill_holes && !starts_.empty();) {
+        Hole hole;
+        ++stats_.hole_searches;
+        if (!holes().find(pattern_, kRestartRadius * spacing_, hole)) {
+            // Before giving up, once after growth: relaxation may have opened a covered hole.
+            if (reopened) break;
+            holes_->reopen_covered();
+            reopened = true;
+            continue;
+        }
+        const std::size_t before = placed_.size();
+        if (restart(hole)) grow_front();
+        if (placed_.size() > before) {
+            // Offered again while it stays as wide: each such restart adds a motif, so this ends.
+            in_a_row = 0;
+            reopened = false;
+        } else {
+            // Never retried; only its middle, as a seed off the middle may still grow there.
+            holes_->exclude(hole.center, 0.5 * spacing_);
+            ++stats_.fruitless;
+            ++in_a_row;
+        }
+    }
     if (on_lattice() && room()) repair_lattice();
     stats_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
-bool Synthesis::restart() {
-    if (!options_.fill_holes || starts_.empty()) return false;
-    Hole hole;
-    if (!holes().find(pattern_, kRestartRadius * spacing_, hole)) return false;
-    // Whatever grows from here, this circle is not offered again.
-    holes_->exclude(hole.center, 0.5 * spacing_);
+bool Synthesis::restart(const Hole& hole) {
     ++stats_.restarts;
     // Next to motifs, the seed goes where one of them wants a neighbour (an open slot of its
     // reference ring, nearest the hole's centre), so a lattice continues in phase; in an empty
@@ -171,12 +218,13 @@ bool Synthesis::restart() {
     if (on_lattice()) {
         // The lattice continues in phase, also in an empty lobe.
         Lattice::Spot spot = lattice_->nearest(origin_, at);
-        if (pattern_.nearest(spot.at, 0.5 * spacing_, -1) >= 0) return true;
+        if (pattern_.nearest(spot.at, 0.5 * spacing_, -1) >= 0) return false;
         at = spot.at;
         symbol = lattice_->sites[static_cast<std::size_t>(spot.site)].symbol;
     }
     starts_.push_back(at);
     int id = new_seed(at, symbol);
+    restart_seed_ = id;
     // Linked to the motifs around it, the seed is matched against them like any other.
     for (int other : pattern_.near(at, 1.6 * spacing_)) {
         const Node& o = pattern_[other];
@@ -192,7 +240,14 @@ HoleFinder& Synthesis::holes() {
     if (!holes_) {
         double smallest = INFINITY;
         for (double r : reference_.radius) smallest = std::min(smallest, r);
-        holes_.emplace(panel_, starts_, spacing_, smallest * options_.scale_min, tolerance_);
+        // A few hundred samples per motif that may still be placed are plenty: a cap of 40 motifs
+        // in a panel that holds a million needs no fine grid over all of it.
+        double budget = 2.5e5;
+        if (options_.max_elements > 0)
+            budget = std::min(budget,
+                              std::max(4096.0, 256.0 * static_cast<double>(options_.max_elements)));
+        holes_.emplace(panel_, starts_, spacing_, smallest * options_.scale_min, tolerance_,
+                       budget);
     }
     return *holes_;
 }
@@ -240,18 +295,33 @@ Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntr
     const bool rotate = options_.mode == Mode::rotation;
     const double turn = flow_ ? flow_->angle(seed.position) : 0.0;
     const bool by_position = on_lattice();
+    const bool balance = !by_position && options_.w4 > 0 && reference_.symbols.size() > 1;
     for (int c : candidates) {
         if (!by_position && seed.symbol >= 0 && reference_.symbol[c] != seed.symbol) continue;
         std::vector<int> slots;
         RingMatch m =
             by_position ? match_by_position(target, rings_[c], weights_, 0.3 * spacing_, slots)
             : options_.two_ring
-                ? match_two_ring(target, rings_[c], target_outer, outer_rings_[c], weights_, rotate,
-                                 turn, 0.5 * l_,
-                                 best.empty() ? INFINITY : best_error + 1e-9 * (1 + best_error))
+                ? match_two_ring(
+                      target, rings_[c], target_outer, outer_rings_[c], weights_, rotate, turn,
+                      0.5 * l_,
+                      // w4 may lower an error, so nothing is cut early with it
+                      best.empty() || balance ? INFINITY : best_error + 1e-9 * (1 + best_error))
                 : match_ring(target, rings_[c], weights_, rotate, turn);
         if (!m.found()) continue;
-        double slack = best.empty() ? 0.0 : 1e-9 * (1 + best_error);
+        if (balance) {
+            // The ring slots no target neighbour takes become seeds of their symbols.
+            const std::size_t size = rings_[c].size();
+            std::vector<bool> taken(size, false);
+            for (std::size_t i = 0; i < target.size() && size > 0; ++i)
+                taken[(static_cast<std::size_t>(m.shift) + i) % size] = true;
+            double over = seed.symbol < 0 ? excess(reference_.symbol[c]) : 0.0;
+            for (std::size_t k = 0; k < size; ++k)
+                if (!taken[k]) over += excess(rings_[c][k].symbol);
+            m.error += options_.w4 * over;
+        }
+        // w4 may make errors negative: the slack stays positive.
+        double slack = best.empty() ? 0.0 : 1e-9 * (1 + std::abs(best_error));
         if (best.empty() || m.error < best_error - slack) {
             best.clear();
             best_error = m.error;
@@ -298,10 +368,11 @@ void Synthesis::grow(int id) {
         target.push_back({offsets[k], n.symbol, n.source});
         target_nodes.push_back(neighbours[k]);
     }
-    Choice choice = choose(
-        pattern_[id], target,
-        options_.two_ring && !on_lattice() ? outer_ring(id, target_nodes) : std::vector<OuterEntry>{},
-        *candidates);
+    if (options_.w4 > 0 && reference_.symbols.size() > 1 && !on_lattice()) count_coming();
+    Choice choice = choose(pattern_[id], target,
+                           options_.two_ring && !on_lattice() ? outer_ring(id, target_nodes)
+                                                              : std::vector<OuterEntry>{},
+                           *candidates);
     if (choice.element < 0) return drop(id);
     double scale = random_.uniform(options_.scale_min, options_.scale_max);
     double jitter = options_.angle_jitter > 0
@@ -311,6 +382,19 @@ void Synthesis::grow(int id) {
                       ? random_.uniform(-options_.color_variation, options_.color_variation)
                       : 0.0;
     double radius = reference_.radius[choice.element] * scale;
+    if (!motif_fits(id, pattern_[id].position, radius) && id == restart_seed_) {
+        // A restart's hole holds the smallest motif, maybe not the best match: the best of
+        // those that fit there (else the hole stays, its middle closed).
+        std::vector<int> fitting;
+        for (int c : *candidates)
+            if (motif_fits(id, pattern_[id].position, reference_.radius[c] * scale))
+                fitting.push_back(c);
+        if (!fitting.empty()) {
+            choice = choose(pattern_[id], target, {}, fitting);
+            if (choice.element < 0) return drop(id);
+            radius = reference_.radius[choice.element] * scale;
+        }
+    }
     if (!motif_fits(id, pattern_[id].position, radius)) return drop(id);
 
     Node& n = pattern_[id];
@@ -324,12 +408,14 @@ void Synthesis::grow(int id) {
     n.radius = radius;
     pattern_.note_radius(radius);
     placed_.push_back(id);
+    ++placed_per_symbol_[static_cast<std::size_t>(n.symbol)];
     // Thousands of motifs are one rule body: the watchdog needs to see them coming.
     report_progress("motifs", static_cast<long>(placed_.size()), options_.max_elements);
     if (lattice_ && !phase_) {
         // The first motif puts the lattice down: its site's point is where it stands.
         phase_ = true;
-        origin_ = n.position - lattice_->sites[static_cast<std::size_t>(lattice_->site_of[c])].offset;
+        origin_ =
+            n.position - lattice_->sites[static_cast<std::size_t>(lattice_->site_of[c])].offset;
     }
     const auto& ring = reference_.rings[c];
     for (std::size_t i = 0; i < target_nodes.size(); ++i) {

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "arrangement.hpp"
-#include "flow_field.hpp"
 #include "fidelity.hpp"
+#include "flow_field.hpp"
 #include "hole_finder.hpp"
 #include "lattice.hpp"
 #include "neighbourhood_match.hpp"
@@ -55,9 +55,9 @@ class Synthesis {
 
     int next_seed() const;
     void grow_front();
-    // Plants a seed in the largest empty circle that holds a motif at the reference's spacing,
-    // linked to the motifs around it; false when no such circle is left.
-    bool restart();
+    // Plants a seed in `hole` (the largest empty circle that holds a motif at the reference's
+    // spacing), linked to the motifs around it; false when none could be planted.
+    bool restart(const Hole& hole);
     HoleFinder& holes();  // made on first use, over the starts planted by then
     void grow(int seed);
     Choice choose(const Node& seed, const std::vector<RingEntry>& target,
@@ -73,6 +73,10 @@ class Synthesis {
     void relax_around(int centre);
     bool still_valid(int id) const;
     int priority(int symbol) const;
+    // Options::w4: how far `symbol` is over its reference share among the placed motifs and the
+    // waiting seeds (as count_coming() last counted them).
+    double excess(int symbol) const;
+    void count_coming();
 
     // On a lattice (lattice.hpp; Options::lattice, mode none): every seed is put on the lattice
     // point nearest it before it grows, or dropped when none is within a third of the spacing;
@@ -104,7 +108,7 @@ class Synthesis {
     double spacing_ = 1;
     std::optional<HoleFinder> holes_;
     std::optional<Lattice> lattice_;
-    bool phase_ = false;        // the lattice's origin is set (by the first motif)
+    bool phase_ = false;  // the lattice's origin is set (by the first motif)
     Point origin_;
     std::set<Lattice::Spot> planted_spots_;  // completion seeds, each point once
     std::set<Lattice::Spot> reopened_;       // emptied by the repair
@@ -112,6 +116,11 @@ class Synthesis {
     std::set<std::pair<double, int>> queue_;  // (distance from the start, node)
     std::vector<Point> starts_;
     std::vector<int> placed_;
+    int restart_seed_ = -1;                // the last restart's seed
+    std::vector<long> placed_per_symbol_;  // per symbol id
+    std::vector<double> reference_share_;  // per symbol id
+    std::vector<long> coming_;             // per symbol id: placed and waiting (count_coming)
+    long coming_total_ = 0;
     SynthesisStats stats_;
 };
 

@@ -253,7 +253,8 @@ def case_bad_input():
               'empty-group.svg: <g id="forgotten"> (line 1): carries data-symbol="b" but owns no shape'),
              ("guides", ["--param", f"growth_guides={bad / 'guides.svg'}"], "guides.svg"),
              ("mode", ["--param", "growth_mode=sideways"], "sideways"),
-             ("flow-without-strokes", ["--param", "growth_mode=flow"], "flow stroke")]
+             ("flow-without-strokes", ["--param", "growth_mode=flow"], "flow stroke"),
+             ("negative-w4", ["--param", "growth_w4=-1"], "w4 must be finite and >= 0")]
     for name, args, named in cases:
         _, p = run("bad-" + name, *args, expect=1)
         out = WORK / f"bad-{name}.svg"
@@ -302,6 +303,98 @@ def case_metrics():
                   abs(same["result"] - same["reference"]) <= 0.05,
                   f"lattice: defects {g['defects']['share']:.1%} (at most 5%), same-symbol share "
                   f"{same['result']:.3f} vs {same['reference']:.3f}")
+
+
+def case_repaired_ids():
+    """Motifs the lattice repair removed and grew again are new elements: --json ids unique,
+    every parent known, no motif doubled where one was removed (issue 27)."""
+    repaired = 0
+    for seed in ("1", "2", "3"):
+        # Motif sizes from 0.7 to 1.6 leave lattice points without room: the repair has work.
+        tree, p = run(f"repaired-{seed}", "--param", f"reference={REFS / 'checker.json'}",
+                      "--region", str(PANELS / "heart.svg"), "--rng-seed", seed,
+                      "--param", "growth_scale_min=0.7", "--param", "growth_scale_max=1.6",
+                      "--metrics")
+        if tree is None:
+            return
+        g = json.loads(p.stdout)["growth"]
+        repaired += g["lattice"]["repaired"]
+        ids = [e["id"] for e in tree["elements"]]
+        check(len(ids) == len(set(ids)), f"repaired, seed {seed}: {len(ids)} element ids, "
+              f"{len(set(ids))} distinct")
+        known = set(ids)
+        orphans = [e["id"] for e in tree["elements"] if e.get("parent", 0) not in known | {None}
+                   and e["id"] != 0]
+        check(not orphans, f"repaired, seed {seed}: every parent is an element ({orphans[:5]})")
+        ms = motifs(tree)
+        check(len(ms) == g["motifs"], f"repaired, seed {seed}: {len(ms)} motifs in --json, "
+              f"{g['motifs']} in --metrics")
+        closest = min(nearest([centre(m) for m in ms])) / g["spacing"]
+        check(closest > 0.5, f"repaired, seed {seed}: closest motifs {closest:.2f} NN apart "
+              f"(none doubled)")
+    check(repaired > 0, f"repaired: {repaired} motifs repaired over three seeds (the case tests "
+          f"the repair)")
+
+
+def dart_reference(path, seed, share_a, width, height, gap, size_a, size_b):
+    """An irregular two-symbol reference by dart throwing (elements at least `gap` apart)."""
+    import random
+    rng = random.Random(seed)
+    pts = []
+    for _ in range(20000):
+        x, y = rng.uniform(0, width), rng.uniform(0, height)
+        if all((x - a) ** 2 + (y - b) ** 2 >= gap * gap for a, b, _ in pts):
+            pts.append((x, y, "a" if rng.random() < share_a else "b"))
+    elements = [{"symbol": s, "x": round(x, 3), "y": round(y, 3),
+                 "size": size_a if s == "a" else size_b, "angle": round(rng.uniform(0, 360), 1)}
+                for x, y, s in pts]
+    path.write_text(json.dumps({"elements": elements}))
+
+
+def case_unseen_mix():
+    """Irregular two-symbol references no code was tuned on, grown into a rectangle and panels
+    with curved edges, a neck and a hole, 8 seeds each: the symbol mix within 3 points of the
+    reference on every run, the largest empty circle at most 1.5 NN, the same bytes for the same
+    seed (issue 27)."""
+    refs = []
+    for seed, share, w, h, gap, sa, sb in ((31, 0.35, 90, 70, 9, 3.5, 2.5),
+                                           (32, 0.25, 100, 80, 10, 4.0, 3.0),
+                                           (33, 0.6, 80, 80, 8, 2.5, 3.5)):
+        path = WORK / f"darts-{seed}.json"
+        dart_reference(path, seed, share, w, h, gap, sa, sb)
+        refs.append(path)
+    panels = ["rect:200,150", str(PANELS / "heart.svg"), str(PANELS / "arch-window.svg"),
+              str(PANELS / "narrow-neck.svg")]
+    for ref in refs:
+        for panel in panels:
+            worst, holes, nns, sames = 0.0, 0.0, [], []
+            for seed in range(1, 9):
+                p = subprocess.run([PROGRAM, "-o", str(WORK / "mix.svg"), "--param",
+                                    f"reference={ref}", "--region", panel, "--rng-seed",
+                                    str(seed), "--metrics"], capture_output=True, text=True,
+                                   timeout=300)
+                if p.returncode != 0:
+                    check(False, f"mix: {ref.name} in {panel}: exit {p.returncode}")
+                    return
+                g = json.loads(p.stdout)["growth"]
+                worst = max(worst, max(abs(v["result"] - v["reference"])
+                                       for v in g["symbols"].values()))
+                holes = max(holes, g["largest_hole"])
+                nns.append(g["nn_median"])
+                same = g["same_symbol_neighbours"]
+                sames.append(same["result"] - same["reference"])
+            name = f"{ref.name} in {pathlib.Path(panel).name}"
+            check(worst <= 0.03, f"mix: {name}: symbol mix at most {100 * worst:.1f} points off "
+                  f"over 8 seeds (3 allowed)")
+            check(holes <= 1.5, f"mix: {name}: largest empty circle {holes:.2f} NN (1.5 allowed)")
+            # Measured, not yet held to the issue's bounds (5% and the reference's share).
+            print(f"     {name}: NN median {min(nns):.3f} to {max(nns):.3f}, same-symbol share "
+                  f"{min(sames):+.3f} to {max(sames):+.3f} against the reference")
+    a, b = WORK / "mix-a.svg", WORK / "mix-b.svg"
+    for out in (a, b):
+        subprocess.run([PROGRAM, "-o", str(out), "--param", f"reference={refs[0]}", "--region",
+                        panels[1], "--rng-seed", "4"], check=True, timeout=300)
+    check(a.read_bytes() == b.read_bytes(), "mix: the same seed gives the same bytes")
 
 
 def case_header_files():

@@ -5,6 +5,7 @@
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/stdlib/growth.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -44,6 +45,25 @@ TEST(GrowthFlow, OneStraightStrokeGivesItsDirectionEverywhere) {
     FlowField field({{{0, 0}, {10, 10}}}, 1.0, "test");
     for (Point p : {Point{-50, 20}, Point{100, -40}, Point{5, 5}})
         EXPECT_NEAR(field.angle(p), M_PI / 4, 1e-6);
+}
+
+// Thousands of short strokes (a hostile guides file, tests/fuzz/growth/many-flow-strokes.svg)
+// once gave a sample each, and the dense solve took minutes: the samples stay within the budget,
+// spread over all the strokes, and the field still follows them.
+TEST(GrowthFlow, ThousandsOfStrokesStayWithinTheSampleBudget) {
+    std::vector<std::vector<Point>> strokes;
+    for (int i = 0; i < 3000; ++i) {
+        Point p{i % 60 * 4.0, i / 60 * 3.0};
+        strokes.push_back({p, p + Vector{1, 0.5}});
+    }
+    FlowField field(strokes, 1.0, "test", 600);
+    EXPECT_LE(field.samples().size(), 600u);
+    EXPECT_GE(field.samples().size(), 500u);
+    double top = 0;
+    for (Point p : field.samples()) top = std::max(top, p.y);
+    EXPECT_GT(top, 140);  // the last strokes are sampled too, not only the first 600
+    for (Point p : {Point{10, 10}, Point{120, 75}, Point{230, 140}})
+        EXPECT_NEAR(field.angle(p), std::atan2(0.5, 1.0), 1e-3);
 }
 
 TEST(GrowthFlow, BadStrokes) {

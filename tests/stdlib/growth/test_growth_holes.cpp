@@ -124,3 +124,34 @@ TEST(GrowthHoles, ToolsStillHold) {
 }
 
 }  // namespace
+
+namespace {
+
+// Inputs on which the growth fuzz target once spent minutes (kept in tests/fuzz/growth/): a dozen
+// elements, some far apart, sizes from 0.01 to 20, grown as the target grows them (40 motifs in
+// rect:200,120). A restart from which nothing grows closes its circle for good, and a run of 16
+// ends the fill (holes come largest first), so there are a handful of restarts, not thousands.
+TEST(GrowthHoles, FruitlessRestartsAreBounded) {
+    const Region panel = Region::from_spec("rect:200,120");
+    for (const char* name : {"restarts-that-grow-nothing.json", "restarts-far-apart-sizes.json"}) {
+        Reference reference = Reference::from_json_file(std::string(ACANTHUS_SOURCE_DIR) +
+                                                        "/tests/fuzz/growth/" + name);
+        for (Mode mode : {Mode::none, Mode::rotation}) {
+            Options options;
+            options.max_elements = 40;
+            options.mode = mode;
+            SynthesisResult r = synthesize(reference, panel, options, {}, 1);
+            std::printf("%s, mode %d: %zu motifs, %ld restarts (%ld fruitless), %ld searches\n",
+                        name, static_cast<int>(mode), r.motifs.size(), r.stats.restarts,
+                        r.stats.fruitless, r.stats.hole_searches);
+            const long grown = r.stats.restarts - r.stats.fruitless;
+            EXPECT_GE(grown, 0);
+            EXPECT_LE(grown, static_cast<long>(r.motifs.size()));
+            EXPECT_LE(r.stats.fruitless, 16 * (grown + 1));
+            EXPECT_LE(r.stats.hole_searches, r.stats.restarts + 1);
+            EXPECT_LE(r.stats.restarts, 17 * 41);
+        }
+    }
+}
+
+}  // namespace

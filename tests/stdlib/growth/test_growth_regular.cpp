@@ -53,11 +53,12 @@ void grow_everywhere(const std::string& panel_name) {
                             : scaled_panel(panel_name, nn / 10);
         SynthesisResult r = synthesize(ref, region, Options{}, {}, 1);
         const Fidelity& f = r.fidelity;
-        std::printf("%-34s %-15s motifs %4zu, interior %4ld, defects %ld, lattice sites %d, "
-                    "repaired %ld, completed %ld, %.2f s\n",
-                    std::filesystem::path(file).filename().c_str(), panel_name.c_str(),
-                    r.motifs.size(), f.interior, f.defects, r.stats.lattice_sites,
-                    r.stats.repaired, r.stats.completed, r.stats.seconds);
+        std::printf(
+            "%-34s %-15s motifs %4zu, interior %4ld, defects %ld, lattice sites %d, "
+            "repaired %ld, completed %ld, %.2f s\n",
+            std::filesystem::path(file).filename().c_str(), panel_name.c_str(), r.motifs.size(),
+            f.interior, f.defects, r.stats.lattice_sites, r.stats.repaired, r.stats.completed,
+            r.stats.seconds);
         EXPECT_GT(r.stats.lattice_sites, 0) << file;
         EXPECT_GT(f.interior, 40) << file << " in " << panel_name;
         EXPECT_EQ(f.defects, 0) << file << " in " << panel_name;
@@ -68,5 +69,41 @@ void grow_everywhere(const std::string& panel_name) {
 TEST(GrowthRegular, UnseenLatticesInARectangle) { grow_everywhere("rectangle"); }
 TEST(GrowthRegular, UnseenLatticesInAHeart) { grow_everywhere("heart.svg"); }
 TEST(GrowthRegular, UnseenLatticesInAnArchWithAWindow) { grow_everywhere("arch-window.svg"); }
+
+}  // namespace
+
+namespace {
+
+// The repair removes motifs and grows them again: the regrown ones are new motifs, never a
+// removed one's id come back with its old links. Motif sizes from 0.7 to 1.6 leave lattice points
+// without room, so the repair has work (e2e.growth.repaired_ids checks the --json ids).
+TEST(GrowthRegular, RepairedMotifsAreNewMotifs) {
+    Reference ref = Reference::from_file(kSource + "/examples/references/checker.json");
+    Region heart = scaled_panel("heart.svg", 1.0);
+    Options options;
+    options.scale_min = 0.7;
+    options.scale_max = 1.6;
+    long repaired = 0;
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+        SynthesisResult r = synthesize(ref, heart, options, {}, seed);
+        repaired += r.stats.repaired;
+        const double spacing = r.fidelity.spacing;
+        const std::size_t n = r.motifs.size();
+        double closest = INFINITY;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+                closest = std::min(closest, distance(r.motifs[i].position, r.motifs[j].position));
+        EXPECT_GT(closest, 0.5 * spacing) << "seed " << seed << ": a motif doubled";
+        std::vector<std::pair<int, int>> edges = r.edges;
+        EXPECT_TRUE(std::unique(edges.begin(), edges.end()) == edges.end()) << "seed " << seed;
+        for (auto [a, b] : r.edges) {
+            ASSERT_TRUE(a >= 0 && a < b && b < static_cast<int>(n)) << a << "-" << b;
+            // A stale link to a removed motif's id would join far-apart motifs.
+            EXPECT_LT(distance(r.motifs[a].position, r.motifs[b].position), 2 * spacing)
+                << "seed " << seed;
+        }
+    }
+    EXPECT_GT(repaired, 0);
+}
 
 }  // namespace

@@ -317,6 +317,7 @@ TEST(GrowthSynthesis, TwoRingKeepsAStripePeriodTheOneRingLoses) {
             Options o;
             o.two_ring = two_ring;
             o.lattice = false;  // the paper's growth: on its lattice the 1-ring keeps it too
+            o.w4 = 0;           // and the paper's error: the mix term picks among the a columns
             SynthesisResult r = synthesize(ref, region, o, {}, seed);
             std::vector<growth_fixtures::Placed> placed;
             for (const Motif& m : r.motifs) placed.push_back({m.position, m.symbol});

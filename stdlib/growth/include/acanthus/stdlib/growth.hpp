@@ -102,10 +102,14 @@ class Reference {
 
 struct Options {
     Mode mode = Mode::none;
-    bool relax = true;      // section 5.5 least squares after every growth step
-    double w1 = 1.0;        // position difference, per mean reference edge length
-    double w2 = 1.0;        // symbol differs
-    double w3 = 100.0;      // the same reference element (sub-id): avoids copying it verbatim
+    bool relax = true;  // section 5.5 least squares after every growth step
+    double w1 = 1.0;    // position difference, per mean reference edge length
+    double w2 = 1.0;    // symbol differs
+    double w3 = 100.0;  // the same reference element (sub-id): avoids copying it verbatim
+    // Beyond the paper: per neighbour a candidate would add, how far that neighbour's symbol is
+    // already over its reference share (in shares: 0.05 is 5 points), so the mix stays the
+    // reference's in small panels too. 0: the paper's error.
+    double w4 = 20.0;
     long max_elements = 0;  // 0: until no seed is left
     // When the growth front stops, restart it in the largest empty circle that holds a motif at
     // the reference's spacing, until none is left (false: stop with the front, as the paper).
@@ -173,15 +177,17 @@ struct Motif {
 };
 
 struct SynthesisStats {
-    long steps = 0;      // seeds taken from the queue
-    long seeds = 0;      // seeds made (start, ring and l_long seeds)
-    long dropped = 0;    // seeds dropped: outside, no match, motif does not fit
-    long merged = 0;     // l_short merges
-    long restarts = 0;   // seeds planted in empty circles after the growth front stopped
-    int lattice_sites = 0;  // sites per cell of the reference's lattice (0: none, or not used)
-    long completed = 0;     // seeds planted on empty lattice points next to motifs
-    long repaired = 0;      // motifs removed by the lattice repair (and grown again)
-    double seconds = 0;  // wall time (reported only, never used)
+    long steps = 0;          // seeds taken from the queue
+    long seeds = 0;          // seeds made (start, ring and l_long seeds)
+    long dropped = 0;        // seeds dropped: outside, no match, motif does not fit
+    long merged = 0;         // l_short merges
+    long restarts = 0;       // seeds planted in empty circles after the growth front stopped
+    long fruitless = 0;      // restarts from which no motif grew (each circle then closed for good)
+    long hole_searches = 0;  // searches for the largest empty circle
+    int lattice_sites = 0;   // sites per cell of the reference's lattice (0: none, or not used)
+    long completed = 0;      // seeds planted on empty lattice points next to motifs
+    long repaired = 0;       // motifs removed by the lattice repair (and grown again)
+    double seconds = 0;      // wall time (reported only, never used)
     double relax_seconds = 0;
     // How far the result is from the reference's offsets: RMS over the links between motifs of
     // |actual offset - wanted offset|, in mean reference edge lengths (what eq. 5 minimizes).
