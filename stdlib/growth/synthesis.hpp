@@ -39,6 +39,13 @@ class Synthesis {
     // The largest empty circle left where a motif fits, as a radius (0 without a panel box).
     double largest_hole();
     const Arrangement& arrangement() const { return pattern_; }
+    // For tests that set up or disturb a pattern by hand before run() or repair().
+    Arrangement& arrangement() { return pattern_; }
+    // The lattice repair on the pattern as it is (run() ends with it on a lattice).
+    void repair() {
+        if (on_lattice()) repair_lattice();
+    }
+    bool lattice_found() const { return lattice_.has_value(); }
 
   private:
     struct Choice {
