@@ -34,7 +34,9 @@ Point slot(double degrees, double length = 10) {
 }
 
 struct Scene {
-    explicit Scene(std::vector<ReferenceElement> elements = growth_fixtures::triangular_lattice(7, 7, 10),
+    explicit Scene(std::vector<ReferenceElement> elements = growth_fixtures::triangular_lattice(7,
+                                                                                                7,
+                                                                                                10),
                    Options o = paper())
         : reference(Reference::from_elements(std::move(elements))),
           options(std::move(o)),
@@ -165,7 +167,8 @@ TEST(GrowthHeuristics, SeedWaitsForAHigherPrioritySeedWithinFiveL) {
 
 // Over a whole growth: with b first, the b motifs come early.
 TEST(GrowthHeuristics, PriorityGrowsTheHigherSymbolFirst) {
-    Reference ref = Reference::from_elements(growth_fixtures::triangular_lattice(8, 8, 10, {"a", "b"}));
+    Reference ref =
+        Reference::from_elements(growth_fixtures::triangular_lattice(8, 8, 10, {"a", "b"}));
     Region region = Region::from_spec("rect:200,160");
     auto early_b = [&](bool prioritized) {
         Options o;
@@ -189,15 +192,18 @@ TEST(GrowthRepair, DisturbedMotifsAreRemovedAndGrownAgain) {
     scene.synthesis.run();
     ASSERT_TRUE(scene.synthesis.lattice_found());
     SynthesisResult before = scene.synthesis.result();
-    ASSERT_EQ(gd::measure_fidelity(scene.reference.data(), before.motifs, scene.panel, 0).defects, 0);
+    ASSERT_EQ(gd::measure_fidelity(scene.reference.data(), before.motifs, scene.panel, 0).defects,
+              0);
     ASSERT_EQ(before.stats.repaired, 0);
     // Two interior motifs: one moved by a quarter spacing, one turned into another site's.
     int moved = -1, swapped = -1;
     const auto& nodes = scene.pattern().nodes();
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         if (!nodes[i].alive || !nodes[i].placed() || nodes[i].fixed) continue;
-        if (moved < 0 && distance(nodes[i].position, S + Vector{30, 20}) < 6) moved = static_cast<int>(i);
-        if (swapped < 0 && distance(nodes[i].position, S + Vector{-30, -20}) < 6) swapped = static_cast<int>(i);
+        if (moved < 0 && distance(nodes[i].position, S + Vector{30, 20}) < 6)
+            moved = static_cast<int>(i);
+        if (swapped < 0 && distance(nodes[i].position, S + Vector{-30, -20}) < 6)
+            swapped = static_cast<int>(i);
     }
     ASSERT_GE(moved, 0);
     ASSERT_GE(swapped, 0);
@@ -208,7 +214,8 @@ TEST(GrowthRepair, DisturbedMotifsAreRemovedAndGrownAgain) {
     scene.pattern()[swapped].source = other;
     scene.pattern()[swapped].symbol = scene.reference.data().symbol[other];
     SynthesisResult broken = scene.synthesis.result();
-    EXPECT_GE(gd::measure_fidelity(scene.reference.data(), broken.motifs, scene.panel, 0).defects, 8);
+    EXPECT_GE(gd::measure_fidelity(scene.reference.data(), broken.motifs, scene.panel, 0).defects,
+              8);
 
     scene.synthesis.repair();
     SynthesisResult after = scene.synthesis.result();
