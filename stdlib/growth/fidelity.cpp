@@ -134,7 +134,7 @@ std::vector<Point> points_of(const ReferenceData& reference) {
 double reference_spacing(const ReferenceData& reference) {
     Site ref;
     ref.points = points_of(reference);
-    return median(nearest(ref, 4 * reference.mean_edge));
+    return median(nearest(ref, 2 * reference.mean_edge));
 }
 
 std::int64_t RingChecker::key(Vector v) const {
@@ -209,30 +209,51 @@ std::vector<bool> RingChecker::good(const std::vector<Point>& points,
     return out;
 }
 
+ReferenceProfile::ReferenceProfile(const ReferenceData& reference) : checker(reference) {
+    Site ref;
+    ref.points = points_of(reference);
+    for (const ReferenceElement& e : reference.elements) ref.symbols.push_back(e.symbol);
+    const double spacing = checker.spacing();
+    std::vector<double> nn = nearest(ref, 2.1 * spacing);
+    for (double& d : nn)
+        if (d >= 2.1 * spacing) d = 4 * spacing;
+    nn_histogram = histogram(nn, spacing, Fidelity{}.histogram_bin);
+    symbol_mix = mix(ref);
+    same_symbol_share = same_share(ref, checker.reach());
+}
+
+const ReferenceProfile& profile_of(const ReferenceData& reference) {
+    std::call_once(reference.profile_once, [&] {
+        reference.profile = std::make_shared<const ReferenceProfile>(reference);
+    });
+    return *reference.profile;
+}
+
 Fidelity measure_fidelity(const ReferenceData& reference, const std::vector<Motif>& motifs,
                           const Panel& panel, double largest_hole) {
     Fidelity f;
-    Site ref, got;
-    ref.points = points_of(reference);
-    for (const ReferenceElement& e : reference.elements) ref.symbols.push_back(e.symbol);
+    const ReferenceProfile& profile = profile_of(reference);
+    const RingChecker& checker = profile.checker;
+    Site got;
     for (const Motif& m : motifs) {
         got.points.push_back(m.position);
         got.symbols.push_back(m.symbol);
     }
-    const RingChecker checker(reference);
     // The unit is measured on the reference's points, as an author (or a checker) would.
     const double spacing = checker.spacing();
-    // NN distances beyond 4 NN are reported as 4: the histogram's last bin holds them anyway.
-    const double cap = 4 * spacing;
-    std::vector<double> ref_nn = nearest(ref, cap), got_nn = nearest(got, cap);
+    // NN distances are searched within 2.1 NN and beyond reported as 4: the histogram's last
+    // bin (from 2 up) holds them anyway.
+    std::vector<double> got_nn = nearest(got, 2.1 * spacing);
+    for (double& d : got_nn)
+        if (d >= 2.1 * spacing) d = 4 * spacing;
     f.spacing = spacing;
     f.nn_median = got.points.size() > 1 ? median(got_nn) / spacing : 0.0;
-    f.reference_nn_histogram = histogram(ref_nn, spacing, f.histogram_bin);
+    f.reference_nn_histogram = profile.nn_histogram;
     f.nn_histogram = got.points.size() > 1 ? histogram(got_nn, spacing, f.histogram_bin)
                                            : std::vector<double>(21, 0.0);
-    f.reference_symbol_mix = mix(ref);
+    f.reference_symbol_mix = profile.symbol_mix;
     f.symbol_mix = mix(got);
-    f.reference_same_symbol_share = same_share(ref, checker.reach());
+    f.reference_same_symbol_share = profile.same_symbol_share;
     f.same_symbol_share = same_share(got, checker.reach());
 
     // Defects: interior motifs whose ring matches no full reference ring of their symbol.

@@ -5,6 +5,8 @@
 
 #include <acanthus/stdlib/growth.hpp>
 #include <cstdint>
+#include <map>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -48,6 +50,16 @@ class RingChecker {
 
 // The reference's median nearest-neighbour distance, measured on its points.
 double reference_spacing(const ReferenceData& reference);
+
+// The reference's side of the report and its ring checker, made once per reference.
+struct ReferenceProfile {
+    explicit ReferenceProfile(const ReferenceData& reference);
+    RingChecker checker;
+    std::vector<double> nn_histogram;
+    std::map<std::string, double> symbol_mix;
+    double same_symbol_share = 0;
+};
+const ReferenceProfile& profile_of(const ReferenceData& reference);
 
 // `largest_hole`: in drawing units.
 Fidelity measure_fidelity(const ReferenceData& reference, const std::vector<Motif>& motifs,

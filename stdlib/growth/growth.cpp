@@ -108,6 +108,7 @@ void check_options(const Options& o) {
     if (!(o.priority_radius >= 0) || !std::isfinite(o.priority_radius))
         bad("priority_radius must be >= 0");
     if (o.max_elements < 0) bad("max_elements must be >= 0");
+    if (o.max_motifs < 1) bad("max_motifs must be >= 1");
     if (o.mode == Mode::flow && o.flow_strokes.empty())
         bad(o.guides_name.empty()
                 ? "flow mode needs at least one flow stroke (Options::flow_strokes, or a guides "
@@ -155,6 +156,8 @@ SynthesisResult run(const Reference& reference, const detail::Panel& panel, cons
 
 SynthesisResult synthesize(const Reference& reference, const Region& region, const Options& options,
                            const std::vector<Point>& starts, std::uint64_t seed) {
+    // Before anything that costs in proportion to the panel.
+    detail::check_motif_count(reference.data(), region.area(), options);
     std::vector<Point> points = starts;
     if (points.empty() && options.spray_strokes.empty())
         points.push_back(

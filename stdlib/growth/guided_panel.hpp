@@ -18,6 +18,7 @@ class GuidedPanel : public Panel {
     bool reaches(Point from, Point to) const override;
     Rect bounds() const override { return base_.bounds(); }
     double clearance(Point p) const override { return base_.clearance(p); }
+    double area() const override { return base_.area(); }
 
   private:
     struct Segment {

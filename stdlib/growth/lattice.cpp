@@ -22,6 +22,9 @@ constexpr double kContradictions = 0.02;
 // huge reference; a small one is checked whole).
 constexpr std::size_t kSample = 4000;
 constexpr int kMaxSites = 24;
+// Candidates kept per site, the nearest the central element: on a lattice they all have one
+// ring, and a huge reference need not be matched whole at every seed.
+constexpr std::size_t kSiteCandidates = 64;
 
 class PointGrid {
   public:
@@ -173,12 +176,13 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
     for (int c : reference.candidates)
         if (distance(points[c], centroid) < distance(points[anchor], centroid)) anchor = c;
 
-    std::vector<int> sample(n);
-    std::iota(sample.begin(), sample.end(), 0);
-    std::stable_sort(sample.begin(), sample.end(), [&](int a, int b) {
+    std::vector<int> order(n);  // by distance from the anchor
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
         return distance(points[a], points[anchor]) < distance(points[b], points[anchor]);
     });
-    if (sample.size() > kSample) sample.resize(kSample);
+    const std::vector<int> sample(order.begin(),
+                                  order.begin() + static_cast<long>(std::min(n, kSample)));
 
     // Translations: offsets from the anchor to elements of its kind, shortest first.
     std::vector<int> targets;
@@ -197,7 +201,10 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
                 ++support;
                 total += points[j] - points[i];
             } else if (j >= 0 || inside.inside(q)) {
-                ++contra;
+                // Past this many it cannot hold, whatever the rest says.
+                if (static_cast<double>(++contra) >
+                    kContradictions * static_cast<double>(sample.size()))
+                    return false;
             }
         }
         if (support < 6 || static_cast<double>(support) < 0.2 * static_cast<double>(sample.size()))
@@ -262,7 +269,12 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
         unwrapped_sum[found] += at;
         lattice.site_of[i] = found;
     }
-    for (int c : reference.candidates) lattice.sites[lattice.site_of[c]].candidates.push_back(c);
+    for (int c : order)
+        if (!reference.connectivity.boundary[c] &&
+            lattice.sites[lattice.site_of[c]].candidates.size() < kSiteCandidates)
+            lattice.sites[lattice.site_of[c]].candidates.push_back(c);
+    for (Lattice::Site& site : lattice.sites)
+        std::sort(site.candidates.begin(), site.candidates.end());
     for (std::size_t s = 0; s < lattice.sites.size(); ++s) {
         Lattice::Site& site = lattice.sites[s];
         if (site.candidates.empty()) return std::nullopt;  // a site no ring can be copied from
@@ -272,6 +284,14 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
     const Vector shift = lattice.sites[lattice.site_of[anchor]].offset;
     for (Lattice::Site& site : lattice.sites) site.offset -= shift;
     return lattice;
+}
+
+const Lattice* lattice_of(const ReferenceData& reference) {
+    std::call_once(reference.lattice_once, [&] {
+        if (auto found = detect_lattice(reference))
+            reference.lattice = std::make_shared<const Lattice>(std::move(*found));
+    });
+    return reference.lattice.get();
 }
 
 }  // namespace acanthus::growth::detail

@@ -19,7 +19,9 @@ struct Lattice {
         Vector offset;               // from the lattice origin, within one cell
         int symbol = -1;             // the symbol every element of the site has
         std::vector<int> elements;   // reference elements of this site
-        std::vector<int> candidates; // of those, the ones matched against (not boundary)
+        // Of those, the ones matched against: not on the boundary, at most 64, the nearest the
+        // reference's central element.
+        std::vector<int> candidates;
     };
     Vector t1, t2;            // the two shortest independent translations, |t1| <= |t2|
     std::vector<Site> sites;  // one per kind of element in a cell
@@ -45,5 +47,7 @@ struct Lattice {
 // The lattice of a reference, or none when it is not regular (irregular or too jittered,
 // fewer than one interior element per site, more than 24 sites in a cell).
 std::optional<Lattice> detect_lattice(const ReferenceData& reference);
+// detect_lattice, once per reference (null: none).
+const Lattice* lattice_of(const ReferenceData& reference);
 
 }  // namespace acanthus::growth::detail

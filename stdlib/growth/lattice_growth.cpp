@@ -76,7 +76,7 @@ constexpr int kRepairRounds = 3;
 
 void Synthesis::repair_lattice() {
     complete_lattice();
-    const RingChecker checker(reference_);
+    const RingChecker& checker = profile_of(reference_).checker;
     for (int round = 0; round < kRepairRounds; ++round) {
         std::vector<Point> points;
         std::vector<int> symbols;

@@ -43,6 +43,24 @@ double alignment_error(const std::vector<RingEntry>& target,
     return error;
 }
 
+double alignment_error_within(const std::vector<RingEntry>& target,
+                              const std::vector<RingEntry>& reference, int shift, double cos_r,
+                              double sin_r, const Weights& w, double bound) {
+    const std::size_t m = reference.size();
+    double error = 0;
+    for (std::size_t i = 0; i < target.size(); ++i) {
+        const RingEntry& t = target[i];
+        const RingEntry& r = reference[(static_cast<std::size_t>(shift) + i) % m];
+        const Vector turned{cos_r * r.offset.x - sin_r * r.offset.y,
+                            sin_r * r.offset.x + cos_r * r.offset.y};
+        error += w.w1 * (t.offset - turned).length();
+        if (t.symbol >= 0 && t.symbol != r.symbol) error += w.w2;
+        if (t.sub >= 0 && t.sub == r.sub) error += w.w3;
+        if (error > bound) return INFINITY;
+    }
+    return error;
+}
+
 double best_fit_rotation(const std::vector<RingEntry>& target,
                          const std::vector<RingEntry>& reference, int shift) {
     // argmin over theta of sum |t - R(theta) r|^2 = atan2(sum r x t, sum r . t).

@@ -23,6 +23,11 @@ class Panel {
     virtual Rect bounds() const = 0;
     // Distance from p to the panel's edge (for choosing the middle of an empty lobe).
     virtual double clearance(Point p) const = 0;
+    // The room's area, at most (for the estimate of how many motifs it holds).
+    virtual double area() const {
+        Rect b = bounds();
+        return b.width() * b.height();
+    }
 };
 
 class RegionPanel : public Panel {
@@ -32,6 +37,7 @@ class RegionPanel : public Panel {
     bool admits(Circle motif, double tolerance) const override;
     Rect bounds() const override { return region_.bounds(); }
     double clearance(Point p) const override { return region_.distance_to_boundary(p); }
+    double area() const override { return region_.area(); }
 
   private:
     const Region& region_;
@@ -46,6 +52,7 @@ class EnvironmentPanel : public Panel {
     bool admits(Circle motif, double tolerance) const override;
     Rect bounds() const override;
     double clearance(Point p) const override;
+    double area() const override;
 
   private:
     Environment& env_;

@@ -4,12 +4,17 @@
 #pragma once
 
 #include <acanthus/stdlib/growth.hpp>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "connectivity.hpp"
 
 namespace acanthus::growth::detail {
+
+struct ReferenceProfile;  // fidelity.hpp
+struct Lattice;           // lattice.hpp
 
 // One neighbour in a reference 1-ring.
 struct RingSlot {
@@ -32,6 +37,12 @@ struct ReferenceData {
     double shortest_edge = 0;
 
     int symbol_id(const std::string& name) const;  // -1 when unknown
+
+    // What every synthesis from this reference measures it by and grows it on, worked out once
+    // (the first synthesis asks; a huge reference costs it once, not per run).
+    mutable std::once_flag profile_once, lattice_once;
+    mutable std::shared_ptr<const ReferenceProfile> profile;
+    mutable std::shared_ptr<const Lattice> lattice;  // null: not a lattice
 };
 
 // Validates (finite coordinates and sizes, at least 3 distinct points, flips) and analyses.

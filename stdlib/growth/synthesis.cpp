@@ -1,9 +1,11 @@
 #include "synthesis.hpp"
 
+#include <acanthus/error.hpp>
 #include <acanthus/progress.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "relaxation.hpp"
@@ -23,17 +25,8 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
       l_short_(options.short_factor * reference.shortest_edge),
       tolerance_(1e-9 * reference.mean_edge),
       pattern_(reference.mean_edge) {
-    std::vector<double> nearest;
-    for (const auto& ring : reference.rings) {
-        double best = INFINITY;
-        for (const RingSlot& s : ring) best = std::min(best, s.offset.length());
-        if (std::isfinite(best)) nearest.push_back(best);
-    }
-    if (!nearest.empty()) {
-        std::nth_element(nearest.begin(), nearest.begin() + static_cast<long>(nearest.size() / 2),
-                         nearest.end());
-        spacing_ = nearest[nearest.size() / 2];
-    }
+    spacing_ = ring_spacing(reference);
+    check_motif_count(reference, panel.area(), options);
     for (std::size_t i = 0; i < reference.elements.size(); ++i) {
         std::vector<RingEntry> ring;
         for (const RingSlot& s : reference.rings[i])
@@ -60,8 +53,15 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
     if (options.mode == Mode::flow)
         flow_.emplace(options.flow_strokes, l_,
                       options.guides_name.empty() ? "growth" : options.guides_name);
+    // A huge reference is matched against an even sample of its interior elements in file
+    // order: its variety is there, at a bounded cost per seed.
+    const std::size_t all = reference.candidates.size();
+    const std::size_t stride = (all + kMaxCandidates - 1) / kMaxCandidates;
+    for (std::size_t k = 0; k < all; k += stride) candidates_.push_back(reference.candidates[k]);
+    prunable_ = !options.two_ring && options.mode != Mode::rotation && options.w1 > 0;
+    if (prunable_) build_slot_index();
     if (options.lattice && options.mode == Mode::none) {
-        lattice_ = detect_lattice(reference);
+        lattice_ = lattice_of(reference);
         if (lattice_) stats_.lattice_sites = static_cast<int>(lattice_->sites.size());
     }
     placed_per_symbol_.assign(reference.symbols.size(), 0);
@@ -74,6 +74,37 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         priority_.push_back(it == options.priority.end() ? 0 : it->second);
         priorities_differ_ = priorities_differ_ || priority_.back() != priority_.front();
     }
+}
+
+double ring_spacing(const ReferenceData& reference) {
+    std::vector<double> nearest;
+    for (const auto& ring : reference.rings) {
+        double best = INFINITY;
+        for (const RingSlot& s : ring) best = std::min(best, s.offset.length());
+        if (std::isfinite(best)) nearest.push_back(best);
+    }
+    if (nearest.empty()) return 1;
+    std::nth_element(nearest.begin(), nearest.begin() + static_cast<long>(nearest.size() / 2),
+                     nearest.end());
+    return nearest[nearest.size() / 2];
+}
+
+void check_motif_count(const ReferenceData& reference, double area, const Options& options) {
+    // At the reference's spacing a panel holds at most about one motif per sqrt(3)/2 spacing^2
+    // (the densest packing); max_elements caps it.
+    const double spacing = ring_spacing(reference);
+    double estimate = area / (std::sqrt(3.0) / 2 * spacing * spacing);
+    if (options.max_elements > 0)
+        estimate = std::min(estimate, static_cast<double>(options.max_elements));
+    if (!(estimate > static_cast<double>(options.max_motifs))) return;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "growth: %s would grow about %.3g motifs in this panel (area %.4g at the "
+                  "reference's spacing %.4g), more than the limit of %ld (Options::max_motifs, "
+                  "--param growth_max_motifs); a larger reference spacing, a smaller panel or "
+                  "growth_max_elements makes it fit",
+                  reference.name.c_str(), estimate, area, spacing, options.max_motifs);
+    throw InputError(text);
 }
 
 int Synthesis::priority(int symbol) const { return symbol >= 0 ? priority_[symbol] : 0; }
@@ -90,12 +121,13 @@ void Synthesis::count_coming() {
     // front already carries too much of is not added again.
     coming_ = placed_per_symbol_;
     coming_total_ = static_cast<long>(placed_.size());
-    for (auto [d, id] : queue_) {
-        const int symbol = pattern_[id].symbol;
-        if (symbol < 0) continue;
-        ++coming_[static_cast<std::size_t>(symbol)];
-        ++coming_total_;
-    }
+    for (const auto* seeds : {&queue_, &waiting_})
+        for (auto [d, id] : *seeds) {
+            const int symbol = pattern_[id].symbol;
+            if (symbol < 0) continue;
+            ++coming_[static_cast<std::size_t>(symbol)];
+            ++coming_total_;
+        }
 }
 
 int Synthesis::plant(const std::vector<Point>& starts) {
@@ -124,26 +156,54 @@ int Synthesis::new_seed(Point p, int symbol) {
 
 void Synthesis::drop(int seed) {
     queue_.erase({pattern_[seed].start_distance, seed});
+    release(seed);
     pattern_.kill(seed);
     ++stats_.dropped;
 }
 
-// Section 5.1: the nearest seed that has no seed of a higher priority within 5 l.
-int Synthesis::next_seed() const {
-    for (auto [d, id] : queue_) {
-        if (!priorities_differ_) return id;
-        const Node& s = pattern_[id];
-        bool blocked = false;
-        for (int other : pattern_.near(s.position, options_.priority_radius * l_)) {
-            const Node& o = pattern_[other];
-            if (!o.placed() && priority(o.symbol) > priority(s.symbol)) {
-                blocked = true;
-                break;
-            }
-        }
-        if (!blocked) return id;
+bool Synthesis::blocked(int seed) const {
+    const Node& s = pattern_[seed];
+    for (int other : pattern_.near(s.position, options_.priority_radius * l_)) {
+        const Node& o = pattern_[other];
+        if (!o.placed() && priority(o.symbol) > priority(s.symbol)) return true;
     }
-    return queue_.empty() ? -1 : queue_.begin()->second;
+    return false;
+}
+
+int Synthesis::next_seed() {
+    for (;;) {
+        if (queue_.empty()) {
+            if (waiting_.empty()) return -1;
+            // Only blocked seeds left (a higher-priority seed that has moved away): all go back.
+            for (auto entry : waiting_) {
+                pattern_[entry.second].waiting = false;
+                queue_.insert(entry);
+            }
+            waiting_.clear();
+            auto first = *queue_.begin();
+            queue_.erase(queue_.begin());
+            return first.second;
+        }
+        auto entry = *queue_.begin();
+        queue_.erase(queue_.begin());
+        if (!priorities_differ_ || !blocked(entry.second)) return entry.second;
+        pattern_[entry.second].waiting = true;
+        waiting_.insert(entry);
+    }
+}
+
+void Synthesis::release(int former_seed) {
+    if (!priorities_differ_ || waiting_.empty()) return;
+    const Node& f = pattern_[former_seed];
+    const int level = priority(f.symbol);
+    // A little beyond 5 l: relaxation may have moved a waiting seed since it was blocked.
+    for (int other : pattern_.near(f.position, (options_.priority_radius + 2) * l_)) {
+        Node& o = pattern_[other];
+        if (!o.waiting || priority(o.symbol) >= level) continue;
+        o.waiting = false;
+        waiting_.erase({o.start_distance, other});
+        queue_.insert({o.start_distance, other});
+    }
 }
 
 // A restart needs an empty circle a tenth wider than the spacing: a honeycomb's own holes are
@@ -255,13 +315,14 @@ HoleFinder& Synthesis::holes() {
 double Synthesis::largest_hole() { return starts_.empty() ? 0.0 : holes().largest(pattern_); }
 
 void Synthesis::grow_front() {
-    while (!queue_.empty()) {
+    while (!queue_.empty() || !waiting_.empty()) {
         if (options_.max_elements > 0 && static_cast<long>(placed_.size()) >= options_.max_elements)
             break;
         int seed = next_seed();
-        queue_.erase({pattern_[seed].start_distance, seed});
+        if (seed < 0) break;
         ++stats_.steps;
         if (!panel_.contains(pattern_[seed].position)) {
+            release(seed);
             pattern_.kill(seed);
             ++stats_.dropped;
             continue;
@@ -296,6 +357,10 @@ Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntr
     const double turn = flow_ ? flow_->angle(seed.position) : 0.0;
     const bool by_position = on_lattice();
     const bool balance = !by_position && options_.w4 > 0 && reference_.symbols.size() > 1;
+    // The index holds every candidate: a restart's narrower list is matched in full.
+    if (slot_index_ && &candidates == &candidates_ && !by_position && !target.empty() &&
+        target_outer.empty())
+        return choose_pruned(seed, target, turn, balance);
     for (int c : candidates) {
         if (!by_position && seed.symbol >= 0 && reference_.symbol[c] != seed.symbol) continue;
         std::vector<int> slots;
@@ -309,17 +374,7 @@ Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntr
                       best.empty() || balance ? INFINITY : best_error + 1e-9 * (1 + best_error))
                 : match_ring(target, rings_[c], weights_, rotate, turn);
         if (!m.found()) continue;
-        if (balance) {
-            // The ring slots no target neighbour takes become seeds of their symbols.
-            const std::size_t size = rings_[c].size();
-            std::vector<bool> taken(size, false);
-            for (std::size_t i = 0; i < target.size() && size > 0; ++i)
-                taken[(static_cast<std::size_t>(m.shift) + i) % size] = true;
-            double over = seed.symbol < 0 ? excess(reference_.symbol[c]) : 0.0;
-            for (std::size_t k = 0; k < size; ++k)
-                if (!taken[k]) over += excess(rings_[c][k].symbol);
-            m.error += options_.w4 * over;
-        }
+        if (balance) m.error += options_.w4 * balance_over(seed, c, m.shift, target.size());
         // w4 may make errors negative: the slack stays positive.
         double slack = best.empty() ? 0.0 : 1e-9 * (1 + std::abs(best_error));
         if (best.empty() || m.error < best_error - slack) {
@@ -334,6 +389,18 @@ Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntr
         random_.uniform_int(0, static_cast<long long>(best.size()) - 1))];
 }
 
+double Synthesis::balance_over(const Node& seed, int c, int shift, std::size_t targets) const {
+    // The ring slots no target neighbour takes become seeds of their symbols.
+    const std::size_t size = rings_[c].size();
+    std::vector<bool> taken(size, false);
+    for (std::size_t i = 0; i < targets && size > 0; ++i)
+        taken[(static_cast<std::size_t>(shift) + i) % size] = true;
+    double over = seed.symbol < 0 ? excess(reference_.symbol[c]) : 0.0;
+    for (std::size_t k = 0; k < size; ++k)
+        if (!taken[k]) over += excess(rings_[c][k].symbol);
+    return over;
+}
+
 bool Synthesis::motif_fits(int id, Point at, double radius) const {
     if (!panel_.admits({at, radius}, tolerance_)) return false;
     for (int other : pattern_.near(at, radius + pattern_.largest_radius())) {
@@ -345,7 +412,7 @@ bool Synthesis::motif_fits(int id, Point at, double radius) const {
 }
 
 void Synthesis::grow(int id) {
-    const std::vector<int>* candidates = &reference_.candidates;
+    const std::vector<int>* candidates = &candidates_;
     if (on_lattice()) {
         Lattice::Spot spot = lattice_->nearest(origin_, pattern_[id].position);
         if (spot.residual > kOffLattice * spacing_) return drop(id);
@@ -409,6 +476,7 @@ void Synthesis::grow(int id) {
     pattern_.note_radius(radius);
     placed_.push_back(id);
     ++placed_per_symbol_[static_cast<std::size_t>(n.symbol)];
+    release(id);
     // Thousands of motifs are one rule body: the watchdog needs to see them coming.
     report_progress("motifs", static_cast<long>(placed_.size()), options_.max_elements);
     if (lattice_ && !phase_) {

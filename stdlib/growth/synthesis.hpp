@@ -6,8 +6,10 @@
 
 #include <acanthus/random.hpp>
 #include <acanthus/stdlib/growth.hpp>
+#include <cstdint>
 #include <optional>
 #include <set>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -22,8 +24,17 @@
 
 namespace acanthus::growth::detail {
 
+// Interior reference elements matched at most (a larger reference: an even sample of them).
+inline constexpr std::size_t kMaxCandidates = 8192;
+
 // A seed farther than this (in spacings) from every lattice point is not on the lattice.
 inline constexpr double kOffLattice = 0.3;
+
+// The reference's median nearest-neighbour distance through its rings.
+double ring_spacing(const ReferenceData& reference);
+// Throws InputError, with the estimate, when a panel of this area would hold more than
+// Options::max_motifs motifs at the reference's spacing (max_elements caps the estimate).
+void check_motif_count(const ReferenceData& reference, double area, const Options& options);
 
 class Synthesis {
   public:
@@ -45,7 +56,14 @@ class Synthesis {
     void repair() {
         if (on_lattice()) repair_lattice();
     }
-    bool lattice_found() const { return lattice_.has_value(); }
+    bool lattice_found() const { return lattice_ != nullptr; }
+    // Tests compare the pruned choice with matching every candidate.
+    void set_pruning(bool on) {
+        if (!on)
+            slot_index_.reset();
+        else if (!slot_index_ && prunable_)
+            build_slot_index();
+    }
 
   private:
     struct Choice {
@@ -60,7 +78,12 @@ class Synthesis {
         }
     };
 
-    int next_seed() const;
+    // Section 5.1: takes the nearest seed that no higher-priority seed within 5 l blocks off the
+    // queue (-1: none). A blocked seed waits aside until a higher-priority seed near it stops
+    // being a seed (release), so the queue is not scanned again at every step.
+    int next_seed();
+    bool blocked(int seed) const;
+    void release(int former_seed);
     void grow_front();
     // Plants a seed in `hole` (the largest empty circle that holds a motif at the reference's
     // spacing), linked to the motifs around it; false when none could be planted.
@@ -109,18 +132,51 @@ class Synthesis {
     std::optional<FlowField> flow_;
     std::vector<std::vector<RingEntry>> rings_;         // per reference element, unrotated
     std::vector<std::vector<OuterEntry>> outer_rings_;  // per reference element (two_ring only)
-    std::vector<int> priority_;                         // per symbol id
+    // Candidate pruning (mode none or flow, 1-ring): every (candidate, ring slot) by the slot's
+    // offset on a grid, so that a seed evaluates only the alignments whose first pair is close
+    // enough to beat the best error so far (prune.cpp).
+    struct SlotEntry {
+        Vector slot[3];  // slot k's offset and the next two (cyclically)
+        int element = -1, shift = 0, symbol = -1, slots = 0;
+    };
+    struct SlotGroup {
+        long x = 0, y = 0;       // the next slot's cell
+        int begin = 0, end = 0;  // its entries
+    };
+    struct SlotIndex {
+        double cell = 0;
+        long lo = 0, hi = -1;            // the cell coordinates of first slots, both axes
+        int max_slots = 0;               // the largest ring
+        std::vector<SlotEntry> entries;  // grouped by first slot's cell, then the next slot's
+        std::unordered_map<std::int64_t, std::vector<SlotGroup>> cells;  // looked up only
+    };
+    void build_slot_index();
+    // choose() over the index: the same choice as matching every candidate, with the w4 term
+    // when `balance`.
+    Choice choose_pruned(const Node& seed, const std::vector<RingEntry>& target, double turn,
+                         bool balance);
+    // The w4 term's sum of excess() for reference element c aligned at `shift` with `targets`
+    // target neighbours: its own symbol for a seed without one, and its ring's untaken slots.
+    double balance_over(const Node& seed, int c, int shift, std::size_t targets) const;
+    std::optional<SlotIndex> slot_index_;
+    bool prunable_ = false;
+    std::vector<int> seen_;      // per element: the choose_pruned call that last evaluated it
+    std::vector<int> found_at_;  // per element seen in this call: its place in the found list
+    int seen_generation_ = 0;
+    std::vector<int> candidates_;  // the reference's, or an even sample of a huge one
+    std::vector<int> priority_;    // per symbol id
     bool priorities_differ_ = false;
     double l_ = 1, l_short_ = 0.5, tolerance_ = 0;
     double spacing_ = 1;
     std::optional<HoleFinder> holes_;
-    std::optional<Lattice> lattice_;
-    bool phase_ = false;  // the lattice's origin is set (by the first motif)
+    const Lattice* lattice_ = nullptr;  // the reference's (lattice_of), when used
+    bool phase_ = false;                // the lattice's origin is set (by the first motif)
     Point origin_;
     std::set<Lattice::Spot> planted_spots_;  // completion seeds, each point once
     std::set<Lattice::Spot> reopened_;       // emptied by the repair
     Arrangement pattern_;
-    std::set<std::pair<double, int>> queue_;  // (distance from the start, node)
+    std::set<std::pair<double, int>> queue_;    // (distance from the start, node)
+    std::set<std::pair<double, int>> waiting_;  // blocked seeds, the same way
     std::vector<Point> starts_;
     std::vector<int> placed_;
     int restart_seed_ = -1;                // the last restart's seed

@@ -254,7 +254,10 @@ def case_bad_input():
              ("guides", ["--param", f"growth_guides={bad / 'guides.svg'}"], "guides.svg"),
              ("mode", ["--param", "growth_mode=sideways"], "sideways"),
              ("flow-without-strokes", ["--param", "growth_mode=flow"], "flow stroke"),
-             ("negative-w4", ["--param", "growth_w4=-1"], "w4 must be finite and >= 0")]
+             ("negative-w4", ["--param", "growth_w4=-1"], "w4 must be finite and >= 0"),
+             # Issue 27: refused before growth starts, with the estimate.
+             ("absurd-count", ["--param", f"reference={REFS / 'stones.json'}", "--region",
+                               "rect:1000000,1000000"], "would grow about 1.21e+10 motifs")]
     for name, args, named in cases:
         _, p = run("bad-" + name, *args, expect=1)
         out = WORK / f"bad-{name}.svg"

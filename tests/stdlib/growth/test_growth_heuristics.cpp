@@ -183,6 +183,25 @@ TEST(GrowthHeuristics, PriorityGrowsTheHigherSymbolFirst) {
     EXPECT_GT(with, without + 10) << "b among the first 60: " << with << " vs " << without;
 }
 
+// A waiting seed goes back to the queue as soon as the higher-priority seeds near it are grown:
+// growth still goes outward, no motif near the start is left for the end.
+TEST(GrowthHeuristics, WaitingSeedsGrowWhenTheirBlockersAreGone) {
+    Reference ref =
+        Reference::from_elements(growth_fixtures::triangular_lattice(8, 8, 10, {"a", "b"}));
+    Region region = Region::from_spec("rect:240,180");
+    Options o;
+    o.lattice = false;
+    o.fill_holes = false;
+    o.priority = {{"b", 1}};
+    const Point start{120, 90};
+    SynthesisResult r = synthesize(ref, region, o, {start}, 3);
+    ASSERT_GT(r.motifs.size(), 300u);
+    const std::size_t last = r.motifs.size() * 3 / 4;
+    for (std::size_t i = last; i < r.motifs.size(); ++i)
+        EXPECT_GT(distance(r.motifs[i].position, start), 60.0)
+            << "motif " << i << " of " << r.motifs.size() << " (" << r.motifs[i].symbol << ")";
+}
+
 // The lattice repair: a motif moved off its lattice point and another given an element of
 // another site are found by the checker, removed with what they spoil, and grown again.
 TEST(GrowthRepair, DisturbedMotifsAreRemovedAndGrownAgain) {
@@ -223,6 +242,47 @@ TEST(GrowthRepair, DisturbedMotifsAreRemovedAndGrownAgain) {
     EXPECT_EQ(f.defects, 0);
     EXPECT_GE(after.stats.repaired, 2);
     EXPECT_EQ(after.motifs.size(), before.motifs.size());
+}
+
+}  // namespace
+
+namespace {
+
+// Candidate pruning (prune.cpp) chooses what matching every candidate chooses: the same motifs,
+// sources and links, in modes none and flow, for an irregular reference and a jittered one, with
+// the symbol-mix term (w4) and without it.
+TEST(GrowthPruning, SameChoicesAsMatchingEveryCandidate) {
+    std::vector<Reference> refs{
+        Reference::from_file(std::string(ACANTHUS_SOURCE_DIR) + "/examples/references/stones.json"),
+        Reference::from_elements(growth_fixtures::jittered_lattice(12, 12, 10, 1.5, {"a", "b"}))};
+    Region region = Region::from_spec("rect:150,110");
+    gd::RegionPanel panel(region);
+    for (const Reference& ref : refs)
+        for (Mode mode : {Mode::none, Mode::flow})
+            for (double w4 : {0.0, 20.0}) {
+                Options o;
+                o.mode = mode;
+                o.w4 = w4;
+                o.flow_strokes = {{{0, 0}, {150, 110}}};
+                std::vector<SynthesisResult> results;
+                for (bool pruned : {false, true}) {
+                    Random random(5);
+                    gd::Synthesis s(ref.data(), panel, o, random);
+                    s.set_pruning(pruned);
+                    s.plant({{75, 55}});
+                    s.run();
+                    results.push_back(s.result());
+                }
+                const SynthesisResult &all = results[0], &pruned = results[1];
+                ASSERT_GT(all.motifs.size(), 100u);
+                ASSERT_EQ(all.motifs.size(), pruned.motifs.size()) << ref.name() << " w4 " << w4;
+                for (std::size_t i = 0; i < all.motifs.size(); ++i) {
+                    ASSERT_EQ(all.motifs[i].source, pruned.motifs[i].source) << i << " w4 " << w4;
+                    ASSERT_EQ(all.motifs[i].position, pruned.motifs[i].position)
+                        << i << " w4 " << w4;
+                }
+                EXPECT_EQ(all.edges, pruned.edges);
+            }
 }
 
 }  // namespace

@@ -327,3 +327,26 @@ TEST(GrowthSynthesis, TwoRingKeepsAStripePeriodTheOneRingLoses) {
     EXPECT_GT(two, 0.6);
     EXPECT_GT(two, one + 0.2) << "1-ring " << one << ", 2-ring " << two;
 }
+
+// Issue 27: a panel that would hold an absurd number of motifs is refused before growth starts,
+// with the estimate; max_elements (or a raised limit) lets the same panel grow.
+TEST(GrowthSynthesis, AbsurdMotifCountIsRefusedUpFrontWithTheEstimate) {
+    Reference ref = Reference::from_json_file(std::string(ACANTHUS_SOURCE_DIR) +
+                                              "/examples/references/stones.json");
+    Region km = Region::from_spec("rect:1000000,1000000");
+    try {
+        synthesize(ref, km, Options{}, {}, 1);
+        ADD_FAILURE() << "a kilometre panel of stones was grown";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("would grow about 1.21e+10 motifs"), std::string::npos) << what;
+        EXPECT_NE(what.find("limit of 1000000"), std::string::npos) << what;
+        EXPECT_NE(what.find("stones.json"), std::string::npos) << what;
+    }
+    Options capped;
+    capped.max_elements = 40;
+    EXPECT_EQ(synthesize(ref, km, capped, {}, 1).motifs.size(), 40u);
+    Options small;
+    small.max_motifs = 100;
+    EXPECT_THROW(synthesize(ref, Region::from_spec("rect:200,200"), small, {}, 1), InputError);
+}

@@ -111,6 +111,9 @@ struct Options {
     // reference's in small panels too. 0: the paper's error.
     double w4 = 20.0;
     long max_elements = 0;  // 0: until no seed is left
+    // A panel estimated to hold more motifs than this (its area over the reference's density,
+    // or max_elements when smaller) is refused before growth starts, with the estimate.
+    long max_motifs = 1'000'000;
     // When the growth front stops, restart it in the largest empty circle that holds a motif at
     // the reference's spacing, until none is left (false: stop with the front, as the paper).
     bool fill_holes = true;
