@@ -25,7 +25,7 @@ struct Node {
     double radius = 0;
     double start_distance = 0;  // to the nearest start seed: the growth order
     bool alive = true;
-    bool fixed = false;  // held by relaxation
+    bool fixed = false;    // held by relaxation
     bool waiting = false;  // a seed set aside for a higher-priority seed near it
     std::vector<Link> links;
     bool placed() const { return source >= 0; }

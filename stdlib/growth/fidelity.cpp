@@ -96,8 +96,8 @@ double same_share(const Site& s, double reach) {
 }
 
 // Neighbours of each point within `reach`, as offsets and symbols.
-std::vector<RingChecker::Ring> rings(const std::vector<Point>& points, const std::vector<int>& symbols,
-                                     double reach) {
+std::vector<RingChecker::Ring> rings(const std::vector<Point>& points,
+                                     const std::vector<int>& symbols, double reach) {
     Neighbours n(points, reach);
     std::vector<RingChecker::Ring> out(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -162,7 +162,8 @@ RingChecker::RingChecker(const ReferenceData& reference) : spacing_(reference_sp
                 auto it = index_.find(((x + dx) << 32) ^ ((y + dy) & 0xffffffff));
                 if (it == index_.end()) continue;
                 for (int d : it->second)
-                    if (distinct_symbol_[d] == symbol && same_ring(r, distinct_[d], 0.005 * spacing_)) {
+                    if (distinct_symbol_[d] == symbol &&
+                        same_ring(r, distinct_[d], 0.005 * spacing_)) {
                         known = true;
                         break;
                     }
@@ -265,8 +266,8 @@ Fidelity measure_fidelity(const ReferenceData& reference, const std::vector<Moti
         ++f.interior;
         f.defects += !good[i];
     }
-    f.defect_share = f.interior > 0 ? static_cast<double>(f.defects) / static_cast<double>(f.interior)
-                                    : 0.0;
+    f.defect_share =
+        f.interior > 0 ? static_cast<double>(f.defects) / static_cast<double>(f.interior) : 0.0;
     f.largest_hole = largest_hole / spacing;
     return f;
 }

@@ -156,7 +156,8 @@ SynthesisResult run(const Reference& reference, const detail::Panel& panel, cons
 
 SynthesisResult synthesize(const Reference& reference, const Region& region, const Options& options,
                            const std::vector<Point>& starts, std::uint64_t seed) {
-    // Before anything that costs in proportion to the panel.
+    // Before anything that costs in proportion to the panel; a bad max_motifs is said as such.
+    check_options(options);
     detail::check_motif_count(reference.data(), region.area(), options);
     std::vector<Point> points = starts;
     if (points.empty() && options.spray_strokes.empty())

@@ -16,26 +16,26 @@ struct ReferenceData;
 
 struct Lattice {
     struct Site {
-        Vector offset;               // from the lattice origin, within one cell
-        int symbol = -1;             // the symbol every element of the site has
-        std::vector<int> elements;   // reference elements of this site
+        Vector offset;              // from the lattice origin, within one cell
+        int symbol = -1;            // the symbol every element of the site has
+        std::vector<int> elements;  // reference elements of this site
         // Of those, the ones matched against: not on the boundary, at most 64, the nearest the
         // reference's central element.
         std::vector<int> candidates;
     };
-    Vector t1, t2;            // the two shortest independent translations, |t1| <= |t2|
-    std::vector<Site> sites;  // one per kind of element in a cell
-    std::vector<int> site_of; // per reference element
-    double spacing = 0;       // the reference's median nearest-neighbour distance
-    double tolerance = 0;     // 0.15 spacing: how far an element may lie from its site
+    Vector t1, t2;             // the two shortest independent translations, |t1| <= |t2|
+    std::vector<Site> sites;   // one per kind of element in a cell
+    std::vector<int> site_of;  // per reference element
+    double spacing = 0;        // the reference's median nearest-neighbour distance
+    double tolerance = 0;      // 0.15 spacing: how far an element may lie from its site
 
     // A point of the lattice placed with `origin`: the site and cell of the lattice point
     // nearest p.
     struct Spot {
         int site = -1;
         long i = 0, j = 0;
-        Point at;               // the lattice point
-        double residual = 0;    // |p - at|
+        Point at;             // the lattice point
+        double residual = 0;  // |p - at|
         bool operator<(const Spot& o) const {
             return site != o.site ? site < o.site : i != o.i ? i < o.i : j < o.j;
         }

@@ -18,7 +18,9 @@ Rect EnvironmentPanel::bounds() const { return env_.region() ? env_.region()->bo
 
 double EnvironmentPanel::clearance(Point p) const { return env_.distance_to_boundary(p); }
 
-double EnvironmentPanel::area() const { return env_.region() ? env_.region()->area() : Panel::area(); }
+double EnvironmentPanel::area() const {
+    return env_.region() ? env_.region()->area() : Panel::area();
+}
 
 bool EnvironmentPanel::admits(Circle motif, double tolerance) const {
     if (!env_.inside(motif.center) ||

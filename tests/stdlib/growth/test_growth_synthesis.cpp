@@ -349,4 +349,13 @@ TEST(GrowthSynthesis, AbsurdMotifCountIsRefusedUpFrontWithTheEstimate) {
     Options small;
     small.max_motifs = 100;
     EXPECT_THROW(synthesize(ref, Region::from_spec("rect:200,200"), small, {}, 1), InputError);
+    Options none;
+    none.max_motifs = 0;
+    try {
+        synthesize(ref, Region::from_spec("rect:200,200"), none, {}, 1);
+        ADD_FAILURE() << "max_motifs 0 was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("max_motifs must be >= 1"), std::string::npos)
+            << e.what();
+    }
 }
