@@ -7,9 +7,6 @@
 
 namespace acanthus::cells {
 
-namespace {
-
-// Four corners on an axis-aligned box (the checker's test: a clipped piece is not a brick).
 bool is_rect(const std::vector<Point>& p, Rect& r) {
     if (p.size() != 4) return false;
     r = {1e300, 1e300, -1e300, -1e300};
@@ -22,8 +19,6 @@ bool is_rect(const std::vector<Point>& p, Rect& r) {
             return false;
     return true;
 }
-
-}  // namespace
 
 bool coursed(const Cell& c) {
     static const std::set<std::string> kinds{"bricks", "window_bottom", "quoins", "lintel"};

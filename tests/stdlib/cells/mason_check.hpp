@@ -67,18 +67,7 @@ struct MasonReport {
 
 namespace mason_detail {
 
-inline bool is_rect(const std::vector<Point>& p, Rect& r) {
-    if (p.size() != 4) return false;
-    r = {1e300, 1e300, -1e300, -1e300};
-    for (Point q : p)
-        r = {std::min(r.x0, q.x), std::min(r.y0, q.y), std::max(r.x1, q.x), std::max(r.y1, q.y)};
-    const double eps = 1e-6 * std::max(1.0, std::max(std::abs(r.x1), std::abs(r.y1)));
-    for (Point q : p)
-        if ((std::abs(q.x - r.x0) > eps && std::abs(q.x - r.x1) > eps) ||
-            (std::abs(q.y - r.y0) > eps && std::abs(q.y - r.y1) > eps))
-            return false;
-    return true;
-}
+using acanthus::cells::is_rect;
 
 inline bool contains(const std::vector<Point>& poly, Point p) {
     bool in = false;

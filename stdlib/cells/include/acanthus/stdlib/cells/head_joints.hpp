@@ -23,6 +23,9 @@ struct HeadJoints {
     std::vector<StraightJoint> straight;
 };
 
+// `p` is four corners of an axis-aligned box, `r` (a clipped piece is not a brick).
+bool is_rect(const std::vector<Point>& p, Rect& r);
+
 // Laid in courses of bricks: bricks, window bottoms, quoins and lintels (not stones, arches,
 // soldiers on end over a head or coloured blocks).
 bool coursed(const Cell& cell);
