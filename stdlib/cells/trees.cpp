@@ -13,6 +13,12 @@ namespace {
 // ring of voussoirs is what a mason lays round an oculus too); the rest gets `rest`.
 Node arches(Node arch, Node rest) { return by_curve(arch, rest); }
 
+bool on_opening(const FeatureRef& f, Context& c) {
+    auto i = static_cast<std::size_t>(f.index);
+    return f.kind == FeatureKind::corner ? c.facade().corners()[i].opening
+                                         : c.facade().edges()[i].opening;
+}
+
 }  // namespace
 
 Node brick_tree() {
@@ -34,10 +40,7 @@ Node brick_tree() {
     });
     Node openings = by_part(head, by_kind(wb, wb, b), b);
     Node features = Node([=](const FeatureRef& f, Context& c) {
-        auto i = static_cast<std::size_t>(f.index);
-        bool opening = f.kind == FeatureKind::corner ? c.facade().corners()[i].opening
-                                                     : c.facade().edges()[i].opening;
-        if (opening)
+        if (on_opening(f, c))
             openings(f, c);
         else
             b(f, c);
@@ -51,12 +54,10 @@ Node framed_tree() {
     Node q = generator("quoins", quoins());
     Node openings = by_part(by_curve(b, lin), generator("window_bottom", window_bottom()), q);
     Node features = Node([=](const FeatureRef& f, Context& c) {
-        auto i = static_cast<std::size_t>(f.index);
-        bool opening = f.kind == FeatureKind::corner ? c.facade().corners()[i].opening
-                                                     : c.facade().edges()[i].opening;
-        if (opening)
+        if (on_opening(f, c))
             openings(f, c);
-        else if (f.kind == FeatureKind::edge && c.facade().edges()[i].vertical())
+        else if (f.kind == FeatureKind::edge &&
+                 c.facade().edges()[static_cast<std::size_t>(f.index)].vertical())
             q(f, c);
         else
             b(f, c);
@@ -78,10 +79,7 @@ Node ashlar_tree() {
     // Openings: a lintel over a straight head (its corners lay it first), sill stones under.
     Node openings = by_part(lin, by_kind(wb, wb, a), a);
     Node features = Node([=](const FeatureRef& f, Context& c) {
-        auto i = static_cast<std::size_t>(f.index);
-        bool opening = f.kind == FeatureKind::corner ? c.facade().corners()[i].opening
-                                                     : c.facade().edges()[i].opening;
-        if (opening)
+        if (on_opening(f, c))
             openings(f, c);
         else
             a(f, c);
