@@ -129,6 +129,50 @@ function(acanthus_stdlib_library)
   set_property(GLOBAL PROPERTY ACANTHUS_STDLIB_RULE_DIR "${rule_dir}")
 endfunction()
 
+# acanthus_stdlib_preview_strokes(NAME name KINDS kind... FILE_PARAM param [WIDTH_KINDS kind...]
+#   [MODE_PARAM param MODE_KINDS kind...]): strokes `acanthus preview` lets the user draw for a
+# program that imports the library: saved as an SVG of polylines whose class is the kind (a
+# WIDTH_KINDS stroke's stroke-width is its brush diameter), the file named by FILE_PARAM; while a
+# MODE_KINDS stroke is drawn, MODE_PARAM is set to its kind. Read back with
+# acanthus_stdlib_get(PREVIEW_STROKES): one JSON object per library.
+function(acanthus_stdlib_preview_strokes)
+  cmake_parse_arguments(PARSE_ARGV 0 ARG "" "NAME;FILE_PARAM;MODE_PARAM"
+    "KINDS;WIDTH_KINDS;MODE_KINDS")
+  set(what "acanthus_stdlib_preview_strokes(${ARG_NAME})")
+  get_property(known GLOBAL PROPERTY ACANTHUS_STDLIB_LIBRARIES)
+  if(ARG_UNPARSED_ARGUMENTS OR NOT ARG_NAME IN_LIST known OR NOT ARG_KINDS OR NOT ARG_FILE_PARAM
+     OR (ARG_MODE_PARAM AND NOT ARG_MODE_KINDS) OR (ARG_MODE_KINDS AND NOT ARG_MODE_PARAM))
+    message(FATAL_ERROR "${what}: use NAME registered-library KINDS kind... FILE_PARAM param "
+      "[WIDTH_KINDS kind...] [MODE_PARAM param MODE_KINDS kind...]")
+  endif()
+  foreach(kind IN LISTS ARG_KINDS ARG_WIDTH_KINDS ARG_MODE_KINDS)
+    if(NOT kind MATCHES "^[a-z][a-z0-9_]*$" OR NOT kind IN_LIST ARG_KINDS)
+      message(FATAL_ERROR "${what}: '${kind}' is not one of KINDS (lower-case names)")
+    endif()
+  endforeach()
+  # The parameters must be the library's own: declared in its rule file.
+  get_property(rules GLOBAL PROPERTY ACANTHUS_STDLIB_${ARG_NAME}_RULES)
+  file(READ "${rules}" rule_text)
+  foreach(param IN LISTS ARG_FILE_PARAM ARG_MODE_PARAM)
+    if(NOT rule_text MATCHES "\n%param [a-z:]+ ${param} ")
+      message(FATAL_ERROR "${what}: ${rules} declares no %param ${param}")
+    endif()
+  endforeach()
+  set(json "{\"library\": \"${ARG_NAME}\", \"file_param\": \"${ARG_FILE_PARAM}\"")
+  string(APPEND json ", \"mode_param\": \"${ARG_MODE_PARAM}\"")
+  foreach(field kinds width_kinds mode_kinds)
+    string(TOUPPER "${field}" key)
+    list(JOIN ARG_${key} "\", \"" items)
+    if(items STREQUAL "")
+      string(APPEND json ", \"${field}\": []")
+    else()
+      string(APPEND json ", \"${field}\": [\"${items}\"]")
+    endif()
+  endforeach()
+  string(APPEND json "}")
+  set_property(GLOBAL APPEND PROPERTY ACANTHUS_STDLIB_PREVIEW_STROKES "${json}")
+endfunction()
+
 # acanthus_stdlib_property(<out-var> <library> <field>): one recorded field of a library: DIR,
 # SOURCES, INCLUDE_DIR, RULES, TESTS, TARGET, DEPENDS or TEST_DEPENDS.
 function(acanthus_stdlib_property out_var name field)
@@ -146,6 +190,7 @@ endfunction()
 #   PACKAGES       CMake packages a consumer of libacanthus_stdlib.a finds (find_dependency)
 #   LINK_TARGETS   the imported targets libacanthus_stdlib.a links
 #   PKG_CONFIG     the pkg-config modules it links
+#   PREVIEW_STROKES  the stroke tools libraries declare for the preview (JSON objects)
 # and over the runtime's dependencies (declared RUNTIME):
 #   RUNTIME_LINK_TARGETS   imported targets libacanthus.a links (not header-only)
 #   RUNTIME_HEADER_ONLY    header-only targets it compiles with
@@ -184,6 +229,8 @@ function(acanthus_stdlib_get out_var what)
     endforeach()
   elseif(what STREQUAL "LIBRARIES")
     set(result "${names}")
+  elseif(what STREQUAL "PREVIEW_STROKES")
+    get_property(result GLOBAL PROPERTY ACANTHUS_STDLIB_PREVIEW_STROKES)
   elseif(what STREQUAL "RULE_DIR")
     get_property(result GLOBAL PROPERTY ACANTHUS_STDLIB_RULE_DIR)
   elseif(what STREQUAL "INCLUDE_DIRS" OR what STREQUAL "RULE_FILES")

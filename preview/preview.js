@@ -14,6 +14,8 @@ const page = {
   mode: "pan",
   seeds: [],                           // region coordinates
   strokes: [],                         // {kind, width, points: [[x, y]...]} in region coordinates
+  strokeTool: null,                    // the stroke tools of a library the program imports
+  strokeToolKey: "",
   frames: 0,
   pictureUrl: null,
   askedForLastGood: false,             // opened on a broken file: the last good picture asked for
@@ -108,9 +110,33 @@ function update(status) {
   fillRules(status.metrics && status.metrics.rules);
   if (status.state === "ok") fillFidelity(status.metrics && status.metrics.growth);
   if (status.state !== "running") fillRevisions(status);
-  const growth = (status.params || []).some((q) => q.name === "growth_guides");
-  $("growthtools").hidden = !growth;
-  for (const el of document.querySelectorAll(".growth")) el.hidden = !growth;
+  showStrokeTools((status.stroke_tools || [])[0] || null);
+}
+
+// --- the stroke tools of a library the program imports (its guides), as it declares them ------
+function showStrokeTools(tool) {
+  const key = JSON.stringify(tool);
+  if (key === page.strokeToolKey) return;
+  page.strokeToolKey = key;
+  page.strokeTool = tool;
+  const kinds = $("strokekinds");
+  kinds.textContent = "";
+  for (const kind of tool ? tool.kinds : []) {
+    const b = document.createElement("button");
+    b.dataset.mode = kind;
+    b.title = `Draw a ${kind} stroke (${tool.library})`;
+    b.textContent = kind.charAt(0).toUpperCase() + kind.slice(1);
+    kinds.append(b);
+  }
+  if (!tool || !tool.kinds.includes(page.mode)) setMode("pan");
+  else setMode(page.mode);
+  $("brushlabel").hidden = !tool || tool.width_kinds.length === 0;
+  $("stroketools").hidden = !tool;
+  if (tool) {
+    $("stroketitle").textContent = `${tool.library} strokes`;
+    $("strokehint").textContent = `${tool.kinds.join(", ")} strokes are saved as the SVG --param ${tool.file_param} names`;
+  }
+  drawOverlay();
 }
 
 // A picture of the growth so far (/partial.svg, number n): one fetch at a time, the latest wins.
@@ -488,8 +514,8 @@ $("view").addEventListener("pointerup", () => {
 });
 
 function sendStrokes() {
-  const body = { strokes: page.strokes };
-  if (page.strokes.some((s) => s.kind === "flow")) body.mode = "flow";
+  if (!page.strokeTool) return;
+  const body = { library: page.strokeTool.library, strokes: page.strokes };
   $("strokecount").textContent = page.strokes.length ? `${page.strokes.length} stroke(s)` : "no strokes";
   drawOverlay();
   post("/guides", body);
@@ -502,8 +528,10 @@ function drawOverlay() {
   for (const s of page.strokes) {
     const line = document.createElementNS(SVGNS, "polyline");
     line.setAttribute("points", s.points.map((p) => toPage(p).join(",")).join(" "));
-    line.setAttribute("class", `stroke stroke-${s.kind}`);
-    line.setAttribute("stroke-width", s.kind === "spray" && l ? s.width * l.scale : 2.5);
+    const tool = page.strokeTool || { kinds: [], width_kinds: [] };
+    const wide = tool.width_kinds.includes(s.kind);
+    line.setAttribute("class", `stroke stroke-k${tool.kinds.indexOf(s.kind)}${wide ? " stroke-wide" : ""}`);
+    line.setAttribute("stroke-width", wide && l ? s.width * l.scale : 2.5);
     svg.append(line);
   }
   for (const s of page.seeds) {
@@ -515,13 +543,15 @@ function drawOverlay() {
   }
 }
 
-for (const b of document.querySelectorAll("#modes button")) {
-  b.addEventListener("click", () => {
-    page.mode = b.dataset.mode;
-    for (const o of document.querySelectorAll("#modes button")) o.classList.toggle("on", o === b);
-    $("view").className = page.mode;
-  });
+function setMode(mode) {
+  page.mode = mode;
+  for (const o of document.querySelectorAll("#modes button")) o.classList.toggle("on", o.dataset.mode === mode);
+  $("view").className = mode === "pan" || mode === "seed" ? mode : "draw";
 }
+$("modes").addEventListener("click", (e) => {
+  const b = e.target.closest("button");
+  if (b && b.dataset.mode) setMode(b.dataset.mode);
+});
 
 // --- controls -------------------------------------------------------------------------------
 $("rng").addEventListener("change", () => sendSettings({ rng_seed: String($("rng").value) }));

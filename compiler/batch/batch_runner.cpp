@@ -13,7 +13,7 @@
 #include "batch/child_process.hpp"
 #include "batch/job_state.hpp"
 #include "batch/rule_programs.hpp"
-#include "driver/toolchain.hpp"
+#include "toolchain/toolchain.hpp"
 
 namespace acanthus::batch {
 

@@ -1,5 +1,5 @@
 // Runs a program in a directory with its standard error captured, for the batch's workers
-// (driver/process.hpp runs the C++ compiler with inherited stdio instead).
+// (toolchain/process.hpp runs the C++ compiler with inherited stdio instead).
 #pragma once
 
 #include <string>

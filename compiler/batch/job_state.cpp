@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "driver/build_command.hpp"
+#include "toolchain/program_build.hpp"
 
 namespace acanthus::batch {
 

@@ -7,7 +7,7 @@
 #include "batch/job_state.hpp"
 #include "compilation.hpp"
 #include "dependency_file.hpp"
-#include "driver/toolchain_config.hpp"
+#include "toolchain/toolchain_config.hpp"
 
 namespace acanthus::batch {
 

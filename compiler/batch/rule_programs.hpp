@@ -1,12 +1,12 @@
 // Each rule file of a batch, compiled once to C++ and built once into the content-hash cache
-// `acanthus run` uses (driver/build_command.hpp).
+// `acanthus run` uses (toolchain/program_build.hpp).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "driver/build_command.hpp"
-#include "driver/toolchain.hpp"
+#include "toolchain/program_build.hpp"
+#include "toolchain/toolchain.hpp"
 
 namespace acanthus::batch {
 

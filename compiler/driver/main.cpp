@@ -12,10 +12,10 @@
 #include "batch/batch_command.hpp"
 #include "compilation.hpp"
 #include "dependency_file.hpp"
-#include "driver/build_command.hpp"
 #include "driver/preview_command.hpp"
-#include "driver/toolchain.hpp"
-#include "driver/toolchain_config.hpp"
+#include "toolchain/program_build.hpp"
+#include "toolchain/toolchain.hpp"
+#include "toolchain/toolchain_config.hpp"
 
 namespace {
 

@@ -1,16 +1,16 @@
-// `acanthus preview FILE.acr [program options] [--port N] [--host ADDR]`: a live page for the
-// rule file, served until Ctrl-C.
+// `acanthus preview FILE.acr [program options] [--port N] [--host ADDR] [--memory-limit SIZE]
+// [--editor CMD]`: the command line of the preview server (preview/server/serve.hpp).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "driver/build_command.hpp"
-#include "driver/toolchain.hpp"
+#include "toolchain/program_build.hpp"
+#include "toolchain/toolchain.hpp"
 
 namespace acanthus {
 
-// `args` are everything after FILE (program options mixed with --port and --host).
+// `args` are everything after FILE (program options mixed with the server's options).
 int run_preview(const std::string& input, const std::vector<std::string>& includes,
                 const Toolchain& toolchain, const BuildOptions& build,
                 const std::vector<std::string>& args);

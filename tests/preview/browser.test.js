@@ -100,6 +100,9 @@ async function rulesAndSliders(browser) {
         "a slider per numeric parameter, with the declared range: " + JSON.stringify(sliders));
   check(await page.$("#params input[type=checkbox]") !== null, "a checkbox for the bool parameter");
   check(await page.$eval("#fidelity", (d) => d.hidden), "no fidelity panel without the growth library");
+  check(await page.$("#strokekinds button") === null && await page.$eval("#stroketools", (d) => d.hidden) &&
+        await page.$eval("#brushlabel", (d) => d.hidden),
+        "no stroke tools for a program that imports no library declaring them");
   const rulesShown = await page.$$eval("#rules tbody tr", (rows) => rows.map((r) => r.cells[0].textContent));
   check(rulesShown.includes("dot --> dot"), "per-rule metrics in the page");
   const firstSvg = await (await fetch(url + "render.svg")).text();
@@ -256,7 +259,9 @@ async function growthTools(browser) {
   await page.goto(url);
   let rev = await waitShown(page, 0);
   const before = await (await fetch(url + "render.svg")).text();
-  check(await page.$eval("#modes button[data-mode=flow]", (b) => !b.hidden), "growth tools shown for a growth rule file");
+  check(JSON.stringify(await page.$$eval("#strokekinds button", (l) => l.map((b) => b.dataset.mode))) ===
+        JSON.stringify(["flow", "boundary", "spray"]) && !(await page.$eval("#stroketools", (d) => d.hidden)),
+        "the growth library's stroke tools, as its registration declares them, for a growth rule file");
   // The growth library's fidelity report, from --metrics, in a panel of its own.
   const g = (await status(url)).metrics.growth;
   const fidelity = await page.evaluate(() => ({

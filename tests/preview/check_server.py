@@ -391,23 +391,12 @@ def main():
             server.post("/settings", {"params": {"smallest": None}})
             code, _ = server.post("/settings", b"{not json")
             check(code == 400, "malformed settings refused (%d)" % code)
-            # Guides are written beside the rule file without following links: neither a
-            # link named like the guides file nor one named like a temporary of it is followed.
-            outside = os.path.join(work, "outside")
-            os.mkdir(outside)
-            for name in ["bubbles.guides.svg", "bubbles.guides.svg.partial"]:
-                target = os.path.join(outside, name + ".target")
-                save(target, "keep\n")
-                os.symlink(target, os.path.join(work, name))
+            # No library with stroke tools imported: none offered, strokes refused.
             code, body = server.post("/guides", {"strokes": [
                 {"kind": "flow", "width": 10, "points": [[1, 2], [30, 40]]}]})
-            guides = os.path.join(work, "bubbles.guides.svg")
-            check(code == 200 and not os.path.islink(guides) and
-                  "<polyline" in open(guides).read(), "the guides replace a link of their name")
-            check(all(open(os.path.join(outside, f)).read() == "keep\n"
-                      for f in os.listdir(outside)), "no file a link pointed to was written")
-            check(sorted(f for f in os.listdir(work) if f.startswith("bubbles.guides")) ==
-                  ["bubbles.guides.svg", "bubbles.guides.svg.partial"], "no temporary left")
+            check(server.status()["stroke_tools"] == [] and code == 409 and
+                  "no library with stroke tools" in body.decode(),
+                  "no stroke tools without a library that declares them (%d)" % code)
             rc = server.stop()
             check(rc == 0, "Ctrl-C stops the server with status 0 (%s)" % rc)
         # Saving an imported file re-renders too.
@@ -425,6 +414,54 @@ def main():
             s = server.wait_revision(s["revision"])
             check(s["state"] == "ok" and "extra_two" in [p["name"] for p in s["params"]],
                   "saving an imported file re-renders")
+        # A library's stroke tools come with its import, as its registration declares them:
+        # growth's guides for a rule file that imports growth.
+        guided = os.path.join(work, "guided.acr")
+        save(guided, '%import "growth"\n' + good)
+        with PreviewServer(acanthus, guided, ["--region", "rect:60,40"], cwd=work) as server:
+            s = server.wait_revision(0)
+            tools = s["stroke_tools"]
+            check(s["state"] == "ok" and len(tools) == 1 and tools[0]["library"] == "growth" and
+                  tools[0]["file_param"] == "growth_guides" and
+                  tools[0]["kinds"] == ["flow", "boundary", "spray"],
+                  "growth's stroke tools offered when it is imported: %s" % tools)
+            code, _ = server.post("/guides", {"library": "cells", "strokes": []})
+            check(code == 409, "strokes for a library the program does not use refused (%d)" % code)
+            # Guides are written beside the rule file without following links: neither a
+            # link named like the guides file nor one named like a temporary of it is followed.
+            outside = os.path.join(work, "outside")
+            os.mkdir(outside)
+            for name in ["guided.guides.svg", "guided.guides.svg.partial"]:
+                target = os.path.join(outside, name + ".target")
+                save(target, "keep\n")
+                os.symlink(target, os.path.join(work, name))
+            code, body = server.post("/guides", {"strokes": [
+                {"kind": "flow", "width": 10, "points": [[1, 2], [30, 40]]}]})
+            guides = os.path.join(work, "guided.guides.svg")
+            check(code == 200 and not os.path.islink(guides) and
+                  "<polyline" in open(guides).read(), "the guides replace a link of their name")
+            check(all(open(os.path.join(outside, f)).read() == "keep\n"
+                      for f in os.listdir(outside)), "no file a link pointed to was written")
+            check(sorted(f for f in os.listdir(work) if f.startswith("guided.guides")) ==
+                  ["guided.guides.svg", "guided.guides.svg.partial"], "no temporary left")
+            s = server.status()
+            check(s["settings"]["params"].get("growth_guides") ==
+                  os.path.join(work, "guided.guides.svg") and
+                  s["settings"]["params"].get("growth_mode") == "flow",
+                  "a flow stroke names the guides file and sets the mode parameter: %s" %
+                  s["settings"]["params"])
+            code, _ = server.post("/guides", {"strokes": [
+                {"kind": "boundary", "points": [[1, 2], [30, 40]]}]})
+            params = server.status()["settings"]["params"]
+            check(code == 200 and "growth_mode" not in params and "growth_guides" in params,
+                  "without a flow stroke the mode goes back to the rule file's: %s" % params)
+        # A parameter of the same name, without the import: no tools.
+        save(rules, '%param string growth_guides = "";\n' + good)
+        with PreviewServer(acanthus, rules, ["--region", "rect:60,40"], cwd=work) as server:
+            s = server.wait_revision(0)
+            check(s["state"] == "ok" and s["stroke_tools"] == [],
+                  "a rule file's own growth_guides parameter brings no stroke tools: %s %s" %
+                  (s["state"], s["stroke_tools"]))
         # --memory-limit: a body that wants 1 GiB under a 256 MiB limit fails, and the
         # message names the limit; a bad limit is refused.
         save(rules, good.replace("    $$0.order = dot_count++;",

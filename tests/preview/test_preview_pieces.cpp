@@ -1,18 +1,23 @@
 // The preview's pure pieces: diagnostics parsed from compiler output, guides written from
-// strokes, program options split into the page's settings, the server's connection threads and
-// program slots.
+// strokes, the stroke tools libraries declare, program options split into the page's settings, the
+// server's connection threads and program slots.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <filesystem>
 #include <fstream>
 #include <future>
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "driver/preview_diagnostics.hpp"
-#include "driver/preview_guides.hpp"
-#include "driver/preview_limits.hpp"
-#include "driver/preview_settings.hpp"
+#include "server/diagnostics.hpp"
+#include "server/guides.hpp"
+#include "server/limits.hpp"
+#include "server/settings.hpp"
+#include "server/stroke_tools.hpp"
+#include "toolchain/toolchain.hpp"
 
 namespace acanthus {
 namespace {
@@ -135,30 +140,111 @@ TEST(PreviewEditor, PlaceholdersOrTheLineConvention) {
     EXPECT_TRUE(editor_command("   ", "/r/a.acr", 1, 1).empty());
 }
 
+// A declaration like the growth library's registration makes (stdlib/growth/CMakeLists.txt).
+StrokeTool guides_tool() {
+    std::vector<StrokeTool> tools;
+    std::string error;
+    EXPECT_TRUE(parse_stroke_tools(R"([{"library": "guided", "file_param": "guided_file",
+        "mode_param": "guided_mode", "kinds": ["flow", "boundary", "spray"],
+        "width_kinds": ["spray"], "mode_kinds": ["flow"]}])",
+                                   tools, error))
+        << error;
+    return tools.empty() ? StrokeTool{} : tools[0];
+}
+
 TEST(PreviewGuides, StrokesBecomePolylinesOfTheirClass) {
     auto body = nlohmann::json::parse(R"({"strokes": [
         {"kind": "flow", "points": [[0, 0], [10, 5]]},
         {"kind": "spray", "width": 12.5, "points": [[1, 1], [2, 2], [3, 3]]}]})");
     std::string svg, error;
-    ASSERT_TRUE(guides_svg(body, svg, error)) << error;
+    std::vector<std::string> kinds;
+    ASSERT_TRUE(guides_svg(body, guides_tool(), svg, kinds, error)) << error;
     EXPECT_NE(svg.find("<polyline class=\"flow\""), std::string::npos);
     EXPECT_NE(svg.find("class=\"spray\" fill=\"none\" stroke=\"#c63\" stroke-width=\"12.5\""),
               std::string::npos);
     EXPECT_NE(svg.find("points=\"0,0 10,5 \""), std::string::npos);
+    EXPECT_EQ(kinds, (std::vector<std::string>{"flow", "spray"}));
+    EXPECT_EQ(guides_tool().mode_for(kinds), "flow");
+    EXPECT_EQ(guides_tool().mode_for({"spray", "boundary"}), "");
 }
 
 TEST(PreviewGuides, BadStrokesRefused) {
     std::string svg, error;
+    std::vector<std::string> kinds;
     for (const char* bad : {R"({})", R"({"strokes": [{"kind": "paint", "points": [[0,0],[1,1]]}]})",
                             R"({"strokes": [{"kind": "flow", "points": [[0,0]]}]})",
                             R"({"strokes": [{"kind": "spray", "points": [[0,0],[1,1]]}]})",
                             R"({"strokes": [{"kind": "flow", "points": [[0,0],[1e12,1]]}]})",
                             R"({"strokes": [{"kind": "flow", "points": [[0,0],["a",1]]}]})"}) {
-        EXPECT_FALSE(guides_svg(nlohmann::json::parse(bad), svg, error)) << bad;
+        EXPECT_FALSE(guides_svg(nlohmann::json::parse(bad), guides_tool(), svg, kinds, error))
+            << bad;
         EXPECT_FALSE(error.empty());
     }
-    EXPECT_TRUE(guides_svg(nlohmann::json::parse(R"({"strokes": []})"), svg, error));
+    EXPECT_TRUE(
+        guides_svg(nlohmann::json::parse(R"({"strokes": []})"), guides_tool(), svg, kinds, error));
     EXPECT_TRUE(svg.empty());
+}
+
+TEST(PreviewStrokeTools, BadDeclarationsRefused) {
+    std::vector<StrokeTool> tools;
+    for (
+        const char* bad :
+        {R"({})", R"([{"kinds": ["a"], "width_kinds": [], "mode_kinds": []}])",
+         R"([{"library": "x", "file_param": "f", "kinds": [], "width_kinds": [], "mode_kinds": []}])",
+         R"([{"library": "x", "file_param": "f", "kinds": ["a"], "width_kinds": ["b"],
+               "mode_kinds": []}])",
+         R"([{"library": "x", "file_param": "f g", "kinds": ["a"], "width_kinds": [],
+               "mode_kinds": []}])",
+         "not json"}) {
+        std::string error;
+        EXPECT_FALSE(parse_stroke_tools(bad, tools, error)) << bad;
+        EXPECT_FALSE(error.empty()) << bad;
+    }
+    std::string error;
+    EXPECT_TRUE(parse_stroke_tools("[]", tools, error));
+    EXPECT_TRUE(tools.empty());
+}
+
+// Only a program that imports the library, and has its parameter, gets its tools: a rule file
+// that declares a parameter of the same name itself does not.
+TEST(PreviewStrokeTools, OnlyForProgramsImportingTheLibrary) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("acanthus-tools-" + std::to_string(getpid()));
+    fs::create_directories(dir / "stdlib");
+    const std::string stdlib = (dir / "stdlib").string();
+    const std::string library = (dir / "stdlib" / "guided.acr").string();
+    const std::string rule = (dir / "rule.acr").string();
+    const std::vector<StrokeTool> declared = {guides_tool()};
+    const std::vector<ParamSummary> with_param = {{"radius", "double", "1", "", ""},
+                                                  {"guided_file", "std::string", "\"\"", "", ""}};
+    const std::vector<ParamSummary> without_param = {{"radius", "double", "1", "", ""}};
+    // Imported: tools. The same file named through "..": still the library.
+    EXPECT_EQ(stroke_tools_of(declared, {rule, library}, {stdlib}, with_param).size(), 1u);
+    EXPECT_EQ(
+        stroke_tools_of(declared, {rule, stdlib + "/../stdlib/guided.acr"}, {stdlib}, with_param)
+            .size(),
+        1u);
+    // Not imported, or a file of the same name elsewhere: none.
+    EXPECT_TRUE(stroke_tools_of(declared, {rule}, {stdlib}, with_param).empty());
+    EXPECT_TRUE(
+        stroke_tools_of(declared, {rule, (dir / "guided.acr").string()}, {stdlib}, with_param)
+            .empty());
+    // Imported but without the parameter (another version of the library): none.
+    EXPECT_TRUE(stroke_tools_of(declared, {rule, library}, {stdlib}, without_param).empty());
+    fs::remove_all(dir);
+}
+
+// The declarations the build baked in parse: the growth library's guides among them.
+TEST(PreviewStrokeTools, RegisteredDeclarationsParse) {
+    std::vector<StrokeTool> tools;
+    std::string error;
+    ASSERT_TRUE(parse_stroke_tools(find_toolchain().preview_strokes, tools, error)) << error;
+    const auto growth = std::find_if(tools.begin(), tools.end(),
+                                     [](const StrokeTool& t) { return t.library == "growth"; });
+    ASSERT_NE(growth, tools.end());
+    EXPECT_EQ(growth->file_param, "growth_guides");
+    EXPECT_EQ(growth->mode_param, "growth_mode");
+    EXPECT_EQ(growth->kinds, (std::vector<std::string>{"flow", "boundary", "spray"}));
 }
 
 TEST(PreviewSettings, ProgramOptionsSplitIntoControls) {

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "driver/build_command.hpp"
-#include "driver/toolchain.hpp"
+#include "toolchain/program_build.hpp"
+#include "toolchain/toolchain.hpp"
 
 namespace acanthus {
 

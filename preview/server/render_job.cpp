@@ -1,4 +1,4 @@
-#include "driver/preview_render_job.hpp"
+#include "server/render_job.hpp"
 
 #include <sys/stat.h>
 
@@ -11,10 +11,10 @@
 #include <sstream>
 
 #include "compilation.hpp"
-#include "driver/precompiled_prelude.hpp"
-#include "driver/preview_child.hpp"
-#include "driver/preview_host.hpp"
-#include "driver/process.hpp"
+#include "server/child.hpp"
+#include "server/host.hpp"
+#include "toolchain/precompiled_prelude.hpp"
+#include "toolchain/process.hpp"
 
 namespace acanthus {
 
@@ -260,6 +260,8 @@ void RenderJob::render(long generation) {
                      seconds_since(start));
         return;
     }
+    status_.set_stroke_tools(
+        stroke_tools_of(config_.stroke_tools, files, config_.toolchain.stdlib_dirs, params));
     status_.set_params(params);
     status_.set_timing("compile", seconds_since(start));
 

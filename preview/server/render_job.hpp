@@ -11,11 +11,12 @@
 #include <thread>
 #include <vector>
 
-#include "driver/build_command.hpp"
-#include "driver/preview_settings.hpp"
-#include "driver/preview_status.hpp"
-#include "driver/preview_watcher.hpp"
-#include "driver/toolchain.hpp"
+#include "server/settings.hpp"
+#include "server/status.hpp"
+#include "server/stroke_tools.hpp"
+#include "server/watcher.hpp"
+#include "toolchain/program_build.hpp"
+#include "toolchain/toolchain.hpp"
 
 namespace acanthus {
 
@@ -24,8 +25,9 @@ struct PreviewConfig {
     std::vector<std::string> includes;  // -I
     Toolchain toolchain;
     BuildOptions build;
-    std::string work_dir;                 // the server's own temporary directory
-    unsigned long long memory_limit = 0;  // bytes of address space for each program run; 0: none
+    std::string work_dir;                  // the server's own temporary directory
+    unsigned long long memory_limit = 0;   // bytes of address space for each program run; 0: none
+    std::vector<StrokeTool> stroke_tools;  // declared by the stdlib libraries
 };
 
 // A program run besides the live render: a download, frames, a debug frame.

@@ -20,6 +20,9 @@ struct Toolchain {
     std::string default_cxx;
     std::string preview_dir;  // the preview page (index.html, preview.js, preview.css)
     std::string panels_dir;   // the panels the preview offers
+    // The stroke tools stdlib libraries declare for the preview page: a JSON array, one object
+    // per library (cmake/AcanthusStdlib.cmake, acanthus_stdlib_preview_strokes).
+    std::string preview_strokes = "[]";
 };
 
 Toolchain find_toolchain();

@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "compilation.hpp"
-#include "driver/preview_diagnostics.hpp"
+#include "server/diagnostics.hpp"
+#include "server/stroke_tools.hpp"
 
 namespace acanthus {
 
@@ -24,6 +25,9 @@ class PreviewStatus {
     // A picture of the growth so far (the program's --partial), while it grows.
     void set_partial(std::string svg);
     void set_params(std::vector<ParamSummary> params);
+    // The stroke tools of the libraries the program imports (the page offers them).
+    void set_stroke_tools(std::vector<StrokeTool> tools);
+    std::vector<StrokeTool> stroke_tools() const;
     void set_command(std::string command);
     // Seconds one phase of the current render took (compile, build, grow): where time goes.
     void set_timing(const std::string& phase, double seconds);
@@ -59,6 +63,7 @@ class PreviewStatus {
     std::string output_;  // the compiler's or program's messages, exactly as printed
     std::vector<PreviewDiagnostic> diagnostics_;
     std::vector<ParamSummary> params_;
+    std::vector<StrokeTool> stroke_tools_;
     json metrics_ = json::object();
     std::string svg_;
     std::string partial_svg_;

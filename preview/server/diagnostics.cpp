@@ -1,4 +1,4 @@
-#include "driver/preview_diagnostics.hpp"
+#include "server/diagnostics.hpp"
 
 #include <algorithm>
 #include <filesystem>

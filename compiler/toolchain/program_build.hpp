@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "driver/toolchain.hpp"
+#include "toolchain/toolchain.hpp"
 
 namespace acanthus {
 

@@ -1,4 +1,4 @@
-#include "driver/preview_host.hpp"
+#include "server/host.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -6,7 +6,7 @@
 #include <acanthus/output_file.hpp>
 #include <filesystem>
 
-#include "driver/process.hpp"
+#include "toolchain/process.hpp"
 
 namespace acanthus {
 

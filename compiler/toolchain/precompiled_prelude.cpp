@@ -1,4 +1,4 @@
-#include "driver/precompiled_prelude.hpp"
+#include "toolchain/precompiled_prelude.hpp"
 
 #include <unistd.h>
 
@@ -7,7 +7,7 @@
 #include <regex>
 #include <set>
 
-#include "driver/process.hpp"
+#include "toolchain/process.hpp"
 
 namespace acanthus {
 
@@ -24,7 +24,7 @@ constexpr const char* kPrelude =
     "#include <string_view>\n";
 
 // For rule code loaded by the preview host: the vectors generated files use most are
-// instantiated once, in the host (preview_host.cpp), not again at every save.
+// instantiated once, in the host (preview/server/host.cpp), not again at every save.
 constexpr const char* kHostInstantiations =
     "#include <vector>\n"
     "extern template class std::vector<const acanthus::ElementType*>;\n"

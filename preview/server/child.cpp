@@ -1,4 +1,4 @@
-#include "driver/preview_child.hpp"
+#include "server/child.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>

@@ -1,4 +1,4 @@
-#include "driver/preview_status.hpp"
+#include "server/status.hpp"
 
 #include <chrono>
 
@@ -37,6 +37,16 @@ void PreviewStatus::set_partial(std::string svg) {
 void PreviewStatus::set_params(std::vector<ParamSummary> params) {
     std::lock_guard lock(mutex_);
     params_ = std::move(params);
+}
+
+void PreviewStatus::set_stroke_tools(std::vector<StrokeTool> tools) {
+    std::lock_guard lock(mutex_);
+    stroke_tools_ = std::move(tools);
+}
+
+std::vector<StrokeTool> PreviewStatus::stroke_tools() const {
+    std::lock_guard lock(mutex_);
+    return stroke_tools_;
 }
 
 void PreviewStatus::set_timing(const std::string& phase, double seconds) {
@@ -100,6 +110,8 @@ PreviewStatus::json PreviewStatus::to_json() const {
         if (!p.low.empty()) entry["range"] = {p.low, p.high};
         params.push_back(entry);
     }
+    json tools = json::array();
+    for (const StrokeTool& t : stroke_tools_) tools.push_back(t.to_json());
     json kept = json::array();
     for (const auto& entry : kept_) kept.push_back(entry.first);
     return {{"revision", revision_},
@@ -111,6 +123,7 @@ PreviewStatus::json PreviewStatus::to_json() const {
             {"error_kind", error_kind_},
             {"output", output_},
             {"params", params},
+            {"stroke_tools", tools},
             {"metrics", metrics_},
             {"command", command_},
             {"timings", timings_},

@@ -1,8 +1,8 @@
-#include "driver/toolchain.hpp"
+#include "toolchain/toolchain.hpp"
 
 #include <filesystem>
 
-#include "driver/toolchain_config.hpp"
+#include "toolchain/toolchain_config.hpp"
 
 namespace acanthus {
 
@@ -28,6 +28,7 @@ Toolchain find_toolchain() {
     t.link_flags = {ACANTHUS_LINK_FLAGS};
     t.sanitize_flags = {ACANTHUS_SANITIZE_FLAGS};
     t.default_cxx = ACANTHUS_DEFAULT_CXX;
+    t.preview_strokes = ACANTHUS_PREVIEW_STROKES;
     fs::path dir = own_directory();
     if (!dir.empty()) {
         fs::path prefix = dir.parent_path();

@@ -1,4 +1,4 @@
-#include "driver/preview_limits.hpp"
+#include "server/limits.hpp"
 
 #include <thread>
 

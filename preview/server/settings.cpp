@@ -1,4 +1,4 @@
-#include "driver/preview_settings.hpp"
+#include "server/settings.hpp"
 
 #include <cstdlib>
 

@@ -1,8 +1,9 @@
-#include "driver/preview_routes.hpp"
+#include "server/routes.hpp"
 
 #include <httplib.h>
 
 #include <acanthus/output_file.hpp>
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <filesystem>
@@ -11,12 +12,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "driver/preview_child.hpp"
-#include "driver/preview_diagnostics.hpp"
-#include "driver/preview_guides.hpp"
-#include "driver/preview_limits.hpp"
-#include "driver/preview_render_job.hpp"
-#include "driver/preview_status.hpp"
+#include "server/child.hpp"
+#include "server/diagnostics.hpp"
+#include "server/guides.hpp"
+#include "server/limits.hpp"
+#include "server/render_job.hpp"
+#include "server/status.hpp"
 
 namespace acanthus {
 
@@ -566,18 +567,36 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         res.set_content(json{{"panel", "uploaded"}}.dump(), "application/json");
     });
 
-    // Growth-library strokes drawn on the page, saved as the guides SVG the library reads.
+    // Strokes drawn with a library's stroke tools, saved as the SVG its file parameter names.
     post("/guides", [&site](const httplib::Request& req, httplib::Response& res) {
         json body;
         if (!parse_json(req, res, body)) return;
+        const std::vector<StrokeTool> tools = site.status.stroke_tools();
+        const std::string library = body.contains("library") && body["library"].is_string()
+                                        ? body["library"].get<std::string>()
+                                        : "";
+        const auto tool = std::find_if(tools.begin(), tools.end(), [&](const StrokeTool& t) {
+            return library.empty() || t.library == library;
+        });
+        if (tool == tools.end()) {
+            res.status = 409;
+            res.set_content(
+                json{{"error", library.empty()
+                                   ? "the program uses no library with stroke tools"
+                                   : "the program does not use " + library + "'s stroke tools"}}
+                    .dump(),
+                "application/json");
+            return;
+        }
         std::string svg, error;
-        if (!guides_svg(body, svg, error)) return bad_request(res, error);
+        std::vector<std::string> kinds_drawn;
+        if (!guides_svg(body, *tool, svg, kinds_drawn, error)) return bad_request(res, error);
         // Beside the rule file, so that the command the page shows still works after the
         // preview stops; in the server's own folder when that one cannot be written.
         fs::path file = site.guides_file;
         PreviewSettings s = site.job.settings();
         if (svg.empty()) {
-            s.params.erase("growth_guides");
+            s.params.erase(tool->file_param);
         } else {
             if (!write_whole_file(file, svg)) file = fs::path(site.work_dir) / "guides.svg";
             if (!write_whole_file(file, svg)) {
@@ -586,21 +605,24 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
                                 "application/json");
                 return;
             }
-            s.params["growth_guides"] = file.string();
+            s.params[tool->file_param] = file.string();
             latest_guides.set(file.string());
         }
-        // The mode goes with the strokes: without it (no flow stroke left, or none at all,
-        // "Clear strokes") the rule file's own default again, not a flow without guides.
-        if (body.contains("mode") && body["mode"].is_string())
-            s.params["growth_mode"] = body["mode"].get<std::string>();
-        else
-            s.params.erase("growth_mode");
+        // The mode goes with the strokes: without one of its strokes ("Clear strokes") the
+        // rule file's own default again, not a flow without guides.
+        if (!tool->mode_param.empty()) {
+            const std::string mode = tool->mode_for(kinds_drawn);
+            if (mode.empty())
+                s.params.erase(tool->mode_param);
+            else
+                s.params[tool->mode_param] = mode;
+        }
         site.job.set_settings(s);
         res.set_content(json{{"guides", svg.empty() ? "" : file.string()}}.dump(),
                         "application/json");
     });
     get("/guides.svg", [&site](const httplib::Request&, httplib::Response& res) {
-        // Only the file this server wrote, whatever growth_guides the settings name.
+        // Only the file this server wrote, whatever the settings name.
         const std::string written = latest_guides.get();
         if (written.empty()) {
             res.status = 404;

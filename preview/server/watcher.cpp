@@ -1,4 +1,4 @@
-#include "driver/preview_watcher.hpp"
+#include "server/watcher.hpp"
 
 #include <chrono>
 #include <cstdint>

@@ -1,12 +1,23 @@
-#include "driver/preview_guides.hpp"
+#include "server/guides.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 namespace acanthus {
 
-bool guides_svg(const nlohmann::json& body, std::string& svg, std::string& error) {
+namespace {
+
+// A colour per kind, in the order the tool declares them: the file reads well in an editor.
+const char* const kPalette[] = {"#36c", "#c33", "#c63", "#393", "#939", "#399"};
+
+}  // namespace
+
+bool guides_svg(const nlohmann::json& body, const StrokeTool& tool, std::string& svg,
+                std::vector<std::string>& kinds_drawn, std::string& error) {
     svg.clear();
+    kinds_drawn.clear();
     if (!body.contains("strokes") || !body["strokes"].is_array() || body["strokes"].size() > 1000) {
         error = "strokes must be a list of at most 1000 strokes";
         return false;
@@ -17,23 +28,27 @@ bool guides_svg(const nlohmann::json& body, std::string& svg, std::string& error
     for (const auto& stroke : body["strokes"]) {
         if (!stroke.is_object()) return error = "each stroke is an object", false;
         const std::string kind = stroke.value("kind", "");
-        if (kind != "flow" && kind != "boundary" && kind != "spray")
-            return error = "a stroke's kind is flow, boundary or spray", false;
+        if (!tool.has_kind(kind)) {
+            error = "a stroke's kind is one of";
+            for (const std::string& k : tool.kinds) error += " " + k;
+            return false;
+        }
         const auto& points = stroke.contains("points") ? stroke["points"] : nlohmann::json();
         if (!points.is_array() || points.size() < 2 || points.size() > 10000)
             return error = "a stroke has 2 to 10000 points", false;
         double width = 1;
-        if (kind == "spray") {
+        if (tool.has_width(kind)) {
             if (!stroke.contains("width") || !stroke["width"].is_number() ||
                 !(stroke["width"].get<double>() > 0) || stroke["width"].get<double>() > 1e9)
-                return error = "a spray stroke needs a width (its brush diameter) above 0", false;
+                return error = "a " + kind + " stroke needs a width (its brush diameter) above 0",
+                       false;
             width = stroke["width"].get<double>();
         }
+        const auto index = static_cast<std::size_t>(
+            std::find(tool.kinds.begin(), tool.kinds.end(), kind) - tool.kinds.begin());
         out << "  <polyline class=\"" << kind << "\" fill=\"none\" stroke=\""
-            << (kind == "flow"       ? "#36c"
-                : kind == "boundary" ? "#c33"
-                                     : "#c63")
-            << "\" stroke-width=\"" << width << "\" stroke-linecap=\"round\" points=\"";
+            << kPalette[index % std::size(kPalette)] << "\" stroke-width=\"" << width
+            << "\" stroke-linecap=\"round\" points=\"";
         for (const auto& p : points) {
             if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
                 return error = "each point is [x, y]", false;
@@ -43,12 +58,15 @@ bool guides_svg(const nlohmann::json& body, std::string& svg, std::string& error
             out << x << "," << y << " ";
         }
         out << "\"/>\n";
+        kinds_drawn.push_back(kind);
         ++count;
     }
     if (count == 0) return true;
     svg =
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        "<!-- Guides drawn in acanthus preview: flow, boundary and spray strokes. -->\n"
+        "<!-- Guides drawn in acanthus preview with the " +
+        tool.library +
+        " library's strokes. -->\n"
         "<svg xmlns=\"http://www.w3.org/2000/svg\">\n" +
         out.str() + "</svg>\n";
     return true;

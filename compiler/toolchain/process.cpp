@@ -1,4 +1,4 @@
-#include "driver/process.hpp"
+#include "toolchain/process.hpp"
 
 #include <spawn.h>
 #include <sys/wait.h>

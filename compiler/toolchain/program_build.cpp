@@ -1,4 +1,4 @@
-#include "driver/build_command.hpp"
+#include "toolchain/program_build.hpp"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "driver/process.hpp"
+#include "toolchain/process.hpp"
 
 namespace acanthus {
 
@@ -78,7 +78,7 @@ std::vector<std::string> compile_command(const Toolchain& toolchain, const Build
         cmd.insert(cmd.end(), {"-include", options.precompiled_header});
     cmd.insert(cmd.end(), options.extra_flags.begin(), options.extra_flags.end());
     if (options.shared_library) {
-        // The runtime comes from the program that loads it (preview_host).
+        // The runtime comes from the program that loads it (preview/server/host.cpp).
         cmd.insert(cmd.end(), {"-shared", source, "-o", executable});
         return cmd;
     }
