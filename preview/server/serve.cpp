@@ -107,7 +107,13 @@ int serve_preview(const std::string& input, const std::vector<std::string>& incl
     BuildOptions fast = build;
     const bool chosen = !fast.cxx.empty() || std::getenv("CXX");
     // (Not for a sanitized runtime: its sanitizer runtime is g++'s.)
-    if (!chosen && toolchain.sanitize_flags.empty() && on_path("clang++")) fast.cxx = "clang++";
+    if (!chosen && toolchain.sanitize_flags.empty() && on_path("clang++")) {
+        fast.cxx = "clang++";
+        // The compiler proper in the driver's process, not a second one started for it: 7% less
+        // processor time for a rule file's code, one process fewer to wait for on a busy
+        // machine (docs/performance-log.md, 2026-11-26).
+        fast.extra_flags.push_back("-fintegrated-cc1");
+    }
     if (!chosen && on_path("ld.lld")) fast.extra_flags.push_back("-fuse-ld=lld");
 
     int code = 0;
