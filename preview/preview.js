@@ -126,14 +126,14 @@ function showStrokeTools(tool) {
     b.dataset.mode = kind;
     b.title = `Draw a ${kind} stroke (${tool.library})`;
     b.textContent = kind.charAt(0).toUpperCase() + kind.slice(1);
-    kinds.append(b);
+    kinds.append(" ", b);  // spaced like the buttons written in the page
   }
   if (!tool || !tool.kinds.includes(page.mode)) setMode("pan");
   else setMode(page.mode);
   $("brushlabel").hidden = !tool || tool.width_kinds.length === 0;
   $("stroketools").hidden = !tool;
   if (tool) {
-    $("stroketitle").textContent = `${tool.library} strokes`;
+    $("stroketitle").textContent = `${tool.library.charAt(0).toUpperCase()}${tool.library.slice(1)} strokes`;
     $("strokehint").textContent = `${tool.kinds.join(", ")} strokes are saved as the SVG --param ${tool.file_param} names`;
   }
   drawOverlay();
