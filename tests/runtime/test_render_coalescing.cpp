@@ -60,34 +60,56 @@ void dot(Canvas& canvas, Point c, double r, Color fill) {
 
 }  // namespace
 
-TEST(InkGrid, MarksClearsAndClampsOffThePage) {
-    InkGrid grid(100, 50);
-    EXPECT_FALSE(grid.hits({10, 10, 12, 12}));
-    grid.mark({10, 10, 12, 12});
-    EXPECT_TRUE(grid.hits({11.5, 11.5, 20, 20}));
-    EXPECT_FALSE(grid.hits({14, 10, 20, 12}));
+TEST(SlotGrid, KeepsTheNewestOpenSlotOfEachCell) {
+    SlotGrid grid(100, 50, 4);
+    long run, other;
+    grid.newest({10, 10, 12, 12}, 0, run, other);
+    EXPECT_EQ(run, -1);
+    EXPECT_EQ(other, -1);
+    grid.mark({10, 10, 12, 12}, 2, 0, true);
+    grid.mark({10, 10, 12, 12}, 1, 0, true);  // older: the cell keeps slot 2
+    grid.mark({11, 11, 20, 20}, 1, 0, false);
+    grid.newest({11.5, 11.5, 30, 30}, 0, run, other);
+    EXPECT_EQ(run, 2);
+    EXPECT_EQ(other, 1);
+    grid.newest({22, 10, 30, 12}, 0, run, other);
+    EXPECT_EQ(run, -1);
     // Off the page lands on the border cells.
-    grid.mark({-50, 20, -40, 22});
-    EXPECT_TRUE(grid.hits({0, 21, 0.5, 21.5}));
-    // A box of most of the page is not counted cell by cell: it hits whatever comes next.
-    grid.mark({0, 0, 90, 45});
-    EXPECT_TRUE(grid.hits({95, 48, 96, 49}));
-    grid.clear();
-    EXPECT_FALSE(grid.hits({10, 10, 12, 12}));
-    EXPECT_FALSE(grid.hits({95, 48, 96, 49}));
-    EXPECT_TRUE(grid.hits({5, 5, NAN, 6}));  // unknown extent: assume the worst
+    grid.mark({-50, 40, -40, 42}, 3, 0, false);
+    grid.newest({0, 41, 0.5, 41.5}, 0, run, other);
+    EXPECT_EQ(other, 3);
+    // Closing slots oldest first clears their marks.
+    grid.close(0);
+    grid.close(1);
+    grid.newest({11.5, 11.5, 30, 30}, 2, run, other);
+    EXPECT_EQ(run, 2);
+    EXPECT_EQ(other, -1);
+    grid.close(2);
+    grid.newest({11.5, 11.5, 30, 30}, 3, run, other);
+    EXPECT_EQ(run, -1);
+    // A box of most of the page is not counted cell by cell: it touches whatever comes next.
+    grid.mark({0, 0, 90, 45}, 4, 3, true);
+    grid.newest({95, 48, 96, 49}, 3, run, other);
+    EXPECT_EQ(run, 4);
+    EXPECT_EQ(other, -1);
+    // Slot numbers past 255 reuse codes; the open ones stay distinct.
+    SlotGrid late(100, 50, 4);
+    late.mark({10, 10, 12, 12}, 300, 299, true);
+    late.newest({10, 10, 12, 12}, 299, run, other);
+    EXPECT_EQ(run, 300);
 }
 
 TEST(CoalescingSink, RimsOfApartDotsBecomeOneStroke) {
     Page page;
     CoalescingSink sink(page.cr, 400, 300);
     Canvas canvas(page.cr, &sink);
-    // 100 dots 12 units apart, each its own colour: 100 fills, and the rims one stroke.
+    // 100 dots 12 units apart, each its own colour: 100 fills, and the rims one stroke once
+    // the rim's style has come back 16 times (the first fill's style is the run's until then).
     for (int i = 0; i < 100; ++i)
         dot(canvas, {20.0 + 12 * (i % 25), 20.0 + 12 * (i / 25)}, 4, hue(i / 100.0));
     sink.flush();
     EXPECT_EQ(sink.received(), 200);
-    EXPECT_EQ(sink.painted(), 101);
+    EXPECT_EQ(sink.painted(), 100 + 15 + 1);
     EXPECT_EQ(cairo_status(page.cr), CAIRO_STATUS_SUCCESS);
 }
 
@@ -125,6 +147,18 @@ TEST(CoalescingSink, OverlappingOpaqueStrokesOfOneStyleAreOnePath) {
     canvas.stroke(circle({60, 50}, 10));
     sink.flush();
     EXPECT_EQ(sink.painted(), 2);
+}
+
+TEST(CoalescingSink, ARunHoldsAtMost1024Shapes) {
+    Page page;
+    CoalescingSink sink(page.cr, 400, 300);
+    Canvas canvas(page.cr, &sink);
+    canvas.set_line_width(0.2);
+    // Cairo outlines a whole stroke at once to find its extents: runs are kept short enough.
+    for (int i = 0; i < 2100; ++i)
+        canvas.stroke(circle({2.0 + 4 * (i % 99), 2.0 + 4 * (i / 99)}, 0.5));
+    sink.flush();
+    EXPECT_EQ(sink.painted(), 3);
 }
 
 TEST(CoalescingSink, CairoCallsPaintTheRunAndAreFollowedAsTheyCome) {
