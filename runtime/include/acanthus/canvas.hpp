@@ -56,10 +56,7 @@ class Canvas {
     void restore();
 
     // The escape hatch: the underlying Cairo context.
-    cairo_t* cairo() {
-        used_cairo_ = true;
-        return cr_;
-    }
+    cairo_t* cairo();
     // For the renderer: whether cairo() was called since the last reset (a sink cannot see what
     // was drawn through it, so the element is drawn by Cairo instead).
     bool used_cairo() const { return used_cairo_; }

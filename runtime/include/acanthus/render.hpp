@@ -22,6 +22,9 @@ struct RenderOptions {
     std::optional<Color> background;  // none: transparent (PNG) / no background rectangle
     bool draw_region = true;          // the region's outline
     std::string stroke;               // skeletal stroke name applied to curves, or empty
+    // PDF, PostScript, EPS: shapes of one colour and style that nothing between them touches go
+    // to Cairo as one path (the same picture, far less of Cairo's memory). Off only to compare.
+    bool coalesce = true;
 };
 
 // Draws the elements (their %draw, or the default for the style). Writes `path` through a

@@ -180,6 +180,12 @@ void Canvas::add_proxy(const Proxy& proxy) {
     }
 }
 
+cairo_t* Canvas::cairo() {
+    used_cairo_ = true;
+    if (sink_) sink_->escape(cr_);
+    return cr_;
+}
+
 void Canvas::save() { cairo_save(cr_); }
 
 void Canvas::restore() { cairo_restore(cr_); }

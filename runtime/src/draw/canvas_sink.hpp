@@ -18,6 +18,8 @@ class CanvasSink {
     // A whole circle or polygon drawn on an empty path: kept as a shape, not as a path.
     virtual void circle(cairo_t* cr, Point center, double radius, bool fill) = 0;
     virtual void polygon(cairo_t* cr, const std::vector<Point>& points, bool fill) = 0;
+    // canvas.cairo() is about to hand `cr` out: whatever the sink holds back must be painted.
+    virtual void escape(cairo_t* /*cr*/) {}
 };
 
 }  // namespace acanthus::detail

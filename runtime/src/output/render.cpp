@@ -23,6 +23,7 @@
 #include <memory>
 #include <optional>
 
+#include "draw/coalescing_sink.hpp"
 #include "draw/default_style.hpp"
 #include "output/document.hpp"
 #include "output/layer_order.hpp"
@@ -204,15 +205,18 @@ void draw_all_stroke_chains(Canvas& canvas, cairo_t* cr,
     cairo_restore(cr);
 }
 
+// `sink` (may be null) gathers shapes for Cairo's vector surfaces; each element's state is
+// restored after it, so what a canvas.cairo() call set is gone for the next one.
 void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const Element*>& elements,
                    RenderStyle style, const detail::PageLayout& page,
-                   const detail::CurveStroke& curves) {
-    Canvas canvas(cr);
+                   const detail::CurveStroke& curves, detail::CoalescingSink* sink) {
+    Canvas canvas(cr, sink);
     long count = static_cast<long>(elements.size());
     for (long index = 0; index < count; ++index) {
         const Element& element = *elements[static_cast<std::size_t>(index)];
         if (!is_drawn(pattern, element, style, curves)) continue;
         draw_element(canvas, cr, pattern, element, index, count, style, page, curves);
+        if (sink) sink->end_element();
     }
     if (curves.stroke) draw_all_stroke_chains(canvas, cr, elements, page, curves);
 }
@@ -317,12 +321,18 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
         cairo_paint(cr);
     }
     page.apply(cr);
-    if (options.draw_region) {
-        Canvas canvas(cr);
-        draw_region_outline(canvas, region, page);
+    {
+        // A PNG is painted as it goes; only the vector surfaces record every operation.
+        std::unique_ptr<detail::CoalescingSink> sink;
+        if (options.coalesce && format != OutputFormat::png)
+            sink = std::make_unique<detail::CoalescingSink>(cr, page.width, page.height);
+        if (options.draw_region) {
+            Canvas canvas(cr, sink.get());
+            draw_region_outline(canvas, region, page);
+        }
+        draw_elements(cr, pattern, elements, style, page, curves, sink.get());
+        if (sink) sink->flush();
     }
-    draw_elements(cr, pattern, elements, style, page, curves);
-
     document.finish();
     out.commit();
 }
