@@ -105,6 +105,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
     if (quoins) set_quoin_rows(facade, face, o, layout);
     set_corner_rows(facade, face, layout);
     set_closers(layout);
+    if (quoins) set_piers(o, layout);
     for (int r = 0; r < rows; ++r) {
         auto& pieces = layout.rows[static_cast<std::size_t>(r)];
         for (Piece& p : pieces) {  // closers moved some ends

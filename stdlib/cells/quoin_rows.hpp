@@ -9,6 +9,11 @@ namespace acanthus::cells::detail {
 
 void set_quoin_rows(const Facade& facade, int face, const Options& options, BrickLayout& layout);
 
+// A pier between two quoins, eight quarters or less, is set out as a column: its joints a quarter
+// brick or more off those of the courses above and below wherever some way allows. Run by
+// set_quoin_rows, and again once the closers have moved the joints round it.
+void set_piers(const Options& options, BrickLayout& layout);
+
 // Building corners: a vertical end of the wall labelled `corner-left` or `corner-right` (the wall
 // shape's class) meets another elevation. Each course's piece against it is a brick turning the
 // corner: a stretcher (four quarters) on this face, or the end of the other face's stretcher
