@@ -338,6 +338,9 @@ TEST(CellsMason, AshlarWalls) {
             EXPECT_EQ(r.slivers, 0);
             EXPECT_EQ(r.openings_without_head, 0);  // lintels over flat heads, arches
             EXPECT_EQ(r.crowns_open, 0);
+            // No voussoir clipped: a skewback without a bed below its springing (stone walls)
+            // was taken for its bounding box and cut the ring's first stone (warehouse 3).
+            EXPECT_EQ(r.voussoirs_clipped, 0);
             if (method == AshlarMethod::merge) {
                 EXPECT_GT(r.four_way, r.stones / 50);  // the paper's merge: what the rules avoid
                 continue;
