@@ -20,7 +20,7 @@ int unit_at_edge(const BrickLayout& layout, const Edge& e) {
 
 // Puts a quoin over units [a, b) of the row's pieces; a one-unit remnant beside it joins its
 // neighbour (as bond.cpp does at a run's end), so no quarter bat is left against the quoin.
-void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right) {
+void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right, bool merge = true) {
     // A pier too narrow for two quoins: this one takes what the other leaves (at least two
     // quarters; the other gives one up when only one is left), so the pier is two quoins whose
     // joint moves with the other's length, course by course.
@@ -46,7 +46,7 @@ void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right) {
     out.push_back(q);
     std::sort(out.begin(), out.end(),
               [](const Piece& x, const Piece& y) { return x.start < y.start; });
-    for (std::size_t k = 0; k < out.size(); ++k) {
+    for (std::size_t k = 0; merge && k < out.size(); ++k) {
         Piece& p = out[k];
         if (p.quoin || p.length != 1) continue;
         // The neighbour away from the quoin, in the same run.
@@ -280,6 +280,23 @@ bool has_building_corner(const Facade& facade, int face) {
     return false;
 }
 
+int building_corner_end(const Facade& facade, int face, const CourseGrid& grid, int& unit) {
+    const Face& f = facade.faces()[static_cast<std::size_t>(face)];
+    const double eps = 1e-9 * std::max({1.0, std::abs(f.bounds.x1), std::abs(f.bounds.y1)});
+    const double tiny = 1e-6 * (grid.xs.back() - grid.xs.front());
+    int ends = 0;
+    for (int e : f.edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        const int end = corner_end(facade, f, edge, eps);
+        if (end == 0) continue;
+        const int u = grid.unit_at(end < 0 ? edge.bounds.x0 + tiny : edge.bounds.x0 - tiny);
+        if (u < 0) continue;
+        ends |= end < 0 ? 1 : 2;
+        unit = u;
+    }
+    return ends == 3 ? 2 : ends == 2 ? 1 : ends == 1 ? -1 : 0;
+}
+
 void set_corner_rows(const Facade& facade, int face, BrickLayout& layout) {
     const Face& f = facade.faces()[static_cast<std::size_t>(face)];
     const double eps = 1e-9 * std::max({1.0, std::abs(f.bounds.x1), std::abs(f.bounds.y1)});
@@ -302,7 +319,8 @@ void set_corner_rows(const Facade& facade, int face, BrickLayout& layout) {
             while (hi < b && hi < g.units() && g.at(row, hi) != kOutside) ++hi;
             if (hi - lo < len) continue;  // a pier narrower than the brick: the bond's own
             auto& pieces = layout.rows[static_cast<std::size_t>(row)];
-            put_quoin(pieces, lo, hi, end < 0);
+            // English bond: the header course's quoin header is followed by a queen closer.
+            put_quoin(pieces, lo, hi, end < 0, layout.bond.bond != Bond::english);
             // A half bat left beside the corner brick, a stretcher beyond it: two three-quarter
             // bats instead, so no joint stands over the corner brick's joint in the next course.
             for (std::size_t k = 0; k < pieces.size(); ++k) {

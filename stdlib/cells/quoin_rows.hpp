@@ -20,6 +20,9 @@ void set_piers(const Options& options, BrickLayout& layout);
 // (two), by turns; left ends and right ends take opposite turns, so the right end of one
 // elevation and the left end of the next bond into each other. True when the face has one.
 bool has_building_corner(const Facade& facade, int face);
+// The face's building corners: -1 at the left end only, 1 at the right end only, 2 at both, 0
+// none; `unit` the unit against the corner (the first or the last of its course).
+int building_corner_end(const Facade& facade, int face, const CourseGrid& grid, int& unit);
 void set_corner_rows(const Facade& facade, int face, BrickLayout& layout);
 
 // The row's quoin piece at a vertical edge through point `inside` (just inside the wall), or -1.

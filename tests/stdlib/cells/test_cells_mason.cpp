@@ -416,6 +416,46 @@ TEST(CellsMason, BuildingCornerTurns) {
             EXPECT_EQ(len + s.at(course), 6) << "course " << course;  // a stretcher and its end
         }
         EXPECT_GT(compared, 25);
+        // English bond: a header's end on one face where a stretcher runs on the other, so each
+        // course is a stretcher course on one face and a header course on the other; and the
+        // header course's quoin header is followed by a queen closer, as a mason lays it.
+        if (bond == Bond::english) {
+            auto kinds = [&](const Texture& t, double corner) {
+                std::map<long, std::vector<std::pair<double, int>>> rows;  // by course: x, quarters
+                for (const Cell& c : t.cells) {
+                    Rect r;
+                    if (!mason_detail::coursed(c) || !mason_detail::is_rect(c.polygon, r) ||
+                        std::abs(r.height() - 6.5) > 0.05)
+                        continue;
+                    rows[std::lround((241.6 - r.y1) / 7.5)].push_back(
+                        {std::abs(r.center().x - corner),
+                         static_cast<int>(std::lround((r.width() + 1) / 5.625))});
+                }
+                std::map<long, std::vector<int>> out;  // the first pieces from the corner
+                for (auto& [course, row] : rows) {
+                    std::sort(row.begin(), row.end());
+                    for (std::size_t i = 0; i < row.size() && i < 4; ++i)
+                        out[course].push_back(row[i].second);
+                }
+                return out;
+            };
+            const auto kf = kinds(tf, 317.3), ks = kinds(ts, 0);
+            int checked = 0;
+            for (const auto& [course, front] : kf) {
+                if (!ks.count(course) || front.size() < 4 || ks.at(course).size() < 4) continue;
+                const auto& side = ks.at(course);
+                // The header course: the quoin's end (2), a queen closer (1), then headers.
+                const auto& headers = front[0] == 2 ? front : side;
+                const auto& stretchers = front[0] == 2 ? side : front;
+                EXPECT_EQ(headers[0], 2) << "course " << course;
+                EXPECT_EQ(headers[1], 1) << "course " << course << ": queen closer";
+                EXPECT_EQ(headers[2], 2) << "course " << course;
+                EXPECT_EQ(stretchers[0], 4) << "course " << course;
+                EXPECT_EQ(stretchers[1], 4) << "course " << course;
+                ++checked;
+            }
+            EXPECT_GT(checked, 20);
+        }
         for (const Texture* t : {&tf, &ts}) {
             MasonReport r = mason_check(t == &tf ? front : side, t->cells, kCm);
             std::cout << to_string(bond) << (t == &tf ? " front: " : " side: ") << r << "\n";
