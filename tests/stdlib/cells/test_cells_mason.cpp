@@ -307,7 +307,7 @@ TEST(CellsMason, ExampleFacades) {
                     EXPECT_LE(r.shaved_bricks, 36);
                 }
                 if (tree_name == "framed" && bond != Bond::stack) {
-                    EXPECT_LE(r.straight_joints, 7);  // 297 on the row-house before quoins
+                    EXPECT_LE(r.straight_joints, 2);  // 297 on the row-house before quoins
                     EXPECT_EQ(r.narrow_pieces, 0);    // were bonded in
                 }
                 EXPECT_EQ(r.courses_off_gauge, 0);
