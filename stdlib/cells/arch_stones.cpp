@@ -145,7 +145,42 @@ void place_skewback(const Corner& k, Context& c, double depth, double bed) {
     if (u.y >= 0) return;  // the ring springs upwards from a segmental arch's springing
     const Point q = p + u * depth;
     const double yb = std::max(p.y, bed);
-    c.place({p, q, {q.x, yb}, {p.x, yb}});
+    // Its plumb side: where the bond beside it would keep less than a queen closer between the
+    // side and the next head joint of a course, the skewback takes that piece in, so the walling
+    // starts at a joint there (a 3 cm piece was left beside each skewback of a 1.2 m window).
+    std::vector<Point> poly{p, q};
+    double x = q.x;
+    if (c.options().bond != Bond::ashlar) {
+        const BrickLayout& layout = brick_layout(c, k.face);
+        const CourseGrid& g = layout.grid;
+        const double sx = q.x > p.x ? 1 : -1;
+        const double tiny = 1e-9 * std::max(1.0, std::abs(g.xs.back()) + std::abs(g.ys.back()));
+        for (int row = std::max(0, g.row_at(q.y + tiny)); row >= 0 && row < g.rows(); ++row) {
+            const double top = std::max(g.ys[static_cast<std::size_t>(row)], q.y);
+            const double bottom = std::min(g.ys[static_cast<std::size_t>(row) + 1], yb);
+            if (bottom <= top + tiny) break;
+            double gap = 1e300;
+            for (const Piece& piece : layout.rows[static_cast<std::size_t>(row)])
+                for (int unit : {piece.start, piece.start + piece.length}) {
+                    const double d = (g.xs[static_cast<std::size_t>(unit)] - q.x) * sx;
+                    if (d > tiny) gap = std::min(gap, d);
+                }
+            const double to = gap < layout.unit - tiny ? q.x + sx * gap : q.x;
+            if (to != x) poly.push_back({to, top});
+            poly.push_back({to, bottom});
+            x = to;
+        }
+    }
+    if (poly.size() == 2) poly.push_back({q.x, yb});
+    if (poly.back().y != yb) poly.push_back({x, yb});
+    poly.push_back({p.x, yb});
+    // A skewback with no bed below its springing is a triangle: no vertex twice.
+    poly.erase(std::unique(poly.begin(), poly.end(),
+                           [](Point a, Point b) { return a.x == b.x && a.y == b.y; }),
+               poly.end());
+    if (poly.size() > 1 && poly.front().x == poly.back().x && poly.front().y == poly.back().y)
+        poly.pop_back();
+    c.place(poly);
 }
 
 }  // namespace detail

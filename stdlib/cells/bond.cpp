@@ -9,6 +9,7 @@ int floor_mod(int a, int m) { return ((a % m) + m) % m; }
 }  // namespace
 
 std::span<const int> BondPattern::lengths(int course) const {
+    course += course_shift;
     static constexpr int stretcher[] = {4}, header[] = {2}, flemish[] = {2, 4};
     switch (bond) {
         case Bond::english:
@@ -23,6 +24,7 @@ std::span<const int> BondPattern::lengths(int course) const {
 }
 
 int BondPattern::offset(int course) const {
+    course += course_shift;
     switch (bond) {
         case Bond::running:
             return 2 * course;

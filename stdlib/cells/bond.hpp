@@ -19,6 +19,9 @@ struct Piece {
 
 struct BondPattern {
     Bond bond = Bond::running;
+    // Added to the course number: 1 swaps English bond's stretcher and header courses, for a face
+    // whose building corner is at its right end (quoin_rows.hpp).
+    int course_shift = 0;
     // Piece lengths of `course` (counted from the bottom) and where the sequence starts.
     std::span<const int> lengths(int course) const;  // static storage: asked per run of units
     int offset(int course) const;

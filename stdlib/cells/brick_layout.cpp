@@ -88,8 +88,20 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
     layout.tolerance = o.joint_tolerance;
     layout.mortar = o.mortar;
     layout.bond.bond = o.bond == Bond::ashlar ? Bond::running : o.bond;
+    // English bond at a building corner: the corner brick is a stretcher in this face's stretcher
+    // courses and the other face's stretcher's end in its header courses, so a face whose
+    // corner is at its right end (stretchers there in odd courses, quoin_rows.hpp) takes its
+    // stretcher courses odd, and the phase puts a stretcher joint at the corner.
+    int corner_unit = -1;
+    const int corner = layout.bond.bond == Bond::english
+                           ? building_corner_end(facade, face, layout.grid, corner_unit)
+                           : 0;
+    if (corner == 1) layout.bond.course_shift = 1;
     long best = -1;
     for (int phase = 0; phase < layout.bond.period(); ++phase) {
+        if ((corner == -1 && (phase - corner_unit) % 4 != 0) ||
+            (corner == 1 && (((phase - corner_unit - 1) % 4) + 4) % 4 != 0))
+            continue;
         long cut = cut_pieces(layout.grid, layout.bond, phase);
         if (best < 0 || cut < best) best = cut, layout.phase = phase;
     }
@@ -105,6 +117,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
     if (quoins) set_quoin_rows(facade, face, o, layout);
     set_corner_rows(facade, face, layout);
     set_closers(layout);
+    if (quoins) set_piers(o, layout);
     for (int r = 0; r < rows; ++r) {
         auto& pieces = layout.rows[static_cast<std::size_t>(r)];
         for (Piece& p : pieces) {  // closers moved some ends

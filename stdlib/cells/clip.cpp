@@ -71,9 +71,14 @@ Rect bounds_of(const std::vector<Point>& polygon) {
 bool axis_rect(const std::vector<Point>& p, Rect& r) {
     if (p.size() != 4) return false;
     r = bounds_of(p);
-    for (Point q : p)
+    // Each of the box's four corners once: a triangle with a repeated vertex (a skewback with
+    // no bed below its springing) has a box too, but is not one.
+    int corners = 0;
+    for (Point q : p) {
         if ((q.x != r.x0 && q.x != r.x1) || (q.y != r.y0 && q.y != r.y1)) return false;
-    return true;
+        corners |= 1 << ((q.x == r.x1 ? 1 : 0) + (q.y == r.y1 ? 2 : 0));
+    }
+    return corners == 15 && r.x0 < r.x1 && r.y0 < r.y1;
 }
 
 std::vector<std::vector<Point>> shrink(const std::vector<Point>& polygon, double distance,

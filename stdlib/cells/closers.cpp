@@ -35,6 +35,28 @@ bool movable(const std::vector<Piece>& pieces, std::size_t k, int d) {
     return true;
 }
 
+// The joint at unit line j of row r + 1 moved off `here` (the joints of row r) and the joints of
+// row r + 2, when its pieces allow.
+void move_below(std::vector<std::vector<Piece>>& rows, int r, int j, const std::set<int>& here) {
+    if (r + 1 >= static_cast<int>(rows.size())) return;
+    auto& pieces = rows[static_cast<std::size_t>(r + 1)];
+    const std::set<int> under = r + 2 < static_cast<int>(rows.size())
+                                    ? joints_of(rows[static_cast<std::size_t>(r + 2)])
+                                    : std::set<int>{};
+    for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
+        if (pieces[k + 1].start != j || pieces[k].start + pieces[k].length != j) continue;
+        for (int d : std::array<int, 4>{1, -1, 2, -2}) {
+            if (!movable(pieces, k, d) || here.count(j + d) || under.count(j + d)) continue;
+            pieces[k].length += d;
+            pieces[k + 1].start += d;
+            pieces[k + 1].length -= d;
+            pieces[k].cut = pieces[k + 1].cut = true;
+            return;
+        }
+        return;
+    }
+}
+
 }  // namespace
 
 void set_closers(BrickLayout& layout) {
@@ -59,7 +81,12 @@ void set_closers(BrickLayout& layout) {
                 const int cost = (above.count(j + d) ? 10 : 0) + std::abs(d);
                 if (cost < best_cost) best = d, best_cost = cost;
             }
-            if (best == 0) continue;
+            if (best == 0) {
+                // Fixed here (a quoin's or a head's end): move the joint of the course below
+                // instead, off this course's joints and those of the course under it.
+                move_below(rows, r, j, joints_of(pieces));
+                continue;
+            }
             pieces[k].length += best;
             pieces[k + 1].start += best;
             pieces[k + 1].length -= best;

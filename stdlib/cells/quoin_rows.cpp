@@ -20,7 +20,7 @@ int unit_at_edge(const BrickLayout& layout, const Edge& e) {
 
 // Puts a quoin over units [a, b) of the row's pieces; a one-unit remnant beside it joins its
 // neighbour (as bond.cpp does at a run's end), so no quarter bat is left against the quoin.
-void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right) {
+void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right, bool merge = true) {
     // A pier too narrow for two quoins: this one takes what the other leaves (at least two
     // quarters; the other gives one up when only one is left), so the pier is two quoins whose
     // joint moves with the other's length, course by course.
@@ -46,7 +46,7 @@ void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right) {
     out.push_back(q);
     std::sort(out.begin(), out.end(),
               [](const Piece& x, const Piece& y) { return x.start < y.start; });
-    for (std::size_t k = 0; k < out.size(); ++k) {
+    for (std::size_t k = 0; merge && k < out.size(); ++k) {
         Piece& p = out[k];
         if (p.quoin || p.length != 1) continue;
         // The neighbour away from the quoin, in the same run.
@@ -74,7 +74,158 @@ void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right) {
     pieces = std::move(out);
 }
 
+// A pier narrow enough for two quoins (two quoins and the pieces between them, four to eight
+// quarters) in one row: its pieces [k, e] from unit `start`, `n` units long.
+struct Pier {
+    std::size_t k = 0, e = 0;
+    int start = 0, n = 0;
+};
+
+std::vector<Pier> piers_of(const std::vector<Piece>& pieces) {
+    std::vector<Pier> out;
+    for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
+        if (!pieces[k].quoin) continue;
+        std::size_t e = k + 1;
+        while (e < pieces.size() && !pieces[e].quoin) ++e;
+        if (e >= pieces.size()) continue;
+        bool contiguous = true;
+        for (std::size_t i = k; i < e; ++i)
+            contiguous &= pieces[i].start + pieces[i].length == pieces[i + 1].start;
+        const int start = pieces[k].start, n = pieces[e].start + pieces[e].length - start;
+        if (contiguous && n >= 4 && n <= 8) out.push_back({k, e, start, n});
+        k = e - 1;
+    }
+    return out;
+}
+
+// Each pier is set out again as a column of courses at once: two quoins, or two quoins with a
+// brick between, so that no joint in it stands within a quarter brick of one in the course above
+// or below, the courses beyond the pier included (the split that always fits, four and four,
+// would stand in every course); among the ways that do, the left quoin long or short by course,
+// as up a jamb, and two pieces rather than three. A shortest path over the column's courses.
 }  // namespace
+
+void set_piers(const Options& o, BrickLayout& layout) {
+    const CourseGrid& g = layout.grid;
+    const double quarter =
+        o.brick_length / 4 - 1e-9 * std::max(1.0, std::abs(g.xs.back()) + std::abs(g.xs.front()));
+    const int rows = g.rows();
+    std::vector<std::vector<Pier>> piers(static_cast<std::size_t>(rows));
+    for (int r = 0; r < rows; ++r)
+        piers[static_cast<std::size_t>(r)] = piers_of(layout.rows[static_cast<std::size_t>(r)]);
+    auto find = [&](int r, int start, int n) -> const Pier* {
+        if (r < 0 || r >= rows) return nullptr;
+        for (const Pier& p : piers[static_cast<std::size_t>(r)])
+            if (p.start == start && p.n == n) return &p;
+        return nullptr;
+    };
+    auto joints_of_row = [&](int r, int u0, int u1) {
+        std::vector<double> out;
+        if (r < 0 || r >= rows) return out;
+        for (const Piece& p : layout.rows[static_cast<std::size_t>(r)])
+            for (int u : {p.start, p.start + p.length})
+                if (u > u0 && u < u1) out.push_back(g.xs[static_cast<std::size_t>(u)]);
+        return out;
+    };
+    std::vector<std::vector<char>> done(static_cast<std::size_t>(rows));
+    for (int r = 0; r < rows; ++r)
+        done[static_cast<std::size_t>(r)].assign(piers[static_cast<std::size_t>(r)].size(), 0);
+    for (int top = 0; top < rows; ++top)
+        for (std::size_t i = 0; i < piers[static_cast<std::size_t>(top)].size(); ++i) {
+            if (done[static_cast<std::size_t>(top)][i]) continue;
+            const int start = piers[static_cast<std::size_t>(top)][i].start;
+            const int n = piers[static_cast<std::size_t>(top)][i].n;
+            // The column: rows top..bottom holding the same pier.
+            int bottom = top;
+            while (find(bottom + 1, start, n)) ++bottom;
+            for (int r = top; r <= bottom; ++r) {
+                auto& ps = piers[static_cast<std::size_t>(r)];
+                for (std::size_t j = 0; j < ps.size(); ++j)
+                    if (ps[j].start == start && ps[j].n == n)
+                        done[static_cast<std::size_t>(r)][j] = 1;
+            }
+            // Every way of n quarters in pieces of two to four, a quoin at each end.
+            std::vector<std::vector<int>> ways;
+            std::vector<int> way;
+            auto split = [&](auto&& self, int left) -> void {
+                if (left == 0) {
+                    if (way.size() >= 2) ways.push_back(way);
+                    return;
+                }
+                for (int l = 2; l <= std::min(4, left); ++l) {
+                    way.push_back(l);
+                    self(self, left - l);
+                    way.pop_back();
+                }
+            };
+            split(split, n);
+            std::vector<std::vector<double>> at(ways.size());
+            for (std::size_t w = 0; w < ways.size(); ++w) {
+                int u = start;
+                for (std::size_t j = 0; j + 1 < ways[w].size(); ++j)
+                    at[w].push_back(g.xs[static_cast<std::size_t>(u += ways[w][j])]);
+            }
+            auto clashes = [&](const std::vector<double>& a, const std::vector<double>& b) {
+                int c = 0;
+                for (double x : a)
+                    for (double y : b) c += std::abs(x - y) < quarter;
+                return c;
+            };
+            const std::vector<double> above = joints_of_row(top - 1, start, start + n);
+            const std::vector<double> below = joints_of_row(bottom + 1, start, start + n);
+            auto own = [&](int r, std::size_t w) {
+                const int want = g.course(r) % 2 == 0 ? o.quoin_long : o.quoin_short;
+                double c = (ways[w].front() == want ? 0 : 0.01) +
+                           0.001 * static_cast<double>(ways[w].size());
+                if (r == top) c += clashes(at[w], above);
+                if (r == bottom) c += clashes(at[w], below);
+                return c;
+            };
+            const std::size_t count = static_cast<std::size_t>(bottom - top + 1), m = ways.size();
+            std::vector<std::vector<double>> cost(count, std::vector<double>(m));
+            std::vector<std::vector<std::size_t>> from(count, std::vector<std::size_t>(m, 0));
+            for (std::size_t w = 0; w < m; ++w) cost[0][w] = own(top, w);
+            for (std::size_t r = 1; r < count; ++r)
+                for (std::size_t w = 0; w < m; ++w) {
+                    cost[r][w] = 1e300;
+                    for (std::size_t v = 0; v < m; ++v) {
+                        const double c = cost[r - 1][v] + clashes(at[v], at[w]);
+                        if (c < cost[r][w]) cost[r][w] = c, from[r][w] = v;
+                    }
+                    cost[r][w] += own(top + static_cast<int>(r), w);
+                }
+            std::size_t w = 0;
+            for (std::size_t v = 1; v < m; ++v)
+                if (cost[count - 1][v] < cost[count - 1][w]) w = v;
+            for (std::size_t r = count; r-- > 0;) {
+                const int row = top + static_cast<int>(r);
+                auto& pieces = layout.rows[static_cast<std::size_t>(row)];
+                const Pier* p = find(row, start, n);
+                std::vector<Piece> pier;
+                int u = start;
+                for (std::size_t j = 0; j < ways[w].size(); ++j) {
+                    Piece q{u, ways[w][j], false, false};
+                    q.quoin = j == 0 || j + 1 == ways[w].size();
+                    q.cut = !q.quoin && ways[w][j] != 4;
+                    pier.push_back(q);
+                    u += ways[w][j];
+                }
+                const std::size_t k = p->k, e = p->e;
+                pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(k),
+                             pieces.begin() + static_cast<std::ptrdiff_t>(e) + 1);
+                pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(k), pier.begin(),
+                              pier.end());
+                // The row's other piers moved along with the pieces inserted.
+                const std::ptrdiff_t shift = static_cast<std::ptrdiff_t>(pier.size()) -
+                                             static_cast<std::ptrdiff_t>(e - k + 1);
+                for (Pier& o2 : piers[static_cast<std::size_t>(row)])
+                    if (o2.k > e)
+                        o2.k += static_cast<std::size_t>(shift),
+                            o2.e += static_cast<std::size_t>(shift);
+                w = from[r][w];
+            }
+        }
+}
 
 void set_quoin_rows(const Facade& facade, int face, const Options& o, BrickLayout& layout) {
     const Face& f = facade.faces()[static_cast<std::size_t>(face)];
@@ -101,31 +252,7 @@ void set_quoin_rows(const Facade& facade, int face, const Options& o, BrickLayou
             put_quoin(layout.rows[static_cast<std::size_t>(row)], a, b, right);
         }
     }
-    // A pier narrow enough for two quoins (quoin, quoin or quoin, piece, quoin, at most eight
-    // quarters): the left one long or short by course, the right one the rest, so the joint
-    // between them moves course by course (else both courses could end up with one split).
-    for (int row = 0; row < g.rows(); ++row) {
-        auto& pieces = layout.rows[static_cast<std::size_t>(row)];
-        const int want = g.course(row) % 2 == 0 ? o.quoin_long : o.quoin_short;
-        for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
-            if (!pieces[k].quoin) continue;
-            std::size_t e = k + 1;
-            if (e < pieces.size() && !pieces[e].quoin) ++e;
-            if (e >= pieces.size() || !pieces[e].quoin) continue;
-            bool contiguous = true;
-            for (std::size_t i = k; i < e; ++i)
-                contiguous &= pieces[i].start + pieces[i].length == pieces[i + 1].start;
-            const int start = pieces[k].start, n = pieces[e].start + pieces[e].length - start;
-            if (!contiguous || n > 8 || n < 4) continue;
-            const int left = std::clamp(want, std::max(2, n - 4), n - 2);
-            Piece l{start, left, false, false}, r{start + left, n - left, false, false};
-            l.quoin = r.quoin = true;
-            pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(k),
-                         pieces.begin() + static_cast<std::ptrdiff_t>(e) + 1);
-            pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(k), {l, r});
-            ++k;
-        }
-    }
+    set_piers(o, layout);
 }
 
 namespace {
@@ -153,6 +280,23 @@ bool has_building_corner(const Facade& facade, int face) {
     return false;
 }
 
+int building_corner_end(const Facade& facade, int face, const CourseGrid& grid, int& unit) {
+    const Face& f = facade.faces()[static_cast<std::size_t>(face)];
+    const double eps = 1e-9 * std::max({1.0, std::abs(f.bounds.x1), std::abs(f.bounds.y1)});
+    const double tiny = 1e-6 * (grid.xs.back() - grid.xs.front());
+    int ends = 0;
+    for (int e : f.edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        const int end = corner_end(facade, f, edge, eps);
+        if (end == 0) continue;
+        const int u = grid.unit_at(end < 0 ? edge.bounds.x0 + tiny : edge.bounds.x0 - tiny);
+        if (u < 0) continue;
+        ends |= end < 0 ? 1 : 2;
+        unit = u;
+    }
+    return ends == 3 ? 2 : ends == 2 ? 1 : ends == 1 ? -1 : 0;
+}
+
 void set_corner_rows(const Facade& facade, int face, BrickLayout& layout) {
     const Face& f = facade.faces()[static_cast<std::size_t>(face)];
     const double eps = 1e-9 * std::max({1.0, std::abs(f.bounds.x1), std::abs(f.bounds.y1)});
@@ -175,7 +319,8 @@ void set_corner_rows(const Facade& facade, int face, BrickLayout& layout) {
             while (hi < b && hi < g.units() && g.at(row, hi) != kOutside) ++hi;
             if (hi - lo < len) continue;  // a pier narrower than the brick: the bond's own
             auto& pieces = layout.rows[static_cast<std::size_t>(row)];
-            put_quoin(pieces, lo, hi, end < 0);
+            // English bond: the header course's quoin header is followed by a queen closer.
+            put_quoin(pieces, lo, hi, end < 0, layout.bond.bond != Bond::english);
             // A half bat left beside the corner brick, a stretcher beyond it: two three-quarter
             // bats instead, so no joint stands over the corner brick's joint in the next course.
             for (std::size_t k = 0; k < pieces.size(); ++k) {

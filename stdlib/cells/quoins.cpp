@@ -1,5 +1,5 @@
-// Jamb quoins: up each vertical side of an opening (and of the wall), stones one course high,
-// long and short by turns, reaching into the wall from the edge.
+// Jamb quoins: up each plumb side of an opening (and of the wall), stones one course high, long
+// and short by turns, reaching into the wall from the edge.
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 #include <cmath>
@@ -13,6 +13,11 @@
 namespace acanthus::cells {
 
 namespace {
+
+// Quoins go up plumb sides only: a raking edge (a gable's) is cut to, not quoined.
+bool plumb(const Edge& e) {
+    return !e.arc && !e.closed && e.bounds.width() <= 1e-6 * std::max(1.0, e.bounds.height());
+}
 
 void quoin(Context& c, detail::BrickLayout& layout, const Edge& e, Point inside) {
     int row = 0;
@@ -54,7 +59,7 @@ Generator quoins() {
             const Corner& corner = facade.corners()[static_cast<std::size_t>(f.index)];
             for (int e : {corner.edge_in, corner.edge_out}) {
                 const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
-                if (!edge.vertical() || edge.arc) continue;
+                if (!plumb(edge)) continue;
                 detail::BrickLayout& layout = detail::brick_layout(c, edge.face);
                 quoin(c, layout, edge, detail::inside_corner(corner, inset));
                 return;
@@ -62,7 +67,7 @@ Generator quoins() {
             return;
         }
         const Edge& e = facade.edges()[static_cast<std::size_t>(f.index)];
-        if (!e.vertical() || e.arc) return;
+        if (!plumb(e)) return;
         detail::BrickLayout& layout = detail::brick_layout(c, e.face);
         std::set<int> rows;
         detail::walk_edge(e, inset, inset, [&](Point p, double) {

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace acanthus {
 
@@ -20,5 +21,20 @@ std::string format_param(double v);
 std::string format_param(float v);
 std::string format_param(bool v);
 std::string format_param(const std::string& v);
+
+// A library's own command-line option: `--FLAG VALUE` sets the %param `param`, as
+// `--param PARAM=VALUE` would (after every --param, so the flag wins). A library registers it in
+// its rule file's %source, at namespace scope, so that it is known before main() runs:
+//     inline const bool my_flag = acanthus::register_param_flag({"--cut-list", "cells_cut_list",
+//                                                               "FILE.csv|FILE.json", "..."});
+// A program lists and accepts the flags whose parameter it has (docs/cli.md).
+struct ParamFlag {
+    std::string flag;       // "--cut-list"
+    std::string param;      // the %param it sets
+    std::string type_name;  // shown in --help, e.g. "FILE.csv|FILE.json"
+    std::string help;
+};
+bool register_param_flag(ParamFlag flag);  // true; a flag registered twice is kept once
+const std::vector<ParamFlag>& param_flags();
 
 }  // namespace acanthus

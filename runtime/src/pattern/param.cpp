@@ -8,6 +8,8 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace acanthus {
 namespace {
@@ -106,5 +108,23 @@ std::string format_param(double v) {
 std::string format_param(float v) { return format_param(static_cast<double>(v)); }
 std::string format_param(bool v) { return v ? "true" : "false"; }
 std::string format_param(const std::string& v) { return v; }
+
+namespace {
+// Filled during static initialisation of the program (register_param_flag): a function-local
+// static, so that it exists whichever translation unit registers first.
+std::vector<ParamFlag>& flags() {
+    static std::vector<ParamFlag> all;
+    return all;
+}
+}  // namespace
+
+bool register_param_flag(ParamFlag flag) {
+    for (const ParamFlag& f : flags())
+        if (f.flag == flag.flag) return true;
+    flags().push_back(std::move(flag));
+    return true;
+}
+
+const std::vector<ParamFlag>& param_flags() { return flags(); }
 
 }  // namespace acanthus

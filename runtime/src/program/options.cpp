@@ -6,6 +6,7 @@
 #include <acanthus/canvas.hpp>
 #include <acanthus/distance_metric.hpp>
 #include <acanthus/error.hpp>
+#include <acanthus/param.hpp>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -224,6 +225,23 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
     app.add_flag("--list-params", o.list_params,
                  "List parameters: name, type, default, current value; then exit")
         ->group(param_group);
+    // Libraries' own options (acanthus/param.hpp): each one a %param of this pattern, set
+    // after every --param.
+    std::vector<std::pair<std::string, std::string>> flag_values;  // param, value; in order
+    for (const ParamFlag& f : param_flags()) {
+        const bool known = std::any_of(pattern.params.begin(), pattern.params.end(),
+                                       [&](const ParamInfo& p) { return p.name == f.param; });
+        if (!known) continue;
+        app.add_option_function<std::string>(
+               f.flag,
+               [&flag_values, param = f.param](const std::string& v) {
+                   flag_values.emplace_back(param, v);
+               },
+               f.help + " (--param " + f.param + "=VALUE)")
+            ->type_name(f.type_name)
+            ->allow_extra_args(false)
+            ->group(param_group);
+    }
 
     const char* growth_group = "Growth";
     app.add_option("--resolution", o.growth.resolution,
@@ -375,6 +393,7 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         throw UsageError(e.what());
     }
 
+    for (const auto& [param, value] : flag_values) o.params.push_back(param + "=" + value);
     for (const std::string& s : seeds) o.growth.seeds.push_back(*parse_seed(s));
     if (!symmetry.empty()) {
         o.growth.symmetry = Symmetry::parse(symmetry);
