@@ -219,6 +219,10 @@ ReferenceProfile::ReferenceProfile(const ReferenceData& reference) : checker(ref
     for (double& d : nn)
         if (d >= 2.1 * spacing) d = 4 * spacing;
     nn_histogram = histogram(nn, spacing, Fidelity{}.histogram_bin);
+    // Boundary elements are never copied, and their NN is measured from one side only.
+    std::vector<double> copied;
+    for (int c : reference.candidates) copied.push_back(nn[static_cast<std::size_t>(c)]);
+    if (!copied.empty() && spacing > 0) copied_nn_median = median(copied) / spacing;
     symbol_mix = mix(ref);
     same_symbol_share = same_share(ref, checker.reach());
 }
@@ -249,6 +253,7 @@ Fidelity measure_fidelity(const ReferenceData& reference, const std::vector<Moti
         if (d >= 2.1 * spacing) d = 4 * spacing;
     f.spacing = spacing;
     f.nn_median = got.points.size() > 1 ? median(got_nn) / spacing : 0.0;
+    f.reference_nn_median = profile.copied_nn_median;
     f.reference_nn_histogram = profile.nn_histogram;
     f.nn_histogram = got.points.size() > 1 ? histogram(got_nn, spacing, f.histogram_bin)
                                            : std::vector<double>(21, 0.0);
@@ -290,6 +295,7 @@ std::string fidelity_json(const SynthesisResult& result) {
     out["restarts"] = result.stats.restarts;
     out["spacing"] = f.spacing;
     out["nn_median"] = f.nn_median;
+    out["nn_median_reference"] = f.reference_nn_median;
     out["nn_histogram"] = Json{{"bin", f.histogram_bin},
                                {"result", f.nn_histogram},
                                {"reference", f.reference_nn_histogram}};

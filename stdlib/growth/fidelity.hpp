@@ -58,6 +58,7 @@ struct ReferenceProfile {
     std::vector<double> nn_histogram;
     std::map<std::string, double> symbol_mix;
     double same_symbol_share = 0;
+    double copied_nn_median = 1;  // Fidelity::reference_nn_median
 };
 const ReferenceProfile& profile_of(const ReferenceData& reference);
 

@@ -52,6 +52,8 @@ void Synthesis::spawn(int centre, const Choice& choice, const std::vector<int>& 
         }
         // (b): an element or seed within l_short takes the new seed's place.
         int near = pattern_.nearest(q, l_short_, centre);
+        // Off a lattice, also a node closer than the reference ever has the two symbols.
+        if (near < 0) near = too_close(centre, q, reference_.symbol[ring[j].element], false);
         if (near >= 0 && !panel_.reaches(p, pattern_[near].position)) {
             ++stats_.dropped;  // it lies beyond a boundary stroke
             continue;

@@ -64,7 +64,31 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         lattice_ = lattice_of(reference);
         if (lattice_) stats_.lattice_sites = static_cast<int>(lattice_->sites.size());
     }
-    placed_per_symbol_.assign(reference.symbols.size(), 0);
+    const std::size_t symbols = reference.symbols.size();
+    gap_.assign(symbols * symbols, INFINITY);
+    for (std::size_t i = 0; i < reference.elements.size(); ++i)
+        for (const RingSlot& s : reference.rings[i]) {
+            const auto a = static_cast<std::size_t>(reference.symbol[i]);
+            const auto b = static_cast<std::size_t>(reference.symbol[s.element]);
+            const double d = options.gap_factor * s.offset.length();
+            gap_[a * symbols + b] = std::min(gap_[a * symbols + b], d);
+            gap_[b * symbols + a] = std::min(gap_[b * symbols + a], d);
+        }
+    // Two symbols never neighbours in the reference keep the closest spacing of either.
+    gap_any_.assign(symbols, INFINITY);
+    for (std::size_t a = 0; a < symbols; ++a)
+        for (std::size_t b = 0; b < symbols; ++b)
+            gap_any_[a] = std::min(gap_any_[a], gap_[a * symbols + b]);
+    for (std::size_t a = 0; a < symbols; ++a)
+        for (std::size_t b = 0; b < symbols; ++b) {
+            double& g = gap_[a * symbols + b];
+            if (!std::isfinite(g)) g = std::min(gap_any_[a], gap_any_[b]);
+            if (!std::isfinite(g)) g = 0;
+            gap_max_ = std::max(gap_max_, g);
+        }
+    for (double& g : gap_any_)
+        if (!std::isfinite(g)) g = 0;
+    placed_per_symbol_.assign(symbols, 0);
     reference_share_.assign(reference.symbols.size(), 0.0);
     for (int s : reference.symbol)
         reference_share_[static_cast<std::size_t>(s)] +=
@@ -207,8 +231,10 @@ void Synthesis::release(int former_seed) {
 }
 
 // A restart needs an empty circle a tenth wider than the spacing: a honeycomb's own holes are
-// exactly one spacing across the centre, and must stay empty.
+// exactly one spacing across the centre, and must stay empty. Without a lattice, a circle one
+// spacing wide already holds a motif at the reference's median spacing.
 constexpr double kRestartRadius = 1.1;
+constexpr double kRestartRadiusIrregular = 1.1;
 // Holes come largest first and a fruitless restart changes nothing, so after this many in a row
 // the smaller circles left would grow nothing either.
 constexpr int kFruitlessInARow = 16;
@@ -225,7 +251,8 @@ void Synthesis::run() {
          room() && in_a_row < kFruitlessInARow && options_.fill_holes && !starts_.empty();) {
         Hole hole;
         ++stats_.hole_searches;
-        if (!holes().find(pattern_, kRestartRadius * spacing_, hole)) {
+        const double wide = lattice_ ? kRestartRadius : kRestartRadiusIrregular;
+        if (!holes().find(pattern_, wide * spacing_, hole)) {
             // Before giving up, once after growth: relaxation may have opened a covered hole.
             if (reopened) break;
             holes_->reopen_covered();
@@ -252,28 +279,66 @@ void Synthesis::run() {
 
 bool Synthesis::restart(const Hole& hole) {
     ++stats_.restarts;
+    // Off a lattice, restarts fill the last gaps, where the mix has drifted most: the symbol
+    // furthest under its reference share is wanted, at a place where it fits.
+    const bool mixing = !lattice_ && reference_.symbols.size() > 1 && !placed_.empty();
+    auto under = [&](std::size_t s) {
+        return static_cast<double>(placed_per_symbol_[s]) / static_cast<double>(placed_.size()) -
+               reference_share_[s];
+    };
+    auto fits = [&](Point q, int s) {
+        if (too_close(-1, q, s, true) >= 0) return false;
+        for (int c : candidates_)
+            if (reference_.symbol[c] == s &&
+                motif_fits(-1, q, reference_.radius[c] * options_.scale_min))
+                return true;
+        return false;
+    };
+    int wanted = -1;
+    if (mixing) {
+        double most = INFINITY;
+        for (std::size_t s = 0; s < reference_share_.size(); ++s)
+            if (under(s) < most) {
+                most = under(s);
+                wanted = static_cast<int>(s);
+            }
+    }
     // Next to motifs, the seed goes where one of them wants a neighbour (an open slot of its
     // reference ring, nearest the hole's centre), so a lattice continues in phase; in an empty
-    // lobe it goes to the centre and grows afresh.
+    // lobe it goes to the centre and grows afresh. Slots where the wanted symbol fits first.
     Point at = hole.center;
     int parent = -1, symbol = -1;
-    double best = INFINITY;
-    for (int other : pattern_.near(hole.center, hole.radius + spacing_)) {
-        const Node& o = pattern_[other];
-        if (!o.placed()) continue;
-        for (const RingSlot& slot : reference_.rings[o.source]) {
-            Point q = o.position + slot.offset.rotated(o.rotation);
-            double r = reference_.radius[slot.element] * options_.scale_min;
-            double d = distance(q, hole.center);
-            if (d >= best || d > hole.radius || pattern_.nearest(q, 0.9 * spacing_, -1) >= 0 ||
-                !panel_.contains(q) || !panel_.reaches(o.position, q) || !motif_fits(-1, q, r) ||
-                pattern_.crosses(o.position, q, other, -1))
-                continue;
-            best = d;
-            at = q;
-            parent = other;
-            symbol = reference_.symbol[slot.element];
+    for (int pass = wanted >= 0 ? 0 : 1; pass < 2 && parent < 0; ++pass) {
+        double best = INFINITY;
+        for (int other : pattern_.near(hole.center, hole.radius + spacing_)) {
+            const Node& o = pattern_[other];
+            if (!o.placed()) continue;
+            for (const RingSlot& slot : reference_.rings[o.source]) {
+                Point q = o.position + slot.offset.rotated(o.rotation);
+                double r = reference_.radius[slot.element] * options_.scale_min;
+                double d = distance(q, hole.center);
+                if (d >= best || d > hole.radius || pattern_.nearest(q, 0.9 * spacing_, -1) >= 0 ||
+                    !panel_.contains(q) || !panel_.reaches(o.position, q) ||
+                    !motif_fits(-1, q, r) || pattern_.crosses(o.position, q, other, -1) ||
+                    (pass == 0 && !fits(q, wanted)))
+                    continue;
+                best = d;
+                at = q;
+                parent = other;
+                symbol = pass == 0 ? wanted : reference_.symbol[slot.element];
+            }
         }
+    }
+    // Where the wanted symbol fits nowhere, the most wanted of those that fit (one that does not
+    // would make the restart fruitless).
+    if (mixing && (parent < 0 || symbol != wanted)) {
+        double most = INFINITY;
+        symbol = -1;
+        for (std::size_t s = 0; s < reference_share_.size(); ++s)
+            if (under(s) < most && fits(at, static_cast<int>(s))) {
+                most = under(s);
+                symbol = static_cast<int>(s);
+            }
     }
     if (on_lattice()) {
         // The lattice continues in phase, also in an empty lobe.
@@ -411,6 +476,29 @@ bool Synthesis::motif_fits(int id, Point at, double radius) const {
     return true;
 }
 
+int Synthesis::too_close(int id, Point at, int symbol, bool placed_only) const {
+    if (on_lattice() || gap_max_ <= 0) return -1;
+    const std::size_t symbols = reference_.symbols.size();
+    int best = -1;
+    double best_distance = INFINITY;
+    for (int other : pattern_.near(at, gap_max_)) {
+        const Node& o = pattern_[other];
+        if (other == id || (placed_only && !o.placed())) continue;
+        double gap = 0;
+        if (symbol >= 0 && o.symbol >= 0)
+            gap = gap_[static_cast<std::size_t>(symbol) * symbols +
+                       static_cast<std::size_t>(o.symbol)];
+        else if (symbol >= 0 || o.symbol >= 0)
+            gap = gap_any_[static_cast<std::size_t>(symbol >= 0 ? symbol : o.symbol)];
+        const double d = distance(o.position, at);
+        if (d < gap && d < best_distance) {
+            best = other;
+            best_distance = d;
+        }
+    }
+    return best;
+}
+
 void Synthesis::grow(int id) {
     const std::vector<int>* candidates = &candidates_;
     if (on_lattice()) {
@@ -463,6 +551,10 @@ void Synthesis::grow(int id) {
         }
     }
     if (!motif_fits(id, pattern_[id].position, radius)) return drop(id);
+    // Fronts meeting (and relaxation) can bring a seed closer to a motif than the reference
+    // ever has those symbols: the reference's own closest spacing holds.
+    if (too_close(id, pattern_[id].position, reference_.symbol[choice.element], true) >= 0)
+        return drop(id);
 
     Node& n = pattern_[id];
     const int c = choice.element;
@@ -498,7 +590,9 @@ void Synthesis::grow(int id) {
 
 bool Synthesis::still_valid(int id) const {
     const Node& n = pattern_[id];
-    return n.placed() ? motif_fits(id, n.position, n.radius) : panel_.contains(n.position);
+    return n.placed() ? motif_fits(id, n.position, n.radius) &&
+                            too_close(id, n.position, n.symbol, true) < 0
+                      : panel_.contains(n.position);
 }
 
 void Synthesis::relax_around(int centre) {

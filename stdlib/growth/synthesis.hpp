@@ -86,7 +86,8 @@ class Synthesis {
     void release(int former_seed);
     void grow_front();
     // Plants a seed in `hole` (the largest empty circle that holds a motif at the reference's
-    // spacing), linked to the motifs around it; false when none could be planted.
+    // spacing), linked to the motifs around it; false when none could be planted. Off a
+    // lattice its symbol is the one furthest under its reference share.
     bool restart(const Hole& hole);
     HoleFinder& holes();  // made on first use, over the starts planted by then
     void grow(int seed);
@@ -95,6 +96,10 @@ class Synthesis {
     // Placed neighbours of the 1-ring nodes, beyond the seed and its 1-ring (Options::two_ring).
     std::vector<OuterEntry> outer_ring(int seed, const std::vector<int>& ring_nodes) const;
     bool motif_fits(int id, Point at, double radius) const;
+    // Off a lattice: the node nearest `at` (other than `id`; placed motifs only when
+    // `placed_only`) that a `symbol` would stand closer to than the reference ever puts those
+    // two symbols (gap_), or -1.
+    int too_close(int id, Point at, int symbol, bool placed_only) const;
     // Section 5.4: new seeds from the chosen ring, merged, dropped or extended by the heuristics.
     void spawn(int centre, const Choice& choice, const std::vector<int>& target_nodes);
     void link_ring_pair(int centre, int a, int b, double original, Vector desired);
@@ -130,7 +135,12 @@ class Synthesis {
     Random& random_;
     Weights weights_;
     std::optional<FlowField> flow_;
-    std::vector<std::vector<RingEntry>> rings_;         // per reference element, unrotated
+    std::vector<std::vector<RingEntry>> rings_;  // per reference element, unrotated
+    // Per pair of symbols (row-major), the shortest connectivity edge between them in the
+    // reference, times Options::gap_factor; gap_any_ per symbol the shortest to any symbol (for
+    // seeds without one). Irregular growth keeps the reference's own closest spacing.
+    std::vector<double> gap_, gap_any_;
+    double gap_max_ = 0;
     std::vector<std::vector<OuterEntry>> outer_rings_;  // per reference element (two_ring only)
     // Candidate pruning (mode none or flow, 1-ring): every (candidate, ring slot) by the slot's
     // offset on a grid, so that a seed evaluates only the alignments whose first pair is close

@@ -47,9 +47,10 @@ TEST(GrowthFlow, OneStraightStrokeGivesItsDirectionEverywhere) {
         EXPECT_NEAR(field.angle(p), M_PI / 4, 1e-6);
 }
 
-// Thousands of short strokes (a hostile guides file, tests/fuzz/growth/many-flow-strokes.svg)
-// once gave a sample each, and the dense solve took minutes: the samples stay within the budget,
-// spread over all the strokes, and the field still follows them.
+// Thousands of short strokes (a hostile guides file,
+// tests/fuzz/growth_guides/many-flow-strokes.svg) once gave a sample each, and the dense solve took
+// minutes: the samples stay within the budget, spread over all the strokes, and the field still
+// follows them.
 TEST(GrowthFlow, ThousandsOfStrokesStayWithinTheSampleBudget) {
     std::vector<std::vector<Point>> strokes;
     for (int i = 0; i < 3000; ++i) {

@@ -46,6 +46,7 @@ struct Scene {
         o.lattice = false;
         o.relax = false;
         o.max_elements = 1;  // the first seed planted grows, nothing else
+        o.gap_factor = 0;    // the paper merges within l_short only
         return o;
     }
     // Alive nodes within r of p.
@@ -82,6 +83,31 @@ TEST(GrowthHeuristics, NodeNearARingSlotIsMerged) {
     EXPECT_EQ(scene.nodes_near(slot(0), 5), 1) << "a seed beside the merged node";
     EXPECT_EQ(scene.synthesis.result().stats.merged, 1);
     for (double a : {60, 120, 180, 240, 300}) EXPECT_EQ(scene.nodes_near(slot(a), 1e-6), 1) << a;
+}
+
+// (b, beyond the paper) Off a lattice, a node closer to a ring slot than gap_factor times the
+// reference's shortest edge between their symbols (0.9 x 10 here) also takes the new seed's
+// place, so fronts meeting keep the reference's own closest spacing; l_short alone (5 here)
+// lets a seed be made 6.7 from it.
+TEST(GrowthHeuristics, NodeCloserThanTheReferenceSpacingIsMerged) {
+    for (double factor : {0.9, 0.0}) {
+        Options o = Scene::paper();
+        o.gap_factor = factor;
+        Scene scene(growth_fixtures::triangular_lattice(7, 7, 10), o);
+        const Point x = slot(0) + Vector{6, 3};
+        ASSERT_EQ(scene.synthesis.plant({S, x}), 2);
+        scene.synthesis.run();
+        if (factor > 0) {
+            EXPECT_TRUE(scene.pattern().linked(0, 1));
+            EXPECT_EQ(scene.nodes_near(slot(0), 3), 0) << "a seed 6.7 from a node";
+            EXPECT_EQ(scene.synthesis.result().stats.merged, 1);
+        } else {
+            EXPECT_EQ(scene.nodes_near(slot(0), 1e-6), 1) << "the paper's growth";
+            EXPECT_EQ(scene.synthesis.result().stats.merged, 0);
+        }
+        for (double a : {60, 120, 180, 240, 300})
+            EXPECT_EQ(scene.nodes_near(slot(a), 1e-6), 1) << factor << " " << a;
+    }
 }
 
 // (c) A slot at under half its original angle (60 degrees here) to an edge already at the

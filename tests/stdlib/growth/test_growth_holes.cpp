@@ -127,15 +127,15 @@ TEST(GrowthHoles, ToolsStillHold) {
 
 namespace {
 
-// Inputs on which the growth fuzz target once spent minutes (kept in tests/fuzz/growth/): a dozen
-// elements, some far apart, sizes from 0.01 to 20, grown as the target grows them (40 motifs in
-// rect:200,120). A restart from which nothing grows closes its circle for good, and a run of 16
+// Inputs on which the growth fuzz target once spent minutes (kept in tests/fuzz/growth_json/): a
+// dozen elements, some far apart, sizes from 0.01 to 20, grown as the target grows them (40 motifs
+// in rect:200,120). A restart from which nothing grows closes its circle for good, and a run of 16
 // ends the fill (holes come largest first), so there are a handful of restarts, not thousands.
 TEST(GrowthHoles, FruitlessRestartsAreBounded) {
     const Region panel = Region::from_spec("rect:200,120");
     for (const char* name : {"restarts-that-grow-nothing.json", "restarts-far-apart-sizes.json"}) {
         Reference reference = Reference::from_json_file(std::string(ACANTHUS_SOURCE_DIR) +
-                                                        "/tests/fuzz/growth/" + name);
+                                                        "/tests/fuzz/growth_json/" + name);
         for (Mode mode : {Mode::none, Mode::rotation}) {
             Options options;
             options.max_elements = 40;

@@ -122,7 +122,11 @@ struct Options {
     double short_factor = 0.5;            // l_short = factor x shortest reference edge
     double angle_factor = 0.5;            // drop a new edge under factor x the original angle
     double long_factor = 1.5;             // l_long = factor x the original edge
-    double relax_radius = 3.0;            // x mean edge length: the window each step re-solves
+    // Off a lattice, no two motifs (nor a new seed and a node) closer than this times the
+    // shortest reference edge between their symbols; 0: off (the paper, which merges only within
+    // l_short).
+    double gap_factor = 0.9;
+    double relax_radius = 3.0;  // x mean edge length: the window each step re-solves
     bool relax_global = false;  // the paper's global solve each step (slow; for comparison)
     // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
     // only the 1-ring: more context at the growth front, for near-regular references.
@@ -200,8 +204,11 @@ struct SynthesisStats {
 // How faithfully the result keeps the reference (docs/stdlib/growth.md, "Fidelity report"):
 // lengths in units of the reference's median nearest-neighbour (NN) distance.
 struct Fidelity {
-    double spacing = 0;          // the reference's NN median, in drawing units
-    double nn_median = 0;        // the result's NN median / spacing
+    double spacing = 0;    // the reference's NN median, in drawing units
+    double nn_median = 0;  // the result's NN median / spacing
+    // The NN median of the reference elements growth copies (its interior ones, whose rings are
+    // whole) / spacing: what nn_median is compared with, like for like.
+    double reference_nn_median = 1;
     double histogram_bin = 0.1;  // NN histograms: shares per bin of this width from 0, the last
     std::vector<double> nn_histogram, reference_nn_histogram;  // bin holding everything beyond
     std::map<std::string, double> symbol_mix, reference_symbol_mix;  // share per symbol
