@@ -16,12 +16,22 @@ enum class OutputFormat { svg, pdf, ps, eps, png };
 // From the file extension; "-" is SVG. Throws UsageError on an unknown extension.
 OutputFormat format_for_path(const std::string& path);
 
+// The tile the output repeats: the parallelogram origin + u a + v b, 0 <= u, v < 1.
+struct RepeatTile {
+    Point origin, a, b;
+};
+
 struct RenderOptions {
     double width = 800;               // output width in pixels (PNG) or points (vector formats)
     std::string style = "drawn";      // drawn | outline | filled | order | overlay
     std::optional<Color> background;  // none: transparent (PNG) / no background rectangle
     bool draw_region = true;          // the region's outline
     std::string stroke;               // skeletal stroke name applied to curves, or empty
+    // --repeat NxM (docs/symmetry.md): the tile drawn N x M times; --svg-pattern: the SVG as a
+    // <pattern> of the tile filling that area.
+    int repeat_x = 1, repeat_y = 1;
+    bool svg_pattern = false;
+    std::optional<RepeatTile> tile;  // none: the region's bounding box
 };
 
 // Draws the elements (their %draw, or the default for the style). Writes `path` through a

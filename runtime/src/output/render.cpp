@@ -19,15 +19,19 @@
 #include <acanthus/skeletal_stroke.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "draw/default_style.hpp"
 #include "output/document.hpp"
 #include "output/layer_order.hpp"
 #include "output/output_stream.hpp"
 #include "output/page_layout.hpp"
+#include "output/repeat.hpp"
 #include "output/svg_fallback.hpp"
 #include "output/svg_writer.hpp"
 #include "pattern/running_body.hpp"
@@ -217,6 +221,69 @@ void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const 
     if (curves.stroke) draw_all_stroke_chains(canvas, cr, elements, page, curves);
 }
 
+std::string svg_path_of(const std::vector<Point>& points, const detail::PageLayout& page) {
+    std::string d;
+    for (const Point& p : points)
+        d += (d.empty() ? "M" : " L") + detail::svg_number(page.offset_x + page.scale * p.x, 4) +
+             " " + detail::svg_number(page.offset_y + page.scale * p.y, 4);
+    return d + " Z";
+}
+
+std::string translate_attribute(Point offset, const detail::PageLayout& page) {
+    return "translate(" + detail::svg_number(page.scale * offset.x, 4) + " " +
+           detail::svg_number(page.scale * offset.y, 4) + ")";
+}
+
+std::string use_tile(Point offset, const detail::PageLayout& page) {
+    return "<use xlink:href=\"#repeat-tile\" transform=\"" + translate_attribute(offset, page) +
+           "\"/>\n";
+}
+
+// What comes before and after the tile's content (a group with id repeat-tile, drawn where the
+// tile is) in a repeated SVG: copies of it by <use>, clipped to the N x M area; or a <pattern>
+// whose cell is the tile, and the area filled with it.
+std::pair<std::string, std::string> repeat_svg_frame(const detail::RepeatLayout& layout,
+                                                     const detail::PageLayout& page, bool pattern) {
+    const std::string area = svg_path_of(layout.corners(), page);
+    if (!pattern) {
+        std::string after = "</g>\n";
+        for (const Point& o : layout.offsets())
+            if (o.x != 0 || o.y != 0) after += use_tile(o, page);
+        return {"<defs><clipPath id=\"repeat-area\"><path d=\"" + area +
+                    "\"/></clipPath></defs>\n<g clip-path=\"url(#repeat-area)\">\n<g "
+                    "id=\"repeat-tile\">\n",
+                after + "</g>\n"};
+    }
+    // The pattern's cell is W x H page units, mapped onto the tile by K (a shear for an oblique
+    // tile); the content is drawn in page units, so it goes through K's inverse.
+    const RepeatTile& t = layout.tile;
+    const Point o{page.offset_x + page.scale * t.origin.x, page.offset_y + page.scale * t.origin.y};
+    const Point a{page.scale * t.a.x, page.scale * t.a.y},
+        b{page.scale * t.b.x, page.scale * t.b.y};
+    const double w = std::hypot(a.x, a.y), h = std::hypot(b.x, b.y);
+    const double k[6] = {a.x / w, a.y / w, b.x / h, b.y / h, o.x, o.y};
+    const double det = k[0] * k[3] - k[1] * k[2];
+    const double ia = k[3] / det, ib = -k[1] / det, ic = -k[2] / det, id = k[0] / det;
+    const double inv[6] = {ia, ib, ic, id, -(ia * o.x + ic * o.y), -(ib * o.x + id * o.y)};
+    auto matrix = [](const double* m) {
+        std::string text = "matrix(";
+        for (int i = 0; i < 6; ++i) text += (i ? " " : "") + detail::svg_number(m[i], 6);
+        return text + ")";
+    };
+    std::string after = "</g>\n";
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i)
+            if (i || j) after += use_tile({i * t.a.x + j * t.b.x, i * t.a.y + j * t.b.y}, page);
+    return {
+        "<defs><pattern id=\"repeat-pattern\" patternUnits=\"userSpaceOnUse\" x=\"0\" "
+        "y=\"0\" width=\"" +
+            detail::svg_number(w, 4) + "\" height=\"" + detail::svg_number(h, 4) +
+            "\" patternTransform=\"" + matrix(k) + "\">\n<g transform=\"" + matrix(inv) +
+            "\">\n<g id=\"repeat-tile\">\n",
+        after + "</g>\n</pattern></defs>\n<path id=\"repeat-area\" d=\"" + area +
+            "\" fill=\"url(#repeat-pattern)\"/>\n"};
+}
+
 // The structured SVG (docs/rendering.md): a layer per element type (layer_order.hpp), a group
 // per element, written to the file one element at a time. The Canvas
 // keeps its state on a context of a 1x1 surface that is never painted; the shapes go to the
@@ -228,6 +295,13 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
     detail::OutputStream out(path);
     detail::SvgWriter svg(out, page.width, page.height, pattern.name);
     if (options.background) svg.background(*options.background);
+    const bool repeat = detail::repeats(options);
+    std::pair<std::string, std::string> frame;
+    if (repeat) {
+        frame = repeat_svg_frame(detail::repeat_layout(region.bounds(), options), page,
+                                 options.svg_pattern);
+        svg.raw(frame.first);
+    }
 
     std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> surface(
         cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1), &cairo_surface_destroy);
@@ -237,7 +311,7 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
     page.apply(cr);
     Canvas canvas(cr, &svg);
 
-    if (options.draw_region) {
+    if (options.draw_region && !repeat) {
         svg.begin_layer("panel outline", "layer-panel-outline");
         cairo_save(cr);
         draw_region_outline(canvas, region, page);
@@ -287,6 +361,7 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
             "strokes-"));
         svg.end_layer();
     }
+    if (repeat) svg.raw(frame.second);
     svg.finish();
     out.commit();
 }
@@ -297,7 +372,14 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
                     const std::vector<const Element*>& elements, const RenderOptions& options) {
     OutputFormat format = format_for_path(path);
     RenderStyle style = detail::parse_render_style(options.style);
-    detail::PageLayout page = detail::page_layout(region.bounds(), options.width);
+    if (options.svg_pattern && format != OutputFormat::svg)
+        throw UsageError("--svg-pattern writes an SVG <pattern>: give -o a .svg file name, not '" +
+                         path + "'");
+    // A repeat's page holds the N x M copies of the tile.
+    const bool repeat = detail::repeats(options);
+    const detail::RepeatLayout layout = detail::repeat_layout(region.bounds(), options);
+    detail::PageLayout page =
+        detail::page_layout(repeat ? layout.bounds() : region.bounds(), options.width);
     std::optional<SkeletalStroke> stroke = resolve_stroke(options.stroke);
     detail::CurveStroke curves;
     if (stroke) curves = {&*stroke, skeletal_stroke_widths * page.line_width};
@@ -317,11 +399,29 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
         cairo_paint(cr);
     }
     page.apply(cr);
-    if (options.draw_region) {
-        Canvas canvas(cr);
-        draw_region_outline(canvas, region, page);
+    if (repeat) {
+        // Every copy of the content that reaches the N x M area, clipped to it; no outline.
+        cairo_save(cr);
+        const std::vector<Point> corners = layout.corners();
+        cairo_move_to(cr, corners[0].x, corners[0].y);
+        for (std::size_t k = 1; k < corners.size(); ++k)
+            cairo_line_to(cr, corners[k].x, corners[k].y);
+        cairo_close_path(cr);
+        cairo_clip(cr);
+        for (const Point& offset : layout.offsets()) {
+            cairo_save(cr);
+            cairo_translate(cr, offset.x, offset.y);
+            draw_elements(cr, pattern, elements, style, page, curves);
+            cairo_restore(cr);
+        }
+        cairo_restore(cr);
+    } else {
+        if (options.draw_region) {
+            Canvas canvas(cr);
+            draw_region_outline(canvas, region, page);
+        }
+        draw_elements(cr, pattern, elements, style, page, curves);
     }
-    draw_elements(cr, pattern, elements, style, page, curves);
 
     document.finish();
     out.commit();

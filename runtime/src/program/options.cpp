@@ -11,8 +11,11 @@
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 #include <utility>
 #include <vector>
+
+#include "output/repeat.hpp"
 
 #ifndef ACANTHUS_VERSION
 #define ACANTHUS_VERSION "unknown"
@@ -322,6 +325,18 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
     app.add_option("--stroke", o.render.stroke, "Skeletal stroke drawn along curve proxies")
         ->type_name("NAME")
         ->group(output_group);
+    app.add_option_function<std::string>(
+           "--repeat",
+           [&o](const std::string& s) {
+               std::tie(o.render.repeat_x, o.render.repeat_y) = parse_repeat(s);
+           },
+           "Draw the tile (the wallpaper tile, else the region's bounding box) N x M times, for "
+           "a look at the repeat")
+        ->type_name("NxM")
+        ->group(output_group);
+    app.add_flag("--svg-pattern", o.render.svg_pattern,
+                 "Write the SVG as a <pattern> of the tile and a shape filled with it")
+        ->group(output_group);
     app.add_option("--json", o.json, "Also write the element tree as JSON")
         ->type_name("TREE.json")
         ->group(output_group);
@@ -383,6 +398,10 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
     if (!rng_seed.empty()) o.growth.rng_seed = *parse_rng_seed(rng_seed);
     if (!background.empty()) o.render.background = parse_color(background);
     o.render.draw_region = !no_outline;
+    if (o.render.svg_pattern && o.output != "-" &&
+        (o.output.size() < 4 || lower(o.output.substr(o.output.size() - 4)) != ".svg"))
+        throw UsageError("--svg-pattern writes an SVG <pattern>: give -o a .svg file name, not '" +
+                         o.output + "'");
     o.progress =
         quiet ? ProgressMode::quiet : (progress ? ProgressMode::forced : ProgressMode::automatic);
 
