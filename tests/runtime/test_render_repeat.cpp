@@ -102,7 +102,10 @@ TEST(Repeat, LayoutOfAnObliqueTile) {
     EXPECT_DOUBLE_EQ(b.x0, 10);
     EXPECT_DOUBLE_EQ(b.x1, 330);
     EXPECT_DOUBLE_EQ(b.y1, 260);
-    EXPECT_EQ(layout.offsets().size(), 4u * 5u);
+    EXPECT_EQ(layout.offsets().size(), 6u);
+    EXPECT_DOUBLE_EQ(layout.offsets()[0].x, 0);  // the tile itself first
+    EXPECT_DOUBLE_EQ(layout.offsets()[5].x, 100 + 80);
+    EXPECT_DOUBLE_EQ(layout.offsets()[5].y, 160);
     // Without a tile, the region's bounding box.
     const RepeatLayout box = repeat_layout(Rect{5, 6, 105, 86}, repeated(400, 3, 3));
     EXPECT_DOUBLE_EQ(box.tile.a.x, 100);
@@ -147,26 +150,38 @@ TEST(Repeat, ThePngRepeatsWithTheTilesPeriod) {
 TEST(Repeat, TheSvgRepeatAndTheSvgPatternAreDrawnByRsvgAsCairoDrawsThePng) {
     TempDir dir;
     sample::Ornament o;
-    const Region region = Region::from_spec("rect:100,80");
+    const Region rect = Region::from_spec("rect:100,80");
+    // A small rectangle and a parallelogram that the sample's elements cross: clipped tiles.
+    const Region small = Region::from_spec("rect:60,50");
+    const Region oblique = Region::from_svg_string(
+        R"(<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 L100 0 L140 80 L40 80 Z"/></svg>)",
+        "oblique");
+    const Rect ob = oblique.bounds();
+    const RepeatTile oblique_tile{{ob.x0, ob.y0}, {100, 0}, {40, 80}};
     struct Case {
         const char* name;
+        const Region* region;
         int n, m;
-        bool pattern;
+        bool pattern, clip;
         std::optional<RepeatTile> tile;
     };
-    const Rect r = region.bounds();
-    const RepeatTile oblique{{r.x0, r.y0}, {100, 0}, {40, 80}};
-    for (const Case& c : {Case{"use", 3, 2, false, {}}, Case{"pattern", 3, 2, true, {}},
-                          Case{"pattern-one", 1, 1, true, {}}, Case{"oblique", 2, 2, true, oblique},
-                          Case{"oblique-use", 2, 2, false, oblique}}) {
+    for (const Case& c :
+         {Case{"use", &rect, 3, 2, false, false, {}}, Case{"pattern", &rect, 3, 2, true, false, {}},
+          Case{"pattern-one", &rect, 1, 1, true, false, {}},
+          Case{"clipped-one", &small, 1, 1, false, true, {}},
+          Case{"clipped-use", &small, 3, 2, false, true, {}},
+          Case{"clipped-pattern", &small, 2, 3, true, true, {}},
+          Case{"oblique-pattern", &oblique, 2, 2, true, true, oblique_tile},
+          Case{"oblique-use", &oblique, 2, 2, false, true, oblique_tile}}) {
         SCOPED_TRACE(c.name);
         RenderOptions options = repeated(600, c.n, c.m, c.pattern);
         options.tile = c.tile;
+        options.clip_to_region = c.clip;
         const std::string svg = dir / (std::string(c.name) + ".svg");
         const std::string png = dir / (std::string(c.name) + ".png");
-        render_to_file(svg, o.pattern, region, o.placed, options);
+        render_to_file(svg, o.pattern, *c.region, o.placed, options);
         options.svg_pattern = false;
-        render_to_file(png, o.pattern, region, o.placed, options);
+        render_to_file(png, o.pattern, *c.region, o.placed, options);
         const Image cairo(png);
         ASSERT_TRUE(cairo.ok());
         ASSERT_TRUE(rasterize(svg, dir / "r.png", cairo.width(), cairo.height()));
@@ -185,17 +200,42 @@ TEST(Repeat, TheSvgRepeatAndTheSvgPatternAreDrawnByRsvgAsCairoDrawsThePng) {
             ++count;
         }
         EXPECT_EQ(ids.size(), std::size_t(count));  // ids stay unique
-        EXPECT_EQ(doc.select_nodes("//*[@id='repeat-tile']").size(), 1u);
+        const bool repeat = c.pattern || c.n * c.m > 1;
+        EXPECT_EQ(doc.select_nodes("//*[@id='repeat-tile']").size(), repeat ? 1u : 0u);
+        EXPECT_EQ(doc.select_nodes("//clipPath[@id='tile-clip']").size(), c.clip ? 1u : 0u);
         const std::size_t uses = doc.select_nodes("//use").size();
         if (c.pattern) {
             EXPECT_EQ(doc.select_nodes("//defs/pattern[@id='repeat-pattern']").size(), 1u);
-            EXPECT_EQ(uses, 8u);  // the tile's eight neighbours reach into the cell
+            EXPECT_EQ(uses, 0u);
             EXPECT_EQ(doc.select_nodes("//path[@fill='url(#repeat-pattern)']").size(), 1u);
         } else {
-            EXPECT_EQ(uses, std::size_t((c.n + 2) * (c.m + 2) - 1));
+            EXPECT_EQ(uses, std::size_t(c.n * c.m - 1));
         }
-        EXPECT_EQ(doc.select_nodes("//g[@id='layer-panel-outline']").size(), 0u);
+        EXPECT_EQ(doc.select_nodes("//g[@id='layer-panel-outline']").size(), repeat ? 0u : 1u);
     }
+}
+
+TEST(Repeat, ClippedToTheRegionNothingIsDrawnOutsideIt) {
+    TempDir dir;
+    sample::Ornament o;
+    const Region small = Region::from_spec("rect:60,50");
+    RenderOptions options = repeated(400, 1, 1);
+    options.draw_region = false;
+    render_to_file(dir / "free.png", o.pattern, small, o.placed, options);
+    options.clip_to_region = true;
+    render_to_file(dir / "clipped.png", o.pattern, small, o.placed, options);
+    const Image free(dir / "free.png"), clipped(dir / "clipped.png");
+    ASSERT_TRUE(clipped.ok());
+    // The page's margin (2% of the side, 8 px) lies outside the region.
+    long outside_free = 0, outside_clipped = 0;
+    for (int y = 0; y < clipped.height(); ++y)
+        for (int x = 0; x < clipped.width(); ++x)
+            if (x < 7 || y < 7 || x >= clipped.width() - 7 || y >= clipped.height() - 7) {
+                outside_free += free.ink(x, y);
+                outside_clipped += clipped.ink(x, y);
+            }
+    EXPECT_GT(outside_free, 0);  // the sample's elements do cross this region's edge
+    EXPECT_EQ(outside_clipped, 0);
 }
 
 TEST(Repeat, SvgPatternNeedsAnSvgOutput) {

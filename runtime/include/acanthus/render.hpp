@@ -27,8 +27,11 @@ struct RenderOptions {
     std::optional<Color> background;  // none: transparent (PNG) / no background rectangle
     bool draw_region = true;          // the region's outline
     std::string stroke;               // skeletal stroke name applied to curves, or empty
-    // --repeat NxM (docs/symmetry.md): the tile drawn N x M times; --svg-pattern: the SVG as a
-    // <pattern> of the tile filling that area.
+    // Elements drawn clipped to the region (a wallpaper tile, whose elements cross its edges).
+    bool clip_to_region = false;
+    // --repeat NxM (docs/symmetry.md): the tile drawn N x M times, each copy clipped to the
+    // region when clip_to_region; --svg-pattern: the SVG as a <pattern> of the tile filling that
+    // area.
     int repeat_x = 1, repeat_y = 1;
     bool svg_pattern = false;
     std::optional<RepeatTile> tile;  // none: the region's bounding box

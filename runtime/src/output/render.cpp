@@ -221,38 +221,59 @@ void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const 
     if (curves.stroke) draw_all_stroke_chains(canvas, cr, elements, page, curves);
 }
 
-std::string svg_path_of(const std::vector<Point>& points, const detail::PageLayout& page) {
-    std::string d;
-    for (const Point& p : points)
-        d += (d.empty() ? "M" : " L") + detail::svg_number(page.offset_x + page.scale * p.x, 4) +
-             " " + detail::svg_number(page.offset_y + page.scale * p.y, 4);
-    return d + " Z";
+std::string page_point(Point p, const detail::PageLayout& page) {
+    return detail::svg_number(page.offset_x + page.scale * p.x, 4) + " " +
+           detail::svg_number(page.offset_y + page.scale * p.y, 4);
 }
 
-std::string translate_attribute(Point offset, const detail::PageLayout& page) {
-    return "translate(" + detail::svg_number(page.scale * offset.x, 4) + " " +
-           detail::svg_number(page.scale * offset.y, 4) + ")";
+std::string svg_path_of(const std::vector<std::vector<Point>>& rings,
+                        const detail::PageLayout& page) {
+    std::string d;
+    for (const auto& ring : rings) {
+        for (std::size_t k = 0; k < ring.size(); ++k)
+            d += (d.empty() ? "M" : k == 0 ? " M" : " L") + page_point(ring[k], page);
+        if (!ring.empty()) d += " Z";
+    }
+    return d;
+}
+
+// The region as a clip path of id `id`, in page units.
+std::string region_clip_path(const Region& region, const detail::PageLayout& page,
+                             const std::string& id) {
+    return "<clipPath id=\"" + id + "\"><path d=\"" +
+           svg_path_of(region.rings(0.25 / page.scale), page) + "\"" +
+           (region.evenodd() ? " clip-rule=\"evenodd\"" : "") + "/></clipPath>";
 }
 
 std::string use_tile(Point offset, const detail::PageLayout& page) {
-    return "<use xlink:href=\"#repeat-tile\" transform=\"" + translate_attribute(offset, page) +
-           "\"/>\n";
+    return "<use xlink:href=\"#repeat-tile\" transform=\"translate(" +
+           detail::svg_number(page.scale * offset.x, 4) + " " +
+           detail::svg_number(page.scale * offset.y, 4) + ")\"/>\n";
 }
 
-// What comes before and after the tile's content (a group with id repeat-tile, drawn where the
-// tile is) in a repeated SVG: copies of it by <use>, clipped to the N x M area; or a <pattern>
-// whose cell is the tile, and the area filled with it.
-std::pair<std::string, std::string> repeat_svg_frame(const detail::RepeatLayout& layout,
-                                                     const detail::PageLayout& page, bool pattern) {
-    const std::string area = svg_path_of(layout.corners(), page);
-    if (!pattern) {
+// What comes before and after the elements' layers in the structured SVG when the output is a
+// repeat or is clipped to the region (a wallpaper tile). The layers are the tile's content, in a
+// group with id repeat-tile (clipped to the region when asked) drawn where the tile is; the
+// other copies are <use>s of it; or, for a pattern, the group is the cell of a <pattern> that
+// fills the N x M area.
+std::pair<std::string, std::string> svg_frame(const Region& region, const RenderOptions& options,
+                                              const detail::PageLayout& page) {
+    const std::string clip =
+        options.clip_to_region ? region_clip_path(region, page, "tile-clip") : std::string();
+    const std::string clip_attribute =
+        options.clip_to_region ? " clip-path=\"url(#tile-clip)\"" : "";
+    if (!detail::repeats(options)) {
+        if (!options.clip_to_region) return {};
+        return {"<defs>" + clip + "</defs>\n<g id=\"tile\"" + clip_attribute + ">\n", "</g>\n"};
+    }
+    const detail::RepeatLayout layout = detail::repeat_layout(region.bounds(), options);
+    const std::string area = svg_path_of({layout.corners()}, page);
+    const std::string tile_group = "<g id=\"repeat-tile\"" + clip_attribute + ">\n";
+    if (!options.svg_pattern) {
         std::string after = "</g>\n";
         for (const Point& o : layout.offsets())
             if (o.x != 0 || o.y != 0) after += use_tile(o, page);
-        return {"<defs><clipPath id=\"repeat-area\"><path d=\"" + area +
-                    "\"/></clipPath></defs>\n<g clip-path=\"url(#repeat-area)\">\n<g "
-                    "id=\"repeat-tile\">\n",
-                after + "</g>\n"};
+        return {(clip.empty() ? "" : "<defs>" + clip + "</defs>\n") + tile_group, after};
     }
     // The pattern's cell is W x H page units, mapped onto the tile by K (a shear for an oblique
     // tile); the content is drawn in page units, so it goes through K's inverse.
@@ -270,18 +291,24 @@ std::pair<std::string, std::string> repeat_svg_frame(const detail::RepeatLayout&
         for (int i = 0; i < 6; ++i) text += (i ? " " : "") + detail::svg_number(m[i], 6);
         return text + ")";
     };
-    std::string after = "</g>\n";
-    for (int j = -1; j <= 1; ++j)
-        for (int i = -1; i <= 1; ++i)
-            if (i || j) after += use_tile({i * t.a.x + j * t.b.x, i * t.a.y + j * t.b.y}, page);
-    return {
-        "<defs><pattern id=\"repeat-pattern\" patternUnits=\"userSpaceOnUse\" x=\"0\" "
-        "y=\"0\" width=\"" +
-            detail::svg_number(w, 4) + "\" height=\"" + detail::svg_number(h, 4) +
-            "\" patternTransform=\"" + matrix(k) + "\">\n<g transform=\"" + matrix(inv) +
-            "\">\n<g id=\"repeat-tile\">\n",
-        after + "</g>\n</pattern></defs>\n<path id=\"repeat-area\" d=\"" + area +
-            "\" fill=\"url(#repeat-pattern)\"/>\n"};
+    return {"<defs>" + clip + "<pattern id=\"repeat-pattern\" patternUnits=\"userSpaceOnUse\" " +
+                "x=\"0\" y=\"0\" width=\"" + detail::svg_number(w, 4) + "\" height=\"" +
+                detail::svg_number(h, 4) + "\" patternTransform=\"" + matrix(k) +
+                "\">\n<g transform=\"" + matrix(inv) + "\">\n" + tile_group,
+            "</g>\n</g>\n</pattern></defs>\n<path id=\"repeat-area\" d=\"" + area +
+                "\" fill=\"url(#repeat-pattern)\"/>\n"};
+}
+
+// Clips `cr` to the region.
+void clip_to_region(cairo_t* cr, const Region& region, const detail::PageLayout& page) {
+    cairo_new_path(cr);
+    for (const auto& ring : region.rings(0.25 / page.scale)) {
+        for (std::size_t k = 0; k < ring.size(); ++k)
+            (k == 0 ? cairo_move_to : cairo_line_to)(cr, ring[k].x, ring[k].y);
+        cairo_close_path(cr);
+    }
+    cairo_set_fill_rule(cr, region.evenodd() ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+    cairo_clip(cr);
 }
 
 // The structured SVG (docs/rendering.md): a layer per element type (layer_order.hpp), a group
@@ -296,12 +323,7 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
     detail::SvgWriter svg(out, page.width, page.height, pattern.name);
     if (options.background) svg.background(*options.background);
     const bool repeat = detail::repeats(options);
-    std::pair<std::string, std::string> frame;
-    if (repeat) {
-        frame = repeat_svg_frame(detail::repeat_layout(region.bounds(), options), page,
-                                 options.svg_pattern);
-        svg.raw(frame.first);
-    }
+    const std::pair<std::string, std::string> frame = svg_frame(region, options, page);
 
     std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> surface(
         cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1), &cairo_surface_destroy);
@@ -318,6 +340,8 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
         cairo_restore(cr);
         svg.end_layer();
     }
+
+    svg.raw(frame.first);
 
     // Each type's elements in placement order.
     std::vector<const ElementType*> types = detail::layer_order(elements);
@@ -361,7 +385,7 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
             "strokes-"));
         svg.end_layer();
     }
-    if (repeat) svg.raw(frame.second);
+    svg.raw(frame.second);
     svg.finish();
     out.commit();
 }
@@ -400,26 +424,20 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
     }
     page.apply(cr);
     if (repeat) {
-        // Every copy of the content that reaches the N x M area, clipped to it; no outline.
-        cairo_save(cr);
-        const std::vector<Point> corners = layout.corners();
-        cairo_move_to(cr, corners[0].x, corners[0].y);
-        for (std::size_t k = 1; k < corners.size(); ++k)
-            cairo_line_to(cr, corners[k].x, corners[k].y);
-        cairo_close_path(cr);
-        cairo_clip(cr);
+        // Each copy of the content where its tile is, clipped to it when asked; no outline.
         for (const Point& offset : layout.offsets()) {
             cairo_save(cr);
             cairo_translate(cr, offset.x, offset.y);
+            if (options.clip_to_region) clip_to_region(cr, region, page);
             draw_elements(cr, pattern, elements, style, page, curves);
             cairo_restore(cr);
         }
-        cairo_restore(cr);
     } else {
         if (options.draw_region) {
             Canvas canvas(cr);
             draw_region_outline(canvas, region, page);
         }
+        if (options.clip_to_region) clip_to_region(cr, region, page);
         draw_elements(cr, pattern, elements, style, page, curves);
     }
 

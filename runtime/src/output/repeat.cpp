@@ -35,8 +35,8 @@ Rect RepeatLayout::bounds() const {
 
 std::vector<Point> RepeatLayout::offsets() const {
     std::vector<Point> out;
-    for (int j = -1; j <= m; ++j)
-        for (int i = -1; i <= n; ++i)
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < n; ++i)
             out.push_back({i * tile.a.x + j * tile.b.x, i * tile.a.y + j * tile.b.y});
     return out;
 }

@@ -17,9 +17,7 @@ struct RepeatLayout {
     // The N x M parallelogram's corners, from the origin, counter-clockwise in u, v.
     std::vector<Point> corners() const;
     Rect bounds() const;
-    // The translations i a + j b that put a copy of the tile's content on the N x M area: i in
-    // -1..N, j in -1..M, so that content sticking out of a tile (an element across its edge,
-    // grown in a periodic field) covers the neighbouring copies and the area's edges.
+    // The translations i a + j b of the N x M copies, 0 <= i < N, 0 <= j < M, (0, 0) first.
     std::vector<Point> offsets() const;
 };
 
