@@ -5,11 +5,16 @@
 #include <acanthus/growth.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/region.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace acanthus {
+
+namespace detail {
+class Band;
+}
 
 enum class OutputFormat { svg, pdf, ps, eps, png };
 
@@ -35,6 +40,8 @@ struct RenderOptions {
     int repeat_x = 1, repeat_y = 1;
     bool svg_pattern = false;
     std::optional<RepeatTile> tile;  // none: the region's bounding box
+    // --band: the region is the straight band, drawn bent onto the band's centre line.
+    std::shared_ptr<const detail::Band> band;
 };
 
 // Draws the elements (their %draw, or the default for the style). Writes `path` through a

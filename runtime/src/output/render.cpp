@@ -27,6 +27,7 @@
 #include <utility>
 
 #include "draw/default_style.hpp"
+#include "output/band_sink.hpp"
 #include "output/document.hpp"
 #include "output/layer_order.hpp"
 #include "output/output_stream.hpp"
@@ -35,6 +36,7 @@
 #include "output/svg_fallback.hpp"
 #include "output/svg_writer.hpp"
 #include "pattern/running_body.hpp"
+#include "region/band.hpp"
 #include "symmetry/image_element.hpp"
 
 namespace acanthus {
@@ -67,10 +69,22 @@ std::optional<SkeletalStroke> resolve_stroke(const std::string& name) {
     return SkeletalStroke::builtin(name);
 }
 
+// The region's outline as drawn: flattened to a quarter of a page unit (invisible at any output
+// size), bent with the band when there is one.
+struct Outline {
+    std::vector<std::vector<Point>> rings;
+    bool evenodd = false;
+};
+
+Outline outline_of(const Region& region, const RenderOptions& options,
+                   const detail::PageLayout& page) {
+    if (options.band) return {options.band->outline(0.25 / page.scale), true};
+    return {region.rings(0.25 / page.scale), region.evenodd()};
+}
+
 // Through the Canvas, so that the structured SVG gets it as a path of its own layer.
-void draw_region_outline(Canvas& canvas, const Region& region, const detail::PageLayout& page) {
-    // A quarter of a page unit of flattening error is invisible at any output size.
-    for (const auto& ring : region.rings(0.25 / page.scale)) {
+void draw_region_outline(Canvas& canvas, const Outline& outline, const detail::PageLayout& page) {
+    for (const auto& ring : outline.rings) {
         if (ring.empty()) continue;
         canvas.move_to(ring[0]);
         for (std::size_t i = 1; i < ring.size(); ++i) canvas.line_to(ring[i]);
@@ -238,11 +252,10 @@ std::string svg_path_of(const std::vector<std::vector<Point>>& rings,
 }
 
 // The region as a clip path of id `id`, in page units.
-std::string region_clip_path(const Region& region, const detail::PageLayout& page,
+std::string region_clip_path(const Outline& outline, const detail::PageLayout& page,
                              const std::string& id) {
-    return "<clipPath id=\"" + id + "\"><path d=\"" +
-           svg_path_of(region.rings(0.25 / page.scale), page) + "\"" +
-           (region.evenodd() ? " clip-rule=\"evenodd\"" : "") + "/></clipPath>";
+    return "<clipPath id=\"" + id + "\"><path d=\"" + svg_path_of(outline.rings, page) + "\"" +
+           (outline.evenodd ? " clip-rule=\"evenodd\"" : "") + "/></clipPath>";
 }
 
 std::string use_tile(Point offset, const detail::PageLayout& page) {
@@ -259,7 +272,9 @@ std::string use_tile(Point offset, const detail::PageLayout& page) {
 std::pair<std::string, std::string> svg_frame(const Region& region, const RenderOptions& options,
                                               const detail::PageLayout& page) {
     const std::string clip =
-        options.clip_to_region ? region_clip_path(region, page, "tile-clip") : std::string();
+        options.clip_to_region
+            ? region_clip_path(outline_of(region, options, page), page, "tile-clip")
+            : std::string();
     const std::string clip_attribute =
         options.clip_to_region ? " clip-path=\"url(#tile-clip)\"" : "";
     if (!detail::repeats(options)) {
@@ -300,15 +315,48 @@ std::pair<std::string, std::string> svg_frame(const Region& region, const Render
 }
 
 // Clips `cr` to the region.
-void clip_to_region(cairo_t* cr, const Region& region, const detail::PageLayout& page) {
+void clip_to_region(cairo_t* cr, const Outline& outline) {
     cairo_new_path(cr);
-    for (const auto& ring : region.rings(0.25 / page.scale)) {
+    for (const auto& ring : outline.rings) {
         for (std::size_t k = 0; k < ring.size(); ++k)
             (k == 0 ? cairo_move_to : cairo_line_to)(cr, ring[k].x, ring[k].y);
         cairo_close_path(cr);
     }
-    cairo_set_fill_rule(cr, region.evenodd() ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+    cairo_set_fill_rule(cr, outline.evenodd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
     cairo_clip(cr);
+}
+
+// A context on a 1x1 surface that is never painted: the Canvas keeps its state there while a
+// sink takes the shapes.
+class ScratchContext {
+  public:
+    ScratchContext()
+        : surface_(cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1), &cairo_surface_destroy),
+          context_(cairo_create(surface_.get()), &cairo_destroy) {}
+    cairo_t* get() const { return context_.get(); }
+
+  private:
+    std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> surface_;
+    std::unique_ptr<cairo_t, void (*)(cairo_t*)> context_;
+};
+
+// The flattening error of bent shapes: a quarter of a page unit.
+double bend_tolerance(const detail::PageLayout& page) { return 0.25 / page.scale; }
+
+// The elements drawn in the straight band's coordinates and painted bent onto `target`.
+void draw_bent(cairo_t* target, const Pattern& pattern, const std::vector<const Element*>& elements,
+               RenderStyle style, const detail::PageLayout& page, const detail::CurveStroke& curves,
+               const detail::Band& band) {
+    ScratchContext scratch;
+    detail::BandSink sink(band, target, bend_tolerance(page));
+    Canvas canvas(scratch.get(), &sink);
+    long count = static_cast<long>(elements.size());
+    for (long index = 0; index < count; ++index) {
+        const Element& element = *elements[static_cast<std::size_t>(index)];
+        if (!is_drawn(pattern, element, style, curves)) continue;
+        draw_element(canvas, scratch.get(), pattern, element, index, count, style, page, curves);
+    }
+    if (curves.stroke) draw_all_stroke_chains(canvas, scratch.get(), elements, page, curves);
 }
 
 // The structured SVG (docs/rendering.md): a layer per element type (layer_order.hpp), a group
@@ -325,18 +373,21 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
     const bool repeat = detail::repeats(options);
     const std::pair<std::string, std::string> frame = svg_frame(region, options, page);
 
-    std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> surface(
-        cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1), &cairo_surface_destroy);
-    std::unique_ptr<cairo_t, void (*)(cairo_t*)> context(cairo_create(surface.get()),
-                                                         &cairo_destroy);
-    cairo_t* cr = context.get();
+    ScratchContext page_context, band_context;
+    cairo_t* cr = page_context.get();
     page.apply(cr);
-    Canvas canvas(cr, &svg);
+    Canvas outline_canvas(cr, &svg);
+    // With a band, elements are drawn in the straight band's coordinates and bent onto `cr`.
+    std::optional<detail::BandSink> band_sink;
+    if (options.band) band_sink.emplace(*options.band, cr, bend_tolerance(page), &svg);
+    cairo_t* draw_cr = options.band ? band_context.get() : cr;
+    Canvas canvas(draw_cr, options.band ? static_cast<detail::CanvasSink*>(&*band_sink) : &svg);
+    const Outline outline = outline_of(region, options, page);
 
     if (options.draw_region && !repeat) {
         svg.begin_layer("panel outline", "layer-panel-outline");
         cairo_save(cr);
-        draw_region_outline(canvas, region, page);
+        draw_region_outline(outline_canvas, outline, page);
         cairo_restore(cr);
         svg.end_layer();
     }
@@ -358,11 +409,15 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
                 continue;
             }
             canvas.reset_used_cairo();
-            draw_element(canvas, cr, pattern, element, index, count, style, page, curves);
+            draw_element(canvas, draw_cr, pattern, element, index, count, style, page, curves);
             if (canvas.used_cairo() || svg.needs_fallback()) {
                 svg.replace_shapes(detail::cairo_svg_fragment(
                     page,
                     [&](cairo_t* raw) {
+                        if (options.band) {
+                            draw_bent(raw, pattern, {&element}, style, page, {}, *options.band);
+                            return;
+                        }
                         Canvas cairo_canvas(raw);
                         draw_element(cairo_canvas, raw, pattern, element, index, count, style, page,
                                      curves);
@@ -379,6 +434,13 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
         svg.raw(detail::cairo_svg_fragment(
             page,
             [&](cairo_t* raw) {
+                if (options.band) {
+                    ScratchContext scratch;
+                    detail::BandSink sink(*options.band, raw, bend_tolerance(page));
+                    Canvas band_canvas(scratch.get(), &sink);
+                    draw_all_stroke_chains(band_canvas, scratch.get(), elements, page, curves);
+                    return;
+                }
                 Canvas cairo_canvas(raw);
                 draw_all_stroke_chains(cairo_canvas, raw, elements, page, curves);
             },
@@ -402,8 +464,10 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
     // A repeat's page holds the N x M copies of the tile.
     const bool repeat = detail::repeats(options);
     const detail::RepeatLayout layout = detail::repeat_layout(region.bounds(), options);
-    detail::PageLayout page =
-        detail::page_layout(repeat ? layout.bounds() : region.bounds(), options.width);
+    if (repeat && options.band)
+        throw UsageError("--repeat and --svg-pattern repeat a tile, not a band (--band)");
+    const Rect drawn = options.band ? options.band->bounds() : region.bounds();
+    detail::PageLayout page = detail::page_layout(repeat ? layout.bounds() : drawn, options.width);
     std::optional<SkeletalStroke> stroke = resolve_stroke(options.stroke);
     detail::CurveStroke curves;
     if (stroke) curves = {&*stroke, skeletal_stroke_widths * page.line_width};
@@ -423,22 +487,26 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
         cairo_paint(cr);
     }
     page.apply(cr);
+    const Outline outline = outline_of(region, options, page);
     if (repeat) {
         // Each copy of the content where its tile is, clipped to it when asked; no outline.
         for (const Point& offset : layout.offsets()) {
             cairo_save(cr);
             cairo_translate(cr, offset.x, offset.y);
-            if (options.clip_to_region) clip_to_region(cr, region, page);
+            if (options.clip_to_region) clip_to_region(cr, outline);
             draw_elements(cr, pattern, elements, style, page, curves);
             cairo_restore(cr);
         }
     } else {
         if (options.draw_region) {
             Canvas canvas(cr);
-            draw_region_outline(canvas, region, page);
+            draw_region_outline(canvas, outline, page);
         }
-        if (options.clip_to_region) clip_to_region(cr, region, page);
-        draw_elements(cr, pattern, elements, style, page, curves);
+        if (options.clip_to_region) clip_to_region(cr, outline);
+        if (options.band)
+            draw_bent(cr, pattern, elements, style, page, curves, *options.band);
+        else
+            draw_elements(cr, pattern, elements, style, page, curves);
     }
 
     document.finish();

@@ -206,6 +206,17 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
                    "SVG file, or rect:W,H circle:R ellipse:RX,RY (default: built-in panel)")
         ->type_name("FILE.svg|SHAPE")
         ->group(region_group);
+    auto* band_option =
+        app.add_option("--band", o.band,
+                       "Grow in a band along the centre line of this SVG path, drawn bent onto it")
+            ->type_name("PATH.svg")
+            ->excludes("--region")
+            ->group(region_group);
+    app.add_option("--band-width", o.band_width, "The band's width (with --band)")
+        ->type_name("W")
+        ->needs(band_option)
+        ->group(region_group);
+    band_option->needs("--band-width");
     app.add_option("--seed", seeds,
                    "Seed position (repeatable; default: centre of the largest inscribed circle)")
         ->type_name("X,Y")
@@ -398,6 +409,8 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
     if (!rng_seed.empty()) o.growth.rng_seed = *parse_rng_seed(rng_seed);
     if (!background.empty()) o.render.background = parse_color(background);
     o.render.draw_region = !no_outline;
+    if (!o.band.empty() && (o.render.svg_pattern || o.render.repeat_x * o.render.repeat_y > 1))
+        throw UsageError("--repeat and --svg-pattern repeat a tile, not a band (--band)");
     if (o.render.svg_pattern && o.output != "-" &&
         (o.output.size() < 4 || lower(o.output.substr(o.output.size() - 4)) != ".svg"))
         throw UsageError("--svg-pattern writes an SVG <pattern>: give -o a .svg file name, not '" +
