@@ -32,6 +32,8 @@ struct RenderOptions {
     int repeat_x = 1, repeat_y = 1;
     bool svg_pattern = false;
     std::optional<RepeatTile> tile;  // none: the region's bounding box
+    // Elements drawn clipped to the region (a wallpaper tile, whose elements cross its edges).
+    bool clip_to_region = false;
 };
 
 // Draws the elements (their %draw, or the default for the style). Writes `path` through a

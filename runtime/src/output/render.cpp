@@ -420,6 +420,17 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
             Canvas canvas(cr);
             draw_region_outline(canvas, region, page);
         }
+        if (options.clip_to_region) {
+            cairo_new_path(cr);
+            for (const auto& ring : region.rings(0.25 / page.scale)) {
+                for (std::size_t k = 0; k < ring.size(); ++k)
+                    (k == 0 ? cairo_move_to : cairo_line_to)(cr, ring[k].x, ring[k].y);
+                cairo_close_path(cr);
+            }
+            cairo_set_fill_rule(
+                cr, region.evenodd() ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+            cairo_clip(cr);
+        }
         draw_elements(cr, pattern, elements, style, page, curves);
     }
 
