@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "output/repeat.hpp"
+#include "symmetry/frieze_group.hpp"
+#include "symmetry/wallpaper_group.hpp"
 
 #ifndef ACANTHUS_VERSION
 #define ACANTHUS_VERSION "unknown"
@@ -306,6 +308,36 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->check(check_symmetry_center)
         ->needs(symmetry_option)
         ->group(symmetry_group);
+    std::string frieze, wallpaper, tile;
+    double period = 0;
+    auto* frieze_option =
+        app.add_option("--frieze", frieze,
+                       "Grow a frieze along x about the region's horizontal centre line: p1 p11g "
+                       "p1m1 p11m p2 p2mg p2mm (needs --period)")
+            ->type_name("G")
+            ->excludes(symmetry_option)
+            ->group(symmetry_group);
+    auto* period_option =
+        app.add_option("--period", period, "The frieze's period along x, in user units")
+            ->type_name("P")
+            ->needs(frieze_option)
+            ->group(symmetry_group);
+    frieze_option->needs(period_option);
+    auto* wallpaper_option =
+        app.add_option("--wallpaper", wallpaper,
+                       "Grow a seamless tile under a wallpaper group, p1 ... p6m (needs --tile; "
+                       "the region is the tile)")
+            ->type_name("G")
+            ->excludes(symmetry_option)
+            ->excludes(frieze_option)
+            ->group(symmetry_group);
+    auto* tile_option =
+        app.add_option("--tile", tile,
+                       "The wallpaper's tile: sides (W, 0) and H at ANGLE degrees (default 90)")
+            ->type_name("W,H[,ANGLE]")
+            ->needs(wallpaper_option)
+            ->group(symmetry_group);
+    wallpaper_option->needs(tile_option);
 
     const char* output_group = "Output";
     app.add_option("-o,--output", o.output,
@@ -405,6 +437,19 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
     if (!symmetry.empty()) {
         o.growth.symmetry = Symmetry::parse(symmetry);
         if (!symmetry_center.empty()) o.growth.symmetry->center = *parse_seed(symmetry_center);
+    }
+    if (!frieze.empty()) {
+        o.growth.frieze = Frieze{frieze, period};
+        detail::make_frieze_group(frieze, period);  // UsageError on a bad name or period
+    }
+    if (!wallpaper.empty()) {
+        if (!o.region.empty())
+            throw UsageError("--wallpaper grows in its tile (--tile); leave out --region");
+        const detail::Tile t = detail::parse_tile(tile);
+        o.growth.wallpaper = Wallpaper{wallpaper, t.width, t.height, t.angle};
+        o.render.clip_to_region = true;
+        o.render.tile = RepeatTile{{0, 0}, t.a(), t.b()};  // --repeat repeats the lattice's cell
+        detail::make_wallpaper_group(wallpaper, t);        // UsageError on a lattice it cannot have
     }
     if (!rng_seed.empty()) o.growth.rng_seed = *parse_rng_seed(rng_seed);
     if (!background.empty()) o.render.background = parse_color(background);

@@ -29,6 +29,7 @@
 #include "program/progress_line.hpp"
 #include "program/tree_json.hpp"
 #include "region/band.hpp"
+#include "symmetry/translation_groups.hpp"
 
 namespace acanthus {
 
@@ -243,9 +244,16 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     if (!o.band.empty())  // grown straight, drawn bent (docs/symmetry.md)
         o.render.band =
             std::make_shared<const detail::Band>(detail::Band::from_svg_file(o.band, o.band_width));
-    const Region region = o.render.band      ? o.render.band->straight_region()
-                          : o.region.empty() ? Region::default_panel()
-                                             : Region::from_argument(o.region);
+    if (o.render.band && o.render.band->closed() && o.growth.frieze) {
+        // A closed band's frieze wraps, with no seam where the centre line closes; the
+        // translates across its ends are clipped to the band.
+        o.growth.wrap_x = o.render.band->length();
+        o.render.clip_to_region = true;
+    }
+    const Region region = o.render.band        ? o.render.band->straight_region()
+                          : o.growth.wallpaper ? detail::tile_region(*o.growth.wallpaper)
+                          : o.region.empty()   ? Region::default_panel()
+                                               : Region::from_argument(o.region);
     // Every file of the run is renamed into place at the end, all or none.
     detail::OutputTransaction outputs;
     validate(o, region, outputs);

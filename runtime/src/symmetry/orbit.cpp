@@ -136,6 +136,7 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
             fixed = true;
             continue;
         }
+        if (!group.keeps(*image, tolerance)) continue;  // beyond a frieze's ends or the window
         images.push_back(std::move(image));
         transforms.push_back(g[k]);
     }
