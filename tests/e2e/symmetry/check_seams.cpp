@@ -5,7 +5,7 @@
 // one element) are repeated 3 x 3, and:
 // - no two elements overlap across a seam (the elements' first proxies' bounds centres lie in
 //   different copies of the tile), unless one is the other's parent or they share one (the
-//   rule's business, as inside a tile);
+//   rule's business, as inside a tile; an image is related as the element it is of);
 // - no gap across the seams is larger than inside: the largest empty circle that touches a seam
 //   of the central copy is no larger than 1.1 times the largest one that does not, plus two
 //   pixels of the raster the empty circles are measured on (the elements' proxies drawn at
@@ -20,6 +20,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -42,6 +43,7 @@ struct Loaded final : Element {
     std::string type_name;
     ElementType type_info;
     long parent_id = -1;
+    long original = -1;  // the fundamental element an image is of; its own id otherwise
     std::vector<std::unique_ptr<Proxy, void (*)(Proxy*)>> proxies;
     const ElementType& type() const override { return type_info; }
     std::size_t proxy_count() const override { return proxies.size(); }
@@ -195,12 +197,17 @@ int main(int argc, char** argv) {
     };
 
     std::vector<std::unique_ptr<Loaded>> elements;
+    std::map<long, long> parent_of;  // id -> parent id, fundamental elements
+    for (const Json& j : tree.at("elements"))
+        if (j.contains("parent") && !j.at("parent").is_null())
+            parent_of[j.at("id").get<long>()] = j.at("parent").get<long>();
     for (const Json& j : tree.at("elements")) {
         auto e = std::make_unique<Loaded>();
         e->type_name = j.at("type");
         e->type_info.name = e->type_name;
         e->id = j.at("id");
         if (j.contains("parent") && !j.at("parent").is_null()) e->parent_id = j.at("parent");
+        e->original = j.contains("image_of") ? j.at("image_of").get<long>() : long(e->id);
         for (const Json& p : j.at("proxies")) e->proxies.push_back(load_proxy(p));
         if (e->type_name != "seed" && !e->proxies.empty()) elements.push_back(std::move(e));
     }
@@ -241,6 +248,10 @@ int main(int argc, char** argv) {
     auto fault = [&](const std::string& what) {
         if (++faults <= 20) std::cout << "FAULT: " << what << "\n";
     };
+    if (elements.empty()) {
+        fault("the tile holds no element");
+        return 1;
+    }
 
     // Overlaps across a seam, around the central copy.
     long seam_overlaps = 0;
@@ -253,8 +264,14 @@ int main(int argc, char** argv) {
                 if (&q == &p || (q.cell_i == p.cell_i && q.cell_j == p.cell_j)) continue;
                 const Loaded& x = *p.element;
                 const Loaded& y = *q.element;
-                if (x.parent_id == y.id || y.parent_id == x.id ||
-                    (x.parent_id >= 0 && x.parent_id == y.parent_id))
+                // Images have no parent: the relation is their originals'.
+                auto parent = [&](long id) {
+                    const auto it = parent_of.find(id);
+                    return it == parent_of.end() ? -1L : it->second;
+                };
+                const long fx = x.original, fy = y.original;
+                if (fx != fy && (parent(fy) == fx || parent(fx) == fy ||
+                                 (parent(fx) >= 0 && parent(fx) == parent(fy))))
                     continue;
                 if (!overlaps(p.image->proxy(k), q.image->proxy(static_cast<std::size_t>(en.proxy)),
                               tol))
