@@ -249,3 +249,44 @@ TEST_P(WallpaperGrowth, DotsAreInvariantAndFreeOfOverlapAcrossTheSeams) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Wallpapers, WallpaperGrowth, ::testing::ValuesIn(kWallpapers));
+
+// A closed band (wrap_x): x is periodic with the band's length; every element crossing an end
+// has its translate by the length across the other, and the images keep the adjusted period.
+TEST(FriezeGrowth, ClosedBandIsSeamless) {
+    const Region band = Region::from_spec("rect:310,50");
+    GrowthOptions o = test::small_options();
+    o.resolution = 240;
+    o.frieze = Frieze{"p2", 60};
+    o.wrap_x = 310;
+    ::dots::dot_count = 0;
+    const Pattern pattern = ::dots::pattern();
+    GrowthEngine engine(pattern, band, o);
+    engine.run();
+    const auto elements = engine.elements();
+    ASSERT_GT(elements.size(), 40u);
+    const TranslationSetup s = frieze_setup(*o.frieze, band, o.wrap_x);
+    const SymmetryGroup g(s.group, *s.box);
+    expect_invariant(elements, g, s.box->bounds(), "closed band p2");
+    // Seamless: each element within the band's ends has its translates by +-L where they
+    // stay in the box (the translations by the length are in the group: 310 / 62 = 5 periods).
+    const double tol = 1e-6 * 310;
+    long crossing = 0;
+    for (const Element* e : elements) {
+        const Rect b = e->proxy(0).bounds();
+        if (b.x0 < 0 && b.x1 > 0) ++crossing;
+    }
+    EXPECT_GT(crossing, 0) << "no element crosses the seam at x = 0";
+    for (const Element* e : elements) {
+        const Rect b = e->proxy(0).bounds();
+        if (b.x0 < 0 || b.x1 > 310) continue;
+        for (double dx : {-310.0, 310.0}) {
+            ImageElement image(*e, Isometry{1, 0, 0, 1, dx, 0});
+            const Rect r = image.proxy(0).bounds();
+            if (r.x0 < s.box->bounds().x0 || r.x1 > s.box->bounds().x1) continue;
+            bool found = false;
+            for (const Element* f : elements)
+                found = found || (&f->type() == &e->type() && same_place(image, *f, tol));
+            ASSERT_TRUE(found) << "the translate of element " << e->id << " by " << dx;
+        }
+    }
+}

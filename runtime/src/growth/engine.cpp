@@ -294,10 +294,21 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     if (group) {
         std::vector<const Element*> batch;
         for (const auto& child : children) batch.push_back(child.get());
-        auto placeable =
-            placeable_orbits(batch, *group, core_region, ornament.tolerance(), [&](const Proxy& p) {
+        const double tol = ornament.tolerance();
+        std::function<bool(const Proxy&, const Isometry&)> hits_placed;
+        if (!group->rosette())
+            hits_placed = [&](const Proxy& p, const Isometry& g) {
+                return ornament.overlaps_any(p, [&](const Element& e) {
+                    const ImageElement* image = as_image(e);
+                    return !same_isometry(image ? image->transform() : Isometry{}, g, tol);
+                });
+            };
+        auto placeable = placeable_orbits(
+            batch, *group, core_region, tol,
+            [&](const Proxy& p) {
                 return ornament.overlaps_any(p, [](const Element& e) { return as_image(e); });
-            });
+            },
+            hits_placed);
         std::vector<std::unique_ptr<Element>> kept;
         for (std::size_t k = 0; k < children.size(); ++k) {
             if (!placeable[k]) continue;

@@ -107,8 +107,13 @@ bool SymmetryGroup::keeps(const Element& image, double tolerance) const {
             if (b.x0 <= window_->x1 && window_->x0 <= b.x1 && b.y0 <= window_->y1 &&
                 window_->y0 <= b.y1)
                 return true;
-        } else if (leaves_region(p, *region_, tolerance)) {
-            return false;
+        } else {
+            // Beyond the region's bounds first: cheap, and sure for a curve whose end only
+            // just leaves them (the band's ends).
+            const Rect b = p.bounds(), r = region_->bounds();
+            if (b.x0 < r.x0 - tolerance || b.y0 < r.y0 - tolerance || b.x1 > r.x1 + tolerance ||
+                b.y1 > r.y1 + tolerance || leaves_region(p, *region_, tolerance))
+                return false;
         }
     }
     return !window_;

@@ -81,7 +81,8 @@ TranslationSetup frieze_setup(const Frieze& frieze, const Region& region,
         out.box = box_region(box, region.name());
         out.group.window = box;
     }
-    const int reach = static_cast<int>(std::ceil(box.width() / period)) + 2;
+    // A mirror at x maps 0 to 2x: translations up to twice the box's length.
+    const int reach = static_cast<int>(std::ceil(2 * box.width() / period)) + 2;
     out.group.name = "frieze " + catalog.name;
     out.group.transforms = reaching(cosets, Vector(period, 0), Vector(0, 0), reach, 0, box);
     const double cells = std::floor(bounds.width() / period / 2);
