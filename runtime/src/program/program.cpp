@@ -27,8 +27,8 @@
 #include "program/options.hpp"
 #include "program/output_paths.hpp"
 #include "program/progress_line.hpp"
-#include "symmetry/translation_groups.hpp"
 #include "program/tree_json.hpp"
+#include "symmetry/translation_groups.hpp"
 
 namespace acanthus {
 
@@ -241,8 +241,8 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
 
     detail::check_output_paths(o);
     const Region region = o.growth.wallpaper ? detail::tile_region(*o.growth.wallpaper)
-                          : o.region.empty()  ? Region::default_panel()
-                                              : Region::from_argument(o.region);
+                          : o.region.empty() ? Region::default_panel()
+                                             : Region::from_argument(o.region);
     // Every file of the run is renamed into place at the end, all or none.
     detail::OutputTransaction outputs;
     validate(o, region, outputs);
