@@ -7,6 +7,7 @@
 #include <acanthus/growth.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/symmetry.hpp>
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -223,6 +224,33 @@ TEST_P(FriezeGrowth, DotsAreInvariantAndFreeOfOverlap) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Friezes, FriezeGrowth, ::testing::ValuesIn(kFriezes));
+
+// A frieze on a rectangle fills it to both ends: the largest stretch of x that no element
+// covers, at either end, is no longer than the largest element (8 periods of p2mm exactly, the
+// docs' border's proportions).
+TEST(FriezeGrowth, FillsToBothEnds) {
+    const double length = 628.3;
+    const Region band = Region::from_spec("rect:628.3,70");
+    GrowthOptions o = test::small_options();
+    o.resolution = 320;
+    o.frieze = Frieze{"p2mm", 78.5375};
+    ::dots::dot_count = 0;
+    const Pattern pattern = ::dots::pattern();
+    GrowthEngine engine(pattern, band, o);
+    engine.run();
+    const auto elements = engine.elements();
+    ASSERT_GT(elements.size(), 40u);
+    double largest = 0, first = length, last = 0;
+    for (const Element* e : elements)
+        for (std::size_t k = 0; k < e->proxy_count(); ++k) {
+            const Rect b = e->proxy(k).bounds();
+            largest = std::max({largest, b.width(), b.height()});
+            first = std::min(first, b.x0);
+            last = std::max(last, b.x1);
+        }
+    EXPECT_LE(first, largest) << "the band's left end is left empty";
+    EXPECT_GE(last, length - largest) << "the band's right end is left empty";
+}
 
 class WallpaperGrowth : public ::testing::TestWithParam<std::string> {};
 
