@@ -337,6 +337,7 @@ int main(int argc, char** argv) {
     const double la = std::hypot(a.x, a.y), lb = std::hypot(b.x, b.y);
     const double area = std::abs(a.x * b.y - a.y * b.x);
     double seam_gap = 0, inside_gap = 0;
+    Point seam_at{0, 0};  // in fractions of the tile's sides, to tell which site it is
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const Point p{x0 + (x + 0.5) * px, y0 + (y + 0.5) * px};
@@ -346,12 +347,14 @@ int main(int argc, char** argv) {
             // Distance to the edges: along b's normal for u, along a's normal for v.
             const double to_seam = std::min(
                 {f.x * area / lb, (1 - f.x) * area / lb, f.y * area / la, (1 - f.y) * area / la});
+            if (to_seam <= r && r > seam_gap) seam_at = f;
             double& gap = to_seam <= r ? seam_gap : inside_gap;
             gap = std::max(gap, r);
         }
     if (seam_gap > 1.1 * inside_gap + 2 * px)
         fault("a gap across a seam (an empty circle of radius " + std::to_string(seam_gap) +
-              ") is larger than inside the tile (" + std::to_string(inside_gap) + ")");
+              ") at " + std::to_string(seam_at.x) + " a + " + std::to_string(seam_at.y) +
+              " b is larger than inside the tile (" + std::to_string(inside_gap) + ")");
 
     std::cout << elements.size() << " elements in the tree, " << placed.size()
               << " in the 3 x 3 repeat; " << seam_overlaps
