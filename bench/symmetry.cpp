@@ -1,12 +1,14 @@
-// Growth under a rosette group against growth without: Appendix A's dots filling a disc of
+// Growth under a symmetry group against growth without: Appendix A's dots filling a disc of
 // radius 500 at 1024 px, without symmetry and under c6, d8 and d12, each grown --runs times (3 by
-// default, in turns), the run of median time reported. Prints a table on stderr and, last, one
-// JSON object: per group the elements (images included), the fundamental ones, the seconds of
-// the engine's construction and growth, the cost per fundamental element and per placed element,
-// and both as a ratio to the cost per element without symmetry (the issue asks 1.5 per fundamental
-// element).
+// default, in turns), the run of median time reported. Friezes (frieze:G, on a band 2000 x 250
+// with period 250) and wallpaper groups (wallpaper:G, on a tile 500 x 500, 500,500,60 for the
+// hexagonal ones) are measured against growth without symmetry on the same band or tile. Prints a
+// table on stderr and, last, one JSON object: per group the elements (images included), the
+// fundamental ones, the seconds of the engine's construction and growth, the cost per fundamental
+// element and per placed element, and both as a ratio to the cost per element without symmetry (the
+// issue asks 1.5 per fundamental element).
 //
-//   bench_symmetry [--runs N] [--resolution PX] [--groups none,c6,...]
+//   bench_symmetry [--runs N] [--resolution PX] [--groups none,c6,frieze:p2mg,wallpaper:p4m...]
 //
 // --groups picks the groups (default none,c6,d8,d12); without "none" (to profile one group alone)
 // the ratios are left out.
@@ -24,20 +26,37 @@
 
 #include "fixtures/dots_pattern.hpp"
 #include "symmetry/image_element.hpp"
+#include "symmetry/translation_groups.hpp"
 
 namespace {
 
 struct Result {
     std::string group;
+    std::string panel;  // disc, band, tile, tile60
     long elements = 0, fundamental = 0;
     std::vector<double> seconds;
 };
 
+bool hexagonal(const std::string& name) {
+    return name.find('3') != std::string::npos || name.find('6') != std::string::npos;
+}
+
 void grow(Result& r, int resolution) {
-    const acanthus::Region region = acanthus::Region::from_spec("circle:500");
     acanthus::GrowthOptions o;
     o.resolution = resolution;
-    if (r.group != "none") o.symmetry = acanthus::Symmetry::parse(r.group);
+    const std::string name = r.group.substr(r.group.find(':') + 1);
+    acanthus::Wallpaper tile{"p1", 500, 500, r.panel == "tile60" ? 60.0 : 90.0};
+    if (r.group.rfind("frieze:", 0) == 0) {
+        o.frieze = acanthus::Frieze{name, 250};
+    } else if (r.group.rfind("wallpaper:", 0) == 0) {
+        tile.group = name;
+        o.wallpaper = tile;
+    } else if (r.group != "none") {
+        o.symmetry = acanthus::Symmetry::parse(r.group);
+    }
+    const acanthus::Region region = r.panel == "band" ? acanthus::Region::from_spec("rect:2000,250")
+                                    : r.panel == "disc" ? acanthus::Region::from_spec("circle:500")
+                                                        : acanthus::detail::tile_region(tile);
     dots::dot_count = 0;
     const acanthus::Pattern pattern = dots::pattern();
     // The engine's construction counts: under a group it finds the fundamental domain's pixels
@@ -80,35 +99,53 @@ int main(int argc, char** argv) {
     for (std::size_t at = 0; at <= groups.size();) {
         const std::size_t comma = std::min(groups.find(',', at), groups.size());
         const std::string g = groups.substr(at, comma - at);
+        const std::string panel = g.rfind("frieze:", 0) == 0 ? "band"
+                                  : g.rfind("wallpaper:", 0) == 0
+                                      ? (hexagonal(g.substr(10)) ? "tile60" : "tile")
+                                      : "disc";
         if (g == "none")
-            results.insert(results.begin(), {g, 0, 0, {}});
+            results.insert(results.begin(), {g, "disc", 0, 0, {}});
         else if (!g.empty())
-            results.push_back({g, 0, 0, {}});
+            results.push_back({g, panel, 0, 0, {}});
         at = comma + 1;
     }
+    // Growth without symmetry on each band or tile measured.
+    if (!results.empty() && results[0].group == "none")
+        for (const char* panel : {"band", "tile", "tile60"}) {
+            bool used = false;
+            for (const Result& r : results) used = used || r.panel == panel;
+            if (used) results.push_back({"none", panel, 0, 0, {}});
+        }
     for (int run = 0; run < runs; ++run)
         for (Result& r : results) grow(r, resolution);
     if (results.empty()) return 2;
     // Without the baseline the ratios are NaN (printed as nan, null in the JSON).
-    const double base = results[0].group == "none"
-                            ? median(results[0].seconds) / static_cast<double>(results[0].elements)
-                            : std::nan("");
-    std::fprintf(stderr, "%-6s %9s %11s %9s %14s %9s %14s %9s\n", "group", "elements",
-                 "fundamental", "seconds", "us/fundamental", "ratio", "us/element", "ratio");
+    auto base_of = [&](const std::string& panel) {
+        for (const Result& r : results)
+            if (r.group == "none" && r.panel == panel)
+                return median(r.seconds) / static_cast<double>(r.elements);
+        return std::nan("");
+    };
+    std::fprintf(stderr, "%-16s %-6s %9s %11s %9s %14s %9s %14s %9s\n", "group", "panel",
+                 "elements", "fundamental", "seconds", "us/fundamental", "ratio", "us/element",
+                 "ratio");
     std::string json = "{\"resolution\":" + std::to_string(resolution) + ",\"groups\":[";
     for (std::size_t k = 0; k < results.size(); ++k) {
         const Result& r = results[k];
+        const double base = base_of(r.panel);
         const double s = median(r.seconds);
         const double per_fundamental = s / static_cast<double>(r.fundamental);
         const double per_element = s / static_cast<double>(r.elements);
-        std::fprintf(stderr, "%-6s %9ld %11ld %9.3f %14.1f %9.2f %14.1f %9.2f\n", r.group.c_str(),
-                     r.elements, r.fundamental, s, 1e6 * per_fundamental, per_fundamental / base,
-                     1e6 * per_element, per_element / base);
+        std::fprintf(stderr, "%-16s %-6s %9ld %11ld %9.3f %14.1f %9.2f %14.1f %9.2f\n",
+                     r.group.c_str(), r.panel.c_str(), r.elements, r.fundamental, s,
+                     1e6 * per_fundamental, per_fundamental / base, 1e6 * per_element,
+                     per_element / base);
         char line[512];
         std::snprintf(line, sizeof line,
-                      "%s{\"group\":\"%s\",\"elements\":%ld,\"fundamental\":%ld,\"seconds\":%.4f,"
+                      "%s{\"group\":\"%s\",\"panel\":\"%s\",\"elements\":%ld,\"fundamental\":%ld,"
+                      "\"seconds\":%.4f,"
                       "\"per_fundamental_ratio\":%s,\"per_element_ratio\":%s}",
-                      k ? "," : "", r.group.c_str(), r.elements, r.fundamental, s,
+                      k ? "," : "", r.group.c_str(), r.panel.c_str(), r.elements, r.fundamental, s,
                       json_number(per_fundamental / base).c_str(),
                       json_number(per_element / base).c_str());
         json += line;

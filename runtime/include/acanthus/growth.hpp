@@ -35,6 +35,14 @@ struct GrowthOptions {
     // Grow under a rosette group (docs/symmetry.md): C is chosen in the fundamental domain and
     // every committed element is placed with its images.
     std::optional<Symmetry> symmetry;
+    // Grow under a frieze group along x (docs/symmetry.md, "Friezes").
+    std::optional<Frieze> frieze;
+    // With a frieze: x is periodic with this length (a closed band); the period is adjusted to
+    // divide it, and the region's bounds must start at x = 0 and be this long.
+    std::optional<double> wrap_x;
+    // Grow under a wallpaper group: the region is the tile, the plane periodic (docs/symmetry.md,
+    // "Wallpaper").
+    std::optional<Wallpaper> wallpaper;
 };
 
 // One iteration as Figure 8 shows it (built only for the iteration asked for).

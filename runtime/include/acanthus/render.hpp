@@ -5,16 +5,26 @@
 #include <acanthus/growth.hpp>
 #include <acanthus/pattern.hpp>
 #include <acanthus/region.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace acanthus {
 
+namespace detail {
+class Band;
+}
+
 enum class OutputFormat { svg, pdf, ps, eps, png };
 
 // From the file extension; "-" is SVG. Throws UsageError on an unknown extension.
 OutputFormat format_for_path(const std::string& path);
+
+// The tile the output repeats: the parallelogram origin + u a + v b, 0 <= u, v < 1.
+struct RepeatTile {
+    Point origin, a, b;
+};
 
 struct RenderOptions {
     double width = 800;               // output width in pixels (PNG) or points (vector formats)
@@ -25,6 +35,16 @@ struct RenderOptions {
     // PDF, PostScript, EPS: shapes of one colour and style that nothing between them touches go
     // to Cairo as one path (the same picture, far less of Cairo's memory). Off only to compare.
     bool coalesce = true;
+    // Elements drawn clipped to the region (a wallpaper tile, whose elements cross its edges).
+    bool clip_to_region = false;
+    // --repeat NxM (docs/symmetry.md): the tile drawn N x M times, each copy clipped to the
+    // region when clip_to_region; --svg-pattern: the SVG as a <pattern> of the tile filling that
+    // area.
+    int repeat_x = 1, repeat_y = 1;
+    bool svg_pattern = false;
+    std::optional<RepeatTile> tile;  // none: the region's bounding box
+    // --band: the region is the straight band, drawn bent onto the band's centre line.
+    std::shared_ptr<const detail::Band> band;
 };
 
 // Draws the elements (their %draw, or the default for the style). Writes `path` through a

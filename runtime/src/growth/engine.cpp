@@ -31,6 +31,7 @@
 #include "symmetry/orbit.hpp"
 #include "symmetry/symmetric_core.hpp"
 #include "symmetry/symmetry_group.hpp"
+#include "symmetry/translation_groups.hpp"
 
 namespace acanthus {
 
@@ -54,22 +55,52 @@ std::string format_number(double v) {
     return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
 }
 
-// The options, once the buffer they ask for is known to fit in memory (nothing is allocated
-// before): UsageError for a resolution out of range, InputError when too large for memory.
-const GrowthOptions& checked(const Region& region, const GrowthOptions& options) {
+// What growth runs on: the region, or under a periodic group (a wallpaper tile, a closed band)
+// the box round it, at the resolution that gives the region its pixels.
+struct Setup {
+    Region region;
+    GrowthOptions options;
+    std::optional<TranslationSetup> translations;
+};
+
+Setup set_up(const Region& region, GrowthOptions options) {
+    const int groups =
+        (options.symmetry ? 1 : 0) + (options.frieze ? 1 : 0) + (options.wallpaper ? 1 : 0);
+    if (groups > 1) throw UsageError("--symmetry, --frieze and --wallpaper exclude one another");
+    if (options.wrap_x && !options.frieze) throw UsageError("a closed band needs a frieze group");
+    std::optional<TranslationSetup> t;
+    if (options.frieze) t = frieze_setup(*options.frieze, region, options.wrap_x);
+    if (options.wallpaper) t = wallpaper_setup(*options.wallpaper);
+    if (!t || !t->box) return {region, std::move(options), std::move(t)};
+    const Rect inner = region.bounds(), outer = t->box->bounds();
+    const double scale =
+        std::max(outer.width(), outer.height()) / std::max(inner.width(), inner.height());
     const int r = options.resolution;
     if (r >= RasterBuffer::kMinResolution && r <= RasterBuffer::kMaxResolution)
-        check_growth_memory(RasterBuffer::grid_for(region.bounds(), r), r);
-    return options;  // RasterBuffer refuses a resolution out of range
+        options.resolution = std::min(RasterBuffer::kMaxResolution,
+                                      static_cast<int>(std::lround(options.resolution * scale)));
+    Region box = *t->box;
+    return {std::move(box), std::move(options), std::move(t)};
+}
+
+// The setup, once the buffer it asks for is known to fit in memory (nothing is allocated
+// before): UsageError for a resolution out of range, InputError when too large for memory.
+Setup checked(const Region& region, const GrowthOptions& options) {
+    Setup s = set_up(region, options);
+    const int r = s.options.resolution;
+    if (r >= RasterBuffer::kMinResolution && r <= RasterBuffer::kMaxResolution)
+        check_growth_memory(RasterBuffer::grid_for(s.region.bounds(), r), r);
+    return s;  // RasterBuffer refuses a resolution out of range
 }
 
 }  // namespace
 
 struct GrowthEngine::Impl {
-    Impl(const Pattern& p, const Region& r, GrowthOptions o)
+    Impl(const Pattern& p, Setup s)
         : pattern(p),
-          region(r),
-          options(std::move(o)),
+          region(std::move(s.region)),
+          options(std::move(s.options)),
+          translations(std::move(s.translations)),
           raster(region, options.resolution),
           epsilon(options.epsilon < 0 ? 2 * raster.grid().pixel : options.epsilon),
           min_radius(options.min_radius < 0 ? raster.grid().pixel : options.min_radius),
@@ -77,7 +108,8 @@ struct GrowthEngine::Impl {
           circles(make_source()),
           ornament(region, 1e-6 * std::max(region.bounds().width(), region.bounds().height())),
           env(region, ornament, exclude, options.rng_seed, group.get(), &core_region) {
-        if (group && !maps_onto_itself(region, *group, raster.grid().pixel / 4)) {
+        if (group && group->rosette() &&
+            !maps_onto_itself(region, *group, raster.grid().pixel / 4)) {
             raster.add_boundary(pixels_outside_core(raster, *group));
             core_region = &region;  // images may leave it
         }
@@ -111,12 +143,14 @@ struct GrowthEngine::Impl {
     EmptyCircle goal_found;  // the circle find_goal() refined last
     // C's centre and its distinct images (C's centre alone without symmetry).
     std::vector<Point> orbit_of_point(Point p) const;
+    std::optional<Point> roomiest_in_domain() const;
     void sync_exclude_clears();
     Flow call_exhausted();
 
     const Pattern& pattern;
     Region region;
     GrowthOptions options;
+    std::optional<TranslationSetup> translations;  // a frieze or wallpaper group
     RasterBuffer raster;
     double epsilon;
     double min_radius;
@@ -149,6 +183,7 @@ struct GrowthEngine::Impl {
 };
 
 std::unique_ptr<SymmetryGroup> GrowthEngine::Impl::make_group() const {
+    if (translations) return std::make_unique<SymmetryGroup>(translations->group, region);
     if (!options.symmetry) return nullptr;
     Point center;
     if (options.symmetry->center) {
@@ -186,7 +221,7 @@ std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal) const {
 // default seed ends with nothing beyond the seed's own children, a second seed goes inside the
 // fundamental domain, on its bisector half way to the core's boundary, with its images.
 bool GrowthEngine::Impl::second_seed() {
-    if (!group || tried_second_seed || !options.seeds.empty()) return false;
+    if (!group || !group->rosette() || tried_second_seed || !options.seeds.empty()) return false;
     tried_second_seed = true;
     for (const Element* e : ornament.view())
         if (e->depth > 1) return false;
@@ -208,11 +243,41 @@ bool GrowthEngine::Impl::second_seed() {
     return true;
 }
 
+// Under a group with translations the default seed goes where its first element has the most
+// room: the point of the fundamental domain (sampled on a 64 x 64 grid over the domain's
+// bounds) farthest from its own images and from the region's boundary. A seed near a mirror or
+// a rotation centre would leave its first element no room beside its images.
+std::optional<Point> GrowthEngine::Impl::roomiest_in_domain() const {
+    constexpr int kSamples = 64;
+    Rect box{1e300, 1e300, -1e300, -1e300};
+    for (const auto& [a, b] : group->domain_edges(0))
+        for (Point p : {a, b})
+            box = {std::min(box.x0, p.x), std::min(box.y0, p.y), std::max(box.x1, p.x),
+                   std::max(box.y1, p.y)};
+    std::optional<Point> best;
+    double room = 0;
+    const double tol = ornament.tolerance();
+    for (int j = 0; j < kSamples; ++j)
+        for (int i = 0; i < kSamples; ++i) {
+            const Point p{box.x0 + (i + 0.5) / kSamples * box.width(),
+                          box.y0 + (j + 0.5) / kSamples * box.height()};
+            if (!group->in_domain(p, 0) || !region.contains(p)) continue;
+            const double r = std::min(group->clearance(p, tol), region.distance_to_boundary(p));
+            if (r > room) {
+                room = r;
+                best = p;
+            }
+        }
+    return best;
+}
+
 std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
     std::vector<Point> out{p};
     if (!group) return out;
+    const Rect bounds = region.bounds();
     for (std::size_t k = 1; k < group->size(); ++k) {
         const Point q = group->transforms()[k].apply(p);
+        if (!group->rosette() && !bounds.contains(q)) continue;  // translates beyond the region
         bool seen = false;
         for (Point o : out) seen = seen || distance(o, q) <= ornament.tolerance();
         if (!seen) out.push_back(q);
@@ -229,10 +294,21 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     if (group) {
         std::vector<const Element*> batch;
         for (const auto& child : children) batch.push_back(child.get());
-        auto placeable =
-            placeable_orbits(batch, *group, core_region, ornament.tolerance(), [&](const Proxy& p) {
+        const double tol = ornament.tolerance();
+        std::function<bool(const Proxy&, const Isometry&)> hits_placed;
+        if (!group->rosette())
+            hits_placed = [&](const Proxy& p, const Isometry& g) {
+                return ornament.overlaps_any(p, [&](const Element& e) {
+                    const ImageElement* image = as_image(e);
+                    return !same_isometry(image ? image->transform() : Isometry{}, g, tol);
+                });
+            };
+        auto placeable = placeable_orbits(
+            batch, *group, core_region, tol,
+            [&](const Proxy& p) {
                 return ornament.overlaps_any(p, [](const Element& e) { return as_image(e); });
-            });
+            },
+            hits_placed);
         std::vector<std::unique_ptr<Element>> kept;
         for (std::size_t k = 0; k < children.size(); ++k) {
             if (!placeable[k]) continue;
@@ -299,7 +375,9 @@ std::vector<Point> GrowthEngine::Impl::default_seeds() const {
 void GrowthEngine::Impl::place_seeds() {
     if (!pattern.seed) throw InputError(pattern.file + ": the pattern declares no seed type");
     std::vector<Point> seeds = options.seeds;
-    if (seeds.empty() && group) {
+    if (seeds.empty() && group && !group->rosette()) {
+        if (const std::optional<Point> s = roomiest_in_domain()) seeds.push_back(*s);
+    } else if (seeds.empty() && group) {
         // The centre (it is its own image); a centre outside the region (a frame round a
         // hole) gives the default seeds whose images stay inside.
         if (core_contains(region, *group, group->center()))
@@ -309,18 +387,18 @@ void GrowthEngine::Impl::place_seeds() {
                 if (core_contains(region, *group, s)) seeds.push_back(s);
         if (seeds.empty())
             throw InputError("no room for a seed: every point of the region has an image under " +
-                             group->spec().name() + " outside it; give --seed X,Y");
+                             group->name() + " outside it; give --seed X,Y");
     }
     if (seeds.empty()) seeds = default_seeds();
     for (Point s : seeds)
         if (!s.finite() || !region.contains(s))
             throw InputError("seed " + format_number(s.x) + "," + format_number(s.y) +
                              " is outside the region " + region.name());
-    if (group)
+    if (group && group->rosette())
         for (Point s : seeds)
             if (!core_contains(region, *group, s))
                 throw InputError("seed " + format_number(s.x) + "," + format_number(s.y) +
-                                 ": an image of it under " + group->spec().name() +
+                                 ": an image of it under " + group->name() +
                                  " is outside the region " + region.name());
     for (Point s : seeds) {
         std::unique_ptr<Element> e(pattern.seed->create());
@@ -582,7 +660,7 @@ void GrowthEngine::Impl::grow() {
 }
 
 GrowthEngine::GrowthEngine(const Pattern& pattern, const Region& region, GrowthOptions options)
-    : impl_(std::make_unique<Impl>(pattern, region, checked(region, options))) {}
+    : impl_(std::make_unique<Impl>(pattern, checked(region, options))) {}
 
 GrowthEngine::~GrowthEngine() = default;
 

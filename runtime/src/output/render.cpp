@@ -19,19 +19,25 @@
 #include <acanthus/skeletal_stroke.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "draw/coalescing_sink.hpp"
 #include "draw/default_style.hpp"
+#include "output/band_sink.hpp"
 #include "output/document.hpp"
 #include "output/layer_order.hpp"
 #include "output/output_stream.hpp"
 #include "output/page_layout.hpp"
+#include "output/repeat.hpp"
 #include "output/svg_fallback.hpp"
 #include "output/svg_writer.hpp"
 #include "pattern/running_body.hpp"
+#include "region/band.hpp"
 #include "symmetry/image_element.hpp"
 
 namespace acanthus {
@@ -64,10 +70,22 @@ std::optional<SkeletalStroke> resolve_stroke(const std::string& name) {
     return SkeletalStroke::builtin(name);
 }
 
+// The region's outline as drawn: flattened to a quarter of a page unit (invisible at any output
+// size), bent with the band when there is one.
+struct Outline {
+    std::vector<std::vector<Point>> rings;
+    bool evenodd = false;
+};
+
+Outline outline_of(const Region& region, const RenderOptions& options,
+                   const detail::PageLayout& page) {
+    if (options.band) return {options.band->outline(0.25 / page.scale), true};
+    return {region.rings(0.25 / page.scale), region.evenodd()};
+}
+
 // Through the Canvas, so that the structured SVG gets it as a path of its own layer.
-void draw_region_outline(Canvas& canvas, const Region& region, const detail::PageLayout& page) {
-    // A quarter of a page unit of flattening error is invisible at any output size.
-    for (const auto& ring : region.rings(0.25 / page.scale)) {
+void draw_region_outline(Canvas& canvas, const Outline& outline, const detail::PageLayout& page) {
+    for (const auto& ring : outline.rings) {
         if (ring.empty()) continue;
         canvas.move_to(ring[0]);
         for (std::size_t i = 1; i < ring.size(); ++i) canvas.line_to(ring[i]);
@@ -221,6 +239,130 @@ void draw_elements(cairo_t* cr, const Pattern& pattern, const std::vector<const 
     if (curves.stroke) draw_all_stroke_chains(canvas, cr, elements, page, curves);
 }
 
+std::string page_point(Point p, const detail::PageLayout& page) {
+    return detail::svg_number(page.offset_x + page.scale * p.x, 4) + " " +
+           detail::svg_number(page.offset_y + page.scale * p.y, 4);
+}
+
+std::string svg_path_of(const std::vector<std::vector<Point>>& rings,
+                        const detail::PageLayout& page) {
+    std::string d;
+    for (const auto& ring : rings) {
+        for (std::size_t k = 0; k < ring.size(); ++k)
+            d += (d.empty() ? "M" : k == 0 ? " M" : " L") + page_point(ring[k], page);
+        if (!ring.empty()) d += " Z";
+    }
+    return d;
+}
+
+// The region as a clip path of id `id`, in page units.
+std::string region_clip_path(const Outline& outline, const detail::PageLayout& page,
+                             const std::string& id) {
+    return "<clipPath id=\"" + id + "\"><path d=\"" + svg_path_of(outline.rings, page) + "\"" +
+           (outline.evenodd ? " clip-rule=\"evenodd\"" : "") + "/></clipPath>";
+}
+
+std::string use_tile(Point offset, const detail::PageLayout& page) {
+    return "<use xlink:href=\"#repeat-tile\" transform=\"translate(" +
+           detail::svg_number(page.scale * offset.x, 4) + " " +
+           detail::svg_number(page.scale * offset.y, 4) + ")\"/>\n";
+}
+
+// What comes before and after the elements' layers in the structured SVG when the output is a
+// repeat or is clipped to the region (a wallpaper tile). The layers are the tile's content, in a
+// group with id repeat-tile (clipped to the region when asked) drawn where the tile is; the
+// other copies are <use>s of it; or, for a pattern, the group is the cell of a <pattern> that
+// fills the N x M area.
+std::pair<std::string, std::string> svg_frame(const Region& region, const RenderOptions& options,
+                                              const detail::PageLayout& page) {
+    const std::string clip =
+        options.clip_to_region
+            ? region_clip_path(outline_of(region, options, page), page, "tile-clip")
+            : std::string();
+    const std::string clip_attribute =
+        options.clip_to_region ? " clip-path=\"url(#tile-clip)\"" : "";
+    if (!detail::repeats(options)) {
+        if (!options.clip_to_region) return {};
+        return {"<defs>" + clip + "</defs>\n<g id=\"tile\"" + clip_attribute + ">\n", "</g>\n"};
+    }
+    const detail::RepeatLayout layout = detail::repeat_layout(region.bounds(), options);
+    const std::string area = svg_path_of({layout.corners()}, page);
+    const std::string tile_group = "<g id=\"repeat-tile\"" + clip_attribute + ">\n";
+    if (!options.svg_pattern) {
+        std::string after = "</g>\n";
+        for (const Point& o : layout.offsets())
+            if (o.x != 0 || o.y != 0) after += use_tile(o, page);
+        return {(clip.empty() ? "" : "<defs>" + clip + "</defs>\n") + tile_group, after};
+    }
+    // The pattern's cell is W x H page units, mapped onto the tile by K (a shear for an oblique
+    // tile); the content is drawn in page units, so it goes through K's inverse.
+    const RepeatTile& t = layout.tile;
+    const Point o{page.offset_x + page.scale * t.origin.x, page.offset_y + page.scale * t.origin.y};
+    const Point a{page.scale * t.a.x, page.scale * t.a.y},
+        b{page.scale * t.b.x, page.scale * t.b.y};
+    const double w = std::hypot(a.x, a.y), h = std::hypot(b.x, b.y);
+    const double k[6] = {a.x / w, a.y / w, b.x / h, b.y / h, o.x, o.y};
+    const double det = k[0] * k[3] - k[1] * k[2];
+    const double ia = k[3] / det, ib = -k[1] / det, ic = -k[2] / det, id = k[0] / det;
+    const double inv[6] = {ia, ib, ic, id, -(ia * o.x + ic * o.y), -(ib * o.x + id * o.y)};
+    auto matrix = [](const double* m) {
+        std::string text = "matrix(";
+        for (int i = 0; i < 6; ++i) text += (i ? " " : "") + detail::svg_number(m[i], 6);
+        return text + ")";
+    };
+    return {"<defs>" + clip + "<pattern id=\"repeat-pattern\" patternUnits=\"userSpaceOnUse\" " +
+                "x=\"0\" y=\"0\" width=\"" + detail::svg_number(w, 4) + "\" height=\"" +
+                detail::svg_number(h, 4) + "\" patternTransform=\"" + matrix(k) +
+                "\">\n<g transform=\"" + matrix(inv) + "\">\n" + tile_group,
+            "</g>\n</g>\n</pattern></defs>\n<path id=\"repeat-area\" d=\"" + area +
+                "\" fill=\"url(#repeat-pattern)\"/>\n"};
+}
+
+// Clips `cr` to the region.
+void clip_to_region(cairo_t* cr, const Outline& outline) {
+    cairo_new_path(cr);
+    for (const auto& ring : outline.rings) {
+        for (std::size_t k = 0; k < ring.size(); ++k)
+            (k == 0 ? cairo_move_to : cairo_line_to)(cr, ring[k].x, ring[k].y);
+        cairo_close_path(cr);
+    }
+    cairo_set_fill_rule(cr, outline.evenodd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+    cairo_clip(cr);
+}
+
+// A context on a 1x1 surface that is never painted: the Canvas keeps its state there while a
+// sink takes the shapes.
+class ScratchContext {
+  public:
+    ScratchContext()
+        : surface_(cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1), &cairo_surface_destroy),
+          context_(cairo_create(surface_.get()), &cairo_destroy) {}
+    cairo_t* get() const { return context_.get(); }
+
+  private:
+    std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> surface_;
+    std::unique_ptr<cairo_t, void (*)(cairo_t*)> context_;
+};
+
+// The flattening error of bent shapes: a quarter of a page unit.
+double bend_tolerance(const detail::PageLayout& page) { return 0.25 / page.scale; }
+
+// The elements drawn in the straight band's coordinates and painted bent onto `target`.
+void draw_bent(cairo_t* target, const Pattern& pattern, const std::vector<const Element*>& elements,
+               RenderStyle style, const detail::PageLayout& page, const detail::CurveStroke& curves,
+               const detail::Band& band) {
+    ScratchContext scratch;
+    detail::BandSink sink(band, target, bend_tolerance(page));
+    Canvas canvas(scratch.get(), &sink);
+    long count = static_cast<long>(elements.size());
+    for (long index = 0; index < count; ++index) {
+        const Element& element = *elements[static_cast<std::size_t>(index)];
+        if (!is_drawn(pattern, element, style, curves)) continue;
+        draw_element(canvas, scratch.get(), pattern, element, index, count, style, page, curves);
+    }
+    if (curves.stroke) draw_all_stroke_chains(canvas, scratch.get(), elements, page, curves);
+}
+
 // The structured SVG (docs/rendering.md): a layer per element type (layer_order.hpp), a group
 // per element, written to the file one element at a time. The Canvas
 // keeps its state on a context of a 1x1 surface that is never painted; the shapes go to the
@@ -232,22 +374,29 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
     detail::OutputStream out(path);
     detail::SvgWriter svg(out, page.width, page.height, pattern.name);
     if (options.background) svg.background(*options.background);
+    const bool repeat = detail::repeats(options);
+    const std::pair<std::string, std::string> frame = svg_frame(region, options, page);
 
-    std::unique_ptr<cairo_surface_t, void (*)(cairo_surface_t*)> surface(
-        cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1), &cairo_surface_destroy);
-    std::unique_ptr<cairo_t, void (*)(cairo_t*)> context(cairo_create(surface.get()),
-                                                         &cairo_destroy);
-    cairo_t* cr = context.get();
+    ScratchContext page_context, band_context;
+    cairo_t* cr = page_context.get();
     page.apply(cr);
-    Canvas canvas(cr, &svg);
+    Canvas outline_canvas(cr, &svg);
+    // With a band, elements are drawn in the straight band's coordinates and bent onto `cr`.
+    std::optional<detail::BandSink> band_sink;
+    if (options.band) band_sink.emplace(*options.band, cr, bend_tolerance(page), &svg);
+    cairo_t* draw_cr = options.band ? band_context.get() : cr;
+    Canvas canvas(draw_cr, options.band ? static_cast<detail::CanvasSink*>(&*band_sink) : &svg);
+    const Outline outline = outline_of(region, options, page);
 
-    if (options.draw_region) {
+    if (options.draw_region && !repeat) {
         svg.begin_layer("panel outline", "layer-panel-outline");
         cairo_save(cr);
-        draw_region_outline(canvas, region, page);
+        draw_region_outline(outline_canvas, outline, page);
         cairo_restore(cr);
         svg.end_layer();
     }
+
+    svg.raw(frame.first);
 
     // Each type's elements in placement order.
     std::vector<const ElementType*> types = detail::layer_order(elements);
@@ -264,11 +413,15 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
                 continue;
             }
             canvas.reset_used_cairo();
-            draw_element(canvas, cr, pattern, element, index, count, style, page, curves);
+            draw_element(canvas, draw_cr, pattern, element, index, count, style, page, curves);
             if (canvas.used_cairo() || svg.needs_fallback()) {
                 svg.replace_shapes(detail::cairo_svg_fragment(
                     page,
                     [&](cairo_t* raw) {
+                        if (options.band) {
+                            draw_bent(raw, pattern, {&element}, style, page, {}, *options.band);
+                            return;
+                        }
                         Canvas cairo_canvas(raw);
                         draw_element(cairo_canvas, raw, pattern, element, index, count, style, page,
                                      curves);
@@ -285,12 +438,20 @@ void render_structured_svg(const std::string& path, const Pattern& pattern, cons
         svg.raw(detail::cairo_svg_fragment(
             page,
             [&](cairo_t* raw) {
+                if (options.band) {
+                    ScratchContext scratch;
+                    detail::BandSink sink(*options.band, raw, bend_tolerance(page));
+                    Canvas band_canvas(scratch.get(), &sink);
+                    draw_all_stroke_chains(band_canvas, scratch.get(), elements, page, curves);
+                    return;
+                }
                 Canvas cairo_canvas(raw);
                 draw_all_stroke_chains(cairo_canvas, raw, elements, page, curves);
             },
             "strokes-"));
         svg.end_layer();
     }
+    svg.raw(frame.second);
     svg.finish();
     out.commit();
 }
@@ -301,7 +462,16 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
                     const std::vector<const Element*>& elements, const RenderOptions& options) {
     OutputFormat format = format_for_path(path);
     RenderStyle style = detail::parse_render_style(options.style);
-    detail::PageLayout page = detail::page_layout(region.bounds(), options.width);
+    if (options.svg_pattern && format != OutputFormat::svg)
+        throw UsageError("--svg-pattern writes an SVG <pattern>: give -o a .svg file name, not '" +
+                         path + "'");
+    // A repeat's page holds the N x M copies of the tile.
+    const bool repeat = detail::repeats(options);
+    const detail::RepeatLayout layout = detail::repeat_layout(region.bounds(), options);
+    if (repeat && options.band)
+        throw UsageError("--repeat and --svg-pattern repeat a tile, not a band (--band)");
+    const Rect drawn = options.band ? options.band->bounds() : region.bounds();
+    detail::PageLayout page = detail::page_layout(repeat ? layout.bounds() : drawn, options.width);
     std::optional<SkeletalStroke> stroke = resolve_stroke(options.stroke);
     detail::CurveStroke curves;
     if (stroke) curves = {&*stroke, skeletal_stroke_widths * page.line_width};
@@ -321,18 +491,37 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
         cairo_paint(cr);
     }
     page.apply(cr);
-    {
-        // A PNG is painted as it goes; only the vector surfaces record every operation.
+    const Outline outline = outline_of(region, options, page);
+    // A PNG is painted as it goes; only the vector surfaces record every operation, so there
+    // shapes go through a CoalescingSink (flushed before any change of clip or transformation).
+    const bool coalesce = options.coalesce && format != OutputFormat::png;
+    auto draw_coalesced = [&] {
         std::unique_ptr<detail::CoalescingSink> sink;
-        if (options.coalesce && format != OutputFormat::png)
-            sink = std::make_unique<detail::CoalescingSink>(cr, page.width, page.height);
-        if (options.draw_region) {
-            Canvas canvas(cr, sink.get());
-            draw_region_outline(canvas, region, page);
-        }
+        if (coalesce) sink = std::make_unique<detail::CoalescingSink>(cr, page.width, page.height);
         draw_elements(cr, pattern, elements, style, page, curves, sink.get());
         if (sink) sink->flush();
+    };
+    if (repeat) {
+        // Each copy of the content where its tile is, clipped to it when asked; no outline.
+        for (const Point& offset : layout.offsets()) {
+            cairo_save(cr);
+            cairo_translate(cr, offset.x, offset.y);
+            if (options.clip_to_region) clip_to_region(cr, outline);
+            draw_coalesced();
+            cairo_restore(cr);
+        }
+    } else {
+        if (options.draw_region) {
+            Canvas canvas(cr);
+            draw_region_outline(canvas, outline, page);
+        }
+        if (options.clip_to_region) clip_to_region(cr, outline);
+        if (options.band)
+            draw_bent(cr, pattern, elements, style, page, curves, *options.band);
+        else
+            draw_coalesced();
     }
+
     document.finish();
     out.commit();
 }

@@ -12,8 +12,13 @@
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 #include <utility>
 #include <vector>
+
+#include "output/repeat.hpp"
+#include "symmetry/frieze_group.hpp"
+#include "symmetry/wallpaper_group.hpp"
 
 #ifndef ACANTHUS_VERSION
 #define ACANTHUS_VERSION "unknown"
@@ -204,6 +209,17 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
                    "SVG file, or rect:W,H circle:R ellipse:RX,RY (default: built-in panel)")
         ->type_name("FILE.svg|SHAPE")
         ->group(region_group);
+    auto* band_option =
+        app.add_option("--band", o.band,
+                       "Grow in a band along the centre line of this SVG path, drawn bent onto it")
+            ->type_name("PATH.svg")
+            ->excludes("--region")
+            ->group(region_group);
+    app.add_option("--band-width", o.band_width, "The band's width (with --band)")
+        ->type_name("W")
+        ->needs(band_option)
+        ->group(region_group);
+    band_option->needs("--band-width");
     app.add_option("--seed", seeds,
                    "Seed position (repeatable; default: centre of the largest inscribed circle)")
         ->type_name("X,Y")
@@ -310,6 +326,36 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->check(check_symmetry_center)
         ->needs(symmetry_option)
         ->group(symmetry_group);
+    std::string frieze, wallpaper, tile;
+    double period = 0;
+    auto* frieze_option =
+        app.add_option("--frieze", frieze,
+                       "Grow a frieze along x about the region's horizontal centre line: p1 p11g "
+                       "p1m1 p11m p2 p2mg p2mm (needs --period)")
+            ->type_name("G")
+            ->excludes(symmetry_option)
+            ->group(symmetry_group);
+    auto* period_option =
+        app.add_option("--period", period, "The frieze's period along x, in user units")
+            ->type_name("P")
+            ->needs(frieze_option)
+            ->group(symmetry_group);
+    frieze_option->needs(period_option);
+    auto* wallpaper_option =
+        app.add_option("--wallpaper", wallpaper,
+                       "Grow a seamless tile under a wallpaper group, p1 ... p6m (needs --tile; "
+                       "the region is the tile)")
+            ->type_name("G")
+            ->excludes(symmetry_option)
+            ->excludes(frieze_option)
+            ->group(symmetry_group);
+    auto* tile_option =
+        app.add_option("--tile", tile,
+                       "The wallpaper's tile: sides (W, 0) and H at ANGLE degrees (default 90)")
+            ->type_name("W,H[,ANGLE]")
+            ->needs(wallpaper_option)
+            ->group(symmetry_group);
+    wallpaper_option->needs(tile_option);
 
     const char* output_group = "Output";
     app.add_option("-o,--output", o.output,
@@ -339,6 +385,18 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->group(output_group);
     app.add_option("--stroke", o.render.stroke, "Skeletal stroke drawn along curve proxies")
         ->type_name("NAME")
+        ->group(output_group);
+    app.add_option_function<std::string>(
+           "--repeat",
+           [&o](const std::string& s) {
+               std::tie(o.render.repeat_x, o.render.repeat_y) = parse_repeat(s);
+           },
+           "Draw the tile (the wallpaper tile, else the region's bounding box) N x M times, for "
+           "a look at the repeat")
+        ->type_name("NxM")
+        ->group(output_group);
+    app.add_flag("--svg-pattern", o.render.svg_pattern,
+                 "Write the SVG as a <pattern> of the tile and a shape filled with it")
         ->group(output_group);
     app.add_option("--json", o.json, "Also write the element tree as JSON")
         ->type_name("TREE.json")
@@ -399,9 +457,28 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         o.growth.symmetry = Symmetry::parse(symmetry);
         if (!symmetry_center.empty()) o.growth.symmetry->center = *parse_seed(symmetry_center);
     }
+    if (!frieze.empty()) {
+        o.growth.frieze = Frieze{frieze, period};
+        detail::make_frieze_group(frieze, period);  // UsageError on a bad name or period
+    }
+    if (!wallpaper.empty()) {
+        if (!o.region.empty())
+            throw UsageError("--wallpaper grows in its tile (--tile); leave out --region");
+        const detail::Tile t = detail::parse_tile(tile);
+        o.growth.wallpaper = Wallpaper{wallpaper, t.width, t.height, t.angle};
+        o.render.clip_to_region = true;
+        o.render.tile = RepeatTile{{0, 0}, t.a(), t.b()};  // --repeat repeats the lattice's cell
+        detail::make_wallpaper_group(wallpaper, t);        // UsageError on a lattice it cannot have
+    }
     if (!rng_seed.empty()) o.growth.rng_seed = *parse_rng_seed(rng_seed);
     if (!background.empty()) o.render.background = parse_color(background);
     o.render.draw_region = !no_outline;
+    if (!o.band.empty() && (o.render.svg_pattern || o.render.repeat_x * o.render.repeat_y > 1))
+        throw UsageError("--repeat and --svg-pattern repeat a tile, not a band (--band)");
+    if (o.render.svg_pattern && o.output != "-" &&
+        (o.output.size() < 4 || lower(o.output.substr(o.output.size() - 4)) != ".svg"))
+        throw UsageError("--svg-pattern writes an SVG <pattern>: give -o a .svg file name, not '" +
+                         o.output + "'");
     o.progress =
         quiet ? ProgressMode::quiet : (progress ? ProgressMode::forced : ProgressMode::automatic);
 

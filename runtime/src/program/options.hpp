@@ -15,6 +15,8 @@ enum class ProgressMode { automatic, forced, quiet };
 
 struct ProgramOptions {
     std::string region;               // --region argument; empty: Region::default_panel()
+    std::string band;                 // --band centre line (SVG); empty: none
+    double band_width = 0;            // --band-width
     std::vector<std::string> params;  // --param NAME=VALUE, in command-line order
     bool list_params = false;
     GrowthOptions growth;  // seeds, rng seed, resolution, epsilon, limits, engine

@@ -28,6 +28,8 @@
 #include "program/output_paths.hpp"
 #include "program/progress_line.hpp"
 #include "program/tree_json.hpp"
+#include "region/band.hpp"
+#include "symmetry/translation_groups.hpp"
 
 namespace acanthus {
 
@@ -230,7 +232,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     std::optional<detail::ProgramOptions> parsed =
         detail::parse_program_options(pattern, program, argc, argv);
     if (!parsed) return 0;  // --help or --version
-    const detail::ProgramOptions& o = *parsed;
+    detail::ProgramOptions& o = *parsed;
 
     apply_params(pattern, o.params);
     if (o.list_params) {
@@ -239,8 +241,19 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     }
 
     detail::check_output_paths(o);
-    const Region region =
-        o.region.empty() ? Region::default_panel() : Region::from_argument(o.region);
+    if (!o.band.empty())  // grown straight, drawn bent (docs/symmetry.md)
+        o.render.band =
+            std::make_shared<const detail::Band>(detail::Band::from_svg_file(o.band, o.band_width));
+    if (o.render.band && o.render.band->closed() && o.growth.frieze) {
+        // A closed band's frieze wraps, with no seam where the centre line closes; the
+        // translates across its ends are clipped to the band.
+        o.growth.wrap_x = o.render.band->length();
+        o.render.clip_to_region = true;
+    }
+    const Region region = o.render.band        ? o.render.band->straight_region()
+                          : o.growth.wallpaper ? detail::tile_region(*o.growth.wallpaper)
+                          : o.region.empty()   ? Region::default_panel()
+                                               : Region::from_argument(o.region);
     // Every file of the run is renamed into place at the end, all or none.
     detail::OutputTransaction outputs;
     validate(o, region, outputs);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "geometry/spatial_index.hpp"
 #include "proxy/overlap.hpp"
@@ -63,6 +64,50 @@ bool leaves(const Element& e, const Region* region, double tolerance) {
     if (!region) return false;
     for (std::size_t k = 0; k < e.proxy_count(); ++k)
         if (leaves_region(e.proxy(k), *region, tolerance)) return true;
+    return false;
+}
+
+// True when g is a reflection with no glide and the proxy's ends (a polygon's corners) lie on
+// both sides of its mirror: then the proxy crosses the mirror where its image does. The exact
+// curve intersection may miss that meeting, the two curves being one continued.
+bool crosses_mirror(const Proxy& p, const Isometry& g, double tolerance) {
+    if (!g.reverses()) return false;
+    const Isometry twice = g.then(g);
+    if (std::abs(twice.e) > tolerance || std::abs(twice.f) > tolerance) return false;
+    std::vector<Point> ends;
+    switch (p.kind()) {
+        case ProxyKind::linesegment: {
+            const auto& l = static_cast<const LineSegmentProxy&>(p);
+            ends = {l.p0, l.p1};
+            break;
+        }
+        case ProxyKind::bezier: {
+            const auto& b = static_cast<const BezierProxy&>(p);
+            ends = {b.c[0], b.c[3]};
+            break;
+        }
+        case ProxyKind::arc: {
+            const auto& a = static_cast<const ArcProxy&>(p);
+            for (double t : {a.start, a.end})
+                ends.push_back(a.center + Vector(std::cos(t), std::sin(t)) * a.radius);
+            break;
+        }
+        case ProxyKind::polygon:
+            ends = static_cast<const PolygonProxy&>(p).points;
+            break;
+        default:
+            return false;
+    }
+    // p to its image is twice p's offset from the mirror, along its normal.
+    Vector normal(0, 0);
+    for (Point q : ends) {
+        const Vector v = g.apply(q) - q;
+        if (v.length() <= 2 * tolerance) continue;
+        if (normal.length() == 0)
+            normal = v;
+        else if (normal.dot(v) < 0)
+            return true;
+    }
     return false;
 }
 
@@ -136,6 +181,7 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
             fixed = true;
             continue;
         }
+        if (!group.keeps(*image, tolerance)) continue;  // beyond a frieze's ends or the window
         images.push_back(std::move(image));
         transforms.push_back(g[k]);
     }
@@ -152,6 +198,9 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
         kept.push_back(images[k].get());
         out.images.push_back(transforms[k]);
         if (out.clear && overlaps_any(*images[k], e, tolerance)) out.clear = false;
+        // (Rosettes keep their tested behaviour: their trees stay as they were.)
+        for (std::size_t p = 0; out.clear && !group.rosette() && p < e.proxy_count(); ++p)
+            if (crosses_mirror(e.proxy(p), transforms[k], tolerance)) out.clear = false;
         out.elements.push_back(std::move(images[k]));  // `kept` still points to it
     }
     return out;
@@ -174,19 +223,46 @@ bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region* 
     for (std::size_t k = 1; k < g.size(); ++k) {
         transform_proxy(p, g[k], q);
         if (same_place(q, p, tolerance)) continue;
+        if (!group.rosette() && crosses_mirror(p, g[k], tolerance)) return true;
         if (boxes_meet(q.bounds(), p.bounds()) && overlaps(q, p, tolerance)) return true;
         if (region && leaves_region(q, *region, tolerance)) return true;
     }
     return false;
 }
 
+bool same_isometry(const Isometry& a, const Isometry& b, double tolerance) {
+    return std::abs(a.a - b.a) <= 1e-9 && std::abs(a.b - b.b) <= 1e-9 &&
+           std::abs(a.c - b.c) <= 1e-9 && std::abs(a.d - b.d) <= 1e-9 &&
+           std::abs(a.e - b.e) <= tolerance && std::abs(a.f - b.f) <= tolerance;
+}
+
 std::vector<std::optional<Orbit>> placeable_orbits(
     const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region* region,
-    double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image) {
+    double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image,
+    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed) {
     std::vector<std::optional<Orbit>> out;
     out.reserve(batch.size());
-    SpatialIndex index;  // the images of the elements kept so far
-    std::vector<ImageElement*> images;
+    const bool every_image = static_cast<bool>(hits_placed);
+    SpatialIndex index;  // the images of the elements kept so far (and the elements: every_image)
+    std::vector<const Element*> images;
+    std::vector<Isometry> transforms;  // of each entry of `images`
+    // True when the proxy, of the image under `g`, overlaps an indexed element or image under
+    // another transformation (all of them when `any`).
+    auto hits_batch = [&](const Proxy& p, const Isometry& g, bool any) {
+        return index.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
+            const auto k = static_cast<std::size_t>(en.element);
+            if (!any && same_isometry(transforms[k], g, tolerance)) return false;
+            return overlaps(p, images[k]->proxy(static_cast<std::size_t>(en.proxy)), tolerance);
+        });
+    };
+    auto add = [&](const Element& e, const Isometry& g) {
+        const int id = static_cast<int>(images.size());
+        for (std::size_t k = 0; k < e.proxy_count(); ++k)
+            index.insert(id, static_cast<int>(k), e.proxy(k).bounds());
+        images.push_back(&e);
+        transforms.push_back(g);
+    };
+    const Isometry identity{};
     for (std::size_t n = 0; n < batch.size(); ++n) {
         const Element* e = batch[n];
         Orbit orbit = orbit_of(*e, group, tolerance);
@@ -199,25 +275,25 @@ std::vector<std::optional<Orbit>> placeable_orbits(
                 ok = false;
                 break;
             }
-            ok = !index.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
-                return overlaps(p,
-                                images[static_cast<std::size_t>(en.element)]->proxy(
-                                    static_cast<std::size_t>(en.proxy)),
-                                tolerance);
-            });
+            ok = !hits_batch(p, identity, !every_image);
+        }
+        for (std::size_t i = 0; ok && every_image && i < orbit.elements.size(); ++i) {
+            ImageElement& image = *orbit.elements[i];
+            for (std::size_t k = 0; ok && k < image.proxy_count(); ++k) {
+                const Proxy& p = image.proxy(k);
+                ok = !hits_placed(p, orbit.images[i]) && !hits_batch(p, orbit.images[i], false);
+            }
         }
         if (!ok) {
             out.emplace_back(std::nullopt);
             continue;
         }
         // The last element's images are checked by no later one.
-        if (n + 1 < batch.size())
-            for (const auto& image : orbit.elements) {
-                const int id = static_cast<int>(images.size());
-                for (std::size_t k = 0; k < image->proxy_count(); ++k)
-                    index.insert(id, static_cast<int>(k), image->proxy(k).bounds());
-                images.push_back(image.get());
-            }
+        if (n + 1 < batch.size()) {
+            if (every_image) add(*e, identity);
+            for (std::size_t i = 0; i < orbit.elements.size(); ++i)
+                add(*orbit.elements[i], orbit.images[i]);
+        }
         out.emplace_back(std::move(orbit));
     }
     return out;

@@ -46,8 +46,19 @@ bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region* 
 // before it or an image of one, or that overlaps a placed image (`hits_placed_image`).
 // (Elements overlapping each other, or placed fundamental ones, are the rule's business, as
 // without symmetry.)
+//
+// With translations an image may be left out (beyond a frieze's ends, outside a tile's box):
+// then an image of the element may overlap an element whose matching image is missing, so
+// every kept image is checked too, against placed elements and the batch's earlier elements
+// and images under another transformation (`hits_placed(proxy, transform)`: a placed element
+// that is not the image of a fundamental one under that transformation overlaps the proxy).
 std::vector<std::optional<Orbit>> placeable_orbits(
     const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region* region,
-    double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image);
+    double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image,
+    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed = nullptr);
+
+// True when the two isometries are the same within `tolerance` (on the translation; the
+// matrix within 1e-9).
+bool same_isometry(const Isometry& a, const Isometry& b, double tolerance);
 
 }  // namespace acanthus::detail

@@ -54,7 +54,7 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
     constexpr double kFar = 64, kMargin = 1e-9;
     const double tol = grid.pixel;
     const std::vector<std::pair<Point, Point>> edges = group.domain_edges(1);
-    const bool cheap = edges.size() == 2;
+    const bool cheap = group.rosette() && edges.size() == 2;
     Vector bisector(0, 0);
     double half = 0;
     if (cheap) {

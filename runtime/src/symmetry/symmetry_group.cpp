@@ -8,6 +8,8 @@
 #include <limits>
 #include <string>
 
+#include "proxy/overlap.hpp"
+
 namespace acanthus {
 
 namespace {
@@ -45,7 +47,8 @@ std::string Symmetry::name() const {
 
 namespace detail {
 
-SymmetryGroup::SymmetryGroup(const Symmetry& spec, Point center) : spec_(spec), center_(center) {
+SymmetryGroup::SymmetryGroup(const Symmetry& spec, Point center)
+    : spec_(spec), name_(spec.name()), center_(center) {
     const int n = std::max(1, spec.order);
     const bool dihedral = spec.kind == Symmetry::Kind::dihedral;
     wedge_ = (dihedral ? M_PI : 2 * M_PI) / n;
@@ -56,7 +59,72 @@ SymmetryGroup::SymmetryGroup(const Symmetry& spec, Point center) : spec_(spec), 
             transforms_.push_back(Isometry::reflection(center, kStart + M_PI * k / n));
 }
 
+namespace {
+
+// Within this of the identity's matrix, an isometry is a translation.
+constexpr double kSame = 1e-9;
+
+}  // namespace
+
+SymmetryGroup::SymmetryGroup(TranslationGroup group, const Region& region)
+    : name_(std::move(group.name)),
+      center_(group.generic),
+      transforms_(std::move(group.transforms)),
+      lattice_(true),
+      window_(group.window),
+      frame_(group.frame),
+      region_(&region) {
+    for (std::size_t k = 1; k < transforms_.size(); ++k) {
+        const Isometry& g = transforms_[k];
+        const Point q = g.apply(center_);
+        const Vector n = q - center_;
+        if (n.length() > kSame) halfplanes_.emplace_back(center_ + n * 0.5, n * (1 / n.length()));
+        if (g.reverses()) {
+            // A reflection with no glide (g g = identity) fixes its mirror, through the midpoint
+            // of any point and its image, along the eigenvector of eigenvalue 1.
+            const Isometry twice = g.then(g);
+            if (std::abs(twice.e) > kSame * (1 + std::abs(g.e)) ||
+                std::abs(twice.f) > kSame * (1 + std::abs(g.f)))
+                continue;
+            const double t = std::atan2(g.b, g.a) / 2;
+            const Point o = frame_.center();
+            mirrors_.emplace_back(o + (g.apply(o) - o) * 0.5, Vector(std::cos(t), std::sin(t)));
+        } else if (std::abs(g.a - 1) > kSame || std::abs(g.b) > kSame) {
+            // A rotation fixes the solution of (I - R) c = t.
+            const double m00 = 1 - g.a, m01 = -g.c, m10 = -g.b, m11 = 1 - g.d;
+            const double det = m00 * m11 - m01 * m10;
+            centres_.emplace_back((m11 * g.e - m01 * g.f) / det, (m00 * g.f - m10 * g.e) / det);
+        }
+    }
+}
+
+bool SymmetryGroup::keeps(const Element& image, double tolerance) const {
+    if (!lattice_) return true;
+    for (std::size_t k = 0; k < image.proxy_count(); ++k) {
+        const Proxy& p = image.proxy(k);
+        if (window_) {
+            const Rect b = p.bounds();
+            if (b.x0 <= window_->x1 && window_->x0 <= b.x1 && b.y0 <= window_->y1 &&
+                window_->y0 <= b.y1)
+                return true;
+        } else {
+            // Beyond the region's bounds first: cheap, and sure for a curve whose end only
+            // just leaves them (the band's ends).
+            const Rect b = p.bounds(), r = region_->bounds();
+            if (b.x0 < r.x0 - tolerance || b.y0 < r.y0 - tolerance || b.x1 > r.x1 + tolerance ||
+                b.y1 > r.y1 + tolerance || leaves_region(p, *region_, tolerance))
+                return false;
+        }
+    }
+    return !window_;
+}
+
 bool SymmetryGroup::in_domain(Point p, double tolerance) const {
+    if (lattice_) {
+        for (const auto& [m, n] : halfplanes_)
+            if ((p - m).dot(n) > tolerance) return false;
+        return true;
+    }
     if (transforms_.size() == 1) return true;
     const Vector v = p - center_;
     const double r = v.length();
@@ -68,6 +136,25 @@ bool SymmetryGroup::in_domain(Point p, double tolerance) const {
 }
 
 Point SymmetryGroup::snap(Point p, double tolerance) const {
+    if (lattice_) {
+        double best = tolerance;
+        std::optional<Point> out;
+        for (Point c : centres_)
+            if (distance(c, p) <= best) {
+                best = distance(c, p);
+                out = c;
+            }
+        if (out) return *out;
+        for (const auto& [o, dir] : mirrors_) {
+            const Vector v = p - o;
+            const double off = std::abs(dir.cross(v));
+            if (off <= best) {
+                best = off;
+                out = o + dir * dir.dot(v);
+            }
+        }
+        return out ? *out : p;
+    }
     const Vector v = p - center_;
     if (v.length() <= tolerance) return center_;
     if (spec_.kind != Symmetry::Kind::dihedral) return p;
@@ -95,6 +182,29 @@ double SymmetryGroup::clearance(Point c, double tolerance) const {
 }
 
 std::vector<std::pair<Point, Point>> SymmetryGroup::domain_edges(double radius) const {
+    if (lattice_) {
+        // The frame clipped by each half-plane in turn (Sutherland-Hodgman: convex).
+        std::vector<Point> poly{{frame_.x0, frame_.y0},
+                                {frame_.x1, frame_.y0},
+                                {frame_.x1, frame_.y1},
+                                {frame_.x0, frame_.y1}};
+        for (const auto& [m, n] : halfplanes_) {
+            std::vector<Point> next;
+            for (std::size_t k = 0; k < poly.size(); ++k) {
+                const Point a = poly[k], b = poly[(k + 1) % poly.size()];
+                const double da = (a - m).dot(n), db = (b - m).dot(n);
+                if (da <= 0) next.push_back(a);
+                if ((da < 0 && db > 0) || (da > 0 && db < 0))
+                    next.push_back(a + (b - a) * (da / (da - db)));
+            }
+            poly = std::move(next);
+            if (poly.empty()) break;
+        }
+        std::vector<std::pair<Point, Point>> out;
+        for (std::size_t k = 0; k < poly.size(); ++k)
+            out.emplace_back(poly[k], poly[(k + 1) % poly.size()]);
+        return out;
+    }
     if (transforms_.size() == 1) return {};
     std::vector<std::pair<Point, Point>> out;
     for (double t : {kStart, kStart + wedge_})

@@ -1,8 +1,14 @@
-// The transformations of a rosette group about its centre, and its fundamental domain: the
-// wedge the growth loop chooses its empty circles in (docs/symmetry.md).
+// The transformations of a symmetry group and its fundamental domain, the part of the plane the
+// growth loop chooses its empty circles in (docs/symmetry.md): a rosette about its centre
+// (a wedge), or a group with translations (a frieze, a wallpaper group) as the finite list of
+// its isometries that reach the region (the Dirichlet domain of a point with no symmetry).
 #pragma once
 
+#include <acanthus/element.hpp>
+#include <acanthus/region.hpp>
 #include <acanthus/symmetry.hpp>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -10,36 +16,70 @@
 
 namespace acanthus::detail {
 
+// A group with translations, cut down to the isometries whose images reach the region.
+struct TranslationGroup {
+    std::string name;                  // "frieze p2mg", "wallpaper p4m"
+    std::vector<Isometry> transforms;  // the identity first
+    // A point that no transformation but the identity fixes: the fundamental domain is the
+    // set of points nearer to it than to any of its images.
+    Point generic;
+    // Periodic (a wallpaper tile, a closed band): images whose bounds meet this box are kept,
+    // across its edges too. None: an image is kept only when it lies wholly inside the region
+    // (a frieze's band ends there).
+    std::optional<Rect> window;
+    Rect frame;  // where domain_edges() clips the domain (the region's or the window's bounds)
+};
+
 class SymmetryGroup {
   public:
     SymmetryGroup(const Symmetry& spec, Point center);
+    // `region` (kept by reference, it must outlive the group) decides which images are kept
+    // when `group.window` is none.
+    SymmetryGroup(TranslationGroup group, const Region& region);
 
+    // True for a rosette (cN, dN), false for a group with translations.
+    bool rosette() const { return !lattice_; }
+    const std::string& name() const { return name_; }
     const Symmetry& spec() const { return spec_; }
+    // The rosette's centre; the Dirichlet domain's point for a group with translations.
     Point center() const { return center_; }
-    // Every transformation, the identity first, then the rotations by 2 pi k / N, then (dN)
-    // the reflections.
+    // Every transformation, the identity first (a rosette: then the rotations by 2 pi k / N,
+    // then (dN) the reflections).
     const std::vector<Isometry>& transforms() const { return transforms_; }
     std::size_t size() const { return transforms_.size(); }
-    // The fundamental domain's angle: 2 pi / N (cN) or pi / N (dN).
+    // The rosette's domain's angle: 2 pi / N (cN) or pi / N (dN).
     double wedge() const { return wedge_; }
 
-    // True when p lies in the fundamental domain, a wedge of angle 2 pi / N (cN) or pi / N (dN)
-    // whose first edge points up from the centre, widened by `tolerance` on each side.
+    // True when p lies in the fundamental domain widened by `tolerance` on each side: for a
+    // rosette the wedge whose first edge points up from the centre, else the Dirichlet domain.
     bool in_domain(Point p, double tolerance) const;
-    // p moved onto the centre or (dN) onto the nearest mirror when it lies within `tolerance`
-    // of it, so that its images coincide with it exactly; else p.
+    // p moved onto the nearest rotation centre, or else onto the nearest mirror, when it lies
+    // within `tolerance` of one, so that its images coincide with it exactly; else p.
     Point snap(Point p, double tolerance) const;
     // Half the distance from c to its nearest image farther than `tolerance` (infinite when
     // every image coincides with c): a circle about c no larger stays clear of its images.
     double clearance(Point c, double tolerance) const;
-    // The domain's two edges, from the centre out to `radius` (none for c1).
+    // The domain's edges: a rosette's two, from the centre out to `radius` (none for c1); the
+    // Dirichlet domain's polygon clipped to the frame.
     std::vector<std::pair<Point, Point>> domain_edges(double radius) const;
+    // True when an image of an element is placed: always for a rosette; for a group with
+    // translations when it meets the window, or without one lies inside the region.
+    bool keeps(const Element& image, double tolerance) const;
 
   private:
     Symmetry spec_;
+    std::string name_;
     Point center_;
-    double wedge_;  // the domain's angle
+    double wedge_ = 0;  // the rosette's domain's angle
     std::vector<Isometry> transforms_;
+    // Groups with translations.
+    bool lattice_ = false;
+    std::optional<Rect> window_;
+    Rect frame_;
+    const Region* region_ = nullptr;
+    std::vector<Point> centres_;                        // rotation centres
+    std::vector<std::pair<Point, Vector>> mirrors_;     // a point and the unit direction
+    std::vector<std::pair<Point, Vector>> halfplanes_;  // the domain: (p - m) . n <= 0
 };
 
 }  // namespace acanthus::detail

@@ -1,11 +1,15 @@
-// Checks an ornament grown under a rosette group from the outside, as the expert would, on the
+// Checks an ornament grown under a symmetry group from the outside, as the expert would, on the
 // program's --json tree:
 //   check_symmetry TREE.json GROUP REGION
-// - the images' transformations, with the identity, are the group: as many as it has
-//   (N for cN, 2N for dN) and closed under composition;
+// GROUP is a rosette (cN, dN), frieze:G:P (a frieze G of period P about the centre line of the
+// region's bounds) or wallpaper:G:W,H[,ANGLE] (REGION is then the tile, '-').
+// - the images' transformations, with the identity, are the group: for a rosette as many as it
+//   has (N for cN, 2N for dN) and closed under composition; with translations, each is one of
+//   the catalog's isometries followed by a translation of the period or the lattice;
 // - the element set is invariant: every image of every element under every transformation is an
-//   element of the same type (to 1e-6 of the panel's size);
-// - nothing leaves the region;
+//   element of the same type (to 1e-6 of the panel's size); with translations, every image that
+//   lies wholly inside the region (a frieze) or inside the tile's bounds (a wallpaper);
+// - nothing leaves the region (a wallpaper's elements cross the tile's edges: not checked);
 // - no two elements overlap unless they are an image of two fundamental elements under one
 //   transformation (two fundamental elements touching or overlapping is the rule's business, as
 //   without symmetry; the seed markers are left out).
@@ -18,14 +22,18 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "geometry/spatial_index.hpp"
 #include "proxy/overlap.hpp"
+#include "symmetry/frieze_group.hpp"
 #include "symmetry/image_element.hpp"
 #include "symmetry/isometry.hpp"
 #include "symmetry/orbit.hpp"
+#include "symmetry/wallpaper_group.hpp"
 
 using namespace acanthus;
 using namespace acanthus::detail;
@@ -104,8 +112,40 @@ int main(int argc, char** argv) {
     }
     std::ifstream in(argv[1]);
     const Json tree = Json::parse(in);
-    const Symmetry group = Symmetry::parse(argv[2]);
-    const Region region = Region::from_argument(argv[3]);
+    const std::string group_arg = argv[2];
+    const bool frieze = group_arg.rfind("frieze:", 0) == 0;
+    const bool wallpaper = group_arg.rfind("wallpaper:", 0) == 0;
+    // A group with translations: its cosets and the translations (a, b) on the plane.
+    std::vector<Isometry> cosets;
+    Vector lattice_a(0, 0), lattice_b(0, 0);
+    std::optional<Region> tile;
+    if (frieze || wallpaper) {
+        const std::string rest = group_arg.substr(group_arg.find(':') + 1);
+        const std::string name = rest.substr(0, rest.find(':'));
+        const std::string size = rest.substr(rest.find(':') + 1);
+        if (wallpaper) {
+            const Tile t = parse_tile(size);
+            cosets = make_wallpaper_group(name, t).transforms;
+            lattice_a = Vector(t.a().x, t.a().y);
+            lattice_b = Vector(t.b().x, t.b().y);
+            std::ostringstream svg;
+            svg.precision(17);
+            svg << "<svg xmlns='http://www.w3.org/2000/svg'><polygon points='0,0 " << t.a().x << ','
+                << t.a().y << ' ' << t.a().x + t.b().x << ',' << t.a().y + t.b().y << ' ' << t.b().x
+                << ',' << t.b().y << "'/></svg>";
+            tile = Region::from_svg_string(svg.str(), "tile");
+        } else {
+            const double period = std::stod(size);
+            const Rect rb = Region::from_argument(argv[3]).bounds();
+            const double cy = (rb.y0 + rb.y1) / 2;
+            const Isometry to{1, 0, 0, 1, rb.x0, cy}, from{1, 0, 0, 1, -rb.x0, -cy};
+            for (const Isometry& h : make_frieze_group(name, period).transforms)
+                cosets.push_back(from.then(h).then(to));
+            lattice_a = Vector(period, 0);
+        }
+    }
+    const bool translations = frieze || wallpaper;
+    const Region region = tile ? *tile : Region::from_argument(argv[3]);
     const Rect b = region.bounds();
     const double tol = 1e-6 * std::max(b.width(), b.height());
 
@@ -136,18 +176,76 @@ int main(int argc, char** argv) {
         for (const Isometry& t : transforms) known = known || same(t, e->transform);
         if (!known) transforms.push_back(e->transform);
     }
-    const std::size_t expected = static_cast<std::size_t>(
-        group.kind == Symmetry::Kind::cyclic ? group.order : 2 * group.order);
-    if (transforms.size() != expected)
-        fault("the images use " + std::to_string(transforms.size()) +
-              " transformations with the identity; " + group.name() + " has " +
-              std::to_string(expected));
-    for (const Isometry& s : transforms)
-        for (const Isometry& t : transforms) {
-            bool found = false;
-            for (const Isometry& u : transforms) found = found || same(s.then(t), u);
-            if (!found) fault("the transformations are not closed under composition");
+    // With translations: a coset's isometry and the integer combination of a and b after it.
+    auto in_group = [&](const Isometry& t) {
+        for (const Isometry& h : cosets) {
+            if (std::abs(h.a - t.a) > 1e-6 || std::abs(h.b - t.b) > 1e-6 ||
+                std::abs(h.c - t.c) > 1e-6 || std::abs(h.d - t.d) > 1e-6)
+                continue;
+            const Vector d(t.e - h.e, t.f - h.f);
+            double i = 0, j = 0;
+            if (wallpaper) {
+                const double det = lattice_a.cross(lattice_b);
+                i = d.cross(lattice_b) / det;
+                j = lattice_a.cross(d) / det;
+            } else {
+                i = d.x / lattice_a.x;
+                if (std::abs(d.y) > tol) continue;
+            }
+            if (std::abs(i - std::round(i)) < 1e-6 && std::abs(j - std::round(j)) < 1e-6)
+                return true;
         }
+        return false;
+    };
+    if (translations) {
+        for (const Isometry& t : transforms)
+            if (!in_group(t)) fault("an image's transformation is not in " + group_arg);
+    } else {
+        const Symmetry group = Symmetry::parse(group_arg);
+        const std::size_t expected = static_cast<std::size_t>(
+            group.kind == Symmetry::Kind::cyclic ? group.order : 2 * group.order);
+        if (transforms.size() != expected)
+            fault("the images use " + std::to_string(transforms.size()) +
+                  " transformations with the identity; " + group.name() + " has " +
+                  std::to_string(expected));
+        for (const Isometry& s : transforms)
+            for (const Isometry& t : transforms) {
+                bool found = false;
+                for (const Isometry& u : transforms) found = found || same(s.then(t), u);
+                if (!found) fault("the transformations are not closed under composition");
+            }
+    }
+    // The isometries each element's images are looked for under: a rosette's transformations;
+    // with translations every coset with the translations that can keep an image in the bounds.
+    std::vector<Isometry> checked = transforms;
+    if (translations) {
+        checked.clear();
+        const double diagonal = std::hypot(b.width(), b.height());
+        const int reach =
+            2 + static_cast<int>(std::ceil(
+                    2 * diagonal /
+                    std::min(lattice_a.length(), wallpaper ? lattice_b.length() : 1e300)));
+        for (const Isometry& h : cosets)
+            for (int i = -reach; i <= reach; ++i)
+                for (int j = wallpaper ? -reach : 0; j <= (wallpaper ? reach : 0); ++j) {
+                    const Vector t = lattice_a * i + lattice_b * j;
+                    checked.push_back(h.then(Isometry{1, 0, 0, 1, t.x, t.y}));
+                }
+    }
+    // With translations, an image is looked for when it lies wholly in the region (a frieze's
+    // band ends there) or in the tile's bounds (the engine keeps more round the tile).
+    auto expected_present = [&](const Element& image) {
+        if (!translations) return true;
+        for (std::size_t k = 0; k < image.proxy_count(); ++k) {
+            const Proxy& p = image.proxy(k);
+            // Beyond the bounds first: the exact test may miss a curve's end just beyond them.
+            const Rect r = p.bounds();
+            if (r.x0 < b.x0 - tol || r.y0 < b.y0 - tol || r.x1 > b.x1 + tol || r.y1 > b.y1 + tol)
+                return false;
+            if (!wallpaper && leaves_region(p, region, tol)) return false;
+        }
+        return true;
+    };
 
     // Elements by type, in a grid of cells of their first proxy's bounds centre.
     const double cell = std::max(b.width(), b.height()) / 64;
@@ -176,12 +274,13 @@ int main(int argc, char** argv) {
     long images = 0;
     for (const auto& e : elements) {
         if (e->image_of >= 0) ++images;
-        for (std::size_t k = 0; k < e->proxy_count(); ++k)
+        for (std::size_t k = 0; k < e->proxy_count() && !wallpaper; ++k)
             if (leaves_region(e->proxy(k), region, tol))
                 fault("element " + std::to_string(e->id) + " leaves the region");
         if (e->proxy_count() == 0) continue;
-        for (const Isometry& t : transforms) {
-            const ImageElement image(*e, t);
+        for (const Isometry& t : checked) {
+            ImageElement image(*e, t);
+            if (!expected_present(image)) continue;
             const auto [kx, ky] = key(image);
             bool found = false;
             for (long dx = -1; dx <= 1 && !found; ++dx)
@@ -194,7 +293,12 @@ int main(int argc, char** argv) {
                             break;
                         }
                 }
-            if (!found) fault("an image of element " + std::to_string(e->id) + " is missing");
+            if (!found) {
+                const Point c = image.proxy(0).bounds().center();
+                fault("an image of element " + std::to_string(e->id) + " is missing (at " +
+                      std::to_string(c.x) + "," + std::to_string(c.y) + ", translation " +
+                      std::to_string(t.e) + "," + std::to_string(t.f) + ")");
+            }
         }
     }
 

@@ -1,0 +1,74 @@
+#include "output/repeat.hpp"
+
+#include <acanthus/error.hpp>
+#include <algorithm>
+#include <charconv>
+#include <limits>
+
+namespace acanthus::detail {
+
+namespace {
+
+constexpr int max_copies = 100;
+
+Point at(const RepeatTile& t, double u, double v) {
+    return {t.origin.x + u * t.a.x + v * t.b.x, t.origin.y + u * t.a.y + v * t.b.y};
+}
+
+}  // namespace
+
+std::vector<Point> RepeatLayout::corners() const {
+    return {at(tile, 0, 0), at(tile, n, 0), at(tile, n, m), at(tile, 0, m)};
+}
+
+Rect RepeatLayout::bounds() const {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Rect r{inf, inf, -inf, -inf};
+    for (const Point& p : corners()) {
+        r.x0 = std::min(r.x0, p.x);
+        r.y0 = std::min(r.y0, p.y);
+        r.x1 = std::max(r.x1, p.x);
+        r.y1 = std::max(r.y1, p.y);
+    }
+    return r;
+}
+
+std::vector<Point> RepeatLayout::offsets() const {
+    std::vector<Point> out;
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < n; ++i)
+            out.push_back({i * tile.a.x + j * tile.b.x, i * tile.a.y + j * tile.b.y});
+    return out;
+}
+
+std::pair<int, int> parse_repeat(const std::string& text) {
+    const std::string usage = "--repeat expects NxM, N and M whole numbers from 1 to " +
+                              std::to_string(max_copies) + " (e.g. 3x3), not '" + text + "'";
+    const std::size_t x = text.find_first_of("xX");
+    if (x == std::string::npos) throw UsageError(usage);
+    auto number = [&](std::size_t begin, std::size_t end) {
+        int v = 0;
+        const char* first = text.data() + begin;
+        const char* last = text.data() + end;
+        auto [ptr, ec] = std::from_chars(first, last, v);
+        if (first == last || ec != std::errc() || ptr != last || v < 1 || v > max_copies)
+            throw UsageError(usage);
+        return v;
+    };
+    return {number(0, x), number(x + 1, text.size())};
+}
+
+bool repeats(const RenderOptions& o) { return o.svg_pattern || o.repeat_x > 1 || o.repeat_y > 1; }
+
+RepeatLayout repeat_layout(const Rect& bounds, const RenderOptions& o) {
+    RepeatLayout layout;
+    layout.n = o.repeat_x;
+    layout.m = o.repeat_y;
+    if (o.tile)
+        layout.tile = *o.tile;
+    else
+        layout.tile = {{bounds.x0, bounds.y0}, {bounds.width(), 0}, {0, bounds.height()}};
+    return layout;
+}
+
+}  // namespace acanthus::detail
