@@ -38,6 +38,23 @@ function startServer(ruleFile, args, cwd) {
   });
 }
 
+// A scratch folder for one test, removed when the tests end.
+const workDirs = [];
+function workDir() {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  workDirs.push(dir);
+  return dir;
+}
+// After the servers are gone, so that none writes into a folder being removed.
+async function removeWorkDirs() {
+  const running = servers.filter((c) => c.exitCode === null && c.signalCode === null);
+  await Promise.all(running.map((c) => new Promise((done) => {
+    c.once("exit", done);
+    setTimeout(done, 6000).unref();
+  })));
+  for (const dir of workDirs) fs.rmSync(dir, { recursive: true, force: true });
+}
+
 function stopServers() {
   for (const child of servers) {
     if (child.exitCode !== null) continue;
@@ -80,7 +97,7 @@ async function checkPolicy(page, what) {
 }
 
 async function rulesAndSliders(browser) {
-  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const work = workDir();
   const rules = path.join(work, "bubbles.acr");
   const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8");
   save(rules, good);
@@ -249,7 +266,7 @@ async function rulesAndSliders(browser) {
 }
 
 async function growthTools(browser) {
-  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const work = workDir();
   const rules = path.join(work, "arrangement.acr");
   fs.copyFileSync(path.join(root, "rules", "arrangement.acr"), rules);
   const { url } = await startServer(rules, ["--region", path.join(root, "examples/panels/rectangle.svg")], root);
@@ -330,7 +347,7 @@ async function growthTools(browser) {
 
 // A colour parameter (a string whose default is #rrggbb) gets a colour picker beside its text.
 async function colourPickers(browser) {
-  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const work = workDir();
   const rules = path.join(work, "flowers.acr");
   fs.copyFileSync(path.join(root, "rules", "flowers.acr"), rules);
   const { url } = await startServer(rules, ["--region", "rect:120,80"], root);
@@ -369,7 +386,7 @@ async function colourPickers(browser) {
 // Earlier revisions beside the current picture; the variations sheet: the render with nine
 // other rng seeds, one click takes a seed.
 async function revisionsAndVariations(browser) {
-  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const work = workDir();
   const rules = path.join(work, "bubbles.acr");
   // Dots of random sizes: each rng seed grows its own picture.
   const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8")
@@ -426,7 +443,7 @@ async function revisionsAndVariations(browser) {
 // stream among its tabs (a browser opens about six connections per host); when the tab that
 // holds it closes, another takes it over.
 async function manyTabs(browser) {
-  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const work = workDir();
   const rules = path.join(work, "bubbles.acr");
   const good = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8");
   save(rules, good);
@@ -467,7 +484,7 @@ async function manyTabs(browser) {
 // While it grows, the page shows the growth so far (/partial.svg, about every 0.1 s), each
 // picture with more of it; a render that fails after some growth goes back to the last good one.
 async function partialPictures(browser) {
-  const work = fs.mkdtempSync(path.join(os.tmpdir(), "acanthus-browser-test."));
+  const work = workDir();
   const rules = path.join(work, "bubbles.acr");
   // Each new dot waits 2 ms: a growth of a second or two, whatever the machine.
   // (split and join: String.replace would read the rule file's `$$` as a pattern.)
@@ -543,6 +560,7 @@ async function partialPictures(browser) {
     if (browser) await browser.close();
     stopServers();
     clearTimeout(watchdog);
+    await removeWorkDirs();
   }
   if (failures) console.log(failures + " check(s) failed");
   process.exitCode = failures ? 1 : 0;
