@@ -54,13 +54,20 @@ BoundaryDistance::Nearest BoundaryDistance::nearest(Geom::Point p) const {
         }
         return best;
     }
-    for (std::size_t i = 0; i < curves_.size(); ++i) {
-        // A curve lies inside its fast bounds, so a box farther than the best cannot win.
-        if (Geom::distance(p, bounds_[i]) >= best.distance) continue;
+    // Nearest bounds first: a curve lies inside its fast bounds, so once a box is farther than
+    // the best, no later curve can win; most calls then solve for one or two curves, not all.
+    // Ties go to the lowest index, whatever the order.
+    thread_local std::vector<std::pair<double, std::size_t>> order;
+    order.clear();
+    for (std::size_t i = 0; i < curves_.size(); ++i)
+        order.emplace_back(Geom::distance(p, bounds_[i]), i);
+    std::sort(order.begin(), order.end());
+    for (const auto& [box, i] : order) {
+        if (box > best.distance) break;
         const Geom::Curve& c = *curves_[i];
         Geom::Point foot = c.pointAt(c.nearestTime(p));
         double d = Geom::distance(p, foot);
-        if (d < best.distance) best = {d, i, foot};
+        if (d < best.distance || (d == best.distance && i < best.curve)) best = {d, i, foot};
     }
     return best;
 }

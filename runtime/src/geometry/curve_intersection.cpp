@@ -1,5 +1,6 @@
 #include "geometry/curve_intersection.hpp"
 
+#include <2geom/bezier-curve.h>
 #include <2geom/elliptical-arc.h>
 
 #include <algorithm>
@@ -45,12 +46,61 @@ std::vector<Geom::CurveIntersection> intersect_circular(const Geom::EllipticalAr
     return out;
 }
 
+double segment_distance(Geom::Point p, Geom::Point a, Geom::Point b) {
+    const Geom::Point d = b - a;
+    const double len2 = Geom::dot(d, d);
+    const double t = len2 > 0 ? std::clamp(Geom::dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+    return Geom::distance(p, a + d * t);
+}
+
+bool in_triangle(Geom::Point p, Geom::Point a, Geom::Point b, Geom::Point c) {
+    const double s1 = Geom::cross(b - a, p - a), s2 = Geom::cross(c - b, p - b),
+                 s3 = Geom::cross(a - c, p - c);
+    return (s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0);
+}
+
+// Whether the Bezier curve surely misses the arc's whole circle: its control points' hull (which
+// holds the curve) lies inside the disc, or away from it, by a margin. lib2geom's ellipse-Bezier
+// solver (a polynomial of degree 2n) is most of the growth's time where element circles meet a
+// region's sides; most such pairs do not cross.
+bool misses_circle(const Geom::EllipticalArc& arc, const Geom::BezierCurve& bezier) {
+    const Geom::Point c = arc.center();
+    const double r = arc.ray(Geom::X);
+    const std::size_t n = bezier.size();
+    if (n < 2 || n > 4) return false;
+    Geom::Point p[4];
+    for (std::size_t i = 0; i < n; ++i) p[i] = bezier.controlPoint(i);
+    double scale = 1 + r + Geom::L2(c);
+    for (std::size_t i = 0; i < n; ++i) scale = std::max(scale, Geom::L2(p[i]));
+    const double margin = 1e-6 * scale;
+    double farthest = 0;
+    for (std::size_t i = 0; i < n; ++i) farthest = std::max(farthest, Geom::distance(c, p[i]));
+    if (farthest < r - margin) return true;
+    // The hull's edges are among the segments between control points; the hull is the union
+    // of the triangles of three of them.
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j)
+            if (segment_distance(c, p[i], p[j]) <= r + margin) return false;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j)
+            for (std::size_t k = j + 1; k < n; ++k)
+                if (in_triangle(c, p[i], p[j], p[k])) return false;
+    return true;
+}
+
 }  // namespace
 
 std::vector<Geom::CurveIntersection> intersect_curves(const Geom::Curve& a, const Geom::Curve& b) {
     const Geom::EllipticalArc* ca = circular_arc(a);
     const Geom::EllipticalArc* cb = circular_arc(b);
     if (ca && cb) return intersect_circular(*ca, *cb);
+    if (ca) {
+        const auto* bezier = dynamic_cast<const Geom::BezierCurve*>(&b);
+        if (bezier && misses_circle(*ca, *bezier)) return {};
+    } else if (cb) {
+        const auto* bezier = dynamic_cast<const Geom::BezierCurve*>(&a);
+        if (bezier && misses_circle(*cb, *bezier)) return {};
+    }
     return a.intersect(b);
 }
 

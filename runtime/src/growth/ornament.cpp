@@ -88,7 +88,9 @@ std::vector<std::pair<Element*, double>> Ornament::within(Point p, double radius
     // Entries come sorted by (element, proxy): one distance per element, over its near proxies
     // (a proxy whose bounds are farther than `radius` cannot be nearer than that).
     for (const auto& en : index_.within(p, radius)) {
-        const double d = distance_to(at(en.element).proxy(static_cast<std::size_t>(en.proxy)), p);
+        // Exact up to `radius`; beyond it the element is dropped below anyway.
+        const double d =
+            distance_to(at(en.element).proxy(static_cast<std::size_t>(en.proxy)), p, radius);
         if (!out.empty() && out.back().first->id == en.element) {
             out.back().second = std::min(out.back().second, d);
         } else {

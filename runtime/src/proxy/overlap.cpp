@@ -99,9 +99,19 @@ class Shape {
     double radius_ = 0;
 };
 
-double path_distance(const Geom::Path& path, Geom::Point p) {
+double path_distance(const Geom::Path& path, Geom::Point p, double limit = INFINITY) {
+    // Nearest bounds first, and none whose bounds are no nearer than the best or beyond `limit`:
+    // the same minimum (when it is within the limit) for fewer of lib2geom's nearest-point
+    // solves.
+    thread_local std::vector<std::pair<double, const Geom::Curve*>> order;
+    order.clear();
+    for (const Geom::Curve* c : detail::path_curves(path))
+        order.emplace_back(Geom::distance(p, c->boundsFast()), c);
+    std::sort(order.begin(), order.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
     double best = INFINITY;
-    for (const Geom::Curve* c : detail::path_curves(path)) {
+    for (const auto& [box, c] : order) {
+        if (box >= best || box > limit) break;
         best = std::min(best, Geom::distance(p, c->pointAt(c->nearestTime(p))));
     }
     return best;
@@ -110,7 +120,8 @@ double path_distance(const Geom::Path& path, Geom::Point p) {
 // Some point of `curve` lies deeper than tol inside `area`.
 bool enters(const Geom::Path& curve, const Shape& area, double tol) {
     if (area.kind() == ProxyKind::circle) {
-        return path_distance(curve, to_geom(area.point())) < area.radius() - tol;
+        const double depth = area.radius() - tol;
+        return path_distance(curve, to_geom(area.point()), depth) < depth;
     }
     return detail::find_excursion(curve, area.boundary(), tol).has_value();
 }
@@ -313,7 +324,7 @@ bool leaves_region(const Proxy& p, const Region& region, double tolerance) {
     return leaves_region(p, region.data(), tolerance);
 }
 
-double distance_to(const Proxy& p, Point q) {
+double distance_to(const Proxy& p, Point q, double limit) {
     Geom::Point g = to_geom(q);
     switch (p.kind()) {
         case ProxyKind::point:
@@ -327,7 +338,7 @@ double distance_to(const Proxy& p, Point q) {
             return s.inside(g) ? 0.0 : s.boundary().nearest(g).distance;
         }
         default:
-            return path_distance(detail::proxy_path(p), g);
+            return path_distance(detail::proxy_path(p), g, limit);
     }
 }
 

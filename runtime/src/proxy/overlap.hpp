@@ -5,6 +5,7 @@
 
 #include <acanthus/proxy.hpp>
 #include <acanthus/region.hpp>
+#include <cmath>
 
 namespace acanthus::detail {
 
@@ -17,6 +18,8 @@ bool leaves_region(const Proxy& p, const Region& region, double tolerance);
 // The same against the region's internal paths (tests build a RegionData directly).
 bool leaves_region(const Proxy& p, const detail::RegionData& region, double tolerance);
 // Distance from a point to the proxy (0 inside an area proxy).
-double distance_to(const Proxy& p, Point q);
+// With `limit`: exact when the distance is at most `limit`, else some value above it (curves
+// whose bounds lie beyond it are not solved for).
+double distance_to(const Proxy& p, Point q, double limit = INFINITY);
 
 }  // namespace acanthus::detail
