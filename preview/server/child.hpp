@@ -16,7 +16,7 @@ struct ChildRun {
     std::string stderr_path;                    // empty: /dev/null
     double deadline_seconds = 0;                // 0: none
     const std::atomic<bool>* cancel = nullptr;  // set: kill the child and return
-    std::function<void()> on_poll;              // called about ten times a second while it runs
+    std::function<void()> on_poll;              // called every 10 to 25 ms while it runs
     unsigned long long memory_limit = 0;        // bytes of address space (RLIMIT_AS); 0: none
 };
 

@@ -1,16 +1,27 @@
 #include "server/watcher.hpp"
 
+#include <poll.h>
+#include <sys/inotify.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 namespace acanthus {
 
 FileWatcher::FileWatcher(std::function<void()> on_change)
-    : on_change_(std::move(on_change)), thread_([this] { loop(); }) {}
+    : on_change_(std::move(on_change)),
+      inotify_(inotify_init1(IN_NONBLOCK | IN_CLOEXEC)),
+      thread_([this] { loop(); }) {}
 
-FileWatcher::~FileWatcher() { stop(); }
+FileWatcher::~FileWatcher() {
+    stop();
+    if (inotify_ >= 0) ::close(inotify_);
+}
 
 void FileWatcher::stop() {
     stopping_ = true;
@@ -46,11 +57,46 @@ void FileWatcher::watch(const std::vector<std::string>& paths) {
         files.emplace_back(p, print.empty() ? fingerprint(p) : print);
     }
     files_ = std::move(files);
+    if (inotify_ < 0) return;
+    // The folders, not the files: a save by rename replaces the file a watch would follow.
+    std::set<std::string> wanted;
+    for (const auto& [path, print] : files_) {
+        std::string folder = std::filesystem::path(path).parent_path().string();
+        wanted.insert(folder.empty() ? "." : folder);
+    }
+    for (auto it = folders_.begin(); it != folders_.end();) {
+        if (wanted.count(it->first)) {
+            ++it;
+            continue;
+        }
+        inotify_rm_watch(inotify_, it->second);
+        it = folders_.erase(it);
+    }
+    for (const std::string& folder : wanted) {
+        if (folders_.count(folder)) continue;
+        const int wd = inotify_add_watch(inotify_, folder.c_str(),
+                                         IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_DELETE);
+        if (wd >= 0) folders_[folder] = wd;
+    }
+    // A folder that cannot be watched: its files are looked at every 25 ms.
+    all_watched_ = folders_.size() == wanted.size();
 }
 
 void FileWatcher::loop() {
     while (!stopping_) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(25));
+        if (inotify_ >= 0) {
+            // Between events, a look every half second only: an editor writing in place (the
+            // file emptied, then written) is looked at once it closed the file, not halfway.
+            pollfd p{inotify_, POLLIN, 0};
+            if (::poll(&p, 1, all_watched_ ? 500 : 25) > 0) {
+                // What changed does not matter: the fingerprints below tell.
+                alignas(inotify_event) char events[4096];
+                while (::read(inotify_, events, sizeof events) > 0) {
+                }
+            }
+        } else {
+            std::this_thread::sleep_for(std::chrono::milliseconds(25));
+        }
         bool changed = false;
         {
             std::lock_guard lock(mutex_);

@@ -1,6 +1,6 @@
 // The preview's pure pieces: diagnostics parsed from compiler output, guides written from
 // strokes, the stroke tools libraries declare, program options split into the page's settings, the
-// server's connection threads and program slots.
+// server's connection threads and program slots, the file watcher.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -17,6 +17,7 @@
 #include "server/limits.hpp"
 #include "server/settings.hpp"
 #include "server/stroke_tools.hpp"
+#include "server/watcher.hpp"
 #include "toolchain/toolchain.hpp"
 
 namespace acanthus {
@@ -352,6 +353,44 @@ TEST(RunSlots, RunningThenQueuedThenBusy) {
     slots.give_back();
     slots.give_back();
     EXPECT_EQ(slots.take(std::chrono::milliseconds(0)), RunSlots::Outcome::taken);
+}
+
+// Saves by rename (as editors and the bench do) and in place are both reported, once each; a
+// save of the same bytes is not. (Waits are generous bounds, not speed targets.)
+TEST(FileWatcher, ReportsRenamedAndRewrittenSavesOfNewContentOnly) {
+    namespace fs = std::filesystem;
+    const fs::path dir =
+        fs::temp_directory_path() / ("acanthus-watcher-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    const fs::path rule = dir / "a.acr";
+    const auto write = [](const fs::path& path, const std::string& text) {
+        std::ofstream(path, std::ios::binary) << text;
+    };
+    write(rule, "one");
+    std::atomic<int> changes{0};
+    FileWatcher watcher([&] { ++changes; });
+    watcher.watch({rule.string()});
+    const auto changes_after = [&](int want) {
+        for (int i = 0; i < 500 && changes < want; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));  // and no more
+        return changes.load();
+    };
+    write(dir / "a.acr.tmp", "two");
+    fs::rename(dir / "a.acr.tmp", rule);
+    EXPECT_EQ(changes_after(1), 1);
+    write(rule, "three");
+    EXPECT_EQ(changes_after(2), 2);
+    const auto unchanged = [&] {  // the watcher looks at least every 0.5 s
+        std::this_thread::sleep_for(std::chrono::milliseconds(700));
+        return changes.load();
+    };
+    write(rule, "three");  // the same bytes again
+    EXPECT_EQ(unchanged(), 2);
+    write(dir / "other.txt", "a file not watched");
+    EXPECT_EQ(unchanged(), 2);
+    watcher.stop();
+    fs::remove_all(dir);
 }
 
 }  // namespace
