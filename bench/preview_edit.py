@@ -90,8 +90,8 @@ def edit(path, n):
 
 
 def measure(acanthus, root, rule, browser):
-    """(server seconds, painted seconds, first-look seconds; None without a browser): medians
-    over the edits."""
+    """(server seconds, painted seconds, first-look seconds; None without a browser, processor
+    seconds of the build and of the run): medians over the edits."""
     work = tempfile.mkdtemp(prefix="acanthus-bench-preview.")
     server = timer = None
     try:
@@ -109,7 +109,7 @@ def measure(acanthus, root, rule, browser):
             raise RuntimeError("%s: %s" % (rule, first["output"]))
         if browser:
             timer = PaintTimer(browser, url)
-        times, painted, looks = [], [], []
+        times, painted, looks, cpu = [], [], [], []
         for n in range(EDITS):
             if n > 0:  # back to the start (a cached program), then one changed body
                 restored = status(url)["revision"]
@@ -127,6 +127,8 @@ def measure(acanthus, root, rule, browser):
             times.append(time.monotonic() - start)
             if s["state"] != "ok":
                 raise RuntimeError("%s: %s" % (rule, s["output"]))
+            timings = s.get("timings", {})
+            cpu.append((timings.get("build_cpu", 0.0), timings.get("grow_cpu", 0.0)))
             if timer:
                 at, first = timer.painted(s["revision"], saved)
                 painted.append(at - saved)
@@ -135,7 +137,8 @@ def measure(acanthus, root, rule, browser):
                 os.path.basename(rule), n, times[-1], "%.3f s" % looks[-1] if looks else "-",
                 "%.3f s" % painted[-1] if painted else "-", s.get("timings")), file=sys.stderr)
         return (statistics.median(times), statistics.median(painted) if painted else None,
-                statistics.median(looks) if looks else None)
+                statistics.median(looks) if looks else None,
+                statistics.median(c[0] for c in cpu), statistics.median(c[1] for c in cpu))
     finally:
         if timer:
             timer.close()
@@ -161,19 +164,22 @@ def main():
         browser, why = browser_command(root)
         if not browser:
             print("bench preview: %s: server times only" % why, file=sys.stderr)
-        seconds, painted, looks = {}, {}, {}
+        seconds, painted, looks, build_cpu, grow_cpu = {}, {}, {}, {}, {}
         for f in rules:
-            server_seconds, painted_seconds, look_seconds = measure(
+            server_seconds, painted_seconds, look_seconds, build_s, grow_s = measure(
                 acanthus, root, os.path.join(root, "rules", f), browser)
             name = f[:-4]
             seconds[name] = round(server_seconds, 3)
+            build_cpu[name], grow_cpu[name] = round(build_s, 3), round(grow_s, 3)
             if painted_seconds is not None:
                 painted[name] = round(painted_seconds, 3)
                 looks[name] = round(look_seconds, 3)
             print("%s: server %.3f s, first look %s, painted %s" % (
                 name, seconds[name], "%.3f s" % looks[name] if name in looks else "-",
                 "%.3f s" % painted[name] if name in painted else "-"), file=sys.stderr)
-        result = {"seconds": seconds, "max": max(seconds.values())}
+        # Processor time of the build's commands and of the program's run (load-independent).
+        result = {"seconds": seconds, "max": max(seconds.values()),
+                  "build_cpu_seconds": build_cpu, "grow_cpu_seconds": grow_cpu}
         if painted:
             result.update({"painted_seconds": painted, "painted_max": max(painted.values()),
                            "first_look_seconds": looks, "first_look_max": max(looks.values())})

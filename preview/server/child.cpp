@@ -110,8 +110,9 @@ ChildEnd run_child(const ChildRun& run) {
         }
     } exit_fd_closer{exit_fd};
     int status = 0;
+    rusage usage{};
     for (;;) {
-        pid_t done = waitpid(pid, &status, WNOHANG);
+        pid_t done = wait4(pid, &status, WNOHANG, &usage);
         if (done == pid) break;
         if (done < 0 && errno != EINTR) {
             kill_group(pid);
@@ -140,6 +141,8 @@ ChildEnd run_child(const ChildRun& run) {
     }
     // The group may still hold grandchildren (a compiler's helpers); none must outlive the run.
     ::kill(-pid, SIGKILL);
+    const auto seconds = [](const timeval& t) { return t.tv_sec + t.tv_usec * 1e-6; };
+    end.cpu_seconds = seconds(usage.ru_utime) + seconds(usage.ru_stime);
     if (WIFEXITED(status)) {
         end.how = ChildEnd::How::exited;
         end.code = WEXITSTATUS(status);

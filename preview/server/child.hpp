@@ -22,7 +22,9 @@ struct ChildRun {
 
 struct ChildEnd {
     enum class How { exited, signaled, timed_out, cancelled, not_started } how = How::not_started;
-    int code = 0;       // exit status, or the signal
+    int code = 0;  // exit status, or the signal
+    // Processor time (user + system) of the child and the children it waited for, once it ended.
+    double cpu_seconds = 0;
     std::string error;  // why it did not start
 };
 

@@ -178,6 +178,7 @@ CommandRunner RenderJob::runner(const std::string& log, bool& cancelled) {
         run.cancel = &cancel_;
         run.deadline_seconds = 600;
         ChildEnd end = run_child(run);
+        build_cpu_ += end.cpu_seconds;
         if (end.how == ChildEnd::How::exited) return end.code;
         cancelled = end.how == ChildEnd::How::cancelled;
         error = describe(end, run.deadline_seconds);
@@ -268,9 +269,11 @@ void RenderJob::render(long generation) {
     status_.begin("building");
     const auto build_start = Clock::now();
     std::vector<std::string> program;
+    build_cpu_ = 0;
     if (!build(stem, cpp, program)) return;
     if (cancel_) return;
     status_.set_timing("build", seconds_since(build_start));
+    status_.set_timing("build_cpu", build_cpu_);
     const auto grow_start = Clock::now();
 
     status_.begin("growing");
@@ -321,6 +324,7 @@ void RenderJob::render(long generation) {
             good_arguments_ = arguments;
         }
         status_.set_timing("grow", seconds_since(grow_start));
+        status_.set_timing("grow_cpu", end.cpu_seconds);
         status_.succeed(read_text(svg), metrics, seconds_since(start),
                         cut_by_time_limit(metrics, settings.time_limit));
     } else {

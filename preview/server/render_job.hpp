@@ -78,6 +78,7 @@ class RenderJob {
     bool stopping_ = false;
     std::atomic<bool> cancel_{false};
     std::atomic<bool> stop_extras_{false};
+    double build_cpu_ = 0;  // processor time of the build's commands (render thread only)
     bool prelude_failed_ = false;
     std::string host_;  // empty: not built yet, or failed
     bool host_failed_ = false;

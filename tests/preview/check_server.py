@@ -134,6 +134,11 @@ def main():
             check(s["params"][0] == {"name": "max_radius", "type": "double", "default": "3.0",
                                      "range": ["0.5", "10"]}, "params with the declared range")
             check([p["type"] for p in s["params"]] == ["double", "double", "bool"], "param types")
+            t = s["timings"]
+            # Processor times of the build's commands (0 for a cached program) and of the run.
+            check(t.get("build_cpu", -1) >= 0 and 0 < t.get("grow_cpu", 0) < 8 and
+                  t["grow_cpu"] <= t["grow"] * 2 + 0.05,
+                  "timings carry the build's and the run's processor time: %s" % t)
             code, first_svg, ctype = server.get("/render.svg")
             check(code == 200 and ctype.startswith("image/svg+xml") and b"<svg" in first_svg,
                   "/render.svg serves the render")
