@@ -48,6 +48,11 @@ constexpr std::size_t kDebugCandidates = 1'000'000;
 constexpr long kProgressEvery = 1000;
 // Under symmetry, commits of up to this many elements enter the field image by image.
 constexpr std::size_t kOneByOne = 16;
+// The ornament's near zone under symmetry: the cells of 8 x 8 pixels within this many cells of
+// a pixel of the fundamental domain. Images farther away are indexed only when a query reaches
+// them.
+constexpr int kNearCellShift = 3;
+constexpr int kNearCells = 4;
 
 std::string format_number(double v) {
     char buf[64];
@@ -62,6 +67,32 @@ struct Setup {
     GrowthOptions options;
     std::optional<TranslationSetup> translations;
 };
+
+// The cells of 8 x 8 pixels within kNearCells cells of a pixel of `domain`, row by row, on
+// the grid's cells widened by kNearCells on every side (the first at the grid's corner less
+// kNearCells cells); empty without a domain.
+std::vector<bool> near_zone(const GridFrame& g, const std::vector<std::uint8_t>& domain) {
+    if (domain.empty()) return {};
+    const int pad = kNearCells;
+    const int cw = ((g.width - 1) >> kNearCellShift) + 1 + 2 * pad;
+    const int ch = ((g.height - 1) >> kNearCellShift) + 1 + 2 * pad;
+    std::vector<bool> in(static_cast<std::size_t>(cw) * ch, false);
+    for (int j = 0; j < g.height; ++j)
+        for (int i = 0; i < g.width; ++i)
+            if (domain[static_cast<std::size_t>(j) * g.width + i])
+                in[static_cast<std::size_t>((j >> kNearCellShift) + pad) * cw +
+                   (i >> kNearCellShift) + pad] = true;
+    std::vector<bool> out(in.size(), false);
+    for (int j = 0; j < ch; ++j)
+        for (int i = 0; i < cw; ++i) {
+            if (!in[static_cast<std::size_t>(j) * cw + i]) continue;
+            for (int y = std::max(0, j - kNearCells); y <= std::min(ch - 1, j + kNearCells); ++y)
+                for (int x = std::max(0, i - kNearCells); x <= std::min(cw - 1, i + kNearCells);
+                     ++x)
+                    out[static_cast<std::size_t>(y) * cw + x] = true;
+        }
+    return out;
+}
 
 Setup set_up(const Region& region, GrowthOptions options) {
     const int groups =
@@ -113,15 +144,26 @@ struct GrowthEngine::Impl {
             raster.add_boundary(pixels_outside_core(raster, *group));
             core_region = &region;  // images may leave it
         }
+        if (!near_cells.empty()) {
+            const GridFrame& g = raster.grid();
+            const double cell = g.pixel * (1 << kNearCellShift);
+            ornament.set_near_zone({g.x0 - kNearCells * cell, g.y0 - kNearCells * cell}, cell,
+                                   ((g.width - 1) >> kNearCellShift) + 1 + 2 * kNearCells,
+                                   near_cells);
+            near_cells.clear();
+        }
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
     }
 
     std::unique_ptr<SymmetryGroup> make_group() const;
-    std::unique_ptr<CircleSource> make_source() const {
+    std::unique_ptr<CircleSource> make_source() {
         CircleSourceOptions o{options.distance, min_radius, options.lazy_field_pixels, {}};
         if (group) o.centres = domain_pixels(raster.grid(), *group);
+        // With translations every kept image is checked against the placed elements
+        // (placeable_orbits()): queries reach all over the box, and nothing would be deferred.
+        if (group && group->rosette()) near_cells = near_zone(raster.grid(), o.centres);
         return options.reference_engine ? reference_circle_source(raster, o)
                                         : incremental_circle_source(raster, o);
     }
@@ -157,6 +199,7 @@ struct GrowthEngine::Impl {
     std::unique_ptr<SymmetryGroup> group;  // null without --symmetry
     // The region when an image may leave it; null when the group maps it onto itself.
     const Region* core_region = nullptr;
+    std::vector<bool> near_cells;  // the ornament's near zone (make_source())
     std::unique_ptr<CircleSource> circles;
     ExcludeList exclude;
     Ornament ornament;
@@ -207,10 +250,15 @@ std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal) const {
     const double moved = distance(on_mirror, goal.center);
     if (moved > tol && moved < goal.radius) bases.push_back({on_mirror, goal.radius - moved});
     std::vector<Circle> out = bases;
+    // Each base's clearance once (it measures every transformation of the group).
+    std::vector<double> clear;
+    for (const Circle& c : bases)
+        clear.push_back(std::min(c.radius, group->clearance(c.center, tol)));
     double scale = 1;
     for (int halvings = 0; halvings <= 8; ++halvings, scale /= 2)
-        for (const Circle& c : bases) {
-            const double r = std::min(c.radius, group->clearance(c.center, tol)) * scale;
+        for (std::size_t k = 0; k < bases.size(); ++k) {
+            const Circle& c = bases[k];
+            const double r = clear[k] * scale;
             if (r < c.radius && (halvings == 0 || r >= min_radius)) out.push_back({c.center, r});
         }
     return out;
@@ -334,7 +382,7 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     // time, each a local update, not as one placement spanning the grid (a bulk placement of a
     // library still goes in one).
     const bool one_by_one = group && placed > count && count <= kOneByOne;
-    for (Element* e : ornament.add_all(std::move(children))) {
+    for (Element* e : ornament.add_all(std::move(children), group ? count : placed)) {
         raster.add_element(*e, fresh);
         if (can_parent(*e)) ++parents_left;
         if (one_by_one) {
@@ -446,9 +494,13 @@ std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     if (!std::isfinite(r)) return std::nullopt;
     const double boundary_floor =
         circles->boundary_radius_pixels(found.pixel) * raster.grid().pixel;
-    const double boundary = core_region ? core_distance_to_boundary(region, *group, c.center)
-                                        : region.distance_to_boundary(c.center);
-    if (boundary_floor < r && boundary <= r) return std::nullopt;
+    // The exact distance (lib2geom's nearest points, per image of the centre when the core
+    // differs) only when the raster's floor leaves it open.
+    if (boundary_floor < r) {
+        const double boundary = core_region ? core_distance_to_boundary(region, *group, c.center)
+                                            : region.distance_to_boundary(c.center);
+        if (boundary <= r) return std::nullopt;
+    }
     c.radius = r;
     return c;
 }

@@ -175,14 +175,17 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     std::vector<Isometry> transforms;
     bool fixed = false;  // some image coincides with e
     const auto& g = group.transforms();
+    if (g.size() < 2) return {};
+    // Each image is tried in one scratch element; only those kept are built.
+    ImageElement scratch(e, g[1]);
     for (std::size_t k = 1; k < g.size(); ++k) {
-        auto image = std::make_unique<ImageElement>(e, g[k]);
-        if (same_place(*image, e, tolerance)) {
+        if (k > 1) scratch.set_transform(g[k]);
+        if (same_place(scratch, e, tolerance)) {
             fixed = true;
             continue;
         }
-        if (!group.keeps(*image, tolerance)) continue;  // beyond a frieze's ends or the window
-        images.push_back(std::move(image));
+        if (!group.keeps(scratch, tolerance)) continue;  // beyond a frieze's ends or the window
+        images.push_back(std::make_unique<ImageElement>(e, g[k]));
         transforms.push_back(g[k]);
     }
     Orbit out;
