@@ -185,6 +185,7 @@ struct GrowthEngine::Impl {
     EmptyCircle goal_found;  // the circle find_goal() refined last
     // C's centre and its distinct images (C's centre alone without symmetry).
     std::vector<Point> orbit_of_point(Point p) const;
+    PixelBox pixel_box(const Element& e) const;
     std::optional<Point> roomiest_in_domain() const;
     void sync_exclude_clears();
     Flow call_exhausted();
@@ -319,6 +320,24 @@ std::optional<Point> GrowthEngine::Impl::roomiest_in_domain() const {
     return best;
 }
 
+// The pixels (inclusive) an element may cover, with two pixels to spare; clamped far beyond
+// the grid.
+PixelBox GrowthEngine::Impl::pixel_box(const Element& e) const {
+    const GridFrame& g = raster.grid();
+    Rect b{1e300, 1e300, -1e300, -1e300};
+    for (std::size_t k = 0; k < e.proxy_count(); ++k) {
+        const Rect p = e.proxy(k).bounds();
+        b = {std::min(b.x0, p.x0), std::min(b.y0, p.y0), std::max(b.x1, p.x1),
+             std::max(b.y1, p.y1)};
+    }
+    auto at = [&](double v, double origin, int size, int spare) {
+        const double i = std::floor((v - origin) / g.pixel) + spare;
+        return static_cast<int>(std::clamp(i, -2.0 - size, 2.0 + 2 * size));
+    };
+    return {at(b.x0, g.x0, g.width, -2), at(b.y0, g.y0, g.height, -2), at(b.x1, g.x0, g.width, 2),
+            at(b.y1, g.y0, g.height, 2)};
+}
+
 std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
     std::vector<Point> out{p};
     if (!group) return out;
@@ -382,7 +401,12 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     // time, each a local update, not as one placement spanning the grid (a bulk placement of a
     // library still goes in one).
     const bool one_by_one = group && placed > count && count <= kOneByOne;
+    std::size_t n = 0;
     for (Element* e : ornament.add_all(std::move(children), group ? count : placed)) {
+        // An image too far from the fundamental domain to change a distance read there stays
+        // out of the buffer (it is in the ornament, for the queries and the output); a debug
+        // frame shows the buffer, so with one every image goes in.
+        if (n++ >= count && !debug_callback && !circles->may_change(pixel_box(*e))) continue;
         raster.add_element(*e, fresh);
         if (can_parent(*e)) ++parents_left;
         if (one_by_one) {
