@@ -179,7 +179,7 @@ struct GrowthEngine::Impl {
     bool any_parent_left();
     void iterate(const Circle& goal);
     bool commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
-    std::vector<Circle> rule_goals(const Circle& goal) const;
+    std::vector<Circle> rule_goals(const Circle& goal, Point toward, std::size_t* clear_from) const;
     bool second_seed();
     bool tried_second_seed = false;
     EmptyCircle goal_found;  // the circle find_goal() refined last
@@ -240,28 +240,40 @@ std::unique_ptr<SymmetryGroup> GrowthEngine::Impl::make_group() const {
 }
 
 // The circles a rule is offered in turn under symmetry, each inside C (so as empty): C itself
-// and (dN) C's largest circle centred on the nearest mirror; then both shrunk to clear their own
-// images, and halved again and again down to the minimum radius (at most 8 times). Children
-// that clash with their images on one (or a rule that failed because intersection() found such
-// a clash) try the next.
-std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal) const {
+// and C's largest circle centred on the nearest mirror; then both shrunk to clear their own
+// images, and halved again and again down to the minimum radius (at most 8 times); last, from
+// `*clear_from` on, C's largest circles clear of their own images on and off the mirrors (on
+// the side of `toward`, the parent: beside a rotation centre, where C holds only an element
+// whose images coincide with it), each halved likewise. Children that clash with their images
+// on one (or a rule that failed because intersection() found such a clash) try the next.
+std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal, Point toward,
+                                                   std::size_t* clear_from) const {
     const double tol = ornament.tolerance();
     std::vector<Circle> bases{goal};
     const Point on_mirror = group->snap(goal.center, goal.radius);
     const double moved = distance(on_mirror, goal.center);
     if (moved > tol && moved < goal.radius) bases.push_back({on_mirror, goal.radius - moved});
     std::vector<Circle> out = bases;
-    // Each base's clearance once (it measures every transformation of the group).
-    std::vector<double> clear;
-    for (const Circle& c : bases)
-        clear.push_back(std::min(c.radius, group->clearance(c.center, tol)));
-    double scale = 1;
-    for (int halvings = 0; halvings <= 8; ++halvings, scale /= 2)
-        for (std::size_t k = 0; k < bases.size(); ++k) {
-            const Circle& c = bases[k];
-            const double r = clear[k] * scale;
-            if (r < c.radius && (halvings == 0 || r >= min_radius)) out.push_back({c.center, r});
-        }
+    auto halve = [&](const std::vector<Circle>& from) {
+        // Each circle's clearance once (it measures every transformation of the group).
+        std::vector<double> reach;
+        for (const Circle& c : from)
+            reach.push_back(std::min(c.radius, group->clearance(c.center, tol)));
+        double scale = 1;
+        for (int halvings = 0; halvings <= 8; ++halvings, scale /= 2)
+            for (std::size_t k = 0; k < from.size(); ++k) {
+                const double r = reach[k] * scale;
+                if (r < from[k].radius && (halvings == 0 || r >= min_radius))
+                    out.push_back({from[k].center, r});
+            }
+    };
+    halve(bases);
+    *clear_from = out.size();
+    std::vector<Circle> clear;
+    for (const Circle& c : group->clear_circles_in(goal, toward, tol))
+        if (c.radius >= min_radius) clear.push_back(c);
+    out.insert(out.end(), clear.begin(), clear.end());
+    halve(clear);
     return out;
 }
 
@@ -635,13 +647,16 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
             if (parent->sterile) break;  // a failed rule may have made it sterile
             const RuleInfo& rule = pattern.rules[static_cast<std::size_t>(r)];
             // Under symmetry a success whose children clash with their images is tried again
-            // on smaller circles inside C (rule_goals()); without, the one goal.
-            const std::vector<Circle> tries =
-                group ? rule_goals(goals[n]) : std::vector<Circle>{goal};
-            for (const Circle& tried : tries) {
+            // on smaller circles inside C (rule_goals(), made only then: most rules succeed
+            // or fail on C itself); without, the one goal.
+            std::vector<Circle> tries{group ? goals[n] : goal};
+            std::size_t clear_from = 1;
+            for (std::size_t t = 0; t < tries.size(); ++t) {
                 if (parent->sterile) break;
+                const Circle tried = tries[t];
                 env.set_goal(tried);
                 const long refusals = env.orbit_refusals();
+                const bool was_sterile = parent->sterile;
                 Result result = FAILURE;
                 std::vector<std::unique_ptr<Element>> children;
                 {
@@ -651,13 +666,27 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                     if (result == SUCCESS) children = call.take_children();
                 }
                 sync_exclude_clears();
-                // A failure the element's own images did not cause is the rule's answer.
-                if (result != SUCCESS && env.orbit_refusals() == refusals) break;
+                // A failure the element's own images did not cause is the rule's answer for C
+                // and the circles about its centre or on its mirror; the circles beside them
+                // (clear_from on) are tried still, each for itself.
+                if (result != SUCCESS && env.orbit_refusals() == refusals) {
+                    if (t == 0) break;
+                    if (t < clear_from) t = clear_from - 1;
+                    continue;
+                }
                 if (result == SUCCESS && commit(std::move(children), parent)) {
                     success = true;
                     break;
                 }
                 clashed = true;
+                // The success did not happen: a rule that made its parent sterile with it (a
+                // seed's one rule) has not used it up.
+                if (result == SUCCESS) parent->sterile = was_sterile;
+                if (group && t == 0) {
+                    const std::vector<Circle> more =
+                        rule_goals(tried, parent->proxy(0).bounds().center(), &clear_from);
+                    tries.insert(tries.end(), more.begin() + 1, more.end());
+                }
             }
             if (success) {
                 ++stats.rules[static_cast<std::size_t>(r)].successes;
