@@ -4,9 +4,9 @@
 // with period 250) and wallpaper groups (wallpaper:G, on a tile 500 x 500, 500,500,60 for the
 // hexagonal ones) are measured against growth without symmetry on the same band or tile. Prints a
 // table on stderr and, last, one JSON object: per group the elements (images included), the
-// fundamental ones, the seconds of the engine's construction and growth, the cost per fundamental
-// element and per placed element, and both as a ratio to the cost per element without symmetry (the
-// issue asks 1.5 per fundamental element).
+// fundamental ones, the seconds of the engine's construction and growth, a hash of the tree, the
+// cost per fundamental element and per placed element, and both as a ratio to the cost per
+// element without symmetry (the issue asks 1.5 per fundamental element).
 //
 //   bench_symmetry [--runs N] [--resolution PX] [--groups none,c6,frieze:p2mg,wallpaper:p4m...]
 //
@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -35,6 +36,7 @@ struct Result {
     std::string panel;  // disc, band, tile, tile60
     long elements = 0, fundamental = 0;
     std::vector<double> seconds;
+    std::uint64_t tree_hash = 0;  // of the last run's tree: ids, parents, proxy bounds
 };
 
 bool hexagonal(const std::string& name) {
@@ -71,6 +73,25 @@ void grow(Result& r, int resolution) {
     r.fundamental = 0;
     for (const acanthus::Element* e : elements)
         if (!acanthus::detail::as_image(*e)) ++r.fundamental;
+    // FNV-1a over each element's id, parent and the bits of its proxies' bounds: the same
+    // growth gives the same hash (a change that should not alter the trees is checked so).
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&](std::uint64_t v) {
+        for (int k = 0; k < 8; ++k) h = (h ^ ((v >> (8 * k)) & 0xff)) * 1099511628211ull;
+    };
+    for (const acanthus::Element* e : elements) {
+        mix(static_cast<std::uint64_t>(e->id));
+        mix(static_cast<std::uint64_t>(e->parent ? e->parent->id : -1));
+        for (std::size_t k = 0; k < e->proxy_count(); ++k) {
+            const acanthus::Rect b = e->proxy(k).bounds();
+            for (double v : {b.x0, b.y0, b.x1, b.y1}) {
+                std::uint64_t bits;
+                std::memcpy(&bits, &v, sizeof bits);
+                mix(bits);
+            }
+        }
+    }
+    r.tree_hash = h;
 }
 
 double median(std::vector<double> v) {
@@ -143,9 +164,10 @@ int main(int argc, char** argv) {
         char line[512];
         std::snprintf(line, sizeof line,
                       "%s{\"group\":\"%s\",\"panel\":\"%s\",\"elements\":%ld,\"fundamental\":%ld,"
-                      "\"seconds\":%.4f,"
+                      "\"seconds\":%.4f,\"tree_hash\":\"%016llx\","
                       "\"per_fundamental_ratio\":%s,\"per_element_ratio\":%s}",
                       k ? "," : "", r.group.c_str(), r.panel.c_str(), r.elements, r.fundamental, s,
+                      static_cast<unsigned long long>(r.tree_hash),
                       json_number(per_fundamental / base).c_str(),
                       json_number(per_element / base).c_str());
         json += line;

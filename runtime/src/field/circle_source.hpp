@@ -15,6 +15,7 @@
 #include "field/circle_blocker.hpp"
 #include "field/empty_circle_finder.hpp"
 #include "field/raster_buffer.hpp"
+#include "field/witness.hpp"
 
 namespace acanthus::detail {
 
@@ -39,6 +40,13 @@ class CircleSource {
     virtual double boundary_radius_pixels(int pixel) const = 0;
     // Up to `limit` eligible circles, best first, blocked or not (debug frames).
     virtual std::vector<Circle> candidate_circles(std::size_t limit) = 0;
+    // False when element sites within the box (pixels, inclusive, possibly beyond the grid)
+    // could change no distance the source reads: under symmetry, an image far from the
+    // fundamental domain need not enter the buffer. True when the source cannot tell.
+    virtual bool may_change(const PixelBox& box) const {
+        (void)box;
+        return true;
+    }
 };
 
 struct CircleSourceOptions {

@@ -52,6 +52,13 @@ class IncrementalCircleSource final : public FieldCircleSource {
         return finder_.find(blocker);
     }
 
+    // The lazy far field's bounds: sites no nearer to a kept block than its largest distance
+    // lower nothing (defer() would hold them nowhere). Bounds only fall, so such sites never
+    // matter later either, nor to a recomputation of the kept blocks.
+    bool may_change(const PixelBox& box) const override {
+        return !field_.lazy() || field_.far_blocks().may_lower(box);
+    }
+
     void release(const std::vector<int>& ids) override { finder_.release(ids); }
     void release_all() override { finder_.release_all(); }
 

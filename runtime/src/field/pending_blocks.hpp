@@ -46,6 +46,10 @@ class PendingBlocks {
 
     // Keeps `sites` pending in every block they may lower (nearer to them than its bound).
     void defer(const std::vector<int>& sites);
+    // Whether sites within the box (pixels, inclusive) could lower a distance kept here:
+    // defer()'s tests of groups and blocks, on the box. False only when no site there could.
+    // True before the first reset().
+    bool may_lower(const PixelBox& box) const;
 
     // A tile is trusted when it and its 8 neighbours hold exact distances: every pixel of it
     // and the pixels round it.

@@ -48,6 +48,11 @@ constexpr std::size_t kDebugCandidates = 1'000'000;
 constexpr long kProgressEvery = 1000;
 // Under symmetry, commits of up to this many elements enter the field image by image.
 constexpr std::size_t kOneByOne = 16;
+// The ornament's near zone under symmetry: the cells of 8 x 8 pixels within this many cells of
+// a pixel of the fundamental domain. Images farther away are indexed only when a query reaches
+// them.
+constexpr int kNearCellShift = 3;
+constexpr int kNearCells = 4;
 
 std::string format_number(double v) {
     char buf[64];
@@ -62,6 +67,32 @@ struct Setup {
     GrowthOptions options;
     std::optional<TranslationSetup> translations;
 };
+
+// The cells of 8 x 8 pixels within kNearCells cells of a pixel of `domain`, row by row, on
+// the grid's cells widened by kNearCells on every side (the first at the grid's corner less
+// kNearCells cells); empty without a domain.
+std::vector<bool> near_zone(const GridFrame& g, const std::vector<std::uint8_t>& domain) {
+    if (domain.empty()) return {};
+    const int pad = kNearCells;
+    const int cw = ((g.width - 1) >> kNearCellShift) + 1 + 2 * pad;
+    const int ch = ((g.height - 1) >> kNearCellShift) + 1 + 2 * pad;
+    std::vector<bool> in(static_cast<std::size_t>(cw) * ch, false);
+    for (int j = 0; j < g.height; ++j)
+        for (int i = 0; i < g.width; ++i)
+            if (domain[static_cast<std::size_t>(j) * g.width + i])
+                in[static_cast<std::size_t>((j >> kNearCellShift) + pad) * cw +
+                   (i >> kNearCellShift) + pad] = true;
+    std::vector<bool> out(in.size(), false);
+    for (int j = 0; j < ch; ++j)
+        for (int i = 0; i < cw; ++i) {
+            if (!in[static_cast<std::size_t>(j) * cw + i]) continue;
+            for (int y = std::max(0, j - kNearCells); y <= std::min(ch - 1, j + kNearCells); ++y)
+                for (int x = std::max(0, i - kNearCells); x <= std::min(cw - 1, i + kNearCells);
+                     ++x)
+                    out[static_cast<std::size_t>(y) * cw + x] = true;
+        }
+    return out;
+}
 
 Setup set_up(const Region& region, GrowthOptions options) {
     const int groups =
@@ -113,15 +144,26 @@ struct GrowthEngine::Impl {
             raster.add_boundary(pixels_outside_core(raster, *group));
             core_region = &region;  // images may leave it
         }
+        if (!near_cells.empty()) {
+            const GridFrame& g = raster.grid();
+            const double cell = g.pixel * (1 << kNearCellShift);
+            ornament.set_near_zone({g.x0 - kNearCells * cell, g.y0 - kNearCells * cell}, cell,
+                                   ((g.width - 1) >> kNearCellShift) + 1 + 2 * kNearCells,
+                                   near_cells);
+            near_cells.clear();
+        }
         stats.rules.resize(pattern.rules.size());
         for (std::size_t k = 0; k < pattern.rules.size(); ++k)
             rules_by_parent[pattern.rules[k].parent].push_back(static_cast<int>(k));
     }
 
     std::unique_ptr<SymmetryGroup> make_group() const;
-    std::unique_ptr<CircleSource> make_source() const {
+    std::unique_ptr<CircleSource> make_source() {
         CircleSourceOptions o{options.distance, min_radius, options.lazy_field_pixels, {}};
         if (group) o.centres = domain_pixels(raster.grid(), *group);
+        // With translations every kept image is checked against the placed elements
+        // (placeable_orbits()): queries reach all over the box, and nothing would be deferred.
+        if (group && group->rosette()) near_cells = near_zone(raster.grid(), o.centres);
         return options.reference_engine ? reference_circle_source(raster, o)
                                         : incremental_circle_source(raster, o);
     }
@@ -137,12 +179,13 @@ struct GrowthEngine::Impl {
     bool any_parent_left();
     void iterate(const Circle& goal);
     bool commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
-    std::vector<Circle> rule_goals(const Circle& goal) const;
+    std::vector<Circle> rule_goals(const Circle& goal, Point toward, std::size_t* clear_from) const;
     bool second_seed();
     bool tried_second_seed = false;
     EmptyCircle goal_found;  // the circle find_goal() refined last
     // C's centre and its distinct images (C's centre alone without symmetry).
     std::vector<Point> orbit_of_point(Point p) const;
+    PixelBox pixel_box(const Element& e) const;
     std::optional<Point> roomiest_in_domain() const;
     void sync_exclude_clears();
     Flow call_exhausted();
@@ -157,6 +200,7 @@ struct GrowthEngine::Impl {
     std::unique_ptr<SymmetryGroup> group;  // null without --symmetry
     // The region when an image may leave it; null when the group maps it onto itself.
     const Region* core_region = nullptr;
+    std::vector<bool> near_cells;  // the ornament's near zone (make_source())
     std::unique_ptr<CircleSource> circles;
     ExcludeList exclude;
     Ornament ornament;
@@ -196,23 +240,40 @@ std::unique_ptr<SymmetryGroup> GrowthEngine::Impl::make_group() const {
 }
 
 // The circles a rule is offered in turn under symmetry, each inside C (so as empty): C itself
-// and (dN) C's largest circle centred on the nearest mirror; then both shrunk to clear their own
-// images, and halved again and again down to the minimum radius (at most 8 times). Children
-// that clash with their images on one (or a rule that failed because intersection() found such
-// a clash) try the next.
-std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal) const {
+// and C's largest circle centred on the nearest mirror; then both shrunk to clear their own
+// images, and halved again and again down to the minimum radius (at most 8 times); last, from
+// `*clear_from` on, C's largest circles clear of their own images on and off the mirrors (on
+// the side of `toward`, the parent: beside a rotation centre, where C holds only an element
+// whose images coincide with it), each halved likewise. Children that clash with their images
+// on one (or a rule that failed because intersection() found such a clash) try the next.
+std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal, Point toward,
+                                                   std::size_t* clear_from) const {
     const double tol = ornament.tolerance();
     std::vector<Circle> bases{goal};
     const Point on_mirror = group->snap(goal.center, goal.radius);
     const double moved = distance(on_mirror, goal.center);
     if (moved > tol && moved < goal.radius) bases.push_back({on_mirror, goal.radius - moved});
     std::vector<Circle> out = bases;
-    double scale = 1;
-    for (int halvings = 0; halvings <= 8; ++halvings, scale /= 2)
-        for (const Circle& c : bases) {
-            const double r = std::min(c.radius, group->clearance(c.center, tol)) * scale;
-            if (r < c.radius && (halvings == 0 || r >= min_radius)) out.push_back({c.center, r});
-        }
+    auto halve = [&](const std::vector<Circle>& from) {
+        // Each circle's clearance once (it measures every transformation of the group).
+        std::vector<double> reach;
+        for (const Circle& c : from)
+            reach.push_back(std::min(c.radius, group->clearance(c.center, tol)));
+        double scale = 1;
+        for (int halvings = 0; halvings <= 8; ++halvings, scale /= 2)
+            for (std::size_t k = 0; k < from.size(); ++k) {
+                const double r = reach[k] * scale;
+                if (r < from[k].radius && (halvings == 0 || r >= min_radius))
+                    out.push_back({from[k].center, r});
+            }
+    };
+    halve(bases);
+    *clear_from = out.size();
+    std::vector<Circle> clear;
+    for (const Circle& c : group->clear_circles_in(goal, toward, tol))
+        if (c.radius >= min_radius) clear.push_back(c);
+    out.insert(out.end(), clear.begin(), clear.end());
+    halve(clear);
     return out;
 }
 
@@ -269,6 +330,24 @@ std::optional<Point> GrowthEngine::Impl::roomiest_in_domain() const {
             }
         }
     return best;
+}
+
+// The pixels (inclusive) an element may cover, with two pixels to spare; clamped far beyond
+// the grid.
+PixelBox GrowthEngine::Impl::pixel_box(const Element& e) const {
+    const GridFrame& g = raster.grid();
+    Rect b{1e300, 1e300, -1e300, -1e300};
+    for (std::size_t k = 0; k < e.proxy_count(); ++k) {
+        const Rect p = e.proxy(k).bounds();
+        b = {std::min(b.x0, p.x0), std::min(b.y0, p.y0), std::max(b.x1, p.x1),
+             std::max(b.y1, p.y1)};
+    }
+    auto at = [&](double v, double origin, int size, int spare) {
+        const double i = std::floor((v - origin) / g.pixel) + spare;
+        return static_cast<int>(std::clamp(i, -2.0 - size, 2.0 + 2 * size));
+    };
+    return {at(b.x0, g.x0, g.width, -2), at(b.y0, g.y0, g.height, -2), at(b.x1, g.x0, g.width, 2),
+            at(b.y1, g.y0, g.height, 2)};
 }
 
 std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
@@ -334,7 +413,12 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     // time, each a local update, not as one placement spanning the grid (a bulk placement of a
     // library still goes in one).
     const bool one_by_one = group && placed > count && count <= kOneByOne;
-    for (Element* e : ornament.add_all(std::move(children))) {
+    std::size_t n = 0;
+    for (Element* e : ornament.add_all(std::move(children), group ? count : placed)) {
+        // An image too far from the fundamental domain to change a distance read there stays
+        // out of the buffer (it is in the ornament, for the queries and the output); a debug
+        // frame shows the buffer, so with one every image goes in.
+        if (n++ >= count && !debug_callback && !circles->may_change(pixel_box(*e))) continue;
         raster.add_element(*e, fresh);
         if (can_parent(*e)) ++parents_left;
         if (one_by_one) {
@@ -446,9 +530,13 @@ std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     if (!std::isfinite(r)) return std::nullopt;
     const double boundary_floor =
         circles->boundary_radius_pixels(found.pixel) * raster.grid().pixel;
-    const double boundary = core_region ? core_distance_to_boundary(region, *group, c.center)
-                                        : region.distance_to_boundary(c.center);
-    if (boundary_floor < r && boundary <= r) return std::nullopt;
+    // The exact distance (lib2geom's nearest points, per image of the centre when the core
+    // differs) only when the raster's floor leaves it open.
+    if (boundary_floor < r) {
+        const double boundary = core_region ? core_distance_to_boundary(region, *group, c.center)
+                                            : region.distance_to_boundary(c.center);
+        if (boundary <= r) return std::nullopt;
+    }
     c.radius = r;
     return c;
 }
@@ -559,13 +647,16 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
             if (parent->sterile) break;  // a failed rule may have made it sterile
             const RuleInfo& rule = pattern.rules[static_cast<std::size_t>(r)];
             // Under symmetry a success whose children clash with their images is tried again
-            // on smaller circles inside C (rule_goals()); without, the one goal.
-            const std::vector<Circle> tries =
-                group ? rule_goals(goals[n]) : std::vector<Circle>{goal};
-            for (const Circle& tried : tries) {
+            // on smaller circles inside C (rule_goals(), made only then: most rules succeed
+            // or fail on C itself); without, the one goal.
+            std::vector<Circle> tries{group ? goals[n] : goal};
+            std::size_t clear_from = 1;
+            for (std::size_t t = 0; t < tries.size(); ++t) {
                 if (parent->sterile) break;
+                const Circle tried = tries[t];
                 env.set_goal(tried);
                 const long refusals = env.orbit_refusals();
+                const bool was_sterile = parent->sterile;
                 Result result = FAILURE;
                 std::vector<std::unique_ptr<Element>> children;
                 {
@@ -575,13 +666,27 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                     if (result == SUCCESS) children = call.take_children();
                 }
                 sync_exclude_clears();
-                // A failure the element's own images did not cause is the rule's answer.
-                if (result != SUCCESS && env.orbit_refusals() == refusals) break;
+                // A failure the element's own images did not cause is the rule's answer for C
+                // and the circles about its centre or on its mirror; the circles beside them
+                // (clear_from on) are tried still, each for itself.
+                if (result != SUCCESS && env.orbit_refusals() == refusals) {
+                    if (t == 0) break;
+                    if (t < clear_from) t = clear_from - 1;
+                    continue;
+                }
                 if (result == SUCCESS && commit(std::move(children), parent)) {
                     success = true;
                     break;
                 }
                 clashed = true;
+                // The success did not happen: a rule that made its parent sterile with it (a
+                // seed's one rule) has not used it up.
+                if (result == SUCCESS) parent->sterile = was_sterile;
+                if (group && t == 0) {
+                    const std::vector<Circle> more =
+                        rule_goals(tried, parent->proxy(0).bounds().center(), &clear_from);
+                    tries.insert(tries.end(), more.begin() + 1, more.end());
+                }
             }
             if (success) {
                 ++stats.rules[static_cast<std::size_t>(r)].successes;

@@ -21,10 +21,94 @@ Element& Ornament::add(std::unique_ptr<Element> e) {
     return *elements_.back();
 }
 
-std::vector<Element*> Ornament::add_all(std::vector<std::unique_ptr<Element>> elements) {
+namespace {
+Rect bounds_of(const Element& e) {
+    Rect b{1e300, 1e300, -1e300, -1e300};
+    for (std::size_t k = 0; k < e.proxy_count(); ++k) {
+        const Rect p = e.proxy(k).bounds();
+        b = {std::min(b.x0, p.x0), std::min(b.y0, p.y0), std::max(b.x1, p.x1),
+             std::max(b.y1, p.y1)};
+    }
+    return b;
+}
+}  // namespace
+
+int Ornament::Zone::count(int i0, int j0, int i1, int j1) const {
+    i0 = std::max(i0, 0);
+    j0 = std::max(j0, 0);
+    i1 = std::min(i1, columns - 1);
+    j1 = std::min(j1, rows - 1);
+    if (i0 > i1 || j0 > j1) return 0;
+    const int w = columns + 1;
+    auto at = [&](int i, int j) { return sums[static_cast<std::size_t>(j * w + i)]; };
+    return at(i1 + 1, j1 + 1) - at(i0, j1 + 1) - at(i1 + 1, j0) + at(i0, j0);
+}
+
+// Cell ranges of a box, widened by a cell (floating-point slack at the cells' edges).
+bool Ornament::Zone::covers(const Rect& b) const {
+    if (sums.empty() || !(b.x0 <= b.x1 && b.y0 <= b.y1)) return false;
+    const double i0 = std::floor((b.x0 - origin.x) / cell) - 1,
+                 i1 = std::floor((b.x1 - origin.x) / cell) + 1,
+                 j0 = std::floor((b.y0 - origin.y) / cell) - 1,
+                 j1 = std::floor((b.y1 - origin.y) / cell) + 1;
+    if (i0 < 0 || j0 < 0 || i1 >= columns || j1 >= rows) return false;
+    const int n = count(static_cast<int>(i0), static_cast<int>(j0), static_cast<int>(i1),
+                        static_cast<int>(j1));
+    return n == static_cast<int>((i1 - i0 + 1) * (j1 - j0 + 1));
+}
+
+bool Ornament::Zone::meets(const Rect& b) const {
+    if (sums.empty() || !(b.x0 <= b.x1 && b.y0 <= b.y1)) return true;
+    const double lo = -1e9, hi = 1e9;  // (clamped before the conversion to int)
+    auto cell_of = [&](double v, double o) {
+        return static_cast<int>(std::clamp(std::floor((v - o) / cell), lo, hi));
+    };
+    return count(cell_of(b.x0, origin.x) - 1, cell_of(b.y0, origin.y) - 1,
+                 cell_of(b.x1, origin.x) + 1, cell_of(b.y1, origin.y) + 1) > 0;
+}
+
+void Ornament::set_near_zone(Point origin, double cell, int columns,
+                             const std::vector<bool>& cells) {
+    zone_ = Zone{};
+    if (columns <= 0 || cells.empty() || !(cell > 0)) return;
+    const int rows = static_cast<int>(cells.size() / static_cast<std::size_t>(columns));
+    zone_.origin = origin;
+    zone_.cell = cell;
+    zone_.columns = columns;
+    zone_.rows = rows;
+    const int w = columns + 1;
+    zone_.sums.assign(static_cast<std::size_t>(w) * (rows + 1), 0);
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < columns; ++i) {
+            const auto at = [&](int x, int y) -> int& {
+                return zone_.sums[static_cast<std::size_t>(y * w + x)];
+            };
+            at(i + 1, j + 1) = at(i, j + 1) + at(i + 1, j) - at(i, j) +
+                               (cells[static_cast<std::size_t>(j * columns + i)] ? 1 : 0);
+        }
+}
+
+void Ornament::cover(const Rect& box) const {
+    if (deferred_.empty() || zone_.covers(box)) return;
+    std::vector<std::pair<SpatialIndex::Entry, Rect>> entries;
+    for (int id : deferred_) {
+        const Element& e = at(id);
+        for (std::size_t k = 0; k < e.proxy_count(); ++k)
+            entries.push_back({{id, static_cast<int>(k)}, e.proxy(k).bounds()});
+    }
+    deferred_.clear();
+    index_.insert_all(entries);
+}
+
+std::vector<Element*> Ornament::add_all(std::vector<std::unique_ptr<Element>> elements,
+                                        std::size_t deferrable_from) {
     std::vector<std::pair<SpatialIndex::Entry, Rect>> entries;
     for (std::size_t n = 0; n < elements.size(); ++n) {
         const int id = static_cast<int>(elements_.size() + n);
+        if (n >= deferrable_from && !zone_.sums.empty() && !zone_.meets(bounds_of(*elements[n]))) {
+            deferred_.push_back(id);
+            continue;
+        }
         for (std::size_t k = 0; k < elements[n]->proxy_count(); ++k)
             entries.push_back({{id, static_cast<int>(k)}, elements[n]->proxy(k).bounds()});
     }
@@ -76,6 +160,7 @@ std::vector<std::pair<Element*, double>> Ornament::nearest_within(Point p, doubl
         r = likely > r ? std::min(4 * r, likely) : 4 * r;
     }
     // Elements far outside the region: the general search.
+    cover({-1e300, -1e300, 1e300, 1e300});
     const auto hit = index_.nearest_entry(p, [&](detail::SpatialIndex::Entry en) {
         return distance_to(at(en.element).proxy(static_cast<std::size_t>(en.proxy)), p);
     });
@@ -85,6 +170,7 @@ std::vector<std::pair<Element*, double>> Ornament::nearest_within(Point p, doubl
 
 std::vector<std::pair<Element*, double>> Ornament::within(Point p, double radius) const {
     std::vector<std::pair<Element*, double>> out;
+    cover({p.x - radius, p.y - radius, p.x + radius, p.y + radius});
     // Entries come sorted by (element, proxy): one distance per element, over its near proxies
     // (a proxy whose bounds are farther than `radius` cannot be nearer than that).
     for (const auto& en : index_.within(p, radius)) {
@@ -110,6 +196,7 @@ bool Ornament::intersects(const Proxy& p) const {
                                     std::string(to_string(p.kind())) +
                                     " proxy that is not set or not finite");
     if (leaves_region(p, region_, tolerance_)) return true;
+    cover(p.bounds());
     for (const auto& en : index_.query(p.bounds())) {
         if (overlaps(p, at(en.element).proxy(static_cast<std::size_t>(en.proxy)), tolerance_))
             return true;
@@ -119,6 +206,7 @@ bool Ornament::intersects(const Proxy& p) const {
 
 bool Ornament::overlaps_any(const Proxy& p,
                             const std::function<bool(const Element&)>& which) const {
+    cover(p.bounds());
     for (const auto& en : index_.query(p.bounds())) {
         const Element& e = at(en.element);
         if (which(e) && overlaps(p, e.proxy(static_cast<std::size_t>(en.proxy)), tolerance_))

@@ -23,14 +23,24 @@ class Ornament {
 
     // Takes ownership, assigns the next id and indexes the proxies; returns the element.
     Element& add(std::unique_ptr<Element> e);
-    // The same for many elements in order, indexed in one pass (a bulk placement).
-    std::vector<Element*> add_all(std::vector<std::unique_ptr<Element>> elements);
+    // The same for many elements in order, indexed in one pass (a bulk placement). Those from
+    // `deferrable_from` on whose bounds miss the near zone (set_near_zone()) are indexed only
+    // when a query reaches beyond the zone.
+    std::vector<Element*> add_all(std::vector<std::unique_ptr<Element>> elements,
+                                  std::size_t deferrable_from = static_cast<std::size_t>(-1));
+    // The zone the growth loop's queries mostly stay in (under symmetry: round the fundamental
+    // domain): `cells` (row by row, `columns` wide) flags the cells of side `cell` from
+    // `origin` in it. A query within it needs no element whose bounds miss it.
+    void set_near_zone(Point origin, double cell, int columns, const std::vector<bool>& cells);
     std::size_t size() const { return elements_.size(); }
     Element& at(int id) const { return *elements_[static_cast<std::size_t>(id)]; }
     std::vector<const Element*> view() const;
     double tolerance() const { return tolerance_; }
     // Frees the spatial index once the growth is over: the queries below answer nothing after.
-    void release_index() { index_ = SpatialIndex(); }
+    void release_index() {
+        index_ = SpatialIndex();
+        deferred_.clear();
+    }
 
     // Placed element nearest to p and its distance (ties to the smallest id), or null. The
     // search looks within `hint` first and widens fourfold until it finds one.
@@ -52,10 +62,27 @@ class Ornament {
     bool overlaps_any(const Proxy& p, const std::function<bool(const Element&)>& which) const;
 
   private:
+    // The near zone as a summed-area table of its cells: (columns + 1) x (rows + 1).
+    struct Zone {
+        Point origin;
+        double cell = 0;
+        int columns = 0, rows = 0;
+        std::vector<int> sums;
+        // Cells in [i0, i1] x [j0, j1] of the zone, clamped to the grid.
+        int count(int i0, int j0, int i1, int j1) const;
+        bool covers(const Rect& box) const;
+        bool meets(const Rect& box) const;
+    };
+    // Indexes the deferred elements unless `box` lies within the near zone.
+    void cover(const Rect& box) const;
+
     const Region& region_;
     double tolerance_;
     std::vector<std::unique_ptr<Element>> elements_;
-    detail::SpatialIndex index_;
+    // Deferred elements are indexed on the first query beyond the zone (const queries).
+    mutable detail::SpatialIndex index_;
+    mutable std::vector<int> deferred_;
+    Zone zone_;
 };
 
 }  // namespace acanthus::detail

@@ -73,6 +73,12 @@ ImageElement::ImageElement(const Element& original, const Isometry& transform)
     }
 }
 
+void ImageElement::set_transform(const Isometry& transform) {
+    transform_ = transform;
+    for (std::size_t k = 0; k < proxies_.size(); ++k)
+        transform_proxy(original_->proxy(k), transform, proxy(k));
+}
+
 Proxy& ImageElement::proxy(std::size_t k) {
     return std::visit([](auto& p) -> Proxy& { return p; }, proxies_[k]);
 }

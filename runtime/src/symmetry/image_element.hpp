@@ -23,6 +23,9 @@ class ImageElement final : public Element {
     std::size_t proxy_count() const override { return proxies_.size(); }
     Proxy& proxy(std::size_t k) override;
 
+    // Carries the original's proxies over by another transformation, in place.
+    void set_transform(const Isometry& transform);
+
     const Element& original() const { return *original_; }
     const Isometry& transform() const { return transform_; }
 

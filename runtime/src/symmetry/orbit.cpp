@@ -175,17 +175,27 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     std::vector<Isometry> transforms;
     bool fixed = false;  // some image coincides with e
     const auto& g = group.transforms();
+    Orbit out;
+    if (g.size() < 2) return out;
+    // Each image is tried in one scratch element; only those kept are built.
+    ImageElement scratch(e, g[1]);
     for (std::size_t k = 1; k < g.size(); ++k) {
-        auto image = std::make_unique<ImageElement>(e, g[k]);
-        if (same_place(*image, e, tolerance)) {
+        if (k > 1) scratch.set_transform(g[k]);
+        if (same_place(scratch, e, tolerance)) {
             fixed = true;
             continue;
         }
-        if (!group.keeps(*image, tolerance)) continue;  // beyond a frieze's ends or the window
-        images.push_back(std::move(image));
+        if (!group.keeps(scratch, tolerance)) {
+            // Beyond a frieze's ends or the window, not placed; but an element that overlaps it
+            // has translates of both (inside the window) that overlap.
+            if (out.clear && overlaps_any(scratch, e, tolerance)) out.clear = false;
+            for (std::size_t p = 0; out.clear && p < e.proxy_count(); ++p)
+                if (crosses_mirror(e.proxy(p), g[k], tolerance)) out.clear = false;
+            continue;
+        }
+        images.push_back(std::make_unique<ImageElement>(e, g[k]));
         transforms.push_back(g[k]);
     }
-    Orbit out;
     // g(e) = h(e) only when an image other than the identity's coincides with e: only then do
     // the images repeat (once per coset of the stabilizer).
     std::vector<const ImageElement*> kept;

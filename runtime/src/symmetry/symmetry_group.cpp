@@ -181,6 +181,106 @@ double SymmetryGroup::clearance(Point c, double tolerance) const {
     return best;
 }
 
+std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point toward,
+                                                    double tolerance) const {
+    constexpr int kRings = 12, kSpokes = 48, kDirections = 16, kTouching = 64;
+    // Only images of c's centre within 4 radii matter: farther, a point of c and its image are
+    // more than 2 radii apart.
+    std::vector<const Isometry*> near, fixing, mirrors;
+    for (std::size_t k = 1; k < transforms_.size(); ++k) {
+        const Isometry& g = transforms_[k];
+        const double d = distance(g.apply(c.center), c.center);
+        if (d > 4 * c.radius + tolerance) continue;
+        near.push_back(&g);
+        if (d <= tolerance) fixing.push_back(&g);
+        // A reflection with no glide: the midpoint of p and its image lies on its mirror.
+        if (g.reverses() && distance(g.then(g).apply(c.center), c.center) <= tolerance)
+            mirrors.push_back(&g);
+    }
+    // The room about p (the largest circle there inside c and clear of its images), and
+    // whether some transformation fixes p.
+    auto room = [&](Point p, bool& fixed) {
+        double r = c.radius - distance(p, c.center);
+        fixed = false;
+        for (const Isometry* g : near) {
+            const double d = distance(g->apply(p), p);
+            if (d > tolerance)
+                r = std::min(r, d / 2);
+            else
+                fixed = true;
+        }
+        return r;
+    };
+    // [0]: the best circle about a point on a mirror, [1]: about a point on none; each with the
+    // mirror it lies on.
+    Circle best[2] = {{c.center, 0}, {c.center, 0}};
+    const Isometry* best_mirror[2] = {nullptr, nullptr};
+    auto consider = [&](Point p, const Isometry* mirror) {
+        if (distance(p, c.center) <= tolerance) return;  // C itself
+        bool fixed = false;
+        const double r = room(p, fixed);
+        Circle& b = best[fixed ? 0 : 1];
+        if (r > b.radius + tolerance) {
+            b = {p, r};
+            best_mirror[fixed ? 0 : 1] = fixed ? mirror : nullptr;
+        }
+    };
+    for (int i = 1; i < kRings; ++i)
+        for (int j = 0; j < kSpokes; ++j) {
+            const double t = 2 * M_PI * (j + 0.5 * (i % 2)) / kSpokes;
+            const Point p = c.center + Vector(std::cos(t), std::sin(t)) * (c.radius * i / kRings);
+            consider(p, nullptr);
+            for (const Isometry* g : mirrors) consider(p + (g->apply(p) - p) * 0.5, g);
+        }
+    // Each refined by a pattern search in 16 directions (along its mirror for the first: the
+    // optimum lies where several constraints meet, on a ridge), steps halving from the
+    // sample's spacing.
+    for (int k = 0; k < 2; ++k) {
+        if (best[k].radius <= tolerance || (k == 0 && !best_mirror[0])) continue;
+        for (double h = c.radius / kRings; h > c.radius * 1e-4; h /= 2)
+            for (int moves = 0, moved = 1; moved && moves < 64; ++moves) {
+                moved = 0;
+                for (int d = 0; d < kDirections; ++d) {
+                    const Vector step = Vector(std::cos(2 * M_PI * d / kDirections),
+                                               std::sin(2 * M_PI * d / kDirections)) *
+                                        h;
+                    Point q = best[k].center + step;
+                    if (k == 0) q = q + (best_mirror[0]->apply(q) - q) * 0.5;
+                    if (distance(q, c.center) <= tolerance) continue;
+                    bool fixed = false;
+                    const double r = room(q, fixed);
+                    if (fixed == (k == 0) && r > best[k].radius + tolerance) {
+                        best[k] = {q, r};
+                        moved = 1;
+                    }
+                }
+            }
+    }
+    std::vector<Circle> out;
+    // First the largest one touching c where c is nearest `toward`: a rule growing from a
+    // parent there (a curve leaving it, a spiral round C's centre) reaches it first.
+    const Vector u = toward - c.center;
+    if (u.length() > tolerance)
+        for (int k = 1; k < kTouching; ++k) {
+            const double r = c.radius * (1 - double(k) / kTouching);
+            bool fixed = false;
+            if (room(c.center + u * ((c.radius - r) / u.length()), fixed) >= r - tolerance) {
+                out.push_back({c.center + u * ((c.radius - r) / u.length()), r});
+                break;
+            }
+        }
+    for (const Circle& b : best) {
+        if (b.radius <= tolerance) continue;
+        Point pick = b.center;
+        for (const Isometry* g : fixing) {
+            const Point q = g->apply(b.center);
+            if (distance(q, toward) < distance(pick, toward) - tolerance) pick = q;
+        }
+        out.push_back({pick, b.radius});
+    }
+    return out;
+}
+
 std::vector<std::pair<Point, Point>> SymmetryGroup::domain_edges(double radius) const {
     if (lattice_) {
         // The frame clipped by each half-plane in turn (Sutherland-Hodgman: convex).

@@ -1,0 +1,104 @@
+// Rotation centres with mirrors (docs/symmetry.md, "Rules see smaller circles"): the circles
+// inside an empty circle C there that stay clear of their own images, which let a rule place
+// an element beside the centre when one on it would clash with its images; and the patterns
+// that grew nothing under a group with translations.
+#include <gtest/gtest.h>
+
+#include <acanthus/region.hpp>
+#include <acanthus/symmetry.hpp>
+#include <cmath>
+#include <vector>
+
+#include "symmetry/symmetry_group.hpp"
+#include "symmetry/translation_groups.hpp"
+
+using namespace acanthus;
+using namespace acanthus::detail;
+
+namespace {
+
+constexpr double kTol = 1e-9;
+
+// Every circle lies inside C and clears its own images (its radius at most its clearance).
+void expect_clear_inside(const SymmetryGroup& g, const Circle& c, const std::vector<Circle>& got) {
+    for (const Circle& k : got) {
+        EXPECT_LE(distance(k.center, c.center) + k.radius, c.radius + 1e-9);
+        EXPECT_LE(k.radius, g.clearance(k.center, kTol) + 1e-9);
+        EXPECT_GT(k.radius, 0);
+    }
+}
+
+// True when some transformation other than the identity fixes p (p on a mirror).
+bool on_mirror(const SymmetryGroup& g, Point p) {
+    for (std::size_t k = 1; k < g.size(); ++k)
+        if (distance(g.transforms()[k].apply(p), p) <= 1e-6) return true;
+    return false;
+}
+
+}  // namespace
+
+// d4 about the centre of C: on a mirror the best circle has radius R / (1 + sqrt 2) (its image in
+// the next mirror, 45 degrees away, is sqrt 2 times as far); off the mirrors R s / (1 + s),
+// s = sin 22.5 degrees (the circle between two mirrors touching C). Sampled: within 3 %.
+TEST(ClearCircles, BesideTheCentreOfADihedralRosette) {
+    const Point o{50, 50};
+    const SymmetryGroup d4(Symmetry{Symmetry::Kind::dihedral, 4, std::nullopt}, o);
+    const Circle c{o, 10};
+    const std::vector<Circle> got = d4.clear_circles_in(c, {50, 0}, kTol);
+    ASSERT_EQ(got.size(), 3u);
+    expect_clear_inside(d4, c, got);
+    // First the one touching C straight up (towards `toward`), on the vertical mirror.
+    EXPECT_NEAR(got[0].center.x, o.x, 1e-9);
+    EXPECT_LT(got[0].center.y, o.y);
+    EXPECT_NEAR(distance(got[0].center, o) + got[0].radius, 10, 1e-9);
+    EXPECT_GT(got[0].radius, 0.9 * 10 / (1 + std::sqrt(2.0)));
+    EXPECT_TRUE(on_mirror(d4, got[1].center));
+    EXPECT_FALSE(on_mirror(d4, got[2].center));
+    EXPECT_NEAR(got[1].radius, 10 / (1 + std::sqrt(2.0)), 0.03 * 10 / (1 + std::sqrt(2.0)));
+    const double s = std::sin(M_PI / 8);
+    EXPECT_NEAR(got[2].radius, 10 * s / (1 + s), 0.03 * 10 * s / (1 + s));
+    // The one nearest `toward` (straight up) of the equivalent ones: above the centre.
+    EXPECT_LT(got[1].center.y, o.y);
+    EXPECT_LT(got[2].center.y, o.y);
+    EXPECT_LT(std::abs(got[2].center.x - o.x), got[2].radius + 1e-9);
+    // Towards the lower right instead: the circles follow.
+    const std::vector<Circle> other = d4.clear_circles_in(c, {100, 100}, kTol);
+    ASSERT_EQ(other.size(), 3u);
+    EXPECT_GT(other[0].center.x, o.x);
+    EXPECT_GT(other[0].center.y, o.y);
+    EXPECT_GT(other[2].center.x, o.x);
+    EXPECT_GT(other[2].center.y, o.y);
+}
+
+// A cyclic rosette has no mirror: only the circle off the centre, clear of its N - 1 images.
+TEST(ClearCircles, CyclicRosetteHasNoMirrorCircle) {
+    const SymmetryGroup c3(Symmetry{Symmetry::Kind::cyclic, 3, std::nullopt}, {0, 0});
+    const Circle c{{0, 0}, 12};
+    const std::vector<Circle> got = c3.clear_circles_in(c, {0, -20}, kTol);
+    ASSERT_EQ(got.size(), 2u);  // touching C towards (0, -20), and the best one
+    expect_clear_inside(c3, c, got);
+    // Best: centre at d with d sqrt 3 / 2 = 12 - d, r = 12 - d; touching C the same here.
+    const double d = 12 / (1 + std::sqrt(3.0) / 2);
+    EXPECT_NEAR(got[0].radius, 12 - d, 0.03 * (12 - d));
+    EXPECT_NEAR(got[1].radius, 12 - d, 0.03 * (12 - d));
+    EXPECT_LT(got[0].center.y, 0);
+}
+
+// The corners and edge middles of a p4m tile (4-fold and 2-fold centres with mirrors) and the
+// corner of a p6m tile (6-fold): circles beside them, inside C, clear of every image.
+TEST(ClearCircles, AtTheCentresOnAWallpaperTilesEdges) {
+    for (const Wallpaper& w : {Wallpaper{"p4m", 150, 150, 90}, Wallpaper{"p6m", 150, 150, 60}}) {
+        const TranslationSetup s = wallpaper_setup(w);
+        ASSERT_TRUE(s.box);
+        const SymmetryGroup g(s.group, *s.box);
+        for (Point centre : {Point{0, 0}, Point{75, 0}, Point{150, 0}}) {
+            const Circle c{centre, 8};
+            const std::vector<Circle> got = g.clear_circles_in(c, {centre.x, 40}, kTol);
+            ASSERT_EQ(got.size(), 3u) << w.group << " at " << centre.x;
+            expect_clear_inside(g, c, got);
+            EXPECT_TRUE(on_mirror(g, got[1].center));
+            EXPECT_FALSE(on_mirror(g, got[2].center));
+            EXPECT_GT(got[2].radius, 0.15 * c.radius);  // a 30 degree wedge at the 6-fold centre
+        }
+    }
+}
