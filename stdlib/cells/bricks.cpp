@@ -19,6 +19,9 @@ void lay(Context& c, BrickLayout& layout, int row, int piece) {
     char& taken = layout.taken[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
     if (taken) return;
     taken = 1;
+    const detail::Piece& p =
+        layout.rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
+    if (p.head) return;  // the lintel's, laid by its generator
     const Rect drawn = layout.drawn(row, piece);
     c.place(detail::polygon_of(layout.rect(row, piece)), layout.grid.course(row), true, &drawn);
 }
@@ -57,6 +60,7 @@ Generator bricks() {
             for (std::size_t k = 0; k < pieces.size(); ++k) {
                 if (taken[k]) continue;
                 taken[k] = 1;
+                if (pieces[k].head) continue;
                 Rect rect = layout.rect(r, static_cast<int>(k));
                 const Rect drawn = layout.drawn(r, static_cast<int>(k));
                 if (pieces[k].full && occupancy.rect_is_free(rect))

@@ -27,7 +27,7 @@ bool run_end(const std::vector<Piece>& pieces, std::size_t k, bool left) {
 // The joint between pieces k and k + 1 moved by d units, if both stay from one to four units
 // and a piece at a run's end keeps two (it may end in a part unit at the jamb).
 bool movable(const std::vector<Piece>& pieces, std::size_t k, int d) {
-    if (pieces[k].quoin || pieces[k + 1].quoin) return false;
+    if (pieces[k].fixed() || pieces[k + 1].fixed()) return false;
     const int a = pieces[k].length + d, b = pieces[k + 1].length - d;
     if (a < 1 || b < 1 || a > 4 || b > 4) return false;
     if (run_end(pieces, k, true) && a < 2) return false;
@@ -35,29 +35,176 @@ bool movable(const std::vector<Piece>& pieces, std::size_t k, int d) {
     return true;
 }
 
+// The joint between pieces k and k + 1 taken out: one piece of both, at most a whole brick, when
+// neither is fixed or a window-bottom header (two headers there would make a stretcher).
+bool removable(const std::vector<Piece>& pieces, std::size_t k) {
+    const Piece &a = pieces[k], &b = pieces[k + 1];
+    return !a.fixed() && !b.fixed() && !a.sill && !b.sill && a.length + b.length <= 4;
+}
+
+constexpr int kRemove = 100;  // a move that takes the joint out
+
+void apply(std::vector<Piece>& pieces, std::size_t k, int d) {
+    if (d == kRemove) {
+        pieces[k].length += pieces[k + 1].length;
+        pieces[k].cut = true;
+        pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+        return;
+    }
+    pieces[k].length += d;
+    pieces[k + 1].start += d;
+    pieces[k + 1].length -= d;
+    pieces[k].cut = pieces[k + 1].cut = true;
+}
+
+// The ways the joint at k may go, in order of preference: a quarter or half brick either way,
+// then out (the two pieces one, a three-quarter bat or a stretcher).
+constexpr std::array<int, 5> kMoves{1, -1, 2, -2, kRemove};
+
 // The joint at unit line j of row r + 1 moved off `here` (the joints of row r) and the joints of
-// row r + 2, when its pieces allow.
-void move_below(std::vector<std::vector<Piece>>& rows, int r, int j, const std::set<int>& here) {
-    if (r + 1 >= static_cast<int>(rows.size())) return;
+// row r + 2, when its pieces allow. Where every place clear of `here` falls on a joint of row r + 2
+// (a header bond leaves every other line to the course below), the joint goes there and that one
+// of row r + 2 moves in turn, down to `depth` courses.
+void move_below(std::vector<std::vector<Piece>>& rows, int r, int j, const std::set<int>& here,
+                int depth = 8) {
+    if (r + 1 >= static_cast<int>(rows.size()) || depth <= 0) return;
     auto& pieces = rows[static_cast<std::size_t>(r + 1)];
     const std::set<int> under = r + 2 < static_cast<int>(rows.size())
                                     ? joints_of(rows[static_cast<std::size_t>(r + 2)])
                                     : std::set<int>{};
     for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
         if (pieces[k + 1].start != j || pieces[k].start + pieces[k].length != j) continue;
-        for (int d : std::array<int, 4>{1, -1, 2, -2}) {
-            if (!movable(pieces, k, d) || here.count(j + d) || under.count(j + d)) continue;
-            pieces[k].length += d;
-            pieces[k + 1].start += d;
-            pieces[k + 1].length -= d;
-            pieces[k].cut = pieces[k + 1].cut = true;
+        int fallback = 0;
+        for (int d : kMoves) {
+            if (d == kRemove ? !removable(pieces, k) : !movable(pieces, k, d)) continue;
+            if (d != kRemove && here.count(j + d)) continue;
+            if (d != kRemove && under.count(j + d)) {
+                if (fallback == 0) fallback = d;
+                continue;
+            }
+            apply(pieces, k, d);
             return;
         }
+        if (fallback == 0) return;
+        apply(pieces, k, fallback);
+        move_below(rows, r + 1, j + fallback, joints_of(pieces), depth - 1);
         return;
     }
 }
 
+// Re-cuts the free pieces of `pieces` round joint line j (up to three pieces either side, none
+// fixed, a window-bottom header or a king closer) into pieces of one to four quarters whose joints
+// keep off `avoid` (the joints of the courses above and below) and off j: each cut costs by what it
+// leaves (a stretcher nothing, a header or half bat little, a bat or closer more). False when
+// no cut fits.
+bool recut(std::vector<Piece>& pieces, int j, const std::set<int>& avoid) {
+    std::size_t k = 0;
+    while (k + 1 < pieces.size() && pieces[k + 1].start != j) ++k;
+    if (k + 1 >= pieces.size() || pieces[k].start + pieces[k].length != j) return false;
+    // Two quoins of a narrow pier meeting at j: the joint between them moves instead, both
+    // quoins kept two to four quarters.
+    if (pieces[k].quoin && pieces[k + 1].quoin) {
+        const int t = pieces[k].length + pieces[k + 1].length, s = pieces[k].start;
+        for (int m : {pieces[k].length + 1, pieces[k].length - 1, pieces[k].length + 2,
+                      pieces[k].length - 2}) {
+            if (m < 2 || t - m < 2 || m > 4 || t - m > 4 || avoid.count(s + m)) continue;
+            pieces[k].length = m;
+            pieces[k + 1].start = s + m;
+            pieces[k + 1].length = t - m;
+            return true;
+        }
+        return false;
+    }
+    // Window-bottom headers may be cut again too (a queen closer in the header row, as a mason
+    // closes it against a quoin), but stay headers where they can.
+    auto free = [&](std::size_t i) { return !pieces[i].fixed() && !pieces[i].king; };
+    if (!free(k) || !free(k + 1)) return false;
+    std::size_t a = k, b = k + 1;
+    for (int n = 0; n < 2 && a > 0 && free(a - 1) &&
+                    pieces[a - 1].start + pieces[a - 1].length == pieces[a].start;
+         ++n)
+        --a;
+    for (int n = 0; n < 2 && b + 1 < pieces.size() && free(b + 1) &&
+                    pieces[b].start + pieces[b].length == pieces[b + 1].start;
+         ++n)
+        ++b;
+    const int s = pieces[a].start, e = pieces[b].start + pieces[b].length;
+    const bool left_end = run_end(pieces, a, true), right_end = run_end(pieces, b, false);
+    const int w = e - s;
+    std::vector<char> sill(static_cast<std::size_t>(w), 0);
+    for (std::size_t i = a; i <= b; ++i)
+        for (int u = pieces[i].start; u < pieces[i].start + pieces[i].length; ++u)
+            sill[static_cast<std::size_t>(u - s)] = pieces[i].sill;
+    auto in_sill = [&](int y, int x) {
+        for (int u = y; u < x; ++u)
+            if (sill[static_cast<std::size_t>(u)]) return true;
+        return false;
+    };
+    // Shortest path over the unit lines s..e: cost[x] to cut [s, x) up.
+    std::vector<double> cost(static_cast<std::size_t>(w) + 1, 1e300);
+    std::vector<int> from(static_cast<std::size_t>(w) + 1, -1);
+    cost[0] = 0;
+    for (int x = 1; x <= w; ++x) {
+        if (x < w && (avoid.count(s + x) || s + x == j)) continue;
+        for (int len = 1; len <= 4 && len <= x; ++len) {
+            const int y = x - len;
+            if (cost[static_cast<std::size_t>(y)] >= 1e300) continue;
+            if (len == 1 && ((y == 0 && left_end) || (x == w && right_end))) continue;
+            const bool header_row = in_sill(y, x);
+            const double c = cost[static_cast<std::size_t>(y)] + (len == 4   ? (header_row ? 4 : 0)
+                                                                  : len == 2 ? (header_row ? 0 : 1)
+                                                                  : len == 3 ? 1.5
+                                                                             : 2.5);
+            if (c < cost[static_cast<std::size_t>(x)])
+                cost[static_cast<std::size_t>(x)] = c, from[static_cast<std::size_t>(x)] = y;
+        }
+    }
+    if (cost[static_cast<std::size_t>(w)] >= 1e300) return false;
+    std::vector<Piece> cut;
+    for (int x = w; x > 0; x = from[static_cast<std::size_t>(x)]) {
+        const int y = from[static_cast<std::size_t>(x)];
+        Piece p{s + y, x - y, true, false};
+        p.sill = true;
+        for (int u = y; u < x; ++u) p.sill &= sill[static_cast<std::size_t>(u)] != 0;
+        cut.insert(cut.begin(), p);
+    }
+    pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(a),
+                 pieces.begin() + static_cast<std::ptrdiff_t>(b) + 1);
+    pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(a), cut.begin(), cut.end());
+    return true;
+}
+
 }  // namespace
+
+void repair_straight_joints(BrickLayout& layout) {
+    if (layout.bond.bond == Bond::stack) return;
+    auto& rows = layout.rows;
+    const int n = static_cast<int>(rows.size());
+    auto joints = [&](int r) {
+        return r >= 0 && r < n ? joints_of(rows[static_cast<std::size_t>(r)]) : std::set<int>{};
+    };
+    // Bottom up: each joint over one of the course below is cut out of this course, or else out
+    // of the one below.
+    for (int pass = 0; pass < 3; ++pass) {
+        bool changed = false;
+        for (int r = n - 2; r >= 0; --r) {
+            const std::set<int> below = joints(r + 1);
+            for (int j : joints(r)) {
+                if (!below.count(j)) continue;
+                std::set<int> avoid = below;
+                for (int x : joints(r - 1)) avoid.insert(x);
+                if (recut(rows[static_cast<std::size_t>(r)], j, avoid)) {
+                    changed = true;
+                    continue;
+                }
+                avoid = joints(r);
+                for (int x : joints(r + 2)) avoid.insert(x);
+                changed |= recut(rows[static_cast<std::size_t>(r + 1)], j, avoid);
+            }
+        }
+        if (!changed) break;
+    }
+}
 
 void set_closers(BrickLayout& layout) {
     if (layout.bond.bond == Bond::stack) return;  // joints over joints is the stack bond
@@ -76,7 +223,12 @@ void set_closers(BrickLayout& layout) {
             // Neighbouring joints of this course stay where they are: no new straight joint
             // between them and the new place.
             int best = 0, best_cost = 1 << 20;
-            for (int d : std::array<int, 4>{1, -1, 2, -2}) {
+            for (int d : kMoves) {
+                if (d == kRemove) {
+                    if (!removable(pieces, k)) continue;
+                    if (3 < best_cost) best = d, best_cost = 3;
+                    continue;
+                }
                 if (!movable(pieces, k, d) || below.count(j + d)) continue;
                 const int cost = (above.count(j + d) ? 10 : 0) + std::abs(d);
                 if (cost < best_cost) best = d, best_cost = cost;
@@ -87,10 +239,8 @@ void set_closers(BrickLayout& layout) {
                 move_below(rows, r, j, joints_of(pieces));
                 continue;
             }
-            pieces[k].length += best;
-            pieces[k + 1].start += best;
-            pieces[k + 1].length -= best;
-            pieces[k].cut = pieces[k + 1].cut = true;
+            apply(pieces, k, best);
+            if (best == kRemove) --k;  // the next joint is now k's (wraps to 0 before ++k)
         }
     }
 }

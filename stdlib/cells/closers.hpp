@@ -12,4 +12,10 @@ namespace acanthus::cells::detail {
 // side of such a joint become a closer and a bat, or two bats, of one to four quarter bricks.
 void set_closers(BrickLayout& layout);
 
+// What the closers and the quoins' piers left: each joint still over one of the course below (a
+// quoin's, a lintel's or a window-bottom row's end met the bond's joint where no single joint could
+// move) has the free pieces round it, in its course or else the one below, cut again into pieces
+// of one to four quarters off the joints of both neighbouring courses.
+void repair_straight_joints(BrickLayout& layout);
+
 }  // namespace acanthus::cells::detail
