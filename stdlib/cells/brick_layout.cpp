@@ -123,6 +123,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
     set_closers(layout);
     if (quoins) set_piers(o, layout);
     repair_straight_joints(layout);
+    set_king_closers(layout);
     for (int r = 0; r < rows; ++r) {
         auto& pieces = layout.rows[static_cast<std::size_t>(r)];
         for (Piece& p : pieces) {  // closers moved some ends

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <set>
 
 namespace acanthus::cells::detail {
@@ -203,6 +204,54 @@ void repair_straight_joints(BrickLayout& layout) {
             }
         }
         if (!changed) break;
+    }
+}
+
+void set_king_closers(BrickLayout& layout) {
+    if (layout.bond.bond != Bond::flemish) return;
+    for (int row = 0; row < layout.grid.rows(); ++row) {
+        auto& pieces = layout.rows[static_cast<std::size_t>(row)];
+        const double h = layout.grid.ys[static_cast<std::size_t>(row) + 1] -
+                         layout.grid.ys[static_cast<std::size_t>(row)];
+        if (std::abs(h - layout.gauge) > layout.tolerance) continue;  // a cut course
+        // Whole quarters only: a piece the jamb cuts between quarters is a cut brick.
+        auto whole = [&](int u0, int u1) {
+            for (int u = u0; u < u1; ++u)
+                if (layout.grid.at(row, u) != kFull) return false;
+            return true;
+        };
+        // Against a reveal: the run's end, or a quoin (the jamb's own dressing).
+        auto against = [&](std::size_t k, bool left) {
+            if (run_end(pieces, k, left)) return true;
+            return pieces[left ? k - 1 : k + 1].quoin;
+        };
+        auto plain = [&](std::size_t k) {
+            return !pieces[k].fixed() && !pieces[k].sill && !pieces[k].king;
+        };
+        for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
+            for (bool left : {true, false}) {
+                // The piece at the reveal, its neighbour in the run, and the one beyond.
+                const std::size_t end = left ? k : k + 1, next = left ? k + 1 : k;
+                if (!plain(end) || !plain(next) || !against(end, left)) continue;
+                const bool touching = pieces[k].start + pieces[k].length == pieces[k + 1].start;
+                if (!touching) continue;
+                // A header and its queen closer: one king closer.
+                const int u0 = std::min(pieces[k].start, pieces[k + 1].start);
+                if (!whole(pieces[end].start, pieces[end].start + pieces[end].length) ||
+                    !whole(pieces[next].start, pieces[next].start + pieces[next].length))
+                    continue;
+                if (pieces[end].length == 2 && pieces[next].length == 1) {
+                    Piece kc{u0, 3, true, false};
+                    kc.king = true;
+                    pieces[k] = kc;
+                    pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+                    break;
+                }
+                // Three quarters with a stretcher beside: the header and closer the bond's
+                // sequence put there (a quarter of a stretcher and a header, taken as one).
+                if (pieces[end].length == 3 && pieces[next].length == 4) pieces[end].king = true;
+            }
+        }
     }
 }
 

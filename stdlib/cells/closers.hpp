@@ -19,3 +19,14 @@ void set_closers(BrickLayout& layout);
 void repair_straight_joints(BrickLayout& layout);
 
 }  // namespace acanthus::cells::detail
+
+namespace acanthus::cells::detail {
+
+// King closers (Flemish bond): where a header would stand against a reveal (a jamb, the wall's
+// end, a quoin) with a queen closer beside it, one brick with a corner cut off behind takes both
+// places: its face three quarters of a brick, its back a whole header into the wall. So a header
+// and queen closer at a run's end become one king closer, and a three-quarter piece at a reveal
+// with a stretcher beside it (a header and closer the bond's sequence put there) is one.
+void set_king_closers(BrickLayout& layout);
+
+}  // namespace acanthus::cells::detail

@@ -4,6 +4,7 @@
 // mason's checker finds no straight joint.
 #include <gtest/gtest.h>
 
+#include <acanthus/stdlib/cells/cut_list.hpp>
 #include <cstdint>
 #include <iostream>
 #include <map>
@@ -133,4 +134,70 @@ TEST(CellsBondsUnseen, NoStraightJoints) {
     }
     std::cout << "straight joints on all walls: " << total << "\n";
     EXPECT_LE(total, 24);
+}
+
+// King closers (docs/stdlib/cells.md, Closers): in Flemish bond a header against a reveal or a
+// quoin with its queen closer is one king closer, three quarters on the face, a stretcher beside
+// it; other bonds lay none. The checker finds each where the bond calls for it, and the cut list
+// counts them apart from the three-quarter bats they look like.
+TEST(CellsBondsUnseen, KingClosersInFlemishBond) {
+    Options o = centimetres();
+    const auto ts = trees();
+    const std::string examples = std::string(ACANTHUS_SOURCE_DIR) + "/examples/facades/";
+    std::vector<Facade> walls;
+    walls.push_back(Facade::from_svg_file(examples + "row-house.svg"));
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) walls.push_back(made_up(seed, seed % 2 == 0));
+    long kings = 0;
+    for (const Facade& f : walls)
+        for (Bond bond : {Bond::running, Bond::english, Bond::flemish, Bond::header})
+            for (const auto& [name, tree] : ts) {
+                o.bond = bond;
+                Texture t = texture(f, tree, o, 1);
+                MasonReport r = mason_check(f, t.cells, kCm);
+                SCOPED_TRACE(f.name() + " " + std::string(to_string(bond)) + " " + name);
+                if (bond != Bond::flemish) {
+                    EXPECT_EQ(r.king_closers, 0);
+                    continue;
+                }
+                kings += r.king_closers;
+                std::string where;
+                for (Point p : r.misplaced_kings)
+                    where += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+                EXPECT_EQ(r.king_closers_misplaced, 0) << "at" << where;
+                EXPECT_EQ(r.slivers, 0);
+                // Smallest piece: a king closer is wider than the queen closer it replaces.
+                EXPECT_GE(r.smallest_piece, 0.1);
+                long listed = 0;
+                for (const CutListItem& item : cut_list(f, t.cells, o, 10))
+                    if (item.kind == "king closer") {
+                        listed += item.count;
+                        EXPECT_EQ(item.generator, "bricks");
+                        EXPECT_NEAR(item.width, 159, 1);  // three quarters less a joint
+                    }
+                EXPECT_EQ(listed, r.king_closers);
+            }
+    std::cout << "king closers in Flemish bond, all walls and trees: " << kings << "\n";
+    EXPECT_GT(kings, 50);
+}
+
+// The checker finds a king closer laid where no reveal is.
+TEST(CellsBondsUnseen, FindsAMisplacedKingCloser) {
+    Options o = centimetres();
+    o.bond = Bond::flemish;
+    Facade f = made_up(4, true);  // a wall that has them in the brick tree
+    Texture t = texture(f, brick_tree(), o, 1);
+    MasonReport r = mason_check(f, t.cells, kCm);
+    ASSERT_GT(r.king_closers, 0);
+    EXPECT_EQ(r.king_closers_misplaced, 0);
+    // Name a stretcher in the middle of the wall, away from every reveal, a king closer.
+    const double x_mid = f.bounds().x0 + f.bounds().width() / 2;
+    for (Cell& c : t.cells) {
+        Rect b;
+        if (c.generator != "bricks" || !c.piece.empty() || !is_rect(c.polygon, b)) continue;
+        if (std::abs(b.width() - 21.5) > 0.1 || std::abs(b.center().x - x_mid) > 30) continue;
+        c.piece = "king closer";
+        break;
+    }
+    r = mason_check(f, t.cells, kCm);
+    EXPECT_EQ(r.king_closers_misplaced, 1);
 }
