@@ -93,6 +93,75 @@ void move_below(std::vector<std::vector<Piece>>& rows, int r, int j, const std::
     }
 }
 
+// A pier between two quoins (nothing else fixed, at most three bricks wide) with joint line j in
+// it set out again: each quoin two to four quarters, the pieces between one to four, every joint
+// off `avoid` and j; the fewest pieces, then the quoins' lengths nearest what they were.
+bool recut_pier(std::vector<Piece>& pieces, int j, const std::set<int>& avoid) {
+    std::size_t a = pieces.size(), b = pieces.size();
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        if (pieces[i].start >= j) break;
+        if (pieces[i].quoin) a = i;
+    }
+    for (std::size_t i = pieces.size(); i-- > 0;) {
+        if (pieces[i].start < j) break;
+        if (pieces[i].quoin) b = i;
+    }
+    if (a >= pieces.size() || b >= pieces.size() || a >= b) return false;
+    for (std::size_t i = a; i < b; ++i)
+        if (pieces[i].start + pieces[i].length != pieces[i + 1].start ||
+            (i > a && (pieces[i].fixed() || pieces[i].sill)))
+            return false;
+    const int s = pieces[a].start, e = pieces[b].start + pieces[b].length, w = e - s;
+    if (w > 12) return false;
+    auto ok = [&](int u) { return !avoid.count(u) && u != j; };
+    std::vector<int> best;
+    double best_cost = 1e300;
+    for (int q0 = 2; q0 <= 4; ++q0)
+        for (int q1 = 2; q1 <= 4; ++q1) {
+            const int m = w - q0 - q1;
+            if (m < 0 || !ok(s + q0) || (m > 0 && !ok(e - q1))) continue;
+            // The middle: pieces of one to four quarters, the fewest.
+            std::vector<int> count(static_cast<std::size_t>(m) + 1, 1 << 20),
+                from(static_cast<std::size_t>(m) + 1, -1);
+            count[0] = 0;
+            for (int x = 1; x <= m; ++x) {
+                if (x < m && !ok(s + q0 + x)) continue;
+                for (int len = 1; len <= 4 && len <= x; ++len)
+                    if (count[static_cast<std::size_t>(x - len)] + 1 <
+                        count[static_cast<std::size_t>(x)])
+                        count[static_cast<std::size_t>(x)] =
+                            count[static_cast<std::size_t>(x - len)] + 1,
+                        from[static_cast<std::size_t>(x)] = x - len;
+            }
+            if (count[static_cast<std::size_t>(m)] >= 1 << 20) continue;
+            const double cost =
+                count[static_cast<std::size_t>(m)] +
+                0.1 * (std::abs(q0 - pieces[a].length) + std::abs(q1 - pieces[b].length));
+            if (cost >= best_cost) continue;
+            best_cost = cost;
+            best = {q0};
+            std::vector<int> middle;
+            for (int x = m; x > 0; x = from[static_cast<std::size_t>(x)])
+                middle.insert(middle.begin(), x - from[static_cast<std::size_t>(x)]);
+            best.insert(best.end(), middle.begin(), middle.end());
+            best.push_back(q1);
+        }
+    if (best.empty()) return false;
+    std::vector<Piece> pier;
+    int u = s;
+    for (std::size_t i = 0; i < best.size(); ++i) {
+        Piece q{u, best[i], false, false};
+        q.quoin = i == 0 || i + 1 == best.size();
+        q.cut = !q.quoin && best[i] != 4;
+        pier.push_back(q);
+        u += best[i];
+    }
+    pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(a),
+                 pieces.begin() + static_cast<std::ptrdiff_t>(b) + 1);
+    pieces.insert(pieces.begin() + static_cast<std::ptrdiff_t>(a), pier.begin(), pier.end());
+    return true;
+}
+
 // Re-cuts the free pieces of `pieces` round joint line j (up to three pieces either side, none
 // fixed, a window-bottom header or a king closer) into pieces of one to four quarters whose joints
 // keep off `avoid` (the joints of the courses above and below) and off j: each cut costs by what it
@@ -102,20 +171,6 @@ bool recut(std::vector<Piece>& pieces, int j, const std::set<int>& avoid) {
     std::size_t k = 0;
     while (k + 1 < pieces.size() && pieces[k + 1].start != j) ++k;
     if (k + 1 >= pieces.size() || pieces[k].start + pieces[k].length != j) return false;
-    // Two quoins of a narrow pier meeting at j: the joint between them moves instead, both
-    // quoins kept two to four quarters.
-    if (pieces[k].quoin && pieces[k + 1].quoin) {
-        const int t = pieces[k].length + pieces[k + 1].length, s = pieces[k].start;
-        for (int m : {pieces[k].length + 1, pieces[k].length - 1, pieces[k].length + 2,
-                      pieces[k].length - 2}) {
-            if (m < 2 || t - m < 2 || m > 4 || t - m > 4 || avoid.count(s + m)) continue;
-            pieces[k].length = m;
-            pieces[k + 1].start = s + m;
-            pieces[k + 1].length = t - m;
-            return true;
-        }
-        return false;
-    }
     // Window-bottom headers may be cut again too (a queen closer in the header row, as a mason
     // closes it against a quoin), but stay headers where they can.
     auto free = [&](std::size_t i) { return !pieces[i].fixed() && !pieces[i].king; };
@@ -177,6 +232,34 @@ bool recut(std::vector<Piece>& pieces, int j, const std::set<int>& avoid) {
 
 }  // namespace
 
+namespace {
+
+// After course `cut` was cut again: each joint of the course beyond it (dir -1 above, 1 below)
+// that now stands over one of `cut`'s is cut out of that course, off both its neighbours, or else
+// off `cut` alone and the next course on in turn, down to `depth` courses. False when one fails.
+bool push(std::vector<std::vector<Piece>>& rows, int cut, int dir, int depth) {
+    const int n = static_cast<int>(rows.size()), beyond = cut + dir;
+    if (beyond < 0 || beyond >= n) return true;
+    auto joints = [&](int r) {
+        return r >= 0 && r < n ? joints_of(rows[static_cast<std::size_t>(r)]) : std::set<int>{};
+    };
+    auto& next = rows[static_cast<std::size_t>(beyond)];
+    for (int x : joints(cut)) {
+        if (!joints(beyond).count(x)) continue;
+        std::set<int> keep = joints(cut);
+        for (int y : joints(beyond + dir)) keep.insert(y);
+        if (recut(next, x, keep) || recut_pier(next, x, keep)) continue;
+        const std::set<int> near = joints(cut);
+        if (depth > 0 && (recut(next, x, near) || recut_pier(next, x, near)) &&
+            push(rows, beyond, dir, depth - 1))
+            continue;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 void repair_straight_joints(BrickLayout& layout) {
     if (layout.bond.bond == Bond::stack) return;
     auto& rows = layout.rows;
@@ -194,13 +277,33 @@ void repair_straight_joints(BrickLayout& layout) {
                 if (!below.count(j)) continue;
                 std::set<int> avoid = below;
                 for (int x : joints(r - 1)) avoid.insert(x);
-                if (recut(rows[static_cast<std::size_t>(r)], j, avoid)) {
+                auto& here = rows[static_cast<std::size_t>(r)];
+                if (recut(here, j, avoid) || recut_pier(here, j, avoid)) {
                     changed = true;
                     continue;
                 }
                 avoid = joints(r);
                 for (int x : joints(r + 2)) avoid.insert(x);
-                changed |= recut(rows[static_cast<std::size_t>(r + 1)], j, avoid);
+                auto& under = rows[static_cast<std::size_t>(r + 1)];
+                if (recut(under, j, avoid) || recut_pier(under, j, avoid)) {
+                    changed = true;
+                    continue;
+                }
+                // Neither fits between both its neighbours: cut one course off the other alone,
+                // and the courses beyond it again, one by one, wherever that leaves a joint over
+                // one of theirs (a pier's column flipped down to where it can end).
+                for (int dir : {-1, 1}) {
+                    const int cut = dir < 0 ? r : r + 1;
+                    const auto saved = rows;
+                    auto& row = rows[static_cast<std::size_t>(cut)];
+                    const std::set<int> other = joints(dir < 0 ? r + 1 : r);
+                    if ((recut(row, j, other) || recut_pier(row, j, other)) &&
+                        push(rows, cut, dir, 40)) {
+                        changed = true;
+                        break;
+                    }
+                    rows = saved;
+                }
             }
         }
         if (!changed) break;
