@@ -15,6 +15,9 @@ struct Piece {
     bool full = false;   // every unit fully inside the face
     bool sill = false;   // a header of a window-bottom row (sill_rows.hpp)
     bool quoin = false;  // a jamb quoin, bonded in (quoin_rows.hpp); its joints stay
+    bool head = false;   // a lintel's stretch of the course (lintel.hpp); its joints stay
+    bool king = false;   // a king closer: a header and its queen closer in one brick (Flemish)
+    bool fixed() const { return quoin || head; }
 };
 
 struct BondPattern {

@@ -7,6 +7,7 @@
 #include "brick_grid.hpp"
 #include "closers.hpp"
 #include "context_data.hpp"
+#include "lintel.hpp"
 #include "quoin_rows.hpp"
 #include "sill_rows.hpp"
 
@@ -80,13 +81,15 @@ Rect BrickLayout::drawn(int row, int piece) const {
     return drawn(row, p.start, p.start + p.length);
 }
 
-BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins) {
+BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins,
+                              bool lintels) {
     BrickLayout layout;
     layout.grid = make_brick_grid(facade, face, o);
     layout.unit = (o.brick_length + o.mortar) / 4;
     layout.gauge = o.brick_height + o.mortar;
     layout.tolerance = o.joint_tolerance;
     layout.mortar = o.mortar;
+    layout.quoined = quoins;
     layout.bond.bond = o.bond == Bond::ashlar ? Bond::running : o.bond;
     // English bond at a building corner: the corner brick is a stretcher in this face's stretcher
     // courses and the other face's stretcher's end in its header courses, so a face whose
@@ -115,9 +118,12 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
                    layout.rows[static_cast<std::size_t>(r)]);
     set_sill_rows(facade, face, layout);
     if (quoins) set_quoin_rows(facade, face, o, layout);
+    if (lintels) set_lintel_rows(facade, face, o, layout);
     set_corner_rows(facade, face, layout);
     set_closers(layout);
     if (quoins) set_piers(o, layout);
+    repair_straight_joints(layout);
+    set_king_closers(layout);
     for (int r = 0; r < rows; ++r) {
         auto& pieces = layout.rows[static_cast<std::size_t>(r)];
         for (Piece& p : pieces) {  // closers moved some ends
@@ -137,7 +143,8 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
 
 BrickLayout& brick_layout(Context& context, int face) {
     return context.data().layout<BrickLayout>("bricks:" + std::to_string(face), [&] {
-        return make_brick_layout(context.facade(), face, context.options(), context.data().quoined);
+        return make_brick_layout(context.facade(), face, context.options(), context.data().quoined,
+                                 context.data().lintels);
     });
 }
 

@@ -19,6 +19,7 @@ struct BrickLayout {
     std::vector<std::vector<int>> piece_of_unit;  // per row: piece index or -1
     std::vector<std::vector<char>> taken;         // per row and piece: laid already
     long cut_pieces = 0;
+    bool quoined = false;  // jamb quoins are pieces of the layout (quoin_rows.hpp)
 
     double unit = 0, gauge = 0, tolerance = 0, mortar = 0;  // nominal, from the options
 
@@ -31,9 +32,11 @@ struct BrickLayout {
     Rect drawn(int row, int piece) const;
 };
 
-// With `quoins`, jambs and the wall's vertical ends get quoins in the layout (quoin_rows.hpp).
+// With `quoins`, jambs and the wall's vertical ends get quoins in the layout (quoin_rows.hpp);
+// with `lintels`, every straight head's lintel is a fixed piece of the courses it fills
+// (lintel.hpp).
 BrickLayout make_brick_layout(const Facade& facade, int face, const Options& options,
-                              bool quoins = false);
+                              bool quoins = false, bool lintels = false);
 // Cut pieces the face would have with `phase` (for the fewest-half-bricks choice and its test).
 long cut_pieces(const CourseGrid& grid, const BondPattern& bond, int phase);
 

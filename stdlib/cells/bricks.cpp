@@ -15,12 +15,25 @@ using detail::BrickLayout;
 
 namespace {
 
+// A king closer looks like a three-quarter bat on the face: the cells say which it is.
+void name(Context& c, const detail::Piece& p, int added) {
+    if (!p.king) return;
+    auto& cells = c.cells();
+    for (int i = 0; i < added; ++i)
+        cells[cells.size() - 1 - static_cast<std::size_t>(i)].piece = "king closer";
+}
+
 void lay(Context& c, BrickLayout& layout, int row, int piece) {
     char& taken = layout.taken[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
     if (taken) return;
     taken = 1;
+    const detail::Piece& p =
+        layout.rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
+    if (p.head) return;  // the lintel's, laid by its generator
     const Rect drawn = layout.drawn(row, piece);
-    c.place(detail::polygon_of(layout.rect(row, piece)), layout.grid.course(row), true, &drawn);
+    const int added =
+        c.place(detail::polygon_of(layout.rect(row, piece)), layout.grid.course(row), true, &drawn);
+    name(c, p, added);
 }
 
 }  // namespace
@@ -57,12 +70,14 @@ Generator bricks() {
             for (std::size_t k = 0; k < pieces.size(); ++k) {
                 if (taken[k]) continue;
                 taken[k] = 1;
+                if (pieces[k].head) continue;
                 Rect rect = layout.rect(r, static_cast<int>(k));
                 const Rect drawn = layout.drawn(r, static_cast<int>(k));
-                if (pieces[k].full && occupancy.rect_is_free(rect))
-                    c.place_free_rect(rect, layout.grid.course(r), &drawn);
-                else
-                    c.place(detail::polygon_of(rect), layout.grid.course(r), true, &drawn);
+                const int added =
+                    pieces[k].full && occupancy.rect_is_free(rect)
+                        ? c.place_free_rect(rect, layout.grid.course(r), &drawn)
+                        : c.place(detail::polygon_of(rect), layout.grid.course(r), true, &drawn);
+                name(c, pieces[k], added);
             }
         }
     };

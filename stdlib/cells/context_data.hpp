@@ -27,6 +27,7 @@ struct ContextData {
     long expected_cells = 0;      // the estimate progress reports show; 0: unknown
     bool quoined = false;         // brick layouts made from now on bond jamb quoins in
     bool stone = false;           // a stone wall: lintels on the ashlar grid
+    bool lintels = false;         // brick layouts keep every straight head's lintel (framed tree)
 
     // A new cell of the running generator and feature, built in place; the caller sets polygon.
     // Reported as progress: a whole facade is one rule body, and the watchdog takes a body that

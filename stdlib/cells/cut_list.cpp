@@ -112,7 +112,7 @@ std::vector<CutListItem> cut_list(const Facade& facade, const std::vector<Cell>&
         } else if (!rect) {
             kind = "shaped cut";
         } else if (g == "bricks") {
-            kind = brick_kind(w, h, o, tol);
+            kind = c.piece.empty() ? brick_kind(w, h, o, tol) : c.piece;
         } else if (g == "window_bottom") {
             kind = stone_wall ? "sill stone" : "sill header";
         } else if (g == "soldier_course") {

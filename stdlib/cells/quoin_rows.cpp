@@ -90,7 +90,8 @@ std::vector<Pier> piers_of(const std::vector<Piece>& pieces) {
         if (e >= pieces.size()) continue;
         bool contiguous = true;
         for (std::size_t i = k; i < e; ++i)
-            contiguous &= pieces[i].start + pieces[i].length == pieces[i + 1].start;
+            contiguous &=
+                pieces[i].start + pieces[i].length == pieces[i + 1].start && !pieces[i + 1].head;
         const int start = pieces[k].start, n = pieces[e].start + pieces[e].length - start;
         if (contiguous && n >= 4 && n <= 8) out.push_back({k, e, start, n});
         k = e - 1;

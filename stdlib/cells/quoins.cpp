@@ -30,6 +30,9 @@ void quoin(Context& c, detail::BrickLayout& layout, const Edge& e, Point inside)
         c.place(detail::polygon_of(layout.rect(row, k)), layout.grid.course(row), true, &drawn);
         return;
     }
+    // A bonded-in layout has no quoin in this course (a head or sill falls within it): the
+    // layout's bricks fill it, closed against the quoins above and below.
+    if (layout.quoined) return;
     row = layout.grid.row_at(inside.y);
     if (row < 0) return;
     double s = e.project(inside);

@@ -67,6 +67,7 @@ Node framed_tree() {
     Node tree = by_kind(arches(arch, features), arches(arch, features), b);
     return Node([tree](const FeatureRef& f, Context& c) {
         c.data().quoined = true;  // the brick layouts bond the quoins in (quoin_rows.hpp)
+        c.data().lintels = true;  // and close the bond against every lintel (lintel.hpp)
         tree(f, c);
     });
 }

@@ -60,6 +60,12 @@ struct MasonReport {
                                  // away from a jamb or the wall's end
     long unit_square_pairs = 0;  // two stones of about one grid unit sharing a side
     long unit_square_runs = 0;   // three or more in a line (counted by their middle ones)
+    // King closers (Cell::piece): three quarters of a brick on the face, against a reveal (a
+    // plumb side of the wall or an opening) or a quoin, a stretcher (or an opening's head) beside
+    // them in the course.
+    long king_closers = 0;
+    long king_closers_misplaced = 0;
+    std::vector<Point> misplaced_kings;
     long openings = 0;
     long openings_without_head = 0;
     std::vector<std::string> headless;
@@ -257,6 +263,50 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         for (std::size_t i = 0; i < squares.size(); ++i)
             r.unit_square_runs += (left[i] && right[i]) || (up[i] && down[i]);
     }
+    // King closers: their face, their place at a reveal or quoin, the stretcher beside them.
+    for (const Cell& c : cells) {
+        if (c.piece != "king closer") continue;
+        ++r.king_closers;
+        Rect b;
+        bool ok = is_rect(c.polygon, b) &&
+                  std::abs(b.width() - (3 * (s.length + s.mortar) / 4 - s.mortar)) <= s.tolerance &&
+                  std::abs(b.height() - s.height) <= s.tolerance;
+        bool reveal = false, stretcher = false;
+        const double near = s.mortar + s.tolerance;
+        for (const auto& e : facade.edges())
+            if (e.vertical() && !e.arc && e.bounds.y0 < b.y1 && e.bounds.y1 > b.y0 &&
+                (std::abs(e.bounds.x0 - b.x0) < near || std::abs(e.bounds.x0 - b.x1) < near))
+                reveal = true;
+        for (const Cell& d : cells) {
+            Rect n;
+            if (&d == &c || !coursed(d) || !is_rect(d.polygon, n) ||
+                std::abs(n.y0 - b.y0) > 0.05 * s.mortar + 1e-9)
+                continue;
+            const bool beside = std::abs(n.x1 - b.x0) < near || std::abs(b.x1 - n.x0) < near;
+            if (!beside) continue;
+            // A quoin: laid as such, or the piece at a plumb side whatever laid it.
+            reveal |= d.generator == "quoins";
+            for (const auto& e : facade.edges())
+                if (e.vertical() && !e.arc && e.bounds.y0 < n.y1 && e.bounds.y1 > n.y0 &&
+                    (std::abs(e.bounds.x0 - n.x0) < near || std::abs(e.bounds.x0 - n.x1) < near) &&
+                    n.width() <= s.length + s.tolerance)
+                    reveal = true;
+            stretcher |= std::abs(n.width() - s.length) <= s.tolerance;
+        }
+        // Or the head of an opening beside it (the stretcher there is under the soldiers).
+        for (const Cell& d : cells) {
+            Rect n;
+            if (!mason_detail::is_head(d.generator) || !is_rect(d.polygon, n) || n.y0 > b.y1 ||
+                n.y1 < b.y0)
+                continue;
+            stretcher |=
+                std::abs(n.x1 - b.x0) < near + s.mortar || std::abs(b.x1 - n.x0) < near + s.mortar;
+        }
+        if (!ok || !reveal || !stretcher) {
+            ++r.king_closers_misplaced;
+            r.misplaced_kings.push_back(b.center());
+        }
+    }
     // Heads: above the middle of every top edge of an opening, a lintel, arch or soldier cell.
     std::set<std::string> seen, headless;
     for (const auto& e : facade.edges()) {
@@ -292,7 +342,8 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << r.voussoirs << ", crowns open " << r.crowns_open << "/" << r.crowns
                << ", headless " << r.openings_without_head << "/" << r.openings << ", stones "
                << r.stones << " four-way " << r.four_way << " on end " << r.stones_on_end
-               << " unit-square pairs " << r.unit_square_pairs << " runs " << r.unit_square_runs;
+               << " unit-square pairs " << r.unit_square_pairs << " runs " << r.unit_square_runs
+               << ", king closers " << r.king_closers << " misplaced " << r.king_closers_misplaced;
 }
 
 }  // namespace cells_test

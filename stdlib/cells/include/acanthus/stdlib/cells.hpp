@@ -185,6 +185,8 @@ struct Cell {
     std::string label;
     int course = -1;
     int feature_index = -1;
+    // What a mason calls the piece when its face alone does not say ("king closer"); else empty.
+    std::string piece;
 };
 
 struct FeatureRef {
