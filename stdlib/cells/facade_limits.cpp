@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "facade_data.hpp"
+#include "voussoirs.hpp"
 
 namespace acanthus::cells::detail {
 
@@ -71,6 +72,22 @@ void check_limits(const Facade& facade, const Options& o) {
             facade.name() + ": the wall would take about " + with_commas(cells) + " cells (" +
             number(facade.wall_area()) + " square units of wall), more than the limit of " +
             with_commas(o.max_cells) + " (cells_max_cells); is the drawing in the brick's units?");
+    // An arch needs wall beside its springing for its ring to bear on: where not even a
+    // half-brick ring fits (an arched opening at the wall's very end), the opening is refused.
+    const double ring =
+        (o.arch_depth > 0 ? o.arch_depth : o.brick_length + o.mortar) * std::max(1, o.arch_rows);
+    for (const Edge& e : facade.edges()) {
+        if (!e.arc || !e.opening || ring_depth(facade, e, o, ring) > 0) continue;
+        std::string names;
+        for (const std::string& l : e.labels) names += (names.empty() ? "" : " ") + l;
+        throw InputError(facade.name() + ": the opening \"" + names +
+                         "\": the ring of its arch would reach past the wall, even one half-brick "
+                         "ring (" +
+                         number((o.brick_length + o.mortar) / 2) +
+                         " deep): an arch needs wall beside its springing to bear on; move the "
+                         "opening further from the wall's end or the other opening, or give it a "
+                         "flat head");
+    }
     const double course = o.brick_height + o.mortar;
     for (std::size_t f = 0; f < data.faces.size(); ++f) {
         if (!thinner_than(data, static_cast<int>(f), course)) continue;
