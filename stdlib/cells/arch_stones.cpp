@@ -96,7 +96,7 @@ bool ring_fits(const Facade& f, const Edge& edge, double depth) {
     // Just inside the extrados and the skewback's plumb side: a ring whose extrados meets the
     // wall's end exactly still fits.
     const double d = depth * (1 - 1e-6);
-    const int n = std::clamp(static_cast<int>(std::ceil(edge.length / (0.1 * depth))), 8, 4096);
+    const int n = std::clamp(static_cast<int>(std::ceil(edge.length / (0.1 * depth))), 8, 512);
     for (int i = 0; i <= n; ++i) {
         const double s = edge.length * i / n;
         const Point p = edge.at(s);
