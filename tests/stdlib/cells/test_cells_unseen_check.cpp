@@ -210,8 +210,9 @@ ArchReport arch_check(const Facade& f, const std::vector<Cell>& cells, const Mas
 // on the wide opening the course grid (bonds and courses are checked in test_cells_mason) meets
 // the 3 m head within a course, opening the joints below it, so the top takes two cut courses of
 // 3.85 cm and one brick beside the cart door's head is 1.6 mm short, its bed 0.8 mm off the
-// course line. In stone, the grid tool's thin rows through the arches' springings and crowns
-// leave four-way joints, unit squares and stones on end where nothing wider fits.
+// course line. In stone, the grid tool keeps thin rows and columns through the openings' ends
+// (a column 3.6 cm wide between the middle window's jamb and the door's on the ashlar front, laid
+// one unit-high stone a row: 14 of its 19 four-way joints), and stones stand on end in them.
 struct Known {
     long cut_courses = 1, courses_off_gauge = 0;
     double height_deviation = 0;
