@@ -461,6 +461,16 @@ TEST(CellsUnseen, BadFacadesRefused) {
             {"slot"});
     refused(wall + "<circle id=\"dot\" class=\"window\" cx=\"300\" cy=\"300\" r=\"0\"/>", {"dot"});
     refused(wall + "<path id=\"flat\" class=\"window\" d=\"M 100 100 L 300 100 Z\"/>", {"flat"});
+    // Openings too small to leave in brickwork: a square of a micrometre (it was laid over
+    // without a word), a slot narrower than a joint.
+    refused(wall +
+                "<path id=\"speck\" class=\"window\" d=\"M 100 100 h 0.0001 v 0.0001 h "
+                "-0.0001 Z\"/>",
+            {"speck"});
+    refused(wall +
+                "<rect id=\"slit\" class=\"window\" x=\"100\" y=\"100\" width=\"120\" "
+                "height=\"0.4\"/>",
+            {"slit"});
     // A wall thinner than a course (7.5 cm): a 6 cm strip.
     refused("<rect id=\"coping\" class=\"wall\" width=\"800\" height=\"6\"/>", {"coping"});
     // A wall thinner than a course between openings everywhere: a frame 3 cm wide.
