@@ -38,7 +38,115 @@ bool apex(const Facade& f, const Corner& k) {
     return ua.dot(ub) <= std::cos(1.0 * M_PI / 180);
 }
 
+// Even-odd: inside the face's flattened boundary (its outline and the openings in it).
+bool in_face(const Face& face, Point p) {
+    bool in = false;
+    for (const std::vector<Point>& loop : face.loops)
+        for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++)
+            if ((loop[i].y > p.y) != (loop[j].y > p.y) &&
+                p.x < loop[j].x +
+                          (p.y - loop[j].y) * (loop[i].x - loop[j].x) / (loop[i].y - loop[j].y))
+                in = !in;
+    return in;
+}
+
+// The straight plumb jamb a segmental arc springs from at its end `corner`, if any.
+const Edge* plumb_jamb(const Facade& f, const Edge& arc, int corner) {
+    if (corner < 0) return nullptr;
+    const Corner& k = f.corners()[static_cast<std::size_t>(corner)];
+    const Edge* arc_ptr = &arc;
+    for (int e : {k.edge_in, k.edge_out}) {
+        if (e < 0) continue;
+        const Edge& other = f.edges()[static_cast<std::size_t>(e)];
+        if (&other == arc_ptr || other.arc) continue;
+        if (other.bounds.width() <= 1e-6 * std::max(1.0, other.bounds.height())) return &other;
+    }
+    return nullptr;
+}
+
+// A circle the reader split into arcs with no corner between them (their centres a rounding
+// error apart): the arcs of that one ring, in edge order; else just `edge`.
+std::vector<const Edge*> ring_of(const Facade& f, const Edge& edge) {
+    std::vector<const Edge*> out{&edge};
+    if (!edge.arc || edge.closed || edge.corner_start >= 0 || edge.corner_end >= 0) return out;
+    const Segment& s = edge.segments.front();
+    const double tol = 1e-6 * std::max(1.0, s.radius);
+    out.clear();
+    double sweep = 0;
+    for (int e : f.faces()[static_cast<std::size_t>(edge.face)].edges) {
+        const Edge& o = f.edges()[static_cast<std::size_t>(e)];
+        if (!o.arc || o.closed || o.corner_start >= 0 || o.corner_end >= 0) continue;
+        bool same = true;
+        for (const Segment& g : o.segments)
+            same &= distance(g.center, s.center) <= tol && std::abs(g.radius - s.radius) <= tol;
+        if (!same) continue;
+        out.push_back(&o);
+        for (const Segment& g : o.segments) sweep += g.sweep;
+    }
+    std::sort(out.begin(), out.end());
+    if (std::abs(std::abs(sweep) - 2 * M_PI) > 1e-6) out = {&edge};
+    return out;
+}
+
 }  // namespace
+
+bool ring_fits(const Facade& f, const Edge& edge, double depth) {
+    if (!edge.arc) return true;
+    const Face& face = f.faces()[static_cast<std::size_t>(edge.face)];
+    // Just inside the extrados and the skewback's plumb side: a ring whose extrados meets the
+    // wall's end exactly still fits.
+    const double d = depth * (1 - 1e-6);
+    const int n = std::clamp(static_cast<int>(std::ceil(edge.length / (0.1 * depth))), 8, 512);
+    for (int i = 0; i <= n; ++i) {
+        const double s = edge.length * i / n;
+        const Point p = edge.at(s);
+        if (!in_face(face, p + edge.inward(s) * d) || !in_face(face, p + edge.inward(s) * d / 2))
+            return false;
+    }
+    for (int end = 0; end < 2 && !edge.closed; ++end) {
+        const double s = end ? edge.length : 0;
+        if (!plumb_jamb(f, edge, end ? edge.corner_end : edge.corner_start)) continue;
+        const Point p = edge.at(s);
+        const Vector u = edge.inward(s);
+        if (u.y >= 0) continue;  // no skewback: the ring springs level or downwards
+        const double x = p.x + u.x * d;
+        for (double k : {0.5, 0.99})
+            if (!in_face(face, {x, p.y + u.y * d * (1 - k)})) return false;
+        if (!in_face(face, {p.x + (x - p.x) * 0.99, p.y - 1e-6 * depth})) return false;
+    }
+    return true;
+}
+
+namespace {
+
+// The arcs of one arch: `e` and the arcs it meets at an angle (a pointed arch's two halves).
+std::vector<const Edge*> arch_arcs(const Facade& f, const Edge& e) {
+    std::vector<const Edge*> out = ring_of(f, e);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        for (int k : {out[i]->corner_start, out[i]->corner_end}) {
+            if (k < 0) continue;
+            const Corner& c = f.corners()[static_cast<std::size_t>(k)];
+            for (int j : {c.edge_in, c.edge_out}) {
+                const Edge* o = j >= 0 ? &f.edges()[static_cast<std::size_t>(j)] : nullptr;
+                if (o && o->arc && std::find(out.begin(), out.end(), o) == out.end())
+                    out.push_back(o);
+            }
+        }
+    return out;
+}
+
+}  // namespace
+
+double ring_depth(const Facade& f, const Edge& e, const Options& o, double depth) {
+    const std::vector<const Edge*> arcs = arch_arcs(f, e);
+    auto fits = [&](double d) {
+        return std::all_of(arcs.begin(), arcs.end(),
+                           [&](const Edge* a) { return ring_fits(f, *a, d); });
+    };
+    if (fits(depth)) return depth;
+    const double half = (o.brick_length + o.mortar) / 2;
+    return half < depth && fits(half) ? half : 0;
+}
 
 void place_voussoirs(const Edge& edge, Context& c, double width, double depth, int rows) {
     if (!edge.arc) return;
@@ -67,6 +175,29 @@ void place_voussoirs(const Edge& edge, Context& c, double width, double depth, i
     };
     const bool half = ends_at_apex(edge.corner_start) || ends_at_apex(edge.corner_end);
     const double slack = 1e-6 * edge.length;
+    // A ring split into arcs is set out whole from its crown, by its first arc.
+    const std::vector<const Edge*> ring = ring_of(facade, edge);
+    if (ring.size() > 1) {
+        if (ring.front() != &edge) return;
+        double total = 0;
+        for (const Edge* e : ring) total += e->length;
+        for (int row = 0; row < rows; ++row) {
+            double r_in = radius + grow * depth * row, r_out = radius + grow * depth * (row + 1);
+            if (r_in <= 0 || r_out <= 0) break;
+            const double want = total / radius * (r_in + r_out) / 2 / width;
+            int n = std::max(1, static_cast<int>(std::lround(want)));
+            if (n % 2 == 0) n = want >= n ? n + 1 : std::max(1, n - 1);
+            for (int i = 0; i < n; ++i) {
+                double t0 = M_PI / 2 + dir * 2 * M_PI * i / n;
+                double t1 = M_PI / 2 + dir * 2 * M_PI * (i + 1) / n;
+                std::vector<Point> poly;
+                arc_points(r_in, t0, t1, poly);
+                arc_points(r_out, t1, t0, poly);
+                c.place(poly, row);
+            }
+        }
+        return;
+    }
     auto intervals =
         c.edge_occupancy(static_cast<int>(&edge - facade.edges().data())).free_intervals(slack);
     for (auto [s0, s1] : intervals) {
@@ -192,6 +323,14 @@ namespace {
 void set_out_from(const FeatureRef& f, Context& c, double width, double depth, int rows) {
     const Facade& facade = c.facade();
     const Corner& k = facade.corners()[static_cast<std::size_t>(f.index)];
+    // A ring that would reach past the wall (a springing near its end) is turned in one
+    // half-brick ring; check() refuses an arch where not even that fits.
+    for (int e : {k.edge_in, k.edge_out}) {
+        if (e < 0 || !facade.edges()[static_cast<std::size_t>(e)].arc) continue;
+        const double d = detail::ring_depth(facade, facade.edges()[static_cast<std::size_t>(e)],
+                                            c.options(), depth * rows);
+        if (d > 0 && d < depth * rows) depth = d, rows = 1;
+    }
     auto& keyed = c.data().layout<std::set<int>>("arch:keystones", [] { return std::set<int>{}; });
     const std::string generator = c.data().generator;
     auto key = [&](int corner) {
@@ -236,7 +375,11 @@ Generator arch_stones() {
         }
         if (f.kind != FeatureKind::edge) return;
         const Edge& e = c.facade().edges()[static_cast<std::size_t>(f.index)];
-        detail::place_voussoirs(e, c, width, depth, rows);
+        const double fit = detail::ring_depth(c.facade(), e, o, depth * rows);
+        if (fit > 0 && fit < depth * rows)
+            detail::place_voussoirs(e, c, width, fit, 1);
+        else
+            detail::place_voussoirs(e, c, width, depth, rows);
     };
 }
 
@@ -251,7 +394,8 @@ Generator arch_bricks() {
         }
         if (f.kind != FeatureKind::edge) return;
         const Edge& e = c.facade().edges()[static_cast<std::size_t>(f.index)];
-        detail::place_voussoirs(e, c, width, depth, 1);
+        const double fit = detail::ring_depth(c.facade(), e, o, depth);
+        detail::place_voussoirs(e, c, width, fit > 0 ? fit : depth, 1);
     };
 }
 

@@ -6,6 +6,7 @@
 // (ashlar_merge.cpp).
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 #include <vector>
@@ -47,6 +48,15 @@ void edge_runs(const std::vector<std::pair<int, int>>& cells, const CourseGrid& 
         c.place(detail::polygon_of(grid.cell(cells[i].first, a, b)), grid.course(cells[i].first));
         i = j;
     }
+}
+
+// The share of unit `r` still free wall.
+double wall_part(const FaceOccupancy& occupancy, Rect r) {
+    double a = 0;
+    for (const std::vector<Point>& p : occupancy.free_part(detail::polygon_of(r)))
+        for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
+            a += (p[j].x - p[i].x) * (p[j].y + p[i].y) / 2;
+    return std::abs(a) / ((r.x1 - r.x0) * (r.y1 - r.y0));
 }
 
 // The rules layout of a face: every unit its centre puts in a stone laid before is held by that
@@ -98,6 +108,11 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
                                            .free_part(detail::polygon_of(
                                                {m.x - tiny, m.y - tiny, m.x + tiny, m.y + tiny}))
                                            .empty())
+                rules.free(row, u);
+            else if (wall_part(occupancy, grid.cell(row, u, u + 1)) > 0.2)
+                // A strip of wall beside a jamb off the grid's lines: laid one piece a row it
+                // would stand on end, its beds meeting the next column's four ways; it joins a
+                // stone of the layout, cut to the jamb.
                 rules.free(row, u);
             else
                 lone.emplace_back(row, u);

@@ -1,6 +1,7 @@
 #include "ashlar_rules.hpp"
 
 #include <acanthus/progress.hpp>
+#include <algorithm>
 #include <utility>
 
 namespace acanthus::cells::detail {
@@ -22,6 +23,31 @@ void AshlarRules::lay(Random& random) {
             if (get(r, u) == kEmpty) lay_at(r, u, random);
         report_progress("ashlar rows", r + 1, rows_);
     }
+    // A unit square on a row taller than its column stands on end where nothing wider fitted:
+    // it joins the narrower one-row stone beside it (a joint less cannot make a four-way one).
+    std::vector<char> gone(stones_.size(), 0);
+    for (std::size_t k = 0; k < stones_.size(); ++k) {
+        Stone& s = stones_[k];
+        if (gone[k] || s.h != 1 || s.w != 1) continue;
+        const auto x0 = static_cast<std::size_t>(s.unit), y0 = static_cast<std::size_t>(s.row);
+        if (g_.ys[y0 + 1] - g_.ys[y0] <= 1.1 * (g_.xs[x0 + 1] - g_.xs[x0])) continue;
+        int best = -1;
+        for (int j : {s.unit - 1, s.unit + 1})
+            if (const Stone* t = own(get(s.row, j));
+                t && t != &s && t->row == s.row && t->h == 1 &&
+                (best < 0 || t->w < stones_[static_cast<std::size_t>(best)].w))
+                best = static_cast<int>(t - stones_.data());
+        if (best < 0) continue;
+        Stone& b = stones_[static_cast<std::size_t>(best)];
+        b.unit = std::min(b.unit, s.unit);
+        b.w += 1;
+        at(s.row, s.unit) = first_id_ + best;
+        gone[k] = 1;
+    }
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < stones_.size(); ++k)
+        if (!gone[k]) stones_[n++] = stones_[k];
+    stones_.resize(n);
 }
 
 const Stone* AshlarRules::own(int id) const {

@@ -6,8 +6,11 @@
 #include <acanthus/error.hpp>
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 
 #include "facade_data.hpp"
+#include "voussoirs.hpp"
 
 namespace acanthus::cells::detail {
 
@@ -71,6 +74,44 @@ void check_limits(const Facade& facade, const Options& o) {
             facade.name() + ": the wall would take about " + with_commas(cells) + " cells (" +
             number(facade.wall_area()) + " square units of wall), more than the limit of " +
             with_commas(o.max_cells) + " (cells_max_cells); is the drawing in the brick's units?");
+    // An opening smaller than a tenth of a brick's face, or narrower than a joint, cannot be
+    // left in brickwork (no piece that small is cut, and cells have no holes): a drawing error,
+    // named rather than covered by a brick.
+    std::map<std::string, Rect> boxes;
+    for (const Edge& e : facade.edges()) {
+        if (!e.opening) continue;
+        std::string names;
+        for (const std::string& l : e.labels) names += (names.empty() ? "" : " ") + l;
+        auto [it, fresh] = boxes.try_emplace(names, e.bounds);
+        Rect& b = it->second;
+        if (!fresh)
+            b = {std::min(b.x0, e.bounds.x0), std::min(b.y0, e.bounds.y0),
+                 std::max(b.x1, e.bounds.x1), std::max(b.y1, e.bounds.y1)};
+    }
+    const double face = o.brick_length * o.brick_height;
+    for (const auto& [names, b] : boxes)
+        if (b.width() * b.height() < 0.1 * face || std::min(b.width(), b.height()) < o.mortar)
+            throw InputError(
+                facade.name() + ": the opening \"" + names + "\" (" + number(b.width()) + " x " +
+                number(b.height()) +
+                ") is smaller than a tenth of a brick's face or narrower than a "
+                "joint: no brickwork can be cut round it; remove it or draw it to size");
+    // An arch needs wall beside its springing for its ring to bear on: where not even a
+    // half-brick ring fits (an arched opening at the wall's very end), the opening is refused.
+    const double ring =
+        (o.arch_depth > 0 ? o.arch_depth : o.brick_length + o.mortar) * std::max(1, o.arch_rows);
+    for (const Edge& e : facade.edges()) {
+        if (!e.arc || !e.opening || ring_depth(facade, e, o, ring) > 0) continue;
+        std::string names;
+        for (const std::string& l : e.labels) names += (names.empty() ? "" : " ") + l;
+        throw InputError(facade.name() + ": the opening \"" + names +
+                         "\": the ring of its arch would reach past the wall, even one half-brick "
+                         "ring (" +
+                         number((o.brick_length + o.mortar) / 2) +
+                         " deep): an arch needs wall beside its springing to bear on; move the "
+                         "opening further from the wall's end or the other opening, or give it a "
+                         "flat head");
+    }
     const double course = o.brick_height + o.mortar;
     for (std::size_t f = 0; f < data.faces.size(); ++f) {
         if (!thinner_than(data, static_cast<int>(f), course)) continue;

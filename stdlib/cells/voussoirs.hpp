@@ -14,5 +14,10 @@ void place_keystone(const Corner& k, Context& c, double depth, double width);
 // The skewback under a ring springing from a plumb jamb at corner `k` (a segmental arch), its
 // bed at y = `bed` (SVG numbers, at or below the springing).
 void place_skewback(const Corner& k, Context& c, double depth, double bed);
+// Whether a ring `depth` deep round arc `edge`, with its skewbacks, lies in the wall.
+bool ring_fits(const Facade& facade, const Edge& edge, double depth);
+// The depth the ring of the arch `edge` belongs to (with a pointed arch's other half) is turned
+// in: `depth` where it fits, else a half brick (one half-brick ring) where that fits, else 0.
+double ring_depth(const Facade& facade, const Edge& edge, const Options& options, double depth);
 
 }  // namespace acanthus::cells::detail

@@ -158,7 +158,8 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             r.off_gauge_at.push_back({pitch, lines[i]});
         }
     }
-    // Voussoirs: whole when every vertex lies on the inner or the outer arc, a brick apart.
+    // Voussoirs: whole when every vertex lies on the inner or the outer arc, a brick apart (or
+    // half).
     for (const Cell& c : cells) {
         if ((c.generator != "arch_stones" && c.generator != "arch_bricks") ||
             c.feature != acanthus::cells::FeatureKind::edge || c.feature_index < 0)
@@ -173,7 +174,10 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             lo = std::min(lo, d), hi = std::max(hi, d);
         }
         const double tol = 0.25 * s.mortar + 1e-6;
-        bool whole = hi - lo >= s.length - tol;
+        // A ring a brick deep, or one half-brick ring (turned where a brick-deep one would
+        // reach past the wall).
+        const double half_ring = (s.length - s.mortar) / 2;
+        bool whole = hi - lo >= s.length - tol || std::abs(hi - lo - half_ring) < tol;
         for (Point p : c.polygon) {
             double d = std::hypot(p.x - o.x, p.y - o.y);
             whole &= std::abs(d - lo) < tol || std::abs(d - hi) < tol;
@@ -192,6 +196,10 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             if (e.at(at).y < top) top = e.at(at).y, best = at;
         }
         if (!e.closed && best > 0 && best < e.length && e.part != acanthus::cells::Part::top)
+            continue;
+        // The top at an end of an arc is a crown only at a corner (a pointed apex): where a
+        // circle split into arcs runs on smoothly, it is no crown.
+        if (!e.closed && (best == 0 ? e.corner_start : best == e.length ? e.corner_end : 0) < 0)
             continue;
         const Point p = e.at(best);
         bool seen_before = false;
