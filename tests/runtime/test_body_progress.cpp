@@ -92,9 +92,13 @@ class BodyProgressRun : public ::testing::Test {
     void SetUp() override {
         GTEST_FLAG_SET(death_test_style, "threadsafe");  // the run starts a watchdog thread
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        // A death test's child runs SetUp again and exits without TearDown: it shares its
+        // parent's folder, which the parent removes.
+        const bool child = !GTEST_FLAG_GET(internal_run_death_test).empty();
+        const pid_t owner = child ? ::getppid() : ::getpid();
         dir_ = fs::temp_directory_path() /
-               ("acanthus-test-body-progress-" + std::to_string(::getpid()) + "-" + info->name());
-        fs::remove_all(dir_);
+               ("acanthus-test-body-progress-" + std::to_string(owner) + "-" + info->name());
+        if (!child) fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
     void TearDown() override { fs::remove_all(dir_); }
