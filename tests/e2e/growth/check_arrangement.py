@@ -301,6 +301,9 @@ def case_metrics():
         check(0 < g["largest_hole"] <= 1.5,
               f"{name}: largest hole {g['largest_hole']:.2f} NN (at most 1.5)")
         check(g["motifs"] > 50, f"{name}: {g['motifs']} motifs")
+        # The exchange runs for the irregular reference only.
+        check((g["exchanges"] > 0) == (ref == "stones.json"),
+              f"{name}: {g['exchanges']} pairs exchanged their elements")
         if ref == "lattice.json":
             check(g["defects"]["share"] <= 0.05 and
                   abs(same["result"] - same["reference"]) <= 0.05,
@@ -473,6 +476,9 @@ def case_gap_factor():
         check(mb < ma and nb > na and cb > ca,
               f"gap factor {fa} -> {fb}: motifs {ma} -> {mb}, NN median {na:.3f} -> {nb:.3f}, "
               f"closest pair {ca:.3f} -> {cb:.3f} NN (fewer, wider, wider)")
+    helped = subprocess.run([PROGRAM, "--help"], capture_output=True, text=True, timeout=60)
+    check("growth_gap_factor (double, default 0.9)" in helped.stdout,
+          "gap factor: --help lists growth_gap_factor with its default")
     for bad in ("-0.1", "1.6", "nan"):
         _, p = run(f"gap-bad-{bad}", "--param", f"growth_gap_factor={bad}", expect=1)
         check("gap_factor" in p.stderr and
