@@ -293,6 +293,7 @@ std::string fidelity_json(const SynthesisResult& result) {
     Json out = Json::object();
     out["motifs"] = result.motifs.size();
     out["restarts"] = result.stats.restarts;
+    out["exchanges"] = result.stats.exchanges;
     out["spacing"] = f.spacing;
     out["nn_median"] = f.nn_median;
     out["nn_median_reference"] = f.reference_nn_median;

@@ -104,6 +104,7 @@ void check_options(const Options& o) {
     if (!(o.short_factor >= 0) || !(o.angle_factor >= 0) || !(o.long_factor > 0) ||
         !std::isfinite(o.short_factor + o.angle_factor + o.long_factor))
         bad("short_factor, angle_factor and long_factor must be finite, >= 0");
+    if (!(o.gap_factor >= 0 && o.gap_factor <= 1.5)) bad("gap_factor must be in [0, 1.5]");
     if (!(o.relax_radius > 0) || !std::isfinite(o.relax_radius)) bad("relax_radius must be > 0");
     if (!(o.priority_radius >= 0) || !std::isfinite(o.priority_radius))
         bad("priority_radius must be >= 0");

@@ -12,6 +12,10 @@
 
 namespace acanthus::growth::detail {
 
+// A pair of symbols with fewer reference edges than this has no reliable shortest edge of its
+// own (the spacing rule, Options::gap_factor).
+constexpr long kFewEdges = 12;
+
 Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const Options& options,
                      Random& random)
     : reference_(reference),
@@ -66,6 +70,8 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
     }
     const std::size_t symbols = reference.symbols.size();
     gap_.assign(symbols * symbols, INFINITY);
+    std::vector<long> edges(symbols * symbols, 0);
+    double shortest = INFINITY;
     for (std::size_t i = 0; i < reference.elements.size(); ++i)
         for (const RingSlot& s : reference.rings[i]) {
             const auto a = static_cast<std::size_t>(reference.symbol[i]);
@@ -73,7 +79,17 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
             const double d = options.gap_factor * s.offset.length();
             gap_[a * symbols + b] = std::min(gap_[a * symbols + b], d);
             gap_[b * symbols + a] = std::min(gap_[b * symbols + a], d);
+            ++edges[a * symbols + b];
+            ++edges[b * symbols + a];
+            shortest = std::min(shortest, d);
         }
+    // The shortest of a handful of edges lies well above the shortest of a hundred: a pair of
+    // symbols the reference seldom puts side by side (a rare symbol with itself) would be kept
+    // apart more than the reference does. Such a pair keeps the reference's shortest edge of
+    // all; overlaps are kept off by the motifs' sizes anyway. Each edge is counted from both
+    // ends.
+    for (std::size_t k = 0; k < gap_.size(); ++k)
+        if (edges[k] > 0 && edges[k] < 2 * kFewEdges) gap_[k] = std::min(gap_[k], shortest);
     // Two symbols never neighbours in the reference keep the closest spacing of either.
     gap_any_.assign(symbols, INFINITY);
     for (std::size_t a = 0; a < symbols; ++a)
@@ -273,6 +289,7 @@ void Synthesis::run() {
         }
     }
     if (on_lattice() && room()) repair_lattice();
+    balance_neighbours();
     stats_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }

@@ -127,6 +127,10 @@ class Synthesis {
     // Motifs whose ring matches no reference ring (RingChecker), with their neighbours that lie
     // off the lattice or carry another site's symbol, removed and grown again, a few rounds.
     void repair_lattice();
+    // Irregular references (Options::neighbour_share): motifs of two symbols exchange their
+    // reference elements until the close pairs' same-symbol share is the reference's
+    // (neighbour_share.cpp).
+    void balance_neighbours();
     void remove_motif(int id);
 
     const ReferenceData& reference_;

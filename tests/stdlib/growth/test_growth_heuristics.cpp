@@ -11,8 +11,11 @@
 #include <acanthus/random.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/stdlib/growth.hpp>
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
+#include <string>
 
 #include "fidelity.hpp"
 #include "growth_fixtures.hpp"
@@ -312,3 +315,37 @@ TEST(GrowthPruning, SameChoicesAsMatchingEveryCandidate) {
 }
 
 }  // namespace
+
+// Issue 27: after growth from an irregular reference, motifs of two symbols exchange their
+// elements until the close pairs' same-symbol share is the reference's; positions, the number of
+// motifs and the symbol mix stay as grown. Without the exchange the share is off by a few points
+// in at least one of the seeds (what makes this test fail on a version that does nothing).
+TEST(GrowthNeighbourShare, ExchangesBringTheSameSymbolShareToTheReferencesAndMoveNothing) {
+    Reference ref = Reference::from_json_file(std::string(ACANTHUS_SOURCE_DIR) +
+                                              "/examples/references/stones.json");
+    Region region = Region::from_spec("rect:160,120");
+    double worst_off = 0;
+    for (unsigned long long seed : {1ULL, 2ULL, 3ULL, 4ULL}) {
+        Options grown;
+        grown.neighbour_share = false;
+        SynthesisResult a = synthesize(ref, region, grown, {}, seed);
+        SynthesisResult b = synthesize(ref, region, Options{}, {}, seed);
+        ASSERT_EQ(a.motifs.size(), b.motifs.size());
+        std::map<std::string, int> mix_a, mix_b;
+        int changed = 0;
+        for (std::size_t i = 0; i < a.motifs.size(); ++i) {
+            EXPECT_EQ(a.motifs[i].position, b.motifs[i].position) << "motif " << i;
+            ++mix_a[a.motifs[i].symbol];
+            ++mix_b[b.motifs[i].symbol];
+            changed += a.motifs[i].source != b.motifs[i].source;
+        }
+        EXPECT_EQ(mix_a, mix_b);
+        const Fidelity& f = b.fidelity;
+        EXPECT_NEAR(f.same_symbol_share, f.reference_same_symbol_share, 0.01) << "seed " << seed;
+        worst_off = std::max(worst_off, std::abs(a.fidelity.same_symbol_share -
+                                                 a.fidelity.reference_same_symbol_share));
+        EXPECT_EQ(changed > 0, b.stats.exchanges > 0);
+        EXPECT_EQ(a.stats.exchanges, 0);
+    }
+    EXPECT_GT(worst_off, 0.02) << "growth alone already keeps the share: the test tests nothing";
+}

@@ -126,6 +126,10 @@ struct Options {
     // shortest reference edge between their symbols; 0: off (the paper, which merges only within
     // l_short).
     double gap_factor = 0.9;
+    // Irregular references, after growth: motifs of two symbols exchange their reference elements
+    // (positions kept) until the share of close neighbour pairs with one symbol is the
+    // reference's; false: as grown.
+    bool neighbour_share = true;
     double relax_radius = 3.0;  // x mean edge length: the window each step re-solves
     bool relax_global = false;  // the paper's global solve each step (slow; for comparison)
     // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
@@ -194,6 +198,7 @@ struct SynthesisStats {
     int lattice_sites = 0;   // sites per cell of the reference's lattice (0: none, or not used)
     long completed = 0;      // seeds planted on empty lattice points next to motifs
     long repaired = 0;       // motifs removed by the lattice repair (and grown again)
+    long exchanges = 0;      // pairs of motifs that exchanged elements (Options::neighbour_share)
     double seconds = 0;      // wall time (reported only, never used)
     double relax_seconds = 0;
     // How far the result is from the reference's offsets: RMS over the links between motifs of
