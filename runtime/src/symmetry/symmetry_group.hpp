@@ -63,8 +63,9 @@ class SymmetryGroup {
     // (radius at most the clearance of its centre): the one touching `c` where `c` is nearest
     // `toward`; then one centred on a mirror and one off every mirror, found on a polar sample
     // of `c` and on the mirrors through the samples, each of the equivalent circles (the
-    // images under the transformations fixing c's centre) the one nearest `toward`. At a rotation centre with mirrors, where an element fits on `c` only if
-    // its images coincide with it, these hold an element beside the centre.
+    // images under the transformations fixing c's centre) the one nearest `toward`. At a rotation
+    // centre with mirrors, where an element fits on `c` only if its images coincide with it, these
+    // hold an element beside the centre.
     std::vector<Circle> clear_circles_in(const Circle& c, Point toward, double tolerance) const;
     // The domain's edges: a rosette's two, from the centre out to `radius` (none for c1); the
     // Dirichlet domain's polygon clipped to the frame.
