@@ -340,6 +340,17 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
 }
 
 // One line of a table: the numbers a mason would look at first.
+// The trees the checker reads: the ready ones and the rowlock tree of rules/facade.acr.
+inline std::map<std::string, acanthus::cells::Node> mason_trees() {
+    using namespace acanthus::cells;
+    Node b = generator("bricks", bricks());
+    Node wb = generator("window_bottom", window_bottom());
+    Node sills = by_part(generator("soldier_course", soldier_course()), wb, b);
+    Node rowlock = by_kind(by_curve(generator("arch_bricks", arch_bricks()), sills),
+                           by_curve(generator("arch_bricks", arch_bricks()), sills), b);
+    return {{"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
+}
+
 inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
     return out << "straight " << r.straight_joints << "/" << r.head_joints << ", whole "
                << r.whole_bricks << " shaved " << r.shaved_bricks << " dev L " << r.length_deviation

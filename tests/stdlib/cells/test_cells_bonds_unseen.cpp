@@ -89,15 +89,6 @@ Facade made_up(std::uint64_t seed, bool stacked) {
     return Facade::from_shapes(std::move(shapes), "made-up-" + std::to_string(seed) + ".svg");
 }
 
-std::map<std::string, Node> trees() {
-    Node b = generator("bricks", bricks());
-    Node wb = generator("window_bottom", window_bottom());
-    Node sills = by_part(generator("soldier_course", soldier_course()), wb, b);
-    Node rowlock = by_kind(by_curve(generator("arch_bricks", arch_bricks()), sills),
-                           by_curve(generator("arch_bricks", arch_bricks()), sills), b);
-    return {{"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
-}
-
 Options centimetres() {
     Options o;
     o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1, o.joint_tolerance = 0.3;
@@ -108,7 +99,7 @@ Options centimetres() {
 
 TEST(CellsBondsUnseen, NoStraightJoints) {
     Options o = centimetres();
-    const auto ts = trees();
+    const auto ts = mason_trees();
     long total = 0;
     for (std::uint64_t seed = 1; seed <= 12; ++seed) {
         Facade f = made_up(seed, seed % 2 == 0);
@@ -142,7 +133,7 @@ TEST(CellsBondsUnseen, NoStraightJoints) {
 // counts them apart from the three-quarter bats they look like.
 TEST(CellsBondsUnseen, KingClosersInFlemishBond) {
     Options o = centimetres();
-    const auto ts = trees();
+    const auto ts = mason_trees();
     const std::string examples = std::string(ACANTHUS_SOURCE_DIR) + "/examples/facades/";
     std::vector<Facade> walls;
     walls.push_back(Facade::from_svg_file(examples + "row-house.svg"));

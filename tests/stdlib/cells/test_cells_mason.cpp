@@ -199,16 +199,6 @@ TEST(CellsMason, FindsAJointAtTheCrown) {
 
 namespace {
 
-// The trees the checker reads: the ready ones and the rowlock tree of rules/facade.acr.
-std::map<std::string, Node> mason_trees() {
-    Node b = generator("bricks", bricks());
-    Node wb = generator("window_bottom", window_bottom());
-    Node sills = by_part(generator("soldier_course", soldier_course()), wb, b);
-    Node rowlock = by_kind(by_curve(generator("arch_bricks", arch_bricks()), sills),
-                           by_curve(generator("arch_bricks", arch_bricks()), sills), b);
-    return {{"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
-}
-
 Options centimetres() {  // as rules/facade.acr lays them
     Options o;
     o.brick_length = 21.5, o.brick_height = 6.5, o.mortar = 1, o.joint_tolerance = 0.3;

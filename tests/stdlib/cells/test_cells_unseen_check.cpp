@@ -28,16 +28,6 @@ Options centimetres() {  // as rules/facade.acr lays them
     return o;
 }
 
-// The ready trees and the rowlock tree of rules/facade.acr.
-std::map<std::string, Node> brick_trees() {
-    Node b = generator("bricks", bricks());
-    Node wb = generator("window_bottom", window_bottom());
-    Node sills = by_part(generator("soldier_course", soldier_course()), wb, b);
-    Node rowlock = by_kind(by_curve(generator("arch_bricks", arch_bricks()), sills),
-                           by_curve(generator("arch_bricks", arch_bricks()), sills), b);
-    return {{"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
-}
-
 const Bond kBrickBonds[] = {Bond::running, Bond::english, Bond::flemish, Bond::header, Bond::stack};
 
 std::string unseen(const std::string& name) {
@@ -276,7 +266,7 @@ TEST(CellsUnseen, BrickWalls) {
     for (const char* name : kBrickFacades) {
         const Facade f = Facade::from_svg_file(unseen(name));
         for (Bond bond : kBrickBonds)
-            for (const auto& [tree_name, tree] : brick_trees()) {
+            for (const auto& [tree_name, tree] : mason_trees()) {
                 o.bond = bond;
                 const Texture t = texture(f, tree, o, 1);
                 MasonReport m;
