@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "fixtures/temp_dir.hpp"
 #include "server/diagnostics.hpp"
 #include "server/guides.hpp"
 #include "server/limits.hpp"
@@ -45,14 +46,15 @@ TEST(PreviewDiagnostics, AcanthusAndGccLinesNotesSkipped) {
 }
 
 // A rule file whose line 2 is a body line the compiler rewrote ($goal).
-std::string rule_file_with_body_line() {
-    const std::string path = ::testing::TempDir() + "in_rule_source.acr";
+std::string rule_file_with_body_line(const acanthus::test::TempDir& dir) {
+    const std::string path = dir / "in_rule_source.acr";
     std::ofstream(path) << "%rule\n    double r = min( max_radius, $goal.radius ) oops;\n";
     return path;
 }
 
 TEST(PreviewDiagnostics, ClangErrorsShowTheRuleLineAndItsColumn) {
-    const std::string rule = rule_file_with_body_line();
+    const acanthus::test::TempDir dir("diagnostics");
+    const std::string rule = rule_file_with_body_line(dir);
     const std::string out =
         rule +
         ":2:64: error: expected ';' at end of declaration\n"
@@ -77,7 +79,8 @@ TEST(PreviewDiagnostics, ClangErrorsShowTheRuleLineAndItsColumn) {
 }
 
 TEST(PreviewDiagnostics, GccErrorsShowTheRuleLineAndItsColumn) {
-    const std::string rule = rule_file_with_body_line();
+    const acanthus::test::TempDir dir("diagnostics");
+    const std::string rule = rule_file_with_body_line(dir);
     const std::string out =
         rule +
         ":2:64: error: expected ',' or ';' before 'oops'\n"
@@ -104,7 +107,8 @@ TEST(PreviewDiagnostics, ProgramRuleFailureLocatedAtTheRule) {
 }
 
 TEST(PreviewDiagnostics, SourceAroundEachErrorOfTheRuleFilesOnly) {
-    const std::string dir = ::testing::TempDir();
+    const acanthus::test::TempDir temp("diagnostics");
+    const std::string dir = temp.path().string();
     const std::string rules = dir + "/context.acr", other = dir + "/other.acr";
     {
         std::ofstream out(rules);

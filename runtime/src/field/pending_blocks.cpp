@@ -163,75 +163,24 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
         blob.y1 = std::max(blob.y1, j);
     }
     int id = -1;
-    // Only groups nearer to the blob than the largest bound of all.
-    const int reach_all = static_cast<int>(std::sqrt(static_cast<double>(groups_.max()))) + 1;
-    constexpr int kGroupPixels = kShift + kGroupShift;
-    const int gi0 = std::max(0, (blob.x0 - reach_all) >> kGroupPixels);
-    const int gi1 = std::min(groups_w_ - 1, (blob.x1 + reach_all) >> kGroupPixels);
-    const int gj0 = std::max(0, (blob.y0 - reach_all) >> kGroupPixels);
-    const int gj1 = std::min(groups_h_ - 1, (blob.y1 + reach_all) >> kGroupPixels);
-    for (int gj = gj0; gj <= gj1; ++gj)
-        for (int gi = gi0; gi <= gi1; ++gi) {
-            const int g = gj * groups_w_ + gi;
-            const int bx0 = gi << kGroupShift, by0 = gj << kGroupShift;
-            const int bx1 = std::min(blocks_w_, bx0 + (1 << kGroupShift)) - 1;
-            const int by1 = std::min(blocks_h_, by0 + (1 << kGroupShift)) - 1;
-            const Rect gr = square_at(bx0 << kShift, by0 << kShift, kShift + kGroupShift);
-            if (gap2(blob, gr) >= group_bound_[g]) continue;  // lowers nothing there
-            // Only blocks nearer to the blob than the group's largest bound: a band round its box.
-            const int reach = static_cast<int>(std::sqrt(static_cast<double>(group_bound_[g]))) + 1;
-            const int ix0 = std::max(bx0, (blob.x0 - reach) >> kShift);
-            const int ix1 = std::min(bx1, (blob.x1 + reach) >> kShift);
-            const int jy0 = std::max(by0, (blob.y0 - reach) >> kShift);
-            const int jy1 = std::min(by1, (blob.y1 + reach) >> kShift);
-            for (int bj = jy0; bj <= jy1; ++bj)
-                for (int bi = ix0; bi <= ix1; ++bi) {
-                    const int b = bj * blocks_w_ + bi;
-                    const Rect r = block_rect(b);
-                    if (gap2(blob, r) >= bound_[b]) continue;
-                    // A site it already holds may outrank the blob over the whole block.
-                    if (witness_[b] >= 0 && outranks(witness_[b] % width_, witness_[b] / width_,
-                                                     {blob.x0, blob.y0, blob.x1, blob.y1}, r,
-                                                     manhattan_ ? DistanceMetric::manhattan
-                                                                : DistanceMetric::euclidean))
-                        continue;
-                    const std::uint64_t lower = cap_tiles(b, blob);
-                    if (lower == 0) continue;
-                    if (id < 0) id = store(blob, sites);  // `blob` keeps its box for the tests
-                    hold(b, id, lower);
-                }
-        }
+    for_blocks_near(blob, [&](int b, const Rect& r) {
+        // A site it already holds may outrank the blob over the whole block.
+        if (witness_[b] >= 0 &&
+            outranks(witness_[b] % width_, witness_[b] / width_,
+                     {blob.x0, blob.y0, blob.x1, blob.y1}, r,
+                     manhattan_ ? DistanceMetric::manhattan : DistanceMetric::euclidean))
+            return false;
+        const std::uint64_t lower = cap_tiles(b, blob);
+        if (lower == 0) return false;
+        if (id < 0) id = store(blob, sites);  // `blob` keeps its box for the tests
+        hold(b, id, lower);
+        return false;
+    });
 }
 
 bool PendingBlocks::may_lower(const PixelBox& box) const {
     if (group_bound_.empty()) return true;
-    const int reach_all = static_cast<int>(std::sqrt(static_cast<double>(groups_.max()))) + 1;
-    constexpr int kGroupPixels = kShift + kGroupShift;
-    const int gi0 = std::max(0, (box.x0 - reach_all) >> kGroupPixels);
-    const int gi1 = std::min(groups_w_ - 1, (box.x1 + reach_all) >> kGroupPixels);
-    const int gj0 = std::max(0, (box.y0 - reach_all) >> kGroupPixels);
-    const int gj1 = std::min(groups_h_ - 1, (box.y1 + reach_all) >> kGroupPixels);
-    for (int gj = gj0; gj <= gj1; ++gj)
-        for (int gi = gi0; gi <= gi1; ++gi) {
-            const int g = gj * groups_w_ + gi;
-            const int bx0 = gi << kGroupShift, by0 = gj << kGroupShift;
-            const int bx1 = std::min(blocks_w_, bx0 + (1 << kGroupShift)) - 1;
-            const int by1 = std::min(blocks_h_, by0 + (1 << kGroupShift)) - 1;
-            if (gap2(box, square_at(bx0 << kShift, by0 << kShift, kGroupPixels)) >= group_bound_[g])
-                continue;
-            // Only blocks nearer to the box than the group's largest bound, as in defer().
-            const int reach = static_cast<int>(std::sqrt(static_cast<double>(group_bound_[g]))) + 1;
-            const int ix0 = std::max(bx0, (box.x0 - reach) >> kShift);
-            const int ix1 = std::min(bx1, (box.x1 + reach) >> kShift);
-            const int jy0 = std::max(by0, (box.y0 - reach) >> kShift);
-            const int jy1 = std::min(by1, (box.y1 + reach) >> kShift);
-            for (int bj = jy0; bj <= jy1; ++bj)
-                for (int bi = ix0; bi <= ix1; ++bi) {
-                    const int b = bj * blocks_w_ + bi;
-                    if (gap2(box, block_rect(b)) < bound_[b]) return true;
-                }
-        }
-    return false;
+    return for_blocks_near(box, [](int, const Rect&) { return true; });
 }
 
 std::uint64_t PendingBlocks::cap_tiles(int block, const Blob& blob) {

@@ -6,6 +6,7 @@
 
 #include <acanthus/distance_metric.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -138,6 +139,41 @@ class PendingBlocks {
         const Entry& at(int number) const { return entries[number - base]; }
     };
 
+    // Calls visit(block, its rect) for each block nearer to the box than the block's bound,
+    // skipping groups of blocks no nearer than theirs, until visit returns true; returns
+    // whether it did. defer() and may_lower() walk the same blocks.
+    template <class Box, class Visit>
+    bool for_blocks_near(const Box& box, Visit visit) const {
+        const int reach_all = static_cast<int>(std::sqrt(static_cast<double>(groups_.max()))) + 1;
+        constexpr int kGroupPixels = kShift + kGroupShift;
+        const int gi0 = std::max(0, (box.x0 - reach_all) >> kGroupPixels);
+        const int gi1 = std::min(groups_w_ - 1, (box.x1 + reach_all) >> kGroupPixels);
+        const int gj0 = std::max(0, (box.y0 - reach_all) >> kGroupPixels);
+        const int gj1 = std::min(groups_h_ - 1, (box.y1 + reach_all) >> kGroupPixels);
+        for (int gj = gj0; gj <= gj1; ++gj)
+            for (int gi = gi0; gi <= gi1; ++gi) {
+                const int g = gj * groups_w_ + gi;
+                const int bx0 = gi << kGroupShift, by0 = gj << kGroupShift;
+                const int bx1 = std::min(blocks_w_, bx0 + (1 << kGroupShift)) - 1;
+                const int by1 = std::min(blocks_h_, by0 + (1 << kGroupShift)) - 1;
+                const Rect gr = square_at(bx0 << kShift, by0 << kShift, kShift + kGroupShift);
+                if (gap2(box, gr) >= group_bound_[g]) continue;
+                // A band round the box as wide as the group's largest bound.
+                const int reach =
+                    static_cast<int>(std::sqrt(static_cast<double>(group_bound_[g]))) + 1;
+                const int ix0 = std::max(bx0, (box.x0 - reach) >> kShift);
+                const int ix1 = std::min(bx1, (box.x1 + reach) >> kShift);
+                const int jy0 = std::max(by0, (box.y0 - reach) >> kShift);
+                const int jy1 = std::min(by1, (box.y1 + reach) >> kShift);
+                for (int bj = jy0; bj <= jy1; ++bj)
+                    for (int bi = ix0; bi <= ix1; ++bi) {
+                        const int b = bj * blocks_w_ + bi;
+                        const Rect r = block_rect(b);
+                        if (gap2(box, r) < bound_[b] && visit(b, r)) return true;
+                    }
+            }
+        return false;
+    }
     // The square of side 2^shift at (x0, y0), clipped to the grid.
     Rect square_at(int x0, int y0, int shift) const;
     Rect block_rect(int block) const;

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dartfill_oracle.hpp"
+#include "fixtures/temp_dir.hpp"
 #include "placed_shape.hpp"
 #include "shape.hpp"
 
@@ -127,7 +128,8 @@ TEST(DartfillShape, BadShapesAreRefusedNamingThem) {
 }
 
 TEST(DartfillShape, SvgFileOutlinesBecomeShapes) {
-    std::string file = ::testing::TempDir() + "dartfill_shapes.svg";
+    const acanthus::test::TempDir dir("dartfill");
+    std::string file = dir / "dartfill_shapes.svg";
     std::ofstream(file) << R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
   <path d="M 0 0 H 10 V 2 H 2 V 8 H 10 V 10 H 0 Z"/>
   <g transform="translate(50 50)"><polygon points="0,0 10,0 5,8"/></g>
@@ -137,7 +139,7 @@ TEST(DartfillShape, SvgFileOutlinesBecomeShapes) {
     ASSERT_EQ(set.size(), 2u);
     EXPECT_NEAR(set.area(0) + set.area(1), 52.0 + 40.0, 1e-6);
 
-    std::string holed = ::testing::TempDir() + "dartfill_holed.svg";
+    std::string holed = dir / "dartfill_holed.svg";
     std::ofstream(holed) << R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
   <path fill-rule="evenodd" d="M 0 0 H 10 V 10 H 0 Z M 3 3 H 6 V 6 H 3 Z"/></svg>)";
     std::string m = message_of([&] { ShapeSet().add_svg_file(holed); });
