@@ -186,7 +186,8 @@ void validate(const detail::ProgramOptions& o, const Region& region,
 
 // --partial: the growth so far, drawn every `every` seconds while it grows and published at
 // once (outside the run's all-or-none outputs), so that a viewer sees it grow. The first comes
-// after half the interval; later ones wait at least four times their drawing and a fifth of the
+// after a fifth of the interval (a viewer's first look: a few elements, quick to draw); later
+// ones wait at least four times their drawing and a fifth of the
 // time grown so far, so that they cost the growth a fifth of its time at most (large pictures
 // take tens of milliseconds to draw; at a third, spiral's growth took half as long again).
 constexpr long kPartialCheckEvery = 8;  // iterations between two looks at the clock
@@ -197,7 +198,7 @@ class PartialPictures {
         : path_(std::move(path)),
           every_(every),
           start_(Clock::now()),
-          next_(start_ + seconds(every / 2)) {}
+          next_(start_ + seconds(every / 5)) {}
 
     bool due() const { return !path_.empty() && Clock::now() >= next_; }
 
