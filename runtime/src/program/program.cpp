@@ -210,7 +210,6 @@ class PartialPictures {
           next_(start_ + seconds(every / 5)) {}
     PartialPictures(const PartialPictures&) = delete;
     PartialPictures& operator=(const PartialPictures&) = delete;
-    // The last picture is there when the run ends (a viewer reads it).
     ~PartialPictures() { finish(); }
 
     bool due() {
@@ -236,13 +235,18 @@ class PartialPictures {
             const detail::OutputTransaction::Bypass outside;
             draw(path_);
         }
+        ++published_;
         const Clock::time_point end = Clock::now();
         next_ = end + std::max({seconds(every_), 4 * (end - begin), (end - start_) / 5});
     }
 
-    // Waits for the picture being drawn, if any.
+    // The growth is over: the picture being drawn is stopped (the finished one follows; drawn,
+    // it would reach a viewer just before that one and hold it up), unless it would be the
+    // first: a run that started drawing one leaves one.
     void finish() {
-        if (drawing_ > 0) reaped(true);
+        if (drawing_ <= 0) return;
+        if (published_ > 0) ::kill(drawing_, SIGKILL);
+        reaped(true);
     }
 
   private:
@@ -275,7 +279,10 @@ class PartialPictures {
         while (r < 0 && errno == EINTR);
         if (r == 0) return false;
         drawing_ = 0;
-        if (r > 0 && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) remove_temporaries();
+        if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)
+            ++published_;
+        else if (r > 0)
+            remove_temporaries();
         const Clock::time_point now = Clock::now();
         next_ = std::max(next_, now + (now - forked_));
         return true;
@@ -303,6 +310,7 @@ class PartialPictures {
     double body_time_limit_;
     Clock::time_point start_, next_, forked_;
     pid_t drawing_ = 0;  // the copy drawing a picture now
+    long published_ = 0;
 };
 
 std::string frame_path(const std::string& dir, long number) {
@@ -381,6 +389,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         const detail::BodyWatchdog watchdog(o.body_time_limit, o.growth.time_limit);
         engine.run();
     }
+    partials.finish();
     progress.finish();
     // Growth is over: its field and buffers make room for the drawing (Cairo's vector pages keep
     // every operation of the page until it ends).
