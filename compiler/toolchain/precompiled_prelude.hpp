@@ -13,7 +13,7 @@ namespace acanthus {
 // Sets `options.precompiled_header` to the cached prelude, building it when missing. With
 // `options.shared_library` the prelude also declares the vectors the preview host instantiates.
 // False with `error` set when it cannot be built (the caller may then build without it). The
-// standard headers `generated` includes are precompiled too.
+// standard and Acanthus headers `generated` includes are precompiled too.
 bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options, std::string& error,
                              const std::string& generated = {});
 

@@ -1,6 +1,8 @@
 #include "server/render_job.hpp"
 
+#include <sys/inotify.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -296,7 +298,16 @@ void RenderJob::render(long generation) {
     // deadline is for a program that does not.
     run.deadline_seconds = settings.time_limit + 10;
     PartialWatch partial_seen;
+    // A partial picture is renamed into place: seen when it happens, not at the next tick.
+    const int renamed = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+    if (renamed >= 0 && inotify_add_watch(renamed, config_.work_dir.c_str(), IN_MOVED_TO) >= 0)
+        run.wake_fd = renamed;
     run.on_poll = [&] {
+        if (run.wake_fd >= 0) {
+            alignas(inotify_event) char events[4096];
+            while (::read(run.wake_fd, events, sizeof events) > 0) {
+            }
+        }
         long iterations = 0, elements = 0;
         double seconds = 0;
         if (last_progress(read_text(err, 1u << 20), iterations, elements, seconds))
@@ -305,6 +316,7 @@ void RenderJob::render(long generation) {
         if (partial_seen.changed(partial)) status_.set_partial(read_text(partial));
     };
     ChildEnd end = run_child(run);
+    if (renamed >= 0) ::close(renamed);
     std::error_code ec;
     if (end.how == ChildEnd::How::cancelled) {
         for (const std::string& f : {svg, out, err, partial}) fs::remove(f, ec);

@@ -1,6 +1,7 @@
 """`acanthus preview` without a browser: status.json, diagnostics of a broken file, the last
 good picture kept, a parameter change, an endless loop, what is refused.
 Usage: check_server.py ACANTHUS"""
+import glob
 import http.client
 import os
 import re
@@ -232,6 +233,21 @@ def main():
             save(rules, good + "\n%source\n#include <algorithm>\n%endsource\n")
             s = server.wait_revision(s["revision"])
             check(s["state"] == "ok", "with #include <algorithm> it renders: %s" % s["output"][:300])
+            # Acanthus's own headers go into the precompiled prelude too (an imported library's
+            # headers were half of its build); a misspelt one is the build's error.
+            save(rules, good + "\n%source\n#include <acanthus/environment.hpp>\n%endsource\n")
+            s = server.wait_revision(s["revision"])
+            cache = (os.environ.get("ACANTHUS_CACHE_DIR") or
+                     os.path.expanduser(os.path.join("~", ".cache", "acanthus")))
+            preludes = [open(p).read() for p in glob.glob(os.path.join(cache, "prelude-*",
+                                                                       "prelude.hpp"))]
+            check(s["state"] == "ok" and any("#include <acanthus/environment.hpp>\n" in p
+                                             for p in preludes),
+                  "an #include <acanthus/...> is precompiled with the prelude: %s" % s["output"][:300])
+            save(rules, good + "\n%source\n#include <acanthus/no_such_header.hpp>\n%endsource\n")
+            s = server.wait_revision(s["revision"])
+            check(s["state"] == "error" and "no_such_header" in s["output"],
+                  "a misspelt #include <acanthus/...> is an error: %s" % s["output"][:200])
 
             # Fixed again, then a parameter moved: a new picture without recompiling.
             save(rules, good)

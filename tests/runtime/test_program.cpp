@@ -8,6 +8,7 @@
 #include <acanthus/param.hpp>
 #include <acanthus/program.hpp>
 #include <acanthus/rule_call.hpp>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -57,7 +58,15 @@ struct dot final : Element {
 Element* create_seed() { return new seed; }
 Element* create_dot() { return new dot; }
 const ElementType seed_type{"seed", {ProxyKind::point}, &create_seed, nullptr, 1};
-const ElementType dot_type{"dot", {ProxyKind::circle}, &create_dot, nullptr, 5};
+// Its draw is set by the test that needs one.
+ElementType dot_type{"dot", {ProxyKind::circle}, &create_dot, nullptr, 5};
+
+// A %draw body that crashes in any process but the test's own: in the copies that draw
+// --partial pictures.
+pid_t test_process = ::getpid();
+void crash_in_copies(Canvas&, const Element&) {
+    if (::getpid() != test_process) std::abort();
+}
 const ElementType& seed::type() const { return seed_type; }
 const ElementType& dot::type() const { return dot_type; }
 
@@ -119,6 +128,7 @@ class Program : public ::testing::Test {
         explode = false;
         limit = 1000;
         dot_count = 0;
+        dot_type.draw = nullptr;
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         dir_ = fs::temp_directory_path() /
                ("acanthus-test-program-" + std::to_string(::getpid()) + "-" + info->name());
@@ -387,6 +397,21 @@ TEST_F(Program, PartialPicturesWhileGrowing) {
     EXPECT_LE(circles(partial), circles(done));
     for (const std::string& f : files())  // no temporary left beside them
         EXPECT_TRUE(f == "partial.svg" || f == "out.svg") << f;
+}
+
+// Each partial picture is drawn by a copy of the program while the growth goes on: a copy
+// that crashes costs that picture only, not the run, its outputs or a crash report.
+TEST_F(Program, PartialPictureCopyCrashingLeavesTheRunAlone) {
+    dot_type.draw = &crash_in_copies;
+    Outcome o = run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000",
+                     "--param", "dot_radius=2", "--partial", path("partial.svg"), "--partial-every",
+                     "0.01", "-o", path("out.svg")});
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(o.err.find("crash"), std::string::npos) << o.err;
+    EXPECT_EQ(o.err.find("abort"), std::string::npos) << o.err;
+    EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
+    for (const std::string& f : files())  // no picture, and nothing the copies left
+        EXPECT_EQ(f, "out.svg");
 }
 
 TEST_F(Program, DebugFrameAfterTheEndWarns) {

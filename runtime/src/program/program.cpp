@@ -1,5 +1,9 @@
 // run_program: the generated program's main(). Everything the command line names is checked
 // before growth starts, so a bad argument never costs a long run and never leaves a file behind.
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <acanthus/error.hpp>
 #include <acanthus/growth.hpp>
 #include <acanthus/program.hpp>
@@ -7,7 +11,10 @@
 #include <acanthus/render.hpp>
 #include <acanthus/skeletal_stroke.hpp>
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -186,39 +193,124 @@ void validate(const detail::ProgramOptions& o, const Region& region,
 
 // --partial: the growth so far, drawn every `every` seconds while it grows and published at
 // once (outside the run's all-or-none outputs), so that a viewer sees it grow. The first comes
-// after half the interval; later ones wait at least four times their drawing and a fifth of the
-// time grown so far, so that they cost the growth a fifth of its time at most (large pictures
-// take tens of milliseconds to draw; at a third, spiral's growth took half as long again).
+// after a fifth of the interval (a viewer's first look: a few elements, quick to draw). Each is
+// drawn by a forked copy of the program while the growth goes on: drawing a large picture took
+// tens of milliseconds each time, a third of spiral's processor time, on the growth's way. The
+// next waits for the copy to end, at least as long again as it took, and a fifth of the time
+// grown so far. The copy shares nothing the growth changes afterwards (copy-on-write memory).
 constexpr long kPartialCheckEvery = 8;  // iterations between two looks at the clock
 
 class PartialPictures {
   public:
-    PartialPictures(std::string path, double every)
+    PartialPictures(std::string path, double every, double body_time_limit)
         : path_(std::move(path)),
           every_(every),
+          body_time_limit_(body_time_limit),
           start_(Clock::now()),
-          next_(start_ + seconds(every / 2)) {}
+          next_(start_ + seconds(every / 5)) {}
+    PartialPictures(const PartialPictures&) = delete;
+    PartialPictures& operator=(const PartialPictures&) = delete;
+    ~PartialPictures() { finish(); }
 
-    bool due() const { return !path_.empty() && Clock::now() >= next_; }
+    bool due() {
+        if (path_.empty() || (drawing_ > 0 && !reaped(false))) return false;
+        return Clock::now() >= next_;
+    }
 
     template <class Draw>
     void write(Draw draw) {
         const Clock::time_point begin = Clock::now();
+        std::fflush(nullptr);  // nothing buffered is written twice
+        const pid_t parent = getpid();
+        const pid_t pid = fork();
+        if (pid == 0) draw_and_exit(draw, parent);
+        if (pid > 0) {
+            drawing_ = pid;
+            forked_ = begin;
+            next_ = begin + std::max(seconds(every_), (begin - start_) / 5);
+            return;
+        }
+        // No copy (out of processes): drawn here, with the growth waiting for it.
         {
             const detail::OutputTransaction::Bypass outside;
             draw(path_);
         }
+        ++published_;
         const Clock::time_point end = Clock::now();
         next_ = end + std::max({seconds(every_), 4 * (end - begin), (end - start_) / 5});
     }
 
+    // The growth is over: the picture being drawn is stopped (the finished one follows; drawn,
+    // it would reach a viewer just before that one and hold it up), unless it would be the
+    // first: a run that started drawing one leaves one.
+    void finish() {
+        if (drawing_ <= 0) return;
+        if (published_ > 0) ::kill(drawing_, SIGKILL);
+        reaped(true);
+    }
+
   private:
+    template <class Draw>
+    [[noreturn]] void draw_and_exit(Draw& draw, pid_t parent) {
+        // A crash here is the copy's alone: the default action, not the run's crash report
+        // (which would remove the run's temporary outputs, shared by name with the parent).
+        for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGABRT}) std::signal(signal, SIG_DFL);
+        // Gone with the run, whatever ends it; and a drawing that never ends (the watchdog
+        // thread is not copied) is stopped like one body that runs too long.
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent) std::_Exit(1);
+        if (body_time_limit_ > 0) alarm(static_cast<unsigned>(std::ceil(body_time_limit_)));
+        int code = 0;
+        try {
+            const detail::OutputTransaction::Bypass outside;
+            draw(path_);
+        } catch (...) {
+            code = 1;
+        }
+        std::_Exit(code);  // no destructors, no atexit: they are the parent's
+    }
+
+    // Whether the copy drawing has ended (waited for with `block`); then the next picture
+    // waits at least as long as it took.
+    bool reaped(bool block) {
+        int status = 0;
+        pid_t r;
+        do r = waitpid(drawing_, &status, block ? 0 : WNOHANG);
+        while (r < 0 && errno == EINTR);
+        if (r == 0) return false;
+        drawing_ = 0;
+        if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)
+            ++published_;
+        else if (r > 0)
+            remove_temporaries();
+        const Clock::time_point now = Clock::now();
+        next_ = std::max(next_, now + (now - forked_));
+        return true;
+    }
+
+    // What a copy that crashed or was stopped left of its picture (write_output_file's
+    // temporary name, `.NAME.tmp-XXXXXX` beside it).
+    void remove_temporaries() const {
+        const fs::path target(path_);
+        const std::string prefix = "." + target.filename().string() + ".tmp-";
+        std::error_code ec;
+        const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+        for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+            const std::string name = e.path().filename().string();
+            if (name.size() == prefix.size() + 6 && name.rfind(prefix, 0) == 0)
+                fs::remove(e.path(), ec);
+        }
+    }
+
     static Clock::duration seconds(double s) {
         return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
     }
     std::string path_;
     double every_;
-    Clock::time_point start_, next_;
+    double body_time_limit_;
+    Clock::time_point start_, next_, forked_;
+    pid_t drawing_ = 0;  // the copy drawing a picture now
+    long published_ = 0;
 };
 
 std::string frame_path(const std::string& dir, long number) {
@@ -273,7 +365,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     }
     RenderOptions frame_options = o.render;
     long frames_written = 0, last_frame_iteration = -1;
-    PartialPictures partials(o.partial, o.partial_every);
+    PartialPictures partials(o.partial, o.partial_every, o.body_time_limit);
     if (!o.frames_dir.empty() || !o.partial.empty()) {
         // --partial looks at the clock every few iterations; --frames wants every K-th.
         const long every = o.partial.empty()      ? o.frames_every
@@ -297,6 +389,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         const detail::BodyWatchdog watchdog(o.body_time_limit, o.growth.time_limit);
         engine.run();
     }
+    partials.finish();
     progress.finish();
     // Growth is over: its field and buffers make room for the drawing (Cairo's vector pages keep
     // every operation of the page until it ends).
