@@ -255,6 +255,8 @@ def case_bad_input():
              ("mode", ["--param", "growth_mode=sideways"], "sideways"),
              ("flow-without-strokes", ["--param", "growth_mode=flow"], "flow stroke"),
              ("negative-w4", ["--param", "growth_w4=-1"], "w4 must be finite and >= 0"),
+             ("negative-slack", ["--param", "growth_relax_slack=-0.5"],
+              "relax_slack must be finite and >= 0"),
              # Issue 27: refused before growth starts, with the estimate.
              ("absurd-count", ["--param", f"reference={REFS / 'stones.json'}", "--region",
                                "rect:1000000,1000000"], "would grow about 1.21e+10 motifs")]
