@@ -106,6 +106,8 @@ void check_options(const Options& o) {
         bad("short_factor, angle_factor and long_factor must be finite, >= 0");
     if (!(o.gap_factor >= 0 && o.gap_factor <= 1.5)) bad("gap_factor must be in [0, 1.5]");
     if (!(o.relax_radius > 0) || !std::isfinite(o.relax_radius)) bad("relax_radius must be > 0");
+    if (!(o.relax_slack >= 0) || !std::isfinite(o.relax_slack))
+        bad("relax_slack must be finite and >= 0");
     if (!(o.priority_radius >= 0) || !std::isfinite(o.priority_radius))
         bad("priority_radius must be >= 0");
     if (o.max_elements < 0) bad("max_elements must be >= 0");

@@ -645,6 +645,17 @@ void Synthesis::relax_around(int centre) {
                     if (back.node == id) springs.push_back({it->second, local[id], back.desired});
         }
     }
+    // Slack: a link within relax_slack * l of its offset holds as it stands (the reference's own
+    // jitter, which pulling every link to one ring's offset would even out); a link further off
+    // is pulled only back to that distance.
+    const double slack = options_.relax_slack * l_;
+    for (Spring& s : springs) {
+        Vector now =
+            positions[static_cast<std::size_t>(s.to)] - positions[static_cast<std::size_t>(s.from)];
+        Vector miss = now - s.desired;
+        double length = miss.length();
+        s.desired = length <= slack ? now : s.desired + miss * (slack / length);
+    }
     relax(positions, springs, free_local);
     // Apply, then put back any node whose motif would now overlap or leave the panel, until the
     // moved ones are all valid (all put back is the old, valid state).

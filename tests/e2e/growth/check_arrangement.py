@@ -255,6 +255,8 @@ def case_bad_input():
              ("mode", ["--param", "growth_mode=sideways"], "sideways"),
              ("flow-without-strokes", ["--param", "growth_mode=flow"], "flow stroke"),
              ("negative-w4", ["--param", "growth_w4=-1"], "w4 must be finite and >= 0"),
+             ("negative-slack", ["--param", "growth_relax_slack=-0.5"],
+              "relax_slack must be finite and >= 0"),
              # Issue 27: refused before growth starts, with the estimate.
              ("absurd-count", ["--param", f"reference={REFS / 'stones.json'}", "--region",
                                "rect:1000000,1000000"], "would grow about 1.21e+10 motifs")]
@@ -342,27 +344,50 @@ def case_repaired_ids():
           f"the repair)")
 
 
-def dart_reference(path, seed, share_a, width, height, gap, size_a, size_b, jitter=None):
-    """An irregular two-symbol reference by dart throwing (elements at least `gap` apart), or
-    with `jitter` a near-regular one: a triangular lattice of spacing `gap`, each point moved by
-    up to jitter x gap in x and y."""
+def dart_reference(path, seed, share_a, width, height, gap, size_a, size_b, jitter=None,
+                   shares=None):
+    """An irregular reference by dart throwing (elements at least `gap` apart), or with `jitter` a
+    near-regular one: a triangular lattice of spacing `gap`, each point moved by up to jitter x gap
+    in x and y; ("honeycomb", j): a honeycomb of edge `gap` jittered so. Symbols a and b (a with
+    probability share_a), or with `shares` a, b, c with those probabilities (sizes: a size_a, b
+    size_b, c their mean)."""
     import random
     rng = random.Random(seed)
     pts = []
+
+    def symbol():
+        if shares is None:
+            return "a" if rng.random() < share_a else "b"
+        r = rng.random()
+        for s, w in zip("abc", shares):
+            if r < w:
+                return s
+            r -= w
+        return "c"
+
     if jitter is None:
         for _ in range(20000):
             x, y = rng.uniform(0, width), rng.uniform(0, height)
             if all((x - a) ** 2 + (y - b) ** 2 >= gap * gap for a, b, _ in pts):
-                pts.append((x, y, "a" if rng.random() < share_a else "b"))
+                pts.append((x, y, symbol()))
+    elif isinstance(jitter, tuple):
+        j = jitter[1]
+        for row in range(int(height / (1.5 * gap)) + 1):
+            for col in range(int(width / (math.sqrt(3) * gap)) + 1):
+                x = col * math.sqrt(3) * gap + (row % 2) * math.sqrt(3) * gap / 2
+                for dy in (0, gap):
+                    y = row * 1.5 * gap + dy
+                    pts.append((x + rng.uniform(-j, j) * gap, y + rng.uniform(-j, j) * gap,
+                                symbol()))
     else:
         for row in range(int(height / (gap * math.sqrt(3) / 2)) + 1):
             for col in range(int(width / gap) + 1):
                 x = col * gap + (row % 2) * gap / 2 + rng.uniform(-jitter, jitter) * gap
                 y = row * gap * math.sqrt(3) / 2 + rng.uniform(-jitter, jitter) * gap
-                pts.append((x, y, "a" if rng.random() < share_a else "b"))
-    elements = [{"symbol": s, "x": round(x, 3), "y": round(y, 3),
-                 "size": size_a if s == "a" else size_b, "angle": round(rng.uniform(0, 360), 1)}
-                for x, y, s in pts]
+                pts.append((x, y, symbol()))
+    sizes = {"a": size_a, "b": size_b, "c": (size_a + size_b) / 2}
+    elements = [{"symbol": s, "x": round(x, 3), "y": round(y, 3), "size": sizes[s],
+                 "angle": round(rng.uniform(0, 360), 1)} for x, y, s in pts]
     path.write_text(json.dumps({"elements": elements}))
 
 
@@ -406,7 +431,7 @@ def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03):
 def case_unseen_mix():
     """Irregular two-symbol references no code was tuned on, grown into a rectangle and panels
     with curved edges, a neck and a hole, 8 seeds each (grow_unseen's checks: the NN median
-    within 5% on average and 10% on every run), the same bytes for the same seed (issue 27)."""
+    within 5% on every run), the same bytes for the same seed (issue 27)."""
     refs = []
     # The first three on every panel; the last three (added after the spacing rule) on two.
     for seed, share, w, h, gap, sa, sb in ((31, 0.35, 90, 70, 9, 3.5, 2.5),
@@ -421,7 +446,7 @@ def case_unseen_mix():
     panels = ["rect:200,150", str(PANELS / "heart.svg"), str(PANELS / "arch-window.svg"),
               str(PANELS / "narrow-neck.svg")]
     grow_unseen([(ref, panels if k < 3 else panels[::3]) for k, ref in enumerate(refs)], 8,
-                0.05, 0.10)
+                0.05, 0.05)
     a, b = WORK / "mix-a.svg", WORK / "mix-b.svg"
     for out in (a, b):
         subprocess.run([PROGRAM, "-o", str(out), "--param", f"reference={refs[0]}", "--region",
@@ -433,11 +458,14 @@ def case_unseen_new():
     """References made after the neighbour exchange was settled, to check it was not tuned on
     unseen_mix's own set: Poisson-disc two-symbol sets of other densities (spacing 5 to 15, a
     symbol share of 0.15 to 0.65) and two near-regular ones (a triangular lattice jittered by
-    0.12 and 0.2 of its spacing), each in the rectangle and the heart, 4 seeds. The same checks
-    as unseen_mix, but the NN median within 10% on every run, 15% for the lattice jittered by
-    0.2 (relaxation evens out a near-regular reference's jitter, so its motifs stand 5 to 15%
-    wider apart than its nearest neighbours: docs/stdlib/growth.md), and the mix within 5 points
-    (the sparsest set puts 40 motifs in the heart: one motif is 2.5 points)."""
+    0.12 and 0.2 of its spacing), each in the rectangle and the heart, 4 seeds. Then references
+    made after the relaxation's slack was settled: Poisson-disc sets of spacing 5.5 to 12, two
+    of them with three symbols, a honeycomb jittered by 0.08 of its edge and a triangular
+    lattice jittered by 0.05, in the rectangle, the heart and the narrow neck, 4 seeds. The
+    same checks as unseen_mix, but the NN median within 5% on average and 7% on every run (3 of
+    the 120 runs are 5.6 to 6.6% off, all in the heart with 38 to 103 motifs: two are the noise
+    of a median over few motifs, one a looser run: docs/stdlib/growth.md), and the mix within 5
+    points (the sparsest set puts 40 motifs in the heart: one motif is 2.5 points)."""
     refs = []
     for seed, share, w, h, gap, sa, sb, jitter in ((71, 0.45, 70, 60, 6, 2.0, 2.5, None),
                                                    (72, 0.3, 120, 100, 15, 6.0, 4.0, None),
@@ -448,8 +476,18 @@ def case_unseen_new():
         path = WORK / f"unseen-{seed}.json"
         dart_reference(path, seed, share, w, h, gap, sa, sb, jitter)
         refs.append((path, ["rect:200,150", str(PANELS / "heart.svg")]))
-    grow_unseen(refs[:4] + refs[5:], 4, 0.10, 0.10, mix_allowed=0.05)
-    grow_unseen(refs[4:5], 4, 0.15, 0.15, mix_allowed=0.05)
+    panels = ["rect:200,150", str(PANELS / "heart.svg"), str(PANELS / "narrow-neck.svg")]
+    for seed, share, w, h, gap, sa, sb, jitter, shares in (
+            (101, 0.5, 80, 70, 7, 2.5, 2.5, None, None),
+            (102, 0.3, 110, 100, 12, 4.5, 3.5, None, None),
+            (103, 0.0, 90, 80, 9, 3.0, 3.5, None, (0.5, 0.3, 0.2)),
+            (104, 0.4, 90, 80, 8, 2.5, 3.0, ("honeycomb", 0.08), None),
+            (105, 0.6, 90, 80, 9, 3.0, 3.0, 0.05, None),
+            (106, 0.0, 70, 60, 5.5, 2.0, 1.8, None, (0.25, 0.25, 0.5))):
+        path = WORK / f"unseen-{seed}.json"
+        dart_reference(path, seed, share, w, h, gap, sa, sb, jitter, shares)
+        refs.append((path, panels))
+    grow_unseen(refs, 4, 0.05, 0.07, mix_allowed=0.05)
 
 
 def case_gap_factor():

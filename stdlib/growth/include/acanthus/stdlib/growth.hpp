@@ -132,6 +132,10 @@ struct Options {
     bool neighbour_share = true;
     double relax_radius = 3.0;  // x mean edge length: the window each step re-solves
     bool relax_global = false;  // the paper's global solve each step (slow; for comparison)
+    // x mean edge length: a link within this of its reference offset is left as it stands, one
+    // further off is pulled back to this distance, so relaxation removes accumulated misfits but
+    // keeps the reference's own variation (its jitter). 0: every link pulled to its offset.
+    double relax_slack = 1.0;
     // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
     // only the 1-ring: more context at the growth front, for near-regular references.
     bool two_ring = false;
