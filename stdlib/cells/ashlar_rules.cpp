@@ -24,30 +24,106 @@ void AshlarRules::lay(Random& random) {
         report_progress("ashlar rows", r + 1, rows_);
     }
     // A unit square on a row taller than its column stands on end where nothing wider fitted:
-    // it joins the narrower one-row stone beside it (a joint less cannot make a four-way one).
+    // it joins the narrower one-row stone beside it (a joint less cannot make a four-way one),
+    // or, with none, the row it shares of a taller stone beside it, split off for it, where
+    // that makes no more four-way joints than the face may have (the rest of that stone keeps its
+    // width).
     std::vector<char> gone(stones_.size(), 0);
+    four_way_ = four_ways(0, rows_, 0, units_);
     for (std::size_t k = 0; k < stones_.size(); ++k) {
-        Stone& s = stones_[k];
+        const Stone s = stones_[k];
         if (gone[k] || s.h != 1 || s.w != 1) continue;
         const auto x0 = static_cast<std::size_t>(s.unit), y0 = static_cast<std::size_t>(s.row);
         if (g_.ys[y0 + 1] - g_.ys[y0] <= 1.1 * (g_.xs[x0 + 1] - g_.xs[x0])) continue;
+        if (jamb_[static_cast<std::size_t>(s.row * units_ + s.unit)]) continue;
         int best = -1;
         for (int j : {s.unit - 1, s.unit + 1})
             if (const Stone* t = own(get(s.row, j));
-                t && t != &s && t->row == s.row && t->h == 1 &&
+                t && t->row == s.row && t->h == 1 &&
                 (best < 0 || t->w < stones_[static_cast<std::size_t>(best)].w))
                 best = static_cast<int>(t - stones_.data());
-        if (best < 0) continue;
-        Stone& b = stones_[static_cast<std::size_t>(best)];
-        b.unit = std::min(b.unit, s.unit);
-        b.w += 1;
-        at(s.row, s.unit) = first_id_ + best;
-        gone[k] = 1;
+        if (best >= 0) {
+            Stone& b = stones_[static_cast<std::size_t>(best)];
+            b.unit = std::min(b.unit, s.unit);
+            b.w += 1;
+            at(s.row, s.unit) = first_id_ + best;
+            gone[k] = 1;
+            continue;
+        }
+        if (split_beside(static_cast<int>(k))) {
+            gone.resize(stones_.size(), 0);
+            gone[k] = 1;
+        }
     }
     std::size_t n = 0;
     for (std::size_t k = 0; k < stones_.size(); ++k)
         if (!gone[k]) stones_[n++] = stones_[k];
     stones_.resize(n);
+}
+
+int AshlarRules::four_ways(int r0, int r1, int u0, int u1) const {
+    int n = 0;
+    for (int i = r0; i <= r1; ++i)
+        for (int j = u0; j <= u1; ++j) {
+            const int a = get(i - 1, j - 1), b = get(i - 1, j), c = get(i, j - 1), d = get(i, j);
+            if (std::min({a, b, c, d}) < 0) continue;  // outside the wall or not laid
+            n += a != b && c != d && a != c && b != d;
+        }
+    return n;
+}
+
+bool AshlarRules::split_beside(int k) {
+    const Stone s = stones_[static_cast<std::size_t>(k)];
+    std::vector<int> beside;  // taller stones beside it, the narrower first
+    for (int j : {s.unit - 1, s.unit + 1}) {
+        const Stone* t = own(get(s.row, j));
+        if (!t || t->h < 2) continue;
+        // What is left of it above or below keeps to one side of the row, and stands on end
+        // only at a jamb.
+        if (t->row != s.row && t->row + t->h != s.row + 1) continue;
+        const int r0 = t->row == s.row ? s.row + 1 : t->row;
+        if (g_.ys[static_cast<std::size_t>(r0 + t->h - 1)] - g_.ys[static_cast<std::size_t>(r0)] >
+                1.1 * (g_.xs[static_cast<std::size_t>(t->unit + t->w)] -
+                       g_.xs[static_cast<std::size_t>(t->unit)]) &&
+            !jamb_[static_cast<std::size_t>(r0 * units_ + t->unit)])
+            continue;
+        beside.push_back(static_cast<int>(t - stones_.data()));
+    }
+    if (beside.size() == 2 && stones_[static_cast<std::size_t>(beside[1])].w <
+                                  stones_[static_cast<std::size_t>(beside[0])].w)
+        std::swap(beside[0], beside[1]);
+    for (int best : beside) {
+        const Stone t = stones_[static_cast<std::size_t>(best)];
+        const int ra = std::min(t.row, s.row), rb = t.row + t.h;
+        const int ua = std::min(t.unit, s.unit), ub = std::max(t.unit + t.w, s.unit + 1);
+        const int before = four_ways(ra, rb, ua, ub);
+        // The row beside the unit joins it; the rest becomes a stone of its own.
+        const Stone joined{s.row, std::min(t.unit, s.unit), 1, t.w + 1};
+        const Stone rest{t.row == s.row ? s.row + 1 : t.row, t.unit, t.h - 1, t.w};
+        const int rest_id = first_id_ + static_cast<int>(stones_.size());
+        const int id = first_id_ + best;
+        auto give = [&](int owner) {
+            for (int i = rest.row; i < rest.row + rest.h; ++i)
+                for (int j = rest.unit; j < rest.unit + rest.w; ++j) at(i, j) = owner;
+        };
+        give(rest_id);
+        at(s.row, s.unit) = id;
+        // A four-way joint is allowed (1% of stones); a stone on end is not: one more is
+        // taken while the face stays within that (counted on the grid, where the stones laid
+        // before count too).
+        const int more = four_ways(ra, rb, ua, ub) - before;
+        if (more > 1 || (more == 1 && 100 * (four_way_ + 1) > static_cast<int>(stones_.size()))) {
+            // undo
+            give(id);
+            at(s.row, s.unit) = first_id_ + k;
+            continue;
+        }
+        four_way_ += more;
+        stones_[static_cast<std::size_t>(best)] = joined;
+        stones_.push_back(rest);
+        return true;
+    }
+    return false;
 }
 
 const Stone* AshlarRules::own(int id) const {

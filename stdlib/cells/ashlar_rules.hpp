@@ -40,12 +40,18 @@ class AshlarRules {
     int cross(int r, int u, int h, int w, int i, int j) const;
     const Stone* own(int id) const;  // a stone of this layout, or null
     void lay_at(int r, int u, Random& random);
+    // Grid points (rows r0..r1, units u0..u1) where four laid stones meet.
+    int four_ways(int r0, int r1, int u0, int u1) const;
+    // Unit square `k` on end joined to the row it shares of a taller stone beside it; false
+    // (nothing changed) where none can take it without more four-way joints than allowed.
+    bool split_beside(int k);
 
     const CourseGrid& g_;
     int rows_, units_, max_w_, max_h_, max_seam_, first_id_;
     std::vector<int> owner_;
     std::vector<char> jamb_;
     std::vector<Stone> stones_;
+    int four_way_ = 0;  // four-way joints of the face, counted once laid
 };
 
 }  // namespace acanthus::cells::detail
