@@ -98,7 +98,7 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
             const int held = owner[static_cast<std::size_t>(row * grid.units() + u)];
             if (s == detail::kOutside) continue;
             if (held >= 0 || held <= -2) {
-                rules.hold(row, u, held >= 0 ? held : -2 - held);
+                rules.hold(row, u, held >= 0 ? held : -2 - held, held <= -2);
                 // What a voussoir leaves of the unit is cut to its extrados.
                 if (held <= -2) lone.emplace_back(row, u);
                 continue;

@@ -15,7 +15,8 @@ AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam
       max_seam_(max_seam),
       first_id_(first_id),
       owner_(static_cast<std::size_t>(g.rows()) * static_cast<std::size_t>(g.units()), kBlocked),
-      jamb_(owner_.size(), 0) {}
+      jamb_(owner_.size(), 0),
+      shaped_(owner_.size(), 0) {}
 
 void AshlarRules::lay(Random& random) {
     for (int r = 0; r < rows_; ++r) {
@@ -67,6 +68,11 @@ int AshlarRules::four_ways(int r0, int r1, int u0, int u1) const {
         for (int j = u0; j <= u1; ++j) {
             const int a = get(i - 1, j - 1), b = get(i - 1, j), c = get(i, j - 1), d = get(i, j);
             if (std::min({a, b, c, d}) < 0) continue;  // outside the wall or not laid
+            bool shaped = false;
+            for (int y : {i - 1, i})
+                for (int x : {j - 1, j})
+                    shaped |= shaped_[static_cast<std::size_t>(y * units_ + x)];
+            if (shaped) continue;
             n += a != b && c != d && a != c && b != d;
         }
     return n;
@@ -109,10 +115,10 @@ bool AshlarRules::split_beside(int k) {
         give(rest_id);
         at(s.row, s.unit) = id;
         // A four-way joint is allowed (1% of stones); a stone on end is not: one more is
-        // taken while the face stays within that (counted on the grid, where the stones laid
-        // before count too).
+        // taken while the face stays within 0.8% (counted on the grid, where the stones laid
+        // before count too; the margin for the jamb and edge stones' joints off the grid).
         const int more = four_ways(ra, rb, ua, ub) - before;
-        if (more > 1 || (more == 1 && 100 * (four_way_ + 1) > static_cast<int>(stones_.size()))) {
+        if (more > 1 || (more == 1 && 125 * (four_way_ + 1) > static_cast<int>(stones_.size()))) {
             // undo
             give(id);
             at(s.row, s.unit) = first_id_ + k;

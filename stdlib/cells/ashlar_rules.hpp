@@ -24,7 +24,11 @@ class AshlarRules {
     // A unit against a jamb or the wall's end: a stone starting there may stand on end, one
     // unit wide and up to max_h high, as the paper's edge stones take random heights.
     void jamb(int r, int u) { jamb_[static_cast<std::size_t>(r * units_ + u)] = 1; }
-    void hold(int r, int u, int id) { at(r, u) = id; }
+    // `shaped`: a stone not rectangular (a voussoir), whose joints are no grid lines.
+    void hold(int r, int u, int id, bool shaped = false) {
+        at(r, u) = id;
+        shaped_[static_cast<std::size_t>(r * units_ + u)] = shaped;
+    }
     int get(int r, int u) const {
         if (r < 0 || u < 0 || r >= rows_ || u >= units_) return kBlocked;
         return owner_[static_cast<std::size_t>(r * units_ + u)];
@@ -40,7 +44,7 @@ class AshlarRules {
     int cross(int r, int u, int h, int w, int i, int j) const;
     const Stone* own(int id) const;  // a stone of this layout, or null
     void lay_at(int r, int u, Random& random);
-    // Grid points (rows r0..r1, units u0..u1) where four laid stones meet.
+    // Grid points (rows r0..r1, units u0..u1) where four laid rectangular stones meet.
     int four_ways(int r0, int r1, int u0, int u1) const;
     // Unit square `k` on end joined to the row it shares of a taller stone beside it; false
     // (nothing changed) where none can take it without more four-way joints than allowed.
@@ -49,7 +53,7 @@ class AshlarRules {
     const CourseGrid& g_;
     int rows_, units_, max_w_, max_h_, max_seam_, first_id_;
     std::vector<int> owner_;
-    std::vector<char> jamb_;
+    std::vector<char> jamb_, shaped_;
     std::vector<Stone> stones_;
     int four_way_ = 0;  // four-way joints of the face, counted once laid
 };
