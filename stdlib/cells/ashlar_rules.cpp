@@ -115,10 +115,10 @@ bool AshlarRules::split_beside(int k) {
         give(rest_id);
         at(s.row, s.unit) = id;
         // A four-way joint is allowed (1% of stones); a stone on end is not: one more is
-        // taken while the face stays within 0.8% (counted on the grid, where the stones laid
-        // before count too; the margin for the jamb and edge stones' joints off the grid).
+        // taken while the face stays within that (counted on the grid, where the stones laid
+        // before count too, against the face's own stones).
         const int more = four_ways(ra, rb, ua, ub) - before;
-        if (more > 1 || (more == 1 && 125 * (four_way_ + 1) > static_cast<int>(stones_.size()))) {
+        if (more > 1 || (more == 1 && 100 * (four_way_ + 1) > static_cast<int>(stones_.size()))) {
             // undo
             give(id);
             at(s.row, s.unit) = first_id_ + k;

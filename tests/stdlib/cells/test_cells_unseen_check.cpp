@@ -246,7 +246,8 @@ std::string list(const std::vector<std::string>& v) {
 }
 
 const char* const kBrickFacades[] = {"gable-pointed-end", "segmental-ends", "wide-opening",
-                                     "oculus-top",        "door-past-end",  "ashlar-arches"};
+                                     "oculus-top",        "door-past-end",  "ashlar-arches",
+                                     "off-gauge-heads"};
 
 }  // namespace
 
