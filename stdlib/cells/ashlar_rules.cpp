@@ -31,12 +31,31 @@ void AshlarRules::lay(Random& random) {
     // width).
     std::vector<char> gone(stones_.size(), 0);
     four_way_ = four_ways(0, rows_, 0, units_);
+    // Each repair can leave work for the other (a stone split off makes a four-way joint, a
+    // joint moved frees a unit): both run until neither changes anything, bounded.
+    for (int pass = 0; pass < 8; ++pass) {
+        const bool joined = join_on_end(gone);
+        const bool broken = break_four_ways(gone);
+        if (!joined && !broken) break;
+    }
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < stones_.size(); ++k)
+        if (!gone[k]) stones_[n++] = stones_[k];
+    stones_.resize(n);
+}
+
+bool AshlarRules::on_end(const Stone& s) const {
+    const auto x0 = static_cast<std::size_t>(s.unit), y0 = static_cast<std::size_t>(s.row);
+    const auto x1 = x0 + static_cast<std::size_t>(s.w), y1 = y0 + static_cast<std::size_t>(s.h);
+    return g_.ys[y1] - g_.ys[y0] > 1.1 * (g_.xs[x1] - g_.xs[x0]) &&
+           !jamb_[static_cast<std::size_t>(s.row * units_ + s.unit)];
+}
+
+bool AshlarRules::join_on_end(std::vector<char>& gone) {
+    bool changed = false;
     for (std::size_t k = 0; k < stones_.size(); ++k) {
         const Stone s = stones_[k];
-        if (gone[k] || s.h != 1 || s.w != 1) continue;
-        const auto x0 = static_cast<std::size_t>(s.unit), y0 = static_cast<std::size_t>(s.row);
-        if (g_.ys[y0 + 1] - g_.ys[y0] <= 1.1 * (g_.xs[x0 + 1] - g_.xs[x0])) continue;
-        if (jamb_[static_cast<std::size_t>(s.row * units_ + s.unit)]) continue;
+        if (gone[k] || s.h != 1 || s.w != 1 || !on_end(s)) continue;
         int best = -1;
         for (int j : {s.unit - 1, s.unit + 1})
             if (const Stone* t = own(get(s.row, j));
@@ -49,17 +68,78 @@ void AshlarRules::lay(Random& random) {
             b.w += 1;
             at(s.row, s.unit) = first_id_ + best;
             gone[k] = 1;
+            changed = true;
             continue;
         }
         if (split_beside(static_cast<int>(k))) {
             gone.resize(stones_.size(), 0);
             gone[k] = 1;
+            changed = true;
         }
     }
-    std::size_t n = 0;
-    for (std::size_t k = 0; k < stones_.size(); ++k)
-        if (!gone[k]) stones_[n++] = stones_[k];
-    stones_.resize(n);
+    return changed;
+}
+
+// A unit square of the layout, or one beside another (`other` aside): what a joint moved may
+// not leave.
+bool AshlarRules::lone_square(const Stone& s, int other) const {
+    if (s.w != 1 || s.h != 1) return false;
+    for (auto [a, b] : {std::pair{s.row - 1, s.unit},
+                        {s.row + 1, s.unit},
+                        {s.row, s.unit - 1},
+                        {s.row, s.unit + 1}})
+        if (const int id = get(a, b); id != other)
+            if (const Stone* t = own(id); t && t->h == 1 && t->w == 1) return true;
+    return false;
+}
+
+bool AshlarRules::break_four_ways(std::vector<char>& gone) {
+    bool changed = false;
+    for (int i = 1; i < rows_; ++i)
+        for (int j = 1; j < units_; ++j) {
+            if (four_ways(i, i, j, j) == 0) continue;
+            bool done = false;
+            for (int row : {i - 1, i}) {
+                const int ia = get(row, j - 1), ib = get(row, j);
+                const Stone *a = own(ia), *b = own(ib);
+                if (!a || !b || a == b || a->row != b->row || a->h != b->h) continue;
+                if (a->unit + a->w != j) continue;
+                const int r0 = a->row, r1 = a->row + a->h, u0 = a->unit, u1 = b->unit + b->w;
+                const int before = four_ways(r0, r1, u0, u1);
+                // 0: a unit of `a` to `b`; 1: a unit of `b` to `a`; 2: `b` joined to `a`.
+                for (int way = 0; way < 3 && !done; ++way) {
+                    Stone da = *a, db = *b;
+                    if (way == 0) da.w -= 1, db.unit -= 1, db.w += 1;
+                    if (way == 1) da.w += 1, db.unit += 1, db.w -= 1;
+                    if (way == 2) da.w += db.w, db.w = 0;
+                    if (da.w < 1 || da.w > max_w_ || db.w > max_w_ || (way < 2 && db.w < 1))
+                        continue;
+                    if (on_end(da) || (way < 2 && on_end(db))) continue;
+                    auto give = [&](int u, int w, int id) {
+                        for (int r = r0; r < r1; ++r)
+                            for (int x = u; x < u + w; ++x) at(r, x) = id;
+                    };
+                    give(da.unit, da.w, ia);
+                    if (way < 2) give(db.unit, db.w, ib);
+                    const bool square = lone_square(da, ib) || (way < 2 && lone_square(db, ia));
+                    const int after = four_ways(r0, r1, u0, u1);
+                    if (square || after >= before) {
+                        give(a->unit, a->w, ia);
+                        give(b->unit, b->w, ib);
+                        continue;
+                    }
+                    four_way_ -= before - after;
+                    stones_[static_cast<std::size_t>(ia - first_id_)] = da;
+                    if (way < 2)
+                        stones_[static_cast<std::size_t>(ib - first_id_)] = db;
+                    else
+                        gone[static_cast<std::size_t>(ib - first_id_)] = 1;
+                    changed = done = true;
+                }
+                if (done) break;
+            }
+        }
+    return changed;
 }
 
 int AshlarRules::four_ways(int r0, int r1, int u0, int u1) const {

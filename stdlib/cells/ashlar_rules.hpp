@@ -49,6 +49,14 @@ class AshlarRules {
     // Unit square `k` on end joined to the row it shares of a taller stone beside it; false
     // (nothing changed) where none can take it without more four-way joints than allowed.
     bool split_beside(int k);
+    // Unit squares on end joined to a stone beside them; true when any was.
+    bool join_on_end(std::vector<char>& gone);
+    // Four-way joints broken by moving the side joint between two stones of one row (and one
+    // height) by a unit, or by joining them, where none ends on end or beside a unit square
+    // and the joints round them lose one; true when any was.
+    bool break_four_ways(std::vector<char>& gone);
+    bool lone_square(const Stone& s, int other) const;
+    bool on_end(const Stone& s) const;
 
     const CourseGrid& g_;
     int rows_, units_, max_w_, max_h_, max_seam_, first_id_;
