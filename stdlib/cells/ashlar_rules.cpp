@@ -16,7 +16,8 @@ AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam
       first_id_(first_id),
       owner_(static_cast<std::size_t>(g.rows()) * static_cast<std::size_t>(g.units()), kBlocked),
       jamb_(owner_.size(), 0),
-      shaped_(owner_.size(), 0) {}
+      shaped_(owner_.size(), 0),
+      share_(owner_.size(), 1.0) {}
 
 void AshlarRules::lay(Random& random) {
     for (int r = 0; r < rows_; ++r) {
@@ -45,9 +46,12 @@ void AshlarRules::lay(Random& random) {
 }
 
 bool AshlarRules::on_end(const Stone& s) const {
-    const auto x0 = static_cast<std::size_t>(s.unit), y0 = static_cast<std::size_t>(s.row);
-    const auto x1 = x0 + static_cast<std::size_t>(s.w), y1 = y0 + static_cast<std::size_t>(s.h);
-    return g_.ys[y1] - g_.ys[y0] > 1.1 * (g_.xs[x1] - g_.xs[x0]) &&
+    double w = 0;  // along its top row, less what a jamb or skewback cuts off
+    for (int u = s.unit; u < s.unit + s.w; ++u)
+        w += (g_.xs[static_cast<std::size_t>(u + 1)] - g_.xs[static_cast<std::size_t>(u)]) *
+             share_[static_cast<std::size_t>(s.row * units_ + u)];
+    const auto y0 = static_cast<std::size_t>(s.row), y1 = y0 + static_cast<std::size_t>(s.h);
+    return g_.ys[y1] - g_.ys[y0] > 1.1 * w &&
            !jamb_[static_cast<std::size_t>(s.row * units_ + s.unit)];
 }
 

@@ -24,6 +24,11 @@ class AshlarRules {
     // A unit against a jamb or the wall's end: a stone starting there may stand on end, one
     // unit wide and up to max_h high, as the paper's edge stones take random heights.
     void jamb(int r, int u) { jamb_[static_cast<std::size_t>(r * units_ + u)] = 1; }
+    // A unit the face holds only `share` of across (a strip cut to a jamb or a skewback off
+    // the grid's lines): a stone there is as narrow as what is left of it.
+    void cut(int r, int u, double share) {
+        share_[static_cast<std::size_t>(r * units_ + u)] = share;
+    }
     // `shaped`: a stone not rectangular (a voussoir), whose joints are no grid lines.
     void hold(int r, int u, int id, bool shaped = false) {
         at(r, u) = id;
@@ -62,6 +67,7 @@ class AshlarRules {
     int rows_, units_, max_w_, max_h_, max_seam_, first_id_;
     std::vector<int> owner_;
     std::vector<char> jamb_, shaped_;
+    std::vector<double> share_;
     std::vector<Stone> stones_;
     int four_way_ = 0;  // four-way joints of the face, counted once laid
 };
