@@ -142,6 +142,37 @@ bool AshlarRules::break_four_ways(std::vector<char>& gone) {
                 }
                 if (done) break;
             }
+            // Else two stones of one column over each other joined, where no taller than wide.
+            for (int col : {j - 1, j}) {
+                if (done) break;
+                const int ia = get(i - 1, col), ib = get(i, col);
+                const Stone *a = own(ia), *b = own(ib);
+                if (!a || !b || a == b || a->unit != b->unit || a->w != b->w ||
+                    a->row + a->h != i || a->h + b->h > max_h_)
+                    continue;
+                const Stone joined{a->row, a->unit, a->h + b->h, a->w};
+                const auto x0 = static_cast<std::size_t>(joined.unit);
+                const auto x1 = x0 + static_cast<std::size_t>(joined.w);
+                if (g_.xs[x1] - g_.xs[x0] < g_.ys[static_cast<std::size_t>(joined.row + joined.h)] -
+                                                g_.ys[static_cast<std::size_t>(joined.row)] ||
+                    on_end(joined))
+                    continue;
+                const int r0 = joined.row, r1 = joined.row + joined.h, u0 = joined.unit,
+                          u1 = joined.unit + joined.w;
+                const int before = four_ways(r0, r1, u0, u1);
+                for (int r = b->row; r < b->row + b->h; ++r)
+                    for (int x = u0; x < u1; ++x) at(r, x) = ia;
+                const int after = four_ways(r0, r1, u0, u1);
+                if (after >= before) {
+                    for (int r = b->row; r < b->row + b->h; ++r)
+                        for (int x = u0; x < u1; ++x) at(r, x) = ib;
+                    continue;
+                }
+                four_way_ -= before - after;
+                gone[static_cast<std::size_t>(ib - first_id_)] = 1;
+                stones_[static_cast<std::size_t>(ia - first_id_)] = joined;
+                changed = done = true;
+            }
         }
     return changed;
 }
