@@ -98,7 +98,7 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
             const int held = owner[static_cast<std::size_t>(row * grid.units() + u)];
             if (s == detail::kOutside) continue;
             if (held >= 0 || held <= -2) {
-                rules.hold(row, u, held >= 0 ? held : -2 - held);
+                rules.hold(row, u, held >= 0 ? held : -2 - held, held <= -2);
                 // What a voussoir leaves of the unit is cut to its extrados.
                 if (held <= -2) lone.emplace_back(row, u);
                 continue;
@@ -109,12 +109,14 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
                                                {m.x - tiny, m.y - tiny, m.x + tiny, m.y + tiny}))
                                            .empty())
                 rules.free(row, u);
-            else if (wall_part(occupancy, grid.cell(row, u, u + 1)) > 0.2)
+            else if (const double part = wall_part(occupancy, grid.cell(row, u, u + 1));
+                     part > 0.2) {
                 // A strip of wall beside a jamb off the grid's lines: laid one piece a row it
                 // would stand on end, its beds meeting the next column's four ways; it joins a
                 // stone of the layout, cut to the jamb.
                 rules.free(row, u);
-            else
+                rules.cut(row, u, part);
+            } else
                 lone.emplace_back(row, u);
         }
     for (auto [row, u] : lone)
@@ -123,9 +125,15 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
     for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
         const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
         if (edge.arc || !edge.vertical()) continue;
+        // Only a unit whose side is the jamb's joint: one beside a strip cut to the jamb would
+        // stand on end away from it.
+        const double x = edge.bounds.x0;
         detail::walk_edge(edge, inset, inset, [&](Point p, double) {
             const int row = grid.row_at(p.y), u = grid.unit_at(p.x);
-            if (row >= 0 && u >= 0) rules.jamb(row, u);
+            if (row >= 0 && u >= 0 &&
+                std::min(std::abs(grid.xs[static_cast<std::size_t>(u)] - x),
+                         std::abs(grid.xs[static_cast<std::size_t>(u + 1)] - x)) < o.mortar)
+                rules.jamb(row, u);
         });
     }
     rules.lay(c.random());

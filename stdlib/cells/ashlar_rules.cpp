@@ -15,7 +15,9 @@ AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam
       max_seam_(max_seam),
       first_id_(first_id),
       owner_(static_cast<std::size_t>(g.rows()) * static_cast<std::size_t>(g.units()), kBlocked),
-      jamb_(owner_.size(), 0) {}
+      jamb_(owner_.size(), 0),
+      shaped_(owner_.size(), 0),
+      share_(owner_.size(), 1.0) {}
 
 void AshlarRules::lay(Random& random) {
     for (int r = 0; r < rows_; ++r) {
@@ -24,30 +26,225 @@ void AshlarRules::lay(Random& random) {
         report_progress("ashlar rows", r + 1, rows_);
     }
     // A unit square on a row taller than its column stands on end where nothing wider fitted:
-    // it joins the narrower one-row stone beside it (a joint less cannot make a four-way one).
+    // it joins the narrower one-row stone beside it (a joint less cannot make a four-way one),
+    // or, with none, the row it shares of a taller stone beside it, split off for it, where
+    // that makes no more four-way joints than the face may have (the rest of that stone keeps its
+    // width).
     std::vector<char> gone(stones_.size(), 0);
-    for (std::size_t k = 0; k < stones_.size(); ++k) {
-        Stone& s = stones_[k];
-        if (gone[k] || s.h != 1 || s.w != 1) continue;
-        const auto x0 = static_cast<std::size_t>(s.unit), y0 = static_cast<std::size_t>(s.row);
-        if (g_.ys[y0 + 1] - g_.ys[y0] <= 1.1 * (g_.xs[x0 + 1] - g_.xs[x0])) continue;
-        int best = -1;
-        for (int j : {s.unit - 1, s.unit + 1})
-            if (const Stone* t = own(get(s.row, j));
-                t && t != &s && t->row == s.row && t->h == 1 &&
-                (best < 0 || t->w < stones_[static_cast<std::size_t>(best)].w))
-                best = static_cast<int>(t - stones_.data());
-        if (best < 0) continue;
-        Stone& b = stones_[static_cast<std::size_t>(best)];
-        b.unit = std::min(b.unit, s.unit);
-        b.w += 1;
-        at(s.row, s.unit) = first_id_ + best;
-        gone[k] = 1;
+    four_way_ = four_ways(0, rows_, 0, units_);
+    // Each repair can leave work for the other (a stone split off makes a four-way joint, a
+    // joint moved frees a unit): both run until neither changes anything, bounded.
+    for (int pass = 0; pass < 8; ++pass) {
+        const bool joined = join_on_end(gone);
+        const bool broken = break_four_ways(gone);
+        if (!joined && !broken) break;
     }
     std::size_t n = 0;
     for (std::size_t k = 0; k < stones_.size(); ++k)
         if (!gone[k]) stones_[n++] = stones_[k];
     stones_.resize(n);
+}
+
+bool AshlarRules::on_end(const Stone& s) const {
+    double w = 0;  // along its top row, less what a jamb or skewback cuts off
+    for (int u = s.unit; u < s.unit + s.w; ++u)
+        w += (g_.xs[static_cast<std::size_t>(u + 1)] - g_.xs[static_cast<std::size_t>(u)]) *
+             share_[static_cast<std::size_t>(s.row * units_ + u)];
+    const auto y0 = static_cast<std::size_t>(s.row), y1 = y0 + static_cast<std::size_t>(s.h);
+    return g_.ys[y1] - g_.ys[y0] > 1.1 * w &&
+           !jamb_[static_cast<std::size_t>(s.row * units_ + s.unit)];
+}
+
+bool AshlarRules::join_on_end(std::vector<char>& gone) {
+    bool changed = false;
+    for (std::size_t k = 0; k < stones_.size(); ++k) {
+        const Stone s = stones_[k];
+        if (gone[k] || s.h != 1 || s.w != 1 || !on_end(s)) continue;
+        int best = -1;
+        for (int j : {s.unit - 1, s.unit + 1})
+            if (const Stone* t = own(get(s.row, j));
+                t && t->row == s.row && t->h == 1 &&
+                (best < 0 || t->w < stones_[static_cast<std::size_t>(best)].w))
+                best = static_cast<int>(t - stones_.data());
+        if (best >= 0) {
+            Stone& b = stones_[static_cast<std::size_t>(best)];
+            b.unit = std::min(b.unit, s.unit);
+            b.w += 1;
+            at(s.row, s.unit) = first_id_ + best;
+            gone[k] = 1;
+            changed = true;
+            continue;
+        }
+        if (split_beside(static_cast<int>(k))) {
+            gone.resize(stones_.size(), 0);
+            gone[k] = 1;
+            changed = true;
+        }
+    }
+    return changed;
+}
+
+// A unit square of the layout, or one beside another (`other` aside): what a joint moved may
+// not leave.
+bool AshlarRules::lone_square(const Stone& s, int other) const {
+    if (s.w != 1 || s.h != 1) return false;
+    for (auto [a, b] : {std::pair{s.row - 1, s.unit},
+                        {s.row + 1, s.unit},
+                        {s.row, s.unit - 1},
+                        {s.row, s.unit + 1}})
+        if (const int id = get(a, b); id != other)
+            if (const Stone* t = own(id); t && t->h == 1 && t->w == 1) return true;
+    return false;
+}
+
+bool AshlarRules::break_four_ways(std::vector<char>& gone) {
+    bool changed = false;
+    for (int i = 1; i < rows_; ++i)
+        for (int j = 1; j < units_; ++j) {
+            if (four_ways(i, i, j, j) == 0) continue;
+            bool done = false;
+            for (int row : {i - 1, i}) {
+                const int ia = get(row, j - 1), ib = get(row, j);
+                const Stone *a = own(ia), *b = own(ib);
+                if (!a || !b || a == b || a->row != b->row || a->h != b->h) continue;
+                if (a->unit + a->w != j) continue;
+                const int r0 = a->row, r1 = a->row + a->h, u0 = a->unit, u1 = b->unit + b->w;
+                const int before = four_ways(r0, r1, u0, u1);
+                // 0: a unit of `a` to `b`; 1: a unit of `b` to `a`; 2: `b` joined to `a`.
+                for (int way = 0; way < 3 && !done; ++way) {
+                    Stone da = *a, db = *b;
+                    if (way == 0) da.w -= 1, db.unit -= 1, db.w += 1;
+                    if (way == 1) da.w += 1, db.unit += 1, db.w -= 1;
+                    if (way == 2) da.w += db.w, db.w = 0;
+                    if (da.w < 1 || da.w > max_w_ || db.w > max_w_ || (way < 2 && db.w < 1))
+                        continue;
+                    if (on_end(da) || (way < 2 && on_end(db))) continue;
+                    auto give = [&](int u, int w, int id) {
+                        for (int r = r0; r < r1; ++r)
+                            for (int x = u; x < u + w; ++x) at(r, x) = id;
+                    };
+                    give(da.unit, da.w, ia);
+                    if (way < 2) give(db.unit, db.w, ib);
+                    const bool square = lone_square(da, ib) || (way < 2 && lone_square(db, ia));
+                    const int after = four_ways(r0, r1, u0, u1);
+                    if (square || after >= before) {
+                        give(a->unit, a->w, ia);
+                        give(b->unit, b->w, ib);
+                        continue;
+                    }
+                    four_way_ -= before - after;
+                    stones_[static_cast<std::size_t>(ia - first_id_)] = da;
+                    if (way < 2)
+                        stones_[static_cast<std::size_t>(ib - first_id_)] = db;
+                    else
+                        gone[static_cast<std::size_t>(ib - first_id_)] = 1;
+                    changed = done = true;
+                }
+                if (done) break;
+            }
+            // Else two stones of one column over each other joined, where no taller than wide.
+            for (int col : {j - 1, j}) {
+                if (done) break;
+                const int ia = get(i - 1, col), ib = get(i, col);
+                const Stone *a = own(ia), *b = own(ib);
+                if (!a || !b || a == b || a->unit != b->unit || a->w != b->w ||
+                    a->row + a->h != i || a->h + b->h > max_h_)
+                    continue;
+                const Stone joined{a->row, a->unit, a->h + b->h, a->w};
+                const auto x0 = static_cast<std::size_t>(joined.unit);
+                const auto x1 = x0 + static_cast<std::size_t>(joined.w);
+                if (g_.xs[x1] - g_.xs[x0] < g_.ys[static_cast<std::size_t>(joined.row + joined.h)] -
+                                                g_.ys[static_cast<std::size_t>(joined.row)] ||
+                    on_end(joined))
+                    continue;
+                const int r0 = joined.row, r1 = joined.row + joined.h, u0 = joined.unit,
+                          u1 = joined.unit + joined.w;
+                const int before = four_ways(r0, r1, u0, u1);
+                for (int r = b->row; r < b->row + b->h; ++r)
+                    for (int x = u0; x < u1; ++x) at(r, x) = ia;
+                const int after = four_ways(r0, r1, u0, u1);
+                if (after >= before) {
+                    for (int r = b->row; r < b->row + b->h; ++r)
+                        for (int x = u0; x < u1; ++x) at(r, x) = ib;
+                    continue;
+                }
+                four_way_ -= before - after;
+                gone[static_cast<std::size_t>(ib - first_id_)] = 1;
+                stones_[static_cast<std::size_t>(ia - first_id_)] = joined;
+                changed = done = true;
+            }
+        }
+    return changed;
+}
+
+int AshlarRules::four_ways(int r0, int r1, int u0, int u1) const {
+    int n = 0;
+    for (int i = r0; i <= r1; ++i)
+        for (int j = u0; j <= u1; ++j) {
+            const int a = get(i - 1, j - 1), b = get(i - 1, j), c = get(i, j - 1), d = get(i, j);
+            if (std::min({a, b, c, d}) < 0) continue;  // outside the wall or not laid
+            bool shaped = false;
+            for (int y : {i - 1, i})
+                for (int x : {j - 1, j})
+                    shaped |= shaped_[static_cast<std::size_t>(y * units_ + x)];
+            if (shaped) continue;
+            n += a != b && c != d && a != c && b != d;
+        }
+    return n;
+}
+
+bool AshlarRules::split_beside(int k) {
+    const Stone s = stones_[static_cast<std::size_t>(k)];
+    std::vector<int> beside;  // taller stones beside it, the narrower first
+    for (int j : {s.unit - 1, s.unit + 1}) {
+        const Stone* t = own(get(s.row, j));
+        if (!t || t->h < 2) continue;
+        // What is left of it above or below keeps to one side of the row, and stands on end
+        // only at a jamb.
+        if (t->row != s.row && t->row + t->h != s.row + 1) continue;
+        const int r0 = t->row == s.row ? s.row + 1 : t->row;
+        if (g_.ys[static_cast<std::size_t>(r0 + t->h - 1)] - g_.ys[static_cast<std::size_t>(r0)] >
+                1.1 * (g_.xs[static_cast<std::size_t>(t->unit + t->w)] -
+                       g_.xs[static_cast<std::size_t>(t->unit)]) &&
+            !jamb_[static_cast<std::size_t>(r0 * units_ + t->unit)])
+            continue;
+        beside.push_back(static_cast<int>(t - stones_.data()));
+    }
+    if (beside.size() == 2 && stones_[static_cast<std::size_t>(beside[1])].w <
+                                  stones_[static_cast<std::size_t>(beside[0])].w)
+        std::swap(beside[0], beside[1]);
+    for (int best : beside) {
+        const Stone t = stones_[static_cast<std::size_t>(best)];
+        const int ra = std::min(t.row, s.row), rb = t.row + t.h;
+        const int ua = std::min(t.unit, s.unit), ub = std::max(t.unit + t.w, s.unit + 1);
+        const int before = four_ways(ra, rb, ua, ub);
+        // The row beside the unit joins it; the rest becomes a stone of its own.
+        const Stone joined{s.row, std::min(t.unit, s.unit), 1, t.w + 1};
+        const Stone rest{t.row == s.row ? s.row + 1 : t.row, t.unit, t.h - 1, t.w};
+        const int rest_id = first_id_ + static_cast<int>(stones_.size());
+        const int id = first_id_ + best;
+        auto give = [&](int owner) {
+            for (int i = rest.row; i < rest.row + rest.h; ++i)
+                for (int j = rest.unit; j < rest.unit + rest.w; ++j) at(i, j) = owner;
+        };
+        give(rest_id);
+        at(s.row, s.unit) = id;
+        // A four-way joint is allowed (1% of stones); a stone on end is not: one more is
+        // taken while the face stays within that (counted on the grid, where the stones laid
+        // before count too, against the face's own stones).
+        const int more = four_ways(ra, rb, ua, ub) - before;
+        if (more > 1 || (more == 1 && 100 * (four_way_ + 1) > static_cast<int>(stones_.size()))) {
+            // undo
+            give(id);
+            at(s.row, s.unit) = first_id_ + k;
+            continue;
+        }
+        four_way_ += more;
+        stones_[static_cast<std::size_t>(best)] = joined;
+        stones_.push_back(rest);
+        return true;
+    }
+    return false;
 }
 
 const Stone* AshlarRules::own(int id) const {

@@ -24,7 +24,16 @@ class AshlarRules {
     // A unit against a jamb or the wall's end: a stone starting there may stand on end, one
     // unit wide and up to max_h high, as the paper's edge stones take random heights.
     void jamb(int r, int u) { jamb_[static_cast<std::size_t>(r * units_ + u)] = 1; }
-    void hold(int r, int u, int id) { at(r, u) = id; }
+    // A unit the face holds only `share` of across (a strip cut to a jamb or a skewback off
+    // the grid's lines): a stone there is as narrow as what is left of it.
+    void cut(int r, int u, double share) {
+        share_[static_cast<std::size_t>(r * units_ + u)] = share;
+    }
+    // `shaped`: a stone not rectangular (a voussoir), whose joints are no grid lines.
+    void hold(int r, int u, int id, bool shaped = false) {
+        at(r, u) = id;
+        shaped_[static_cast<std::size_t>(r * units_ + u)] = shaped;
+    }
     int get(int r, int u) const {
         if (r < 0 || u < 0 || r >= rows_ || u >= units_) return kBlocked;
         return owner_[static_cast<std::size_t>(r * units_ + u)];
@@ -40,12 +49,27 @@ class AshlarRules {
     int cross(int r, int u, int h, int w, int i, int j) const;
     const Stone* own(int id) const;  // a stone of this layout, or null
     void lay_at(int r, int u, Random& random);
+    // Grid points (rows r0..r1, units u0..u1) where four laid rectangular stones meet.
+    int four_ways(int r0, int r1, int u0, int u1) const;
+    // Unit square `k` on end joined to the row it shares of a taller stone beside it; false
+    // (nothing changed) where none can take it without more four-way joints than allowed.
+    bool split_beside(int k);
+    // Unit squares on end joined to a stone beside them; true when any was.
+    bool join_on_end(std::vector<char>& gone);
+    // Four-way joints broken by moving the side joint between two stones of one row (and one
+    // height) by a unit, or by joining them, where none ends on end or beside a unit square
+    // and the joints round them lose one; true when any was.
+    bool break_four_ways(std::vector<char>& gone);
+    bool lone_square(const Stone& s, int other) const;
+    bool on_end(const Stone& s) const;
 
     const CourseGrid& g_;
     int rows_, units_, max_w_, max_h_, max_seam_, first_id_;
     std::vector<int> owner_;
-    std::vector<char> jamb_;
+    std::vector<char> jamb_, shaped_;
+    std::vector<double> share_;
     std::vector<Stone> stones_;
+    int four_way_ = 0;  // four-way joints of the face, counted once laid
 };
 
 }  // namespace acanthus::cells::detail

@@ -36,6 +36,29 @@ void cut_courses(double at, double rest, double g, int whole, std::vector<double
     down.push_back(at - rest);
 }
 
+// The courses from a level edge at `anchor` up to the wall's level top `w` above it, which whole
+// courses do not reach within the tolerance: whole courses, then one cut course right under the
+// top, where the wall plate or coping hides it. Where the cut course would be thinner than half
+// a course, the joints of the whole courses close (each by no more than the tolerance) to make
+// it thicker; a mason lays one cut course, not two.
+void top_courses(double anchor, double w, double g, double tol, std::vector<double>& down) {
+    const int whole = static_cast<int>(std::floor(w / g));
+    const double rest = w - whole * g;
+    if (whole == 0) {
+        down.push_back(anchor - w);
+        return;
+    }
+    const double cut = std::clamp(g / 2, rest, rest + whole * tol);
+    if (cut < g / 4) {  // too thin even so: it and the last whole course cut as two
+        for (int k = 1; k <= whole; ++k) down.push_back(anchor - k * g);
+        cut_courses(anchor - whole * g, rest, g, whole, down);
+        return;
+    }
+    const double pitch = (w - cut) / whole;
+    for (int k = 1; k <= whole; ++k) down.push_back(anchor - k * pitch);
+    down.push_back(anchor - w);
+}
+
 }  // namespace
 
 CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o) {
@@ -100,9 +123,7 @@ CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o) {
             for (int k = 1; k < n; ++k) down.push_back(anchor - w * k / n);
             down.push_back(anchor = kept[i]);
         } else if (level_top && i + 1 == kept.size()) {
-            const int whole = static_cast<int>(std::floor(w / g));
-            for (int k = 1; k <= whole; ++k) down.push_back(anchor - k * g);
-            cut_courses(anchor - whole * g, w - whole * g, g, whole, down);
+            top_courses(anchor, w, g, tol, down);
             anchor = kept[i];
         }
     }

@@ -231,9 +231,10 @@ TEST(CellsMason, UnseenFacades) {
                              tree_name);
                 // The mill (made up after the rest, not tuned on): its loading door's ring, 9 cm
                 // from the wall's end, is one half-brick ring (a brick-deep one would reach past
-                // the end); left: one brick over the wide window's extrados is cut 1.2 mm in
-                // height and read as a whole brick off its course line, and in the framed tree
-                // the jamb quoin under the door's left skewback is cut to 4.1 cm.
+                // the end); left: in the framed tree the jamb quoin under the door's left
+                // skewback is cut to 4.1 cm. (A brick over the wide window's extrados, its
+                // corner cut by it, was drawn 1.2 mm short off its course line: it keeps its
+                // course's beds now.)
                 const bool mill = std::string(name) == "mill";
                 EXPECT_EQ(r.slivers, 0);
                 EXPECT_EQ(r.voussoirs_clipped, 0);  // voussoirs first, walling cut
@@ -242,10 +243,10 @@ TEST(CellsMason, UnseenFacades) {
                 EXPECT_EQ(r.openings_without_head, 0);
                 // Courses on gauge from the ground, sills and heads met within the joints'
                 // tolerance or cut at the opening; one cut course at most, under a level top.
-                EXPECT_LE(r.courses_off_gauge, mill ? 1 : 0);
+                EXPECT_EQ(r.courses_off_gauge, 0);
                 EXPECT_LE(r.cut_courses, 1);
                 // Whole bricks within 1 mm.
-                EXPECT_LE(r.height_deviation, kCm.tolerance / 3 + (mill ? 0.02 : 0));
+                EXPECT_LE(r.height_deviation, kCm.tolerance / 3);
                 if (bond != Bond::stack) {
                     std::string where;
                     for (Point p : r.straight_at)
@@ -341,7 +342,6 @@ TEST(CellsMason, AshlarWalls) {
             // No voussoir clipped: a skewback without a bed below its springing (stone walls)
             // was taken for its bounding box and cut the ring's first stone (warehouse 3); the
             // mill's loading-door ring, which reached past the wall's end, is a half-brick ring.
-            const bool mill = std::string(name).ends_with("/mill");
             EXPECT_EQ(r.voussoirs_clipped, 0);
             if (method == AshlarMethod::merge) {
                 EXPECT_GT(r.four_way, r.stones / 50);  // the paper's merge: what the rules avoid
@@ -350,10 +350,14 @@ TEST(CellsMason, AshlarWalls) {
             EXPECT_GT(r.stones, 400);
             EXPECT_LE(r.four_way, r.stones / 100);
             // Stones on end stand only at jambs and the wall's ends (random heights there, as
-            // the paper's edge stones); left elsewhere: single units narrower than high where
-            // nothing wider fits (0.8% at most), and on the mill, not tuned on, 1.6%: stones on
-            // end in its two narrow piers between windows.
-            EXPECT_LE(r.stones_on_end, r.stones / (mill ? 50 : 100));
+            // the paper's edge stones). A unit square on end joins a one-row stone beside it or
+            // the row of a taller one split off for it (4 of 886 were left on the mill, 4 of 902
+            // on the oculus example). Left, by name: the insets' stone cut to the niche's jamb
+            // (the niche's side and head are one edge, which this checker does not take for a
+            // jamb) and one beside the diamond; one under the chapel's verge.
+            const std::string n = name;
+            const long on_end = n.ends_with("/insets") ? 2 : n.ends_with("/chapel") ? 1 : 0;
+            EXPECT_LE(r.stones_on_end, on_end);
             // Unit squares only where nothing wider fits and never three in a row; two side by
             // side at most 0.5% of stones.
             EXPECT_EQ(r.unit_square_runs, 0);

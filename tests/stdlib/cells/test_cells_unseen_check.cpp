@@ -1,7 +1,8 @@
 // The "How it will be checked", run as an outside expert runs it: on facades made up for it
 // and not tuned on (examples/facades/unseen/), in every bond and tree, the mason's checker
 // (mason_check.hpp) and the arch rules it does not read: odd rings, a keystone with real width at
-// a pointed apex, rings symmetrical about the crown, and no whole brick larger than nominal.
+// a pointed apex, rings symmetrical about the crown, and no whole brick larger than nominal
+// (shaved ones, cut short at a jamb, allowed by name: Known).
 // Straight joints are printed, not counted here. Each rule is shown to fail on a broken layout.
 #include <gtest/gtest.h>
 
@@ -196,22 +197,27 @@ ArchReport arch_check(const Facade& f, const std::vector<Cell>& cells, const Mas
     return r;
 }
 
-// What the check finds and this side does not own, allowed by name so that anything more fails:
-// on the wide opening the course grid (bonds and courses are checked in test_cells_mason) meets
-// the 3 m head within a course, opening the joints below it, so the top takes two cut courses of
-// 3.85 cm and one brick beside the cart door's head is 1.6 mm short, its bed 0.8 mm off the
-// course line. In stone, two unit squares on the ashlar and oculus fronts stand on end (rows a
-// tenth taller than their columns) where no one-row stone beside them could take them in.
+// What the check finds and this side does not own, allowed by name so that anything more fails.
+// Shaved bricks: pieces within 12% of a stretcher's or header's length but more than 1 mm off
+// it, in whole courses. Every one is a brick of the bond cut where a jamb or the wall's end
+// falls between its head joints (the course's joints are not moved to bring the jamb onto one,
+// nor a closer laid): on the wide opening the bricks tree cuts 10.7 cm headers along the cart
+// door's right jamb and 19.9 cm stretchers along the first window's, the framed tree its jamb
+// quoins to 19.5-20.5 cm on the gable. The most of any bond and tree at seed 1, per facade.
 struct Known {
     long cut_courses = 1, courses_off_gauge = 0;
     double height_deviation = 0;
     long four_way_per_1000 = 10, stones_on_end = 0;
+    long shaved_bricks = 0;
 };
 Known known(const std::string& name, bool stone) {
     Known k;
-    if (name == "wide-opening" && !stone)
-        k.cut_courses = 2, k.courses_off_gauge = 1, k.height_deviation = 0.16;
-    if (stone && (name == "ashlar-arches" || name == "oculus-top")) k.stones_on_end = 2;
+    if (stone) return k;
+    static const std::map<std::string, long> shaved{
+        {"gable-pointed-end", 60}, {"segmental-ends", 33}, {"wide-opening", 56},
+        {"oculus-top", 7},         {"door-past-end", 10},  {"ashlar-arches", 21},
+        {"off-gauge-heads", 22}};
+    if (auto it = shaved.find(name); it != shaved.end()) k.shaved_bricks = it->second;
     return k;
 }
 
@@ -236,6 +242,9 @@ std::vector<std::string> faults(const Facade& f, const std::vector<Cell>& cells,
               std::to_string(m.courses_off_gauge) + " courses off gauge (max " +
                   std::to_string(m.gauge_deviation) + ")");
         fault(m.cut_courses > k.cut_courses, std::to_string(m.cut_courses) + " cut courses");
+        fault(m.shaved_bricks > k.shaved_bricks, std::to_string(m.shaved_bricks) +
+                                                     " bricks shaved (off nominal by up to " +
+                                                     std::to_string(m.length_deviation) + ")");
     } else {
         fault(m.four_way * 1000 > m.stones * k.four_way_per_1000,
               std::to_string(m.four_way) + " four-way joints in " + std::to_string(m.stones));
@@ -255,7 +264,8 @@ std::string list(const std::vector<std::string>& v) {
 }
 
 const char* const kBrickFacades[] = {"gable-pointed-end", "segmental-ends", "wide-opening",
-                                     "oculus-top",        "door-past-end",  "ashlar-arches"};
+                                     "oculus-top",        "door-past-end",  "ashlar-arches",
+                                     "off-gauge-heads"};
 
 }  // namespace
 
@@ -301,6 +311,64 @@ TEST(CellsUnseen, AshlarWalls) {
     }
 }
 
+// Stone walls over seeds 1-12: the repairs hold whatever the random sizes. Left, by name (the
+// numbers over these seeds): on the wide opening one four-way joint past 1% on one seed (6 in
+// 596: four stones of different heights round a lintel's end or the wall's, which no joint
+// moved by a unit breaks); on the ashlar arches a stone on end on 6 seeds (at most 2), the unit
+// beside the segmental door's skewback cut narrow by it.
+TEST(CellsUnseen, AshlarWallsOverSeeds) {
+    Options o = centimetres();
+    o.bond = Bond::ashlar;
+    MasonSpec spec = kCm;
+    spec.stone = true;
+    for (const char* name : kBrickFacades) {
+        const Facade f = Facade::from_svg_file(unseen(name));
+        const std::string n = name;
+        Known k;
+        if (n == "wide-opening") k.four_way_per_1000 = 11;
+        if (n == "ashlar-arches") k.stones_on_end = 2;
+        long worst_on_end = 0;
+        double worst_four_way = 0;
+        for (int seed = 1; seed <= 12; ++seed) {
+            const Texture t = texture(f, ashlar_tree(), o, static_cast<std::uint64_t>(seed));
+            MasonReport m;
+            const std::vector<std::string> v = faults(f, t.cells, spec, &m, k);
+            EXPECT_TRUE(v.empty()) << name << " seed " << seed << list(v);
+            worst_on_end = std::max(worst_on_end, m.stones_on_end);
+            worst_four_way = std::max(worst_four_way, 100.0 * m.four_way / m.stones);
+        }
+        std::cout << name << " ashlar, seeds 1-12: four-way at most " << worst_four_way
+                  << "%, on end at most " << worst_on_end << "\n";
+    }
+}
+
+// A level top 2.2 cm past whole courses over a window head: one cut course under it, not two,
+// the whole courses below closing their joints (within the tolerance) so it is half a course.
+TEST(CellsUnseen, OneCutCourseUnderTheTop) {
+    const Facade f = Facade::from_svg_string(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 300 200\">"
+        "<rect id=\"w\" class=\"wall\" width=\"300\" height=\"200\"/>"
+        "<rect id=\"win\" class=\"window\" x=\"100\" y=\"47.2\" width=\"60\" "
+        "height=\"60\"/></svg>",
+        "top.svg");
+    Options o = centimetres();
+    for (Bond bond : {Bond::running, Bond::flemish}) {
+        o.bond = bond;
+        const Texture t = texture(f, brick_tree(), o, 1);
+        const MasonReport m = mason_check(f, t.cells, kCm);
+        EXPECT_EQ(m.cut_courses, 1) << m;
+        EXPECT_EQ(m.courses_off_gauge, 0) << m;
+        double lowest_top = 1e9;  // the cut course's bricks, along the top
+        for (const Cell& c : t.cells) {
+            Rect b;
+            if (mason_detail::coursed(c) && mason_detail::is_rect(c.polygon, b) && b.y0 < 1)
+                lowest_top = std::min(lowest_top, b.height());
+        }
+        EXPECT_GE(lowest_top, (6.5 + 1) / 2 - 1 - 1e-6);  // half a course, less its joint
+        EXPECT_LT(lowest_top, 6.5 - 0.3);                 // and cut
+    }
+}
+
 // Same seed, same bytes: the cells and the cut list of each unseen facade, laid twice.
 TEST(CellsUnseen, SameSeedSameBytes) {
     Options o = centimetres();
@@ -332,7 +400,26 @@ TEST(CellsUnseen, FailsOnBrokenLayouts) {
     o.bond = Bond::flemish;
     const Facade f = Facade::from_svg_file(unseen("gable-pointed-end"));
     const Texture t = texture(f, brick_tree(), o, 1);
-    ASSERT_TRUE(faults(f, t.cells, kCm).empty()) << list(faults(f, t.cells, kCm));
+    const Known k = known("gable-pointed-end", false);
+    ASSERT_TRUE(faults(f, t.cells, kCm, nullptr, k).empty())
+        << list(faults(f, t.cells, kCm, nullptr, k));
+    // A shaved brick: a stretcher drawn 2 mm short, one more than the wall has.
+    {
+        std::vector<Cell> c = t.cells;
+        for (Cell& cell : c) {
+            Rect b;
+            if (cell.generator == "bricks" && mason_detail::is_rect(cell.polygon, b) &&
+                std::abs(b.width() - 21.5) < 1e-6) {
+                for (Point& p : cell.polygon)
+                    if (p.x > b.center().x) p.x -= 0.2;
+                break;
+            }
+        }
+        Known tight = k;
+        tight.shaved_bricks = mason_check(f, t.cells, kCm).shaved_bricks;
+        EXPECT_TRUE(faults(f, t.cells, kCm, nullptr, tight).empty());
+        EXPECT_FALSE(faults(f, c, kCm, nullptr, tight).empty());
+    }
     // A stretched brick: a stretcher drawn 2 mm long.
     {
         std::vector<Cell> c = t.cells;
@@ -346,7 +433,7 @@ TEST(CellsUnseen, FailsOnBrokenLayouts) {
             }
         }
         EXPECT_EQ(arch_check(f, c, kCm).stretched, 1);
-        EXPECT_FALSE(faults(f, c, kCm).empty());
+        EXPECT_FALSE(faults(f, c, kCm, nullptr, k).empty());
     }
     // The pointed window's keystone taken out: an even ring and an open crown.
     {
@@ -411,7 +498,7 @@ TEST(CellsUnseen, FailsOnBrokenLayouts) {
                                     midpoint(a, b) + (b - a).perp() * 0.3);
                 break;
             }
-        EXPECT_FALSE(faults(f, c, kCm).empty());
+        EXPECT_FALSE(faults(f, c, kCm, nullptr, k).empty());
     }
 }
 
