@@ -70,6 +70,9 @@ class SymmetryGroup {
     // The domain's edges: a rosette's two, from the centre out to `radius` (none for c1); the
     // Dirichlet domain's polygon clipped to the frame.
     std::vector<std::pair<Point, Point>> domain_edges(double radius) const;
+    // A group with translations: the Dirichlet domain as half-planes, each a point m and a unit
+    // normal n, the domain being where (p - m) . n <= 0 for all (what in_domain() measures).
+    const std::vector<std::pair<Point, Vector>>& halfplanes() const { return halfplanes_; }
     // True when an image of an element is placed: always for a rosette; for a group with
     // translations when it meets the window, or without one lies inside the region.
     bool keeps(const Element& image, double tolerance) const;
