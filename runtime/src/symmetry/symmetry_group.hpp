@@ -76,6 +76,9 @@ class SymmetryGroup {
     // True when an image of an element is placed: always for a rosette; for a group with
     // translations when it meets the window, or without one lies inside the region.
     bool keeps(const Element& image, double tolerance) const;
+    // keeps() for an image known only to lie within `box`, where the box alone decides: 1 kept,
+    // 0 not, -1 when only the image itself can tell (`margin` covers rounding).
+    int keeps_within(const Rect& box, double margin) const;
 
   private:
     Symmetry spec_;
