@@ -133,6 +133,24 @@ int SymmetryGroup::keeps_within(const Rect& box, double margin) const {
     return -1;
 }
 
+std::vector<Point> SymmetryGroup::centre_classes(double tolerance) const {
+    if (!lattice_) return {center_};
+    std::vector<Point> out;
+    for (Point c : centres_)
+        for (const Isometry& g : transforms_) {
+            const Point q = g.apply(c);
+            if (!in_domain(q, tolerance)) continue;
+            // One of a class: no transformation carries a kept centre onto it.
+            bool known = false;
+            for (Point r : out)
+                for (const Isometry& h : transforms_)
+                    if (distance(h.apply(r), q) <= tolerance) known = true;
+            if (!known) out.push_back(q);
+            break;
+        }
+    return out;
+}
+
 bool SymmetryGroup::in_domain(Point p, double tolerance) const {
     if (lattice_) {
         for (const auto& [m, n] : halfplanes_)

@@ -67,6 +67,10 @@ class SymmetryGroup {
     // centre with mirrors, where an element fits on `c` only if its images coincide with it, these
     // hold an element beside the centre.
     std::vector<Circle> clear_circles_in(const Circle& c, Point toward, double tolerance) const;
+    // With translations: one rotation centre of each class (a point and its images under the
+    // group), each the representative lying in the fundamental domain (widened by `tolerance`),
+    // in the order found; a rosette's centre alone.
+    std::vector<Point> centre_classes(double tolerance) const;
     // The domain's edges: a rosette's two, from the centre out to `radius` (none for c1); the
     // Dirichlet domain's polygon clipped to the frame.
     std::vector<std::pair<Point, Point>> domain_edges(double radius) const;
