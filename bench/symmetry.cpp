@@ -11,7 +11,8 @@
 //   bench_symmetry [--runs N] [--resolution PX] [--groups none,c6,frieze:p2mg,wallpaper:p4m...]
 //
 // --groups picks the groups (default none,c6,d8,d12); without "none" (to profile one group alone)
-// the ratios are left out.
+// the ratios are left out. none:band, none:tile and none:tile60 grow without symmetry on that
+// panel alone (to profile it).
 #include <acanthus/growth.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/symmetry.hpp>
@@ -126,12 +127,14 @@ int main(int argc, char** argv) {
                                       : "disc";
         if (g == "none")
             results.insert(results.begin(), {g, "disc", 0, 0, {}});
+        else if (g.rfind("none:", 0) == 0)  // none:band, none:tile, none:tile60 (to profile)
+            results.push_back({"none", g.substr(5), 0, 0, {}});
         else if (!g.empty())
             results.push_back({g, panel, 0, 0, {}});
         at = comma + 1;
     }
     // Growth without symmetry on each band or tile measured.
-    if (!results.empty() && results[0].group == "none")
+    if (!results.empty() && results[0].group == "none" && results[0].panel == "disc")
         for (const char* panel : {"band", "tile", "tile60"}) {
             bool used = false;
             for (const Result& r : results) used = used || r.panel == panel;

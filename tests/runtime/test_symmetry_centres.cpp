@@ -6,6 +6,7 @@
 
 #include <acanthus/region.hpp>
 #include <acanthus/symmetry.hpp>
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -101,4 +102,46 @@ TEST(ClearCircles, AtTheCentresOnAWallpaperTilesEdges) {
             EXPECT_GT(got[2].radius, 0.15 * c.radius);  // a 30 degree wedge at the 6-fold centre
         }
     }
+}
+
+// The classes of rotation centre growth restarts on (docs/symmetry.md, "Restarts on the
+// centres"): one point of each class, in the fundamental domain, no two carried onto each other;
+// told apart by the rotations fixing them (p4m: two 4-fold classes and a 2-fold one; p6m: 6, 3
+// and 2; p2: four 2-fold ones; p1: none).
+TEST(CentreClasses, OneOfEachClassInTheDomain) {
+    struct Case {
+        Wallpaper tile;
+        std::vector<int> orders;  // rotations fixing each class's point (the identity counted)
+    };
+    for (const Case& k :
+         {Case{{"p4m", 150, 150, 90}, {2, 4, 4}}, Case{{"p6m", 150, 150, 60}, {2, 3, 6}},
+          Case{{"p2", 150, 100, 90}, {2, 2, 2, 2}}, Case{{"p1", 150, 100, 90}, {}}}) {
+        const TranslationSetup s = wallpaper_setup(k.tile);
+        ASSERT_TRUE(s.box);
+        const SymmetryGroup g(s.group, *s.box);
+        const std::vector<Point> got = g.centre_classes(1e-6);
+        std::vector<int> orders;
+        for (Point p : got) {
+            EXPECT_TRUE(g.in_domain(p, 1e-6)) << k.tile.group;
+            int n = 0;
+            for (const Isometry& t : g.transforms())
+                if (!t.reverses() && distance(t.apply(p), p) <= 1e-6) ++n;
+            orders.push_back(n);
+            for (Point q : got) {
+                if (distance(q, p) <= 1e-6) continue;  // p itself
+                for (const Isometry& t : g.transforms())
+                    EXPECT_GT(distance(t.apply(q), p), 1e-6) << k.tile.group;
+            }
+        }
+        std::sort(orders.begin(), orders.end());
+        EXPECT_EQ(orders, k.orders) << k.tile.group;
+    }
+}
+
+// A rosette has one centre, its own.
+TEST(CentreClasses, RosetteHasItsCentre) {
+    const SymmetryGroup g(Symmetry::parse("d6"), {10, 20});
+    const std::vector<Point> got = g.centre_classes(1e-6);
+    ASSERT_EQ(got.size(), 1u);
+    EXPECT_LE(distance(got[0], {10, 20}), 1e-12);
 }

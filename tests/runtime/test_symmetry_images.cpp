@@ -9,13 +9,18 @@
 #include <acanthus/symmetry.hpp>
 #include <cmath>
 #include <memory>
+#include <random>
+#include <string>
 #include <vector>
 
 #include "fixtures/dots_pattern.hpp"
 #include "fixtures/growth_tree.hpp"
 #include "growth/ornament.hpp"
+#include "proxy/overlap.hpp"
 #include "symmetry/image_element.hpp"
 #include "symmetry/orbit.hpp"
+#include "symmetry/symmetric_core.hpp"
+#include "symmetry/translation_groups.hpp"
 
 using acanthus::Point;
 using acanthus::Rect;
@@ -174,5 +179,122 @@ TEST(SymmetricGrowth, ImagesLeftOutOfTheBufferGrowTheReferenceOrnament) {
         o.reference_engine = true;
         EXPECT_EQ(acanthus::test::grow(::dots::pattern(), region, o), fast)
             << c.region << " " << c.group;
+    }
+}
+
+namespace {
+
+// Groups of every kind placed as the engine places them: rosettes about a point, friezes on a
+// band (no window), wallpaper groups on their tiles' boxes (a window), square, hexagonal and
+// oblique lattices.
+struct PlacedGroup {
+    std::string name;
+    acanthus::Region region;
+    std::unique_ptr<acanthus::detail::SymmetryGroup> group;
+};
+
+std::vector<PlacedGroup> placed_groups() {
+    using acanthus::Region;
+    using acanthus::detail::SymmetryGroup;
+    std::vector<PlacedGroup> out;
+    out.reserve(13);  // a frieze's group keeps its region by reference
+    for (const char* name : {"d8", "c5", "d3"}) {
+        out.push_back({name, Region::from_spec("circle:100"), nullptr});
+        out.back().group = std::make_unique<SymmetryGroup>(acanthus::Symmetry::parse(name),
+                                                           out.back().region.bounds().center());
+    }
+    for (const char* name : {"p1", "p2mg", "p11g", "p2mm"}) {
+        out.push_back({std::string("frieze ") + name, Region::from_spec("rect:400,60"), nullptr});
+        out.back().group = std::make_unique<SymmetryGroup>(
+            acanthus::detail::frieze_setup({name, 50}, out.back().region, std::nullopt).group,
+            out.back().region);
+    }
+    for (const acanthus::Wallpaper& w :
+         {acanthus::Wallpaper{"p4m", 60, 60, 90}, acanthus::Wallpaper{"p6m", 60, 60, 60},
+          acanthus::Wallpaper{"pgg", 70, 50, 90}, acanthus::Wallpaper{"p2", 70, 50, 75},
+          acanthus::Wallpaper{"p31m", 60, 60, 120}, acanthus::Wallpaper{"cm", 70, 50, 90}}) {
+        acanthus::detail::TranslationSetup s = acanthus::detail::wallpaper_setup(w);
+        out.push_back({"wallpaper " + w.group, *s.box, nullptr});
+        out.back().group = std::make_unique<SymmetryGroup>(std::move(s.group), out.back().region);
+    }
+    return out;
+}
+
+}  // namespace
+
+// The domain's pixels under friezes and wallpaper groups (found a row's run at a time) are those
+// in_domain() accepts, pixel by pixel, on grids whose origin and pixel fall anywhere.
+TEST(SymmetryDomainPixels, RowRunsAreThePixelsInTheDomain) {
+    for (const PlacedGroup& pg : placed_groups()) {
+        const Rect b = pg.region.bounds();
+        for (double pixel : {0.37, 1.0, 2.5}) {
+            acanthus::GridFrame grid;
+            grid.pixel = pixel;
+            grid.x0 = b.x0 - 3.3;
+            grid.y0 = b.y0 - 1.7;
+            grid.width = static_cast<int>((b.width() + 7) / pixel);
+            grid.height = static_cast<int>((b.height() + 4) / pixel);
+            const std::vector<std::uint8_t> pixels =
+                acanthus::detail::domain_pixels(grid, *pg.group);
+            long mismatches = 0, in = 0;
+            for (int j = 0; j < grid.height; ++j)
+                for (int i = 0; i < grid.width; ++i) {
+                    const bool want = pg.group->in_domain(grid.center_of(i, j), grid.pixel);
+                    const bool got = pixels[static_cast<std::size_t>(j) * grid.width + i] != 0;
+                    mismatches += want != got;
+                    in += got;
+                }
+            EXPECT_EQ(mismatches, 0) << pg.name << " at pixel " << pixel;
+            EXPECT_GT(in, 0) << pg.name;
+            EXPECT_LT(in, static_cast<long>(grid.width) * grid.height) << pg.name;
+        }
+    }
+}
+
+// orbit_of() decides most images from their box alone; its orbit is the one found by building
+// every image: those kept and not in the element's place (once each when some image coincides
+// with it), and clear when no image but those in its place overlaps it.
+TEST(OrbitOf, ImagesDecidedByTheirBoxAreThoseOfEveryImageBuilt) {
+    std::mt19937 rng(11);
+    for (const PlacedGroup& pg : placed_groups()) {
+        const acanthus::detail::SymmetryGroup& g = *pg.group;
+        const Rect b = pg.region.bounds();
+        const double tol = 1e-6 * std::max(b.width(), b.height());
+        std::uniform_real_distribution<double> ux(b.x0, b.x1), uy(b.y0, b.y1), ur(0.2, 25);
+        std::vector<std::pair<Point, double>> dots_at;
+        for (int n = 0; n < 150; ++n) dots_at.push_back({{ux(rng), uy(rng)}, ur(rng)});
+        dots_at.push_back({g.center(), 3});                       // on the rosette's centre
+        dots_at.push_back({g.snap({ux(rng), uy(rng)}, 1e9), 2});  // on a mirror or a centre
+        for (const auto& [c, r] : dots_at) {
+            const auto e = dot(c, r);
+            const acanthus::detail::Orbit orbit = acanthus::detail::orbit_of(*e, g, tol);
+            std::vector<std::unique_ptr<ImageElement>> built;
+            std::vector<const Isometry*> kept;
+            bool fixed = false, clear = true;
+            for (std::size_t k = 1; k < g.size(); ++k) {
+                auto image = std::make_unique<ImageElement>(*e, g.transforms()[k]);
+                if (acanthus::detail::same_place(*image, *e, tol)) {
+                    fixed = true;
+                    continue;
+                }
+                if (acanthus::detail::overlaps(image->proxy(0), e->proxy(0), tol)) clear = false;
+                if (!g.keeps(*image, tol)) continue;
+                built.push_back(std::move(image));
+                kept.push_back(&g.transforms()[k]);
+            }
+            std::vector<const Isometry*> want;
+            for (std::size_t k = 0; k < built.size(); ++k) {
+                bool repeated = false;
+                for (std::size_t m = 0; fixed && m < k; ++m)
+                    repeated = repeated || acanthus::detail::same_place(*built[k], *built[m], tol);
+                if (!repeated) want.push_back(kept[k]);
+            }
+            ASSERT_EQ(orbit.images.size(), want.size())
+                << pg.name << " dot at " << c.x << "," << c.y << " r " << r;
+            for (std::size_t k = 0; k < want.size(); ++k)
+                EXPECT_TRUE(acanthus::detail::same_isometry(orbit.images[k], *want[k], 0))
+                    << pg.name;
+            EXPECT_EQ(orbit.clear, clear) << pg.name << " dot at " << c.x << "," << c.y;
+        }
     }
 }

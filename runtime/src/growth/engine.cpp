@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -182,6 +183,11 @@ struct GrowthEngine::Impl {
     std::vector<Circle> rule_goals(const Circle& goal, Point toward, std::size_t* clear_from) const;
     bool second_seed();
     bool tried_second_seed = false;
+    bool centre_seed();
+    bool restart_goal = false;  // iterate() runs on a hole at a rotation centre (centre_seed())
+    bool can_parent_type(const Element& e) const { return rules_by_parent.count(&e.type()) != 0; }
+    // The restarts centre_seed() has left: a rotation centre and whether the seed goes beside it.
+    std::optional<std::vector<std::pair<Point, bool>>> centre_restarts;
     EmptyCircle goal_found;  // the circle find_goal() refined last
     // C's centre and its distinct images (C's centre alone without symmetry).
     std::vector<Point> orbit_of_point(Point p) const;
@@ -302,6 +308,72 @@ bool GrowthEngine::Impl::second_seed() {
     exclude.clear();
     sync_exclude_clears();
     return true;
+}
+
+// Under a group with translations, growth from the default seed reaches some classes of rotation
+// centre worse than others (a hole stays on the corner of a p4m tile, while the tile's centre,
+// of the same kind, fills). When growth ends, each class of rotation centre whose empty circle
+// is larger than the best-filled class's (by 10% and epsilon) gets a seed of its own, with its
+// images, and the hole as C: first on the centre (an element there coinciding with its images,
+// a fill called again on what is left), then, for the holes that stay, beside it, at the
+// largest circle in the hole clear of its own images (an element that is not symmetric fits
+// only there). One restart per call.
+bool GrowthEngine::Impl::centre_seed() {
+    if (!group || group->rosette() || !options.seeds.empty()) return false;
+    const double tol = ornament.tolerance();
+    if (!centre_restarts) {
+        centre_restarts.emplace();
+        const std::vector<Point> classes = group->centre_classes(raster.grid().pixel / 4);
+        for (bool beside : {false, true})
+            for (Point c : classes) centre_restarts->emplace_back(c, beside);
+    }
+    // The hole on c: its distance to the nearest element that is not a seed.
+    auto hole = [&](Point c) {
+        for (double reach = 4 * epsilon;; reach *= 2) {
+            for (const auto& [e, d] : ornament.within(c, reach))
+                if (&e->type() != pattern.seed) return d;
+            if (reach > 4 * std::hypot(region.bounds().width(), region.bounds().height()))
+                return reach;
+        }
+    };
+    // The best-filled class sets the bar: a hole no larger than 1.1 times its own (plus epsilon)
+    // is as well filled.
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& [c, beside] : *centre_restarts)
+        if (region.contains(c)) best = std::min(best, hole(c));
+    while (!centre_restarts->empty()) {
+        const auto [c, beside] = centre_restarts->front();
+        centre_restarts->erase(centre_restarts->begin());
+        if (!region.contains(c)) continue;
+        const double r = hole(c);
+        if (r <= std::max(2 * epsilon, 1.1 * best + epsilon)) continue;
+        Point s = c;
+        if (beside) {
+            const std::vector<Circle> clear = group->clear_circles_in({c, r}, c, tol);
+            if (clear.empty() || clear.back().radius < min_radius) continue;
+            s = clear.back().center;
+        }
+        if (!region.contains(s)) continue;
+        std::unique_ptr<Element> e(pattern.seed->create());
+        static_cast<PointProxy&>(e->proxy(0)).set(s);
+        Element* seed = e.get();
+        std::vector<std::unique_ptr<Element>> one;
+        one.push_back(std::move(e));
+        if (!commit(std::move(one), nullptr)) continue;
+        // The hole itself is the restart's C: the seed and every element round the hole are
+        // offered it, and the circles inside it (rule_goals()). The seed is asked there only.
+        ++stats.iterations;
+        restart_goal = true;
+        near_goal_radius = 0;
+        iterate({c, r});
+        restart_goal = false;
+        if (!seed->sterile) {
+            seed->sterile = true;
+            if (can_parent_type(*seed)) --parents_left;
+        }
+        return true;
+    }
+    return false;
 }
 
 // Under a group with translations the default seed goes where its first element has the most
@@ -698,7 +770,9 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         if (success) break;
     }
 
-    if (success) {
+    if (restart_goal) {
+        // Not a circle of the finder: nothing of it to drop or exclude.
+    } else if (success) {
         std::vector<int> removed;
         for (Point p : orbit_of_point(goal.center)) exclude.remove_within(p, epsilon, &removed);
         circles->release(removed);
@@ -737,7 +811,7 @@ void GrowthEngine::Impl::grow() {
             break;
         }
         std::optional<Circle> goal = find_goal();
-        if (!goal && second_seed()) continue;
+        if (!goal && (second_seed() || centre_seed())) continue;
         if (!goal) {
             stats.stop_reason = "exhausted";
             if (call_exhausted() != CONTINUE) break;

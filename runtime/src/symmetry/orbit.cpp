@@ -1,5 +1,6 @@
 #include "symmetry/orbit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -177,9 +178,40 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     const auto& g = group.transforms();
     Orbit out;
     if (g.size() < 2) return out;
+    // The element lies within `reach` of the middle of its bounds, so an image under g within
+    // `reach` of g(middle). An image whose box is clear of the element's is neither in its
+    // place nor overlapping it, and the box alone often tells whether the image is kept: then
+    // no scratch image is needed (the margin covers the rounding of the transformed proxies).
+    const bool boxed = e.proxy_count() > 0;
+    Rect bounds = boxed ? e.proxy(0).bounds() : Rect{};
+    for (std::size_t p = 1; p < e.proxy_count(); ++p) {
+        const Rect b = e.proxy(p).bounds();
+        bounds = {std::min(bounds.x0, b.x0), std::min(bounds.y0, b.y0), std::max(bounds.x1, b.x1),
+                  std::max(bounds.y1, b.y1)};
+    }
+    const Point middle = bounds.center();
+    const double reach = 0.5 * std::hypot(bounds.width(), bounds.height());
+    const double margin =
+        10 * tolerance + 1e-9 * (1 + std::abs(middle.x) + std::abs(middle.y) + reach);
     // Each image is tried in one scratch element; only those kept are built.
     ImageElement scratch(e, g[1]);
     for (std::size_t k = 1; k < g.size(); ++k) {
+        const Point q = g[k].apply(middle);
+        if (boxed && (std::abs(q.x - middle.x) > reach + bounds.width() / 2 + margin ||
+                      std::abs(q.y - middle.y) > reach + bounds.height() / 2 + margin)) {
+            const int kept = group.keeps_within(
+                Rect{q.x - reach, q.y - reach, q.x + reach, q.y + reach}, margin);
+            if (kept == 1) {
+                images.push_back(std::make_unique<ImageElement>(e, g[k]));
+                transforms.push_back(g[k]);
+                continue;
+            }
+            if (kept == 0) {
+                for (std::size_t p = 0; out.clear && p < e.proxy_count(); ++p)
+                    if (crosses_mirror(e.proxy(p), g[k], tolerance)) out.clear = false;
+                continue;
+            }
+        }
         if (k > 1) scratch.set_transform(g[k]);
         if (same_place(scratch, e, tolerance)) {
             fixed = true;

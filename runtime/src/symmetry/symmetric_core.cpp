@@ -44,8 +44,71 @@ std::vector<int> pixels_outside_core(const RasterBuffer& raster, const SymmetryG
     return out;
 }
 
+namespace {
+
+// A group with translations: the domain is convex (an intersection of half-planes), so each row's
+// pixels in it are one run. Each half-plane's crossing of the row bounds the pixels surely in
+// (every half-plane's measure below -eps) and surely out (one above eps); in_domain() decides
+// the few pixels left near the run's ends, so rounding decides as it does there.
+void domain_rows(const GridFrame& grid, const SymmetryGroup& group,
+                 std::vector<std::uint8_t>& out) {
+    const double tol = grid.pixel;
+    const double eps = 1e-9 * (1 + std::abs(grid.x0) + std::abs(grid.y0) +
+                               grid.pixel * (grid.width + grid.height));
+    const double inf = std::numeric_limits<double>::infinity();
+    // The pixel index of x, clamped to the row (and a pixel beyond either end).
+    auto index = [&](double x) {
+        return std::clamp((x - grid.x0) / grid.pixel - 0.5, -2.0, grid.width + 2.0);
+    };
+    for (int j = 0; j < grid.height; ++j) {
+        const double y = grid.center_of(0, j).y;
+        // Surely in for x in [in_lo, in_hi]; surely out below out_lo or above out_hi.
+        double in_lo = -inf, in_hi = inf, out_lo = -inf, out_hi = inf;
+        bool measure_all = false;
+        for (const auto& [m, n] : group.halfplanes()) {
+            // (x - m.x) n.x - k is the half-plane's measure less the widening.
+            const double k = tol - (y - m.y) * n.y;
+            if (n.x == 0) {
+                if (k < -eps)
+                    out_lo = inf;  // the row is out
+                else if (k <= eps)
+                    measure_all = true;
+                continue;
+            }
+            const double at = m.x + k / n.x, slack = eps / std::abs(n.x);
+            if (n.x > 0) {
+                in_hi = std::min(in_hi, at - slack);
+                out_hi = std::min(out_hi, at + slack);
+            } else {
+                in_lo = std::max(in_lo, at + slack);
+                out_lo = std::max(out_lo, at - slack);
+            }
+        }
+        std::uint8_t* row = out.data() + static_cast<std::size_t>(j) * grid.width;
+        if (out_lo == inf) continue;
+        int first_in = grid.width, last_in = -1, last_out_low = -1, first_out_high = grid.width;
+        if (!measure_all) {
+            // One pixel's margin each way against the rounding of the index itself.
+            first_in = static_cast<int>(std::ceil(index(in_lo))) + 1;
+            last_in = static_cast<int>(std::floor(index(in_hi))) - 1;
+            last_out_low = static_cast<int>(std::floor(index(out_lo))) - 1;
+            first_out_high = static_cast<int>(std::ceil(index(out_hi))) + 1;
+        }
+        for (int i = std::max(0, last_out_low + 1); i < std::min(grid.width, first_out_high); ++i)
+            row[i] = (i >= first_in && i <= last_in) || group.in_domain(grid.center_of(i, j), tol)
+                         ? 1
+                         : 0;
+    }
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGroup& group) {
     std::vector<std::uint8_t> out(static_cast<std::size_t>(grid.width) * grid.height, 0);
+    if (!group.rosette()) {
+        domain_rows(grid, group, out);
+        return out;
+    }
     // in_domain() takes an arc tangent per pixel. Most pixels are decided without one by their
     // angle to the wedge's bisector: inside the wedge's half angle they are in, beyond it by
     // more than the widening allows at their radius (at least kFar pixels out) they are out; a

@@ -119,6 +119,38 @@ bool SymmetryGroup::keeps(const Element& image, double tolerance) const {
     return !window_;
 }
 
+int SymmetryGroup::keeps_within(const Rect& box, double margin) const {
+    if (!lattice_) return 1;
+    if (!window_) return -1;
+    const Rect& w = *window_;
+    if (box.x0 > w.x1 + margin || w.x0 > box.x1 + margin || box.y0 > w.y1 + margin ||
+        w.y0 > box.y1 + margin)
+        return 0;
+    // An element has a proxy, and each proxy's bounds then meet the window.
+    if (box.x0 >= w.x0 + margin && box.x1 <= w.x1 - margin && box.y0 >= w.y0 + margin &&
+        box.y1 <= w.y1 - margin)
+        return 1;
+    return -1;
+}
+
+std::vector<Point> SymmetryGroup::centre_classes(double tolerance) const {
+    if (!lattice_) return {center_};
+    std::vector<Point> out;
+    for (Point c : centres_)
+        for (const Isometry& g : transforms_) {
+            const Point q = g.apply(c);
+            if (!in_domain(q, tolerance)) continue;
+            // One of a class: no transformation carries a kept centre onto it.
+            bool known = false;
+            for (Point r : out)
+                for (const Isometry& h : transforms_)
+                    if (distance(h.apply(r), q) <= tolerance) known = true;
+            if (!known) out.push_back(q);
+            break;
+        }
+    return out;
+}
+
 bool SymmetryGroup::in_domain(Point p, double tolerance) const {
     if (lattice_) {
         for (const auto& [m, n] : halfplanes_)
@@ -199,24 +231,47 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
     }
     // The room about p (the largest circle there inside c and clear of its images), and
     // whether some transformation fixes p.
+    // Squared distances decide what they surely can; hypot() (as distance() measures, and much
+    // dearer) is taken only near the tolerance and for the images that may be the nearest, so
+    // the answer is distance()'s to the last bit.
+    constexpr double kLoose = 1 + 1e-12;
+    const double tol2 = tolerance * tolerance;
+    std::vector<double> squares(near.size());
     auto room = [&](Point p, bool& fixed) {
         double r = c.radius - distance(p, c.center);
         fixed = false;
-        for (const Isometry* g : near) {
-            const double d = distance(g->apply(p), p);
-            if (d > tolerance)
-                r = std::min(r, d / 2);
-            else
+        double least = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < near.size(); ++k) {
+            const Vector v = near[k]->apply(p) - p;
+            double s = v.x * v.x + v.y * v.y;
+            const bool close = s * kLoose < tol2 || (s <= tol2 * kLoose && v.length() <= tolerance);
+            if (close) {
                 fixed = true;
+                s = -1;
+            }
+            squares[k] = s;
+            if (s >= 0) least = std::min(least, s);
         }
+        // Every image is at least sqrt(least) / 2 away: when that is clearly beyond r, none
+        // lowers it.
+        if (r <= 0 || least / 4 >= r * r * kLoose) return r;
+        for (std::size_t k = 0; k < near.size(); ++k)
+            if (squares[k] >= 0 && squares[k] <= least * kLoose)
+                r = std::min(r, distance(near[k]->apply(p), p) / 2);
         return r;
     };
     // [0]: the best circle about a point on a mirror, [1]: about a point on none; each with the
     // mirror it lies on.
     Circle best[2] = {{c.center, 0}, {c.center, 0}};
     const Isometry* best_mirror[2] = {nullptr, nullptr};
+    // distance(p, c.center) <= tolerance, decided by the square where it surely can.
+    auto on_centre = [&](Point p) {
+        const Vector v = p - c.center;
+        const double s = v.x * v.x + v.y * v.y;
+        return s * kLoose < tol2 || (s <= tol2 * kLoose && v.length() <= tolerance);
+    };
     auto consider = [&](Point p, const Isometry* mirror) {
-        if (distance(p, c.center) <= tolerance) return;  // C itself
+        if (on_centre(p)) return;  // C itself
         bool fixed = false;
         const double r = room(p, fixed);
         Circle& b = best[fixed ? 0 : 1];
@@ -225,10 +280,19 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
             best_mirror[fixed ? 0 : 1] = fixed ? mirror : nullptr;
         }
     };
+    // The spokes' and the search's directions, each angle's cosine and sine taken once.
+    Vector spokes[2][kSpokes], directions[kDirections];
+    for (int odd = 0; odd < 2; ++odd)
+        for (int j = 0; j < kSpokes; ++j) {
+            const double t = 2 * M_PI * (j + 0.5 * odd) / kSpokes;
+            spokes[odd][j] = Vector(std::cos(t), std::sin(t));
+        }
+    for (int d = 0; d < kDirections; ++d)
+        directions[d] =
+            Vector(std::cos(2 * M_PI * d / kDirections), std::sin(2 * M_PI * d / kDirections));
     for (int i = 1; i < kRings; ++i)
         for (int j = 0; j < kSpokes; ++j) {
-            const double t = 2 * M_PI * (j + 0.5 * (i % 2)) / kSpokes;
-            const Point p = c.center + Vector(std::cos(t), std::sin(t)) * (c.radius * i / kRings);
+            const Point p = c.center + spokes[i % 2][j] * (c.radius * i / kRings);
             consider(p, nullptr);
             for (const Isometry* g : mirrors) consider(p + (g->apply(p) - p) * 0.5, g);
         }
@@ -241,12 +305,9 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
             for (int moves = 0, moved = 1; moved && moves < 64; ++moves) {
                 moved = 0;
                 for (int d = 0; d < kDirections; ++d) {
-                    const Vector step = Vector(std::cos(2 * M_PI * d / kDirections),
-                                               std::sin(2 * M_PI * d / kDirections)) *
-                                        h;
-                    Point q = best[k].center + step;
+                    Point q = best[k].center + directions[d] * h;
                     if (k == 0) q = q + (best_mirror[0]->apply(q) - q) * 0.5;
-                    if (distance(q, c.center) <= tolerance) continue;
+                    if (on_centre(q)) continue;
                     bool fixed = false;
                     const double r = room(q, fixed);
                     if (fixed == (k == 0) && r > best[k].radius + tolerance) {

@@ -67,12 +67,22 @@ class SymmetryGroup {
     // centre with mirrors, where an element fits on `c` only if its images coincide with it, these
     // hold an element beside the centre.
     std::vector<Circle> clear_circles_in(const Circle& c, Point toward, double tolerance) const;
+    // With translations: one rotation centre of each class (a point and its images under the
+    // group), each the representative lying in the fundamental domain (widened by `tolerance`),
+    // in the order found; a rosette's centre alone.
+    std::vector<Point> centre_classes(double tolerance) const;
     // The domain's edges: a rosette's two, from the centre out to `radius` (none for c1); the
     // Dirichlet domain's polygon clipped to the frame.
     std::vector<std::pair<Point, Point>> domain_edges(double radius) const;
+    // A group with translations: the Dirichlet domain as half-planes, each a point m and a unit
+    // normal n, the domain being where (p - m) . n <= 0 for all (what in_domain() measures).
+    const std::vector<std::pair<Point, Vector>>& halfplanes() const { return halfplanes_; }
     // True when an image of an element is placed: always for a rosette; for a group with
     // translations when it meets the window, or without one lies inside the region.
     bool keeps(const Element& image, double tolerance) const;
+    // keeps() for an image known only to lie within `box`, where the box alone decides: 1 kept,
+    // 0 not, -1 when only the image itself can tell (`margin` covers rounding).
+    int keeps_within(const Rect& box, double margin) const;
 
   private:
     Symmetry spec_;

@@ -1,5 +1,5 @@
 // Checks a wallpaper tile from the outside, as the expert would, on the program's --json tree:
-//   check_seams TREE.json W,H[,ANGLE]
+//   check_seams TREE.json W,H[,ANGLE] [--sites]
 // The tile is the parallelogram from the origin with sides a = (W, 0) and b at ANGLE (as
 // --tile gives it). Its elements (translates across its edges included: coincident copies are
 // one element) are repeated 3 x 3, and:
@@ -10,7 +10,8 @@
 //   of the central copy is no larger than 1.1 times the largest one that does not, plus two
 //   pixels of the raster the empty circles are measured on (the elements' proxies drawn at
 //   1/512 of the tile's larger side, the seed markers left out).
-// Exit 0 when both hold, 1 with the faults listed.
+// Exit 0 when both hold, 1 with the faults listed. --sites also prints the empty circle on each
+// lattice's rotation centres (corner, edge middles, centre, the hexagonal cell's 3-fold points).
 #include <cairo.h>
 
 #include <acanthus/element.hpp>
@@ -140,8 +141,9 @@ void edt_1d(const std::vector<double>& f, std::vector<double>& d) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 3) {
-        std::cerr << "usage: check_seams TREE.json W,H[,ANGLE]\n";
+    const bool sites = argc == 4 && std::string(argv[3]) == "--sites";
+    if (argc != 3 && !sites) {
+        std::cerr << "usage: check_seams TREE.json W,H[,ANGLE] [--sites]\n";
         return 2;
     }
     std::ifstream in(argv[1]);
@@ -310,6 +312,27 @@ int main(int argc, char** argv) {
             double& gap = to_seam <= r ? seam_gap : inside_gap;
             gap = std::max(gap, r);
         }
+    if (sites) {
+        // The radius of the empty circle centred on each site (its nearest element).
+        std::vector<std::pair<std::string, Point>> at{{"corner", {0, 0}},
+                                                      {"edge a/2", {0.5, 0}},
+                                                      {"edge b/2", {0, 0.5}},
+                                                      {"centre", {0.5, 0.5}}};
+        if (std::abs(la - lb) < tol && std::abs(a.x * b.x + a.y * b.y) > tol) {  // hexagonal
+            at.push_back({"(a+b)/3", {1.0 / 3, 1.0 / 3}});
+            at.push_back({"2(a+b)/3", {2.0 / 3, 2.0 / 3}});
+            at.push_back({"(2a-b)/3", {2.0 / 3, 1.0 / 3}});
+            at.push_back({"(2b-a)/3", {1.0 / 3, 2.0 / 3}});
+        }
+        for (const auto& [name, f] : at) {
+            const Point p{f.x * a.x + f.y * b.x, f.x * a.y + f.y * b.y};
+            const int x = static_cast<int>(std::floor((p.x - x0) / px));
+            const int y = static_cast<int>(std::floor((p.y - y0) / px));
+            const double r = std::sqrt(dist[static_cast<std::size_t>(y) * w + x]) * px;
+            std::cout << "site " << name << " (" << p.x << "," << p.y << "): empty circle " << r
+                      << "\n";
+        }
+    }
     if (seam_gap > 1.1 * inside_gap + 2 * px)
         fault("a gap across a seam (an empty circle of radius " + std::to_string(seam_gap) +
               ") at " + std::to_string(seam_at.x) + " a + " + std::to_string(seam_at.y) +

@@ -10,7 +10,7 @@ execute_process(COMMAND "${PROGRAM}" --wallpaper ${GROUP} --tile ${TILE} --rng-s
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "the program failed (exit ${code}):\n${err}")
 endif()
-execute_process(COMMAND "${CHECK}" tree.json ${TILE} WORKING_DIRECTORY "${WORK}"
+execute_process(COMMAND "${CHECK}" tree.json ${TILE} --sites WORKING_DIRECTORY "${WORK}"
   RESULT_VARIABLE code OUTPUT_VARIABLE out TIMEOUT 300)
 message(STATUS "${out}")
 if(NOT code EQUAL 0)
