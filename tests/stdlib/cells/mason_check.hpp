@@ -66,6 +66,11 @@ struct MasonReport {
     long king_closers = 0;
     long king_closers_misplaced = 0;
     std::vector<Point> misplaced_kings;
+    // Lintels (generator "lintel") over straight heads: the shortest bearing past a jamb, and
+    // those under 100 mm on a 215 mm brick (what a mason lets a lintel bear on).
+    long lintels = 0;
+    long short_bearings = 0;
+    double shortest_bearing = 1e9;
     long openings = 0;
     long openings_without_head = 0;
     std::vector<std::string> headless;
@@ -313,6 +318,26 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         if (!ok || !reveal || !stretcher) {
             ++r.king_closers_misplaced;
             r.misplaced_kings.push_back(b.center());
+        }
+    }
+    // Lintel bearings: each lintel over the straight head it spans (the head's middle under it,
+    // within a joint and a half of its bottom), measured from each jamb to the lintel's end.
+    for (const Cell& c : cells) {
+        Rect b;
+        if (c.generator != "lintel" || !is_rect(c.polygon, b)) continue;
+        for (const auto& e : facade.edges()) {
+            if (!e.opening || e.arc || e.part != acanthus::cells::Part::top) continue;
+            const double mid = (e.bounds.x0 + e.bounds.x1) / 2;
+            if (mid < b.x0 || mid > b.x1 || std::abs(e.bounds.y0 - b.y1) > 1.5 * s.mortar) continue;
+            ++r.lintels;
+            // A lintel run out to the wall's end bears on the whole pier (an opening nearer the
+            // end than a bearing forces it): only ends within the wall are counted.
+            const Rect wall = facade.bounds();
+            double bearing = 1e9;
+            if (b.x0 > wall.x0 + s.mortar) bearing = std::min(bearing, e.bounds.x0 - b.x0);
+            if (b.x1 < wall.x1 - s.mortar) bearing = std::min(bearing, b.x1 - e.bounds.x1);
+            r.shortest_bearing = std::min(r.shortest_bearing, bearing);
+            r.short_bearings += bearing < 100.0 / 215.0 * s.length - 1e-6;
         }
     }
     // Heads: above the middle of every top edge of an opening, a lintel, arch or soldier cell.

@@ -123,6 +123,11 @@ long straight_on_walls(std::uint64_t first, std::uint64_t last,
                               << r.straight_joints << " straight joints at" << where << "\n";
                 total += r.straight_joints;
                 EXPECT_LE(r.straight_joints, allowance) << "at" << where;
+                // Bearings moved a quarter brick shorter stay at 10 cm or more.
+                EXPECT_EQ(r.short_bearings, 0) << "shortest " << r.shortest_bearing;
+                if (name == "framed") {
+                    EXPECT_GT(r.lintels, 0);
+                }
             }
     }
     return total;
@@ -215,4 +220,31 @@ TEST(CellsBondsUnseen, FindsAMisplacedKingCloser) {
     }
     r = mason_check(f, t.cells, kCm);
     EXPECT_EQ(r.king_closers_misplaced, 1);
+}
+
+// The checker finds a lintel bearing under 10 cm: a framed wall's first lintel cut back to 5 cm
+// past its left jamb.
+TEST(CellsBondsUnseen, FindsAShortBearing) {
+    Options o = centimetres();
+    Facade f = made_up(3, false);
+    Texture t = texture(f, framed_tree(), o, 1);
+    MasonReport r = mason_check(f, t.cells, kCm);
+    ASSERT_GT(r.lintels, 0);
+    EXPECT_EQ(r.short_bearings, 0);
+    EXPECT_GE(r.shortest_bearing, 10);
+    for (Cell& c : t.cells) {
+        Rect b;
+        if (c.generator != "lintel" || !is_rect(c.polygon, b)) continue;
+        for (const auto& e : f.edges())
+            if (e.opening && !e.arc && e.part == acanthus::cells::Part::top &&
+                std::abs(e.bounds.y0 - b.y1) < 1.5 && e.bounds.x0 > b.x0 && e.bounds.x1 < b.x1) {
+                const double x = e.bounds.x0 - 5;
+                for (Point& p : c.polygon)
+                    if (p.x < x) p.x = x;
+            }
+        break;
+    }
+    r = mason_check(f, t.cells, kCm);
+    EXPECT_EQ(r.short_bearings, 1);
+    EXPECT_NEAR(r.shortest_bearing, 5, 1e-6);
 }
