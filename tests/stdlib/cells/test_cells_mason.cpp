@@ -254,9 +254,9 @@ TEST(CellsMason, UnseenFacades) {
                     // between, set out as a column (was 20-29 straight joints up it); lintels in
                     // the layout and the pieces round fixed ends cut again (0-9 before); fixed
                     // ends moved a quarter brick where two met (the mill 2 before). Left: on the
-                    // mill in running and English bond, the window-bottom row's end over the long
-                    // quoin of the pier beside it, the quoins under it alternating long and short
-                    // down the jamb (a three-quarter quoin only moves the joint a course down).
+                    // mill in running and English bond, the wide window's window-bottom row, ending
+                    // against the quoins of the wall's right end, over the long quoin below it
+                    // (a three-quarter quoin there only moves the joint a course down).
                     EXPECT_LE(r.straight_joints, tree_name == "framed" && mill ? 1 : 0)
                         << "at" << where;
                     if (std::string(name) == "shopfront") {
