@@ -296,7 +296,16 @@ void repair_straight_joints(BrickLayout& layout) {
                     const int cut = dir < 0 ? r : r + 1;
                     const auto saved = rows;
                     auto& row = rows[static_cast<std::size_t>(cut)];
-                    const std::set<int> other = joints(dir < 0 ? r + 1 : r);
+                    // Off the other course, and off the fixed ends of the course beyond (a
+                    // quoin's or a lintel's end there cannot be pushed on).
+                    std::set<int> other = joints(dir < 0 ? r + 1 : r);
+                    if (cut + dir >= 0 && cut + dir < n) {
+                        const auto& beyond = rows[static_cast<std::size_t>(cut + dir)];
+                        for (std::size_t k = 0; k + 1 < beyond.size(); ++k)
+                            if (beyond[k].start + beyond[k].length == beyond[k + 1].start &&
+                                (beyond[k].fixed() || beyond[k + 1].fixed()))
+                                other.insert(beyond[k + 1].start);
+                    }
                     if ((recut(row, j, other) || recut_pier(row, j, other)) &&
                         push(rows, cut, dir, 40)) {
                         changed = true;
