@@ -352,7 +352,17 @@ void set_king_closers(BrickLayout& layout) {
                 if (!whole(pieces[end].start, pieces[end].start + pieces[end].length) ||
                     !whole(pieces[next].start, pieces[next].start + pieces[next].length))
                     continue;
-                if (pieces[end].length == 2 && pieces[next].length == 1) {
+                // The bond goes on with a stretcher beyond the closer (or one cut to an arch,
+                // or a lintel's end); before a header or a bat it stays a header and a closer.
+                const bool beyond_exists = left ? k + 2 < pieces.size() : k >= 1;
+                const std::size_t beyond = left ? k + 2 : k - 1;
+                const bool goes_on =
+                    beyond_exists &&
+                    (left ? pieces[k + 1].start + pieces[k + 1].length == pieces[beyond].start
+                          : pieces[beyond].start + pieces[beyond].length == pieces[k].start) &&
+                    (pieces[beyond].length == 4 || pieces[beyond].head ||
+                     !whole(pieces[beyond].start, pieces[beyond].start + pieces[beyond].length));
+                if (pieces[end].length == 2 && pieces[next].length == 1 && goes_on) {
                     Piece kc{u0, 3, true, false};
                     kc.king = true;
                     pieces[k] = kc;

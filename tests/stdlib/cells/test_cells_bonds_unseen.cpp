@@ -200,26 +200,80 @@ TEST(CellsBondsUnseen, KingClosersInFlemishBond) {
     EXPECT_GT(kings, 50);
 }
 
-// The checker finds a king closer laid where no reveal is.
+// The checker finds a king closer laid where no reveal is, on every made-up wall and tree, and
+// one with a header laid beyond it where the bond calls for a stretcher.
 TEST(CellsBondsUnseen, FindsAMisplacedKingCloser) {
     Options o = centimetres();
     o.bond = Bond::flemish;
-    Facade f = made_up(4, true);  // a wall that has them in the brick tree
-    Texture t = texture(f, brick_tree(), o, 1);
-    MasonReport r = mason_check(f, t.cells, kCm);
-    ASSERT_GT(r.king_closers, 0);
-    EXPECT_EQ(r.king_closers_misplaced, 0);
-    // Name a stretcher in the middle of the wall, away from every reveal, a king closer.
-    const double x_mid = f.bounds().x0 + f.bounds().width() / 2;
-    for (Cell& c : t.cells) {
-        Rect b;
-        if (c.generator != "bricks" || !c.piece.empty() || !is_rect(c.polygon, b)) continue;
-        if (std::abs(b.width() - 21.5) > 0.1 || std::abs(b.center().x - x_mid) > 30) continue;
-        c.piece = "king closer";
-        break;
-    }
-    r = mason_check(f, t.cells, kCm);
-    EXPECT_EQ(r.king_closers_misplaced, 1);
+    const double three_quarters = 3 * (21.5 + 1) / 4 - 1, header = (21.5 - 1) / 2;
+    long tried = 0, headers_tried = 0;
+    for (std::uint64_t seed = 1; seed <= 6; ++seed)
+        for (const auto& [name, tree] : mason_trees()) {
+            Facade f = made_up(seed, seed % 2 == 0);
+            Texture t = texture(f, tree, o, 1);
+            MasonReport r = mason_check(f, t.cells, kCm);
+            SCOPED_TRACE("made-up " + std::to_string(seed) + " " + name);
+            EXPECT_EQ(r.king_closers_misplaced, 0);
+            // Name a stretcher in the middle of the wall, away from every reveal, a king closer.
+            const double x_mid = f.bounds().x0 + f.bounds().width() / 2;
+            std::vector<Cell> cells = t.cells;
+            Point laid{-1, -1};
+            for (Cell& c : cells) {
+                Rect b;
+                if (c.generator != "bricks" || !c.piece.empty() || !is_rect(c.polygon, b)) continue;
+                if (std::abs(b.width() - 21.5) > 0.1 || std::abs(b.center().x - x_mid) > 30)
+                    continue;
+                c.piece = "king closer";
+                c.polygon = {{b.x0, b.y0},
+                             {b.x0 + three_quarters, b.y0},
+                             {b.x0 + three_quarters, b.y1},
+                             {b.x0, b.y1}};
+                laid = {b.x0 + three_quarters / 2, b.center().y};
+                ++tried;
+                break;
+            }
+            // It, and a king closer at a pier's reveal whose stretcher it was.
+            const MasonReport mid = mason_check(f, cells, kCm);
+            EXPECT_GE(mid.king_closers_misplaced, 1);
+            bool found = false;
+            for (Point p : mid.misplaced_kings)
+                found |= std::abs(p.x - laid.x) < 0.01 && std::abs(p.y - laid.y) < 0.01;
+            EXPECT_TRUE(found);
+            // A king closer at a reveal with the stretcher beyond it cut to a header, the rest of
+            // the course still running on.
+            cells = t.cells;
+            for (Cell& k : cells) {
+                Rect b;
+                if (k.piece != "king closer" || !is_rect(k.polygon, b)) continue;
+                bool done = false;
+                for (Cell& c : cells) {
+                    Rect n;
+                    if (c.generator != "bricks" || !is_rect(c.polygon, n) ||
+                        std::abs(n.width() - 21.5) > 0.1 || std::abs(n.y0 - b.y0) > 0.05)
+                        continue;
+                    if (std::abs(n.x0 - b.x1 - 1) < 0.2)
+                        c.polygon = {{n.x0, n.y0},
+                                     {n.x0 + header, n.y0},
+                                     {n.x0 + header, n.y1},
+                                     {n.x0, n.y1}};
+                    else if (std::abs(b.x0 - n.x1 - 1) < 0.2)
+                        c.polygon = {{n.x1 - header, n.y0},
+                                     {n.x1, n.y0},
+                                     {n.x1, n.y1},
+                                     {n.x1 - header, n.y1}};
+                    else
+                        continue;
+                    done = true;
+                    break;
+                }
+                if (!done) continue;
+                ++headers_tried;  // it, and any other king closer that stretcher went on from
+                EXPECT_GE(mason_check(f, cells, kCm).king_closers_misplaced, 1);
+                break;
+            }
+        }
+    EXPECT_GT(tried, 12);
+    EXPECT_GT(headers_tried, 10);
 }
 
 // The checker finds a lintel bearing under 10 cm: a framed wall's first lintel cut back to 5 cm

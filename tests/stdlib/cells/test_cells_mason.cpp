@@ -266,6 +266,17 @@ TEST(CellsMason, UnseenFacades) {
                     // cut against the skewback to about 4 cm, six-sided, and not counted.
                     EXPECT_EQ(r.narrow_pieces, 0);
                 }
+                // King closers only at a reveal or quoin, the bond going on beside: a
+                // stretcher, one cut to an arch, or the course cut at the next reveal (Flemish
+                // only). Before: 21 misplaced here, cut to an arch's extrados (the mill's framed
+                // tree: one under the loading door's ring) or a header beyond the closer.
+                if (bond != Bond::flemish) {
+                    EXPECT_EQ(r.king_closers, 0);
+                }
+                std::string kings;
+                for (Point p : r.misplaced_kings)
+                    kings += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+                EXPECT_EQ(r.king_closers_misplaced, 0) << "at" << kings;
             }
     }
 }
@@ -309,6 +320,11 @@ TEST(CellsMason, ExampleFacades) {
                 EXPECT_EQ(r.courses_off_gauge, 0);
                 EXPECT_LE(r.cut_courses, 1);
                 EXPECT_EQ(r.openings_without_head, 0);
+                // King closers (Flemish) only at a reveal or quoin, the bond going on beside.
+                EXPECT_EQ(r.king_closers_misplaced, 0);
+                if (bond != Bond::flemish) {
+                    EXPECT_EQ(r.king_closers, 0);
+                }
             }
         o.bond = Bond::ashlar;
         MasonReport r = mason_check(f, texture(f, ashlar_tree(), o, 1).cells, kCm);
