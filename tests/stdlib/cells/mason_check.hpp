@@ -46,7 +46,11 @@ struct MasonReport {
     std::vector<Point> off_gauge_at;  // (pitch, the upper line) of each course off gauge
     double smallest_piece = 1e9;      // smallest cell's area over a brick face's
     long slivers = 0;                 // cells under 10% of a brick face
-    long narrow_pieces = 0;           // brick pieces narrower than a queen closer
+    // Brick pieces narrower than a queen closer: rectangles, and pieces of plumb and level sides
+    // only (a quoin notched by a skewback) by the width of the rectangle round them (a lug cut
+    // round a sill's horn is part of its brick); not those cut to a curve or rake.
+    long narrow_pieces = 0;
+    std::vector<Point> narrow_at;  // their extents' centres
     long voussoirs = 0;
     long voussoirs_clipped = 0;
     long crowns = 0;       // tops of arches and rings (a pointed arch's apex)
@@ -102,6 +106,15 @@ inline Rect extent(const std::vector<Point>& poly) {
     return r;
 }
 
+// Sides plumb or level only.
+inline bool rectilinear(const std::vector<Point>& poly) {
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Point a = poly[i], b = poly[(i + 1) % poly.size()];
+        if (std::abs(a.x - b.x) > 1e-9 && std::abs(a.y - b.y) > 1e-9) return false;
+    }
+    return true;
+}
+
 inline bool is_head(const std::string& generator) {
     static const std::set<std::string> heads{"lintel", "arch_stones", "arch_bricks",
                                              "soldier_course", "flat_arch"};
@@ -126,14 +139,21 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         r.smallest_piece = std::min(r.smallest_piece, a);
         r.slivers += a < 0.1;
         Rect b;
-        if (!coursed(c) || !is_rect(c.polygon, b)) continue;
+        if (!coursed(c)) continue;
+        if (!is_rect(c.polygon, b)) {
+            const Rect e = extent(c.polygon);
+            if (rectilinear(c.polygon) && std::abs(e.height() - s.height) <= 0.2 * s.height &&
+                e.width() < closer)
+                ++r.narrow_pieces, r.narrow_at.push_back(e.center());
+            continue;
+        }
         const double w = b.width(), h = b.height();
         if (std::abs(h - s.height) <= s.tolerance + 1e-9)
             bottoms.push_back(b.y1);
         else
             cut[std::llround(b.y1 / (0.05 * s.mortar + 1e-9))] += w + s.mortar;
         if (std::abs(h - s.height) > 0.2 * s.height) continue;  // a cut course
-        if (w < closer) ++r.narrow_pieces;
+        if (w < closer) ++r.narrow_pieces, r.narrow_at.push_back(b.center());
         const double nominal = std::abs(w - s.length) <= 0.12 * s.length ? s.length
                                : std::abs(w - header) <= 0.12 * header   ? header
                                                                          : 0;

@@ -111,6 +111,19 @@ TEST(CellsMason, FindsSliversAndNarrowPieces) {
     EXPECT_EQ(r.slivers, 1);
     EXPECT_EQ(r.narrow_pieces, 1);
     EXPECT_LT(r.smallest_piece, 0.1);
+    // A quoin 4 cm wide notched by a skewback (six sides, plumb and level) is narrow too; one
+    // with a lug of 3 cm round a sill's horn is a whole header, and one cut to a curve is not
+    // read.
+    Cell quoin = brick(0, 60, 5, 67.5, 8, "quoins");
+    quoin.polygon = {{0.5, 60.5}, {4.5, 60.5}, {4.5, 64}, {3, 64}, {3, 67}, {0.5, 67}};
+    Cell lugged = brick(0, 70, 11.25, 77.5, 9);
+    lugged.polygon = {{0.5, 70.5}, {10.75, 70.5}, {10.75, 77}, {3.5, 77}, {3.5, 72.5}, {0.5, 72.5}};
+    Cell curved = brick(0, 80, 5, 87.5, 10);
+    curved.polygon = {{0.5, 80.5}, {4.5, 80.5}, {4.5, 84}, {3, 87}, {0.5, 87}};
+    r = mason_check(plain_wall(), {quoin, lugged, curved}, kCm);
+    EXPECT_EQ(r.narrow_pieces, 1);
+    ASSERT_EQ(r.narrow_at.size(), 1u);
+    EXPECT_NEAR(r.narrow_at[0].x, 2.5, 1e-9);
 }
 
 TEST(CellsMason, FindsHeadlessOpeningsAndClippedVoussoirs) {
@@ -261,10 +274,12 @@ TEST(CellsMason, UnseenFacades) {
                         for (Point p : r.straight_at) EXPECT_GT(p.x, 41.3) << "up the pier";
                     }
                     // The warehouse's segmental windows left a 3 cm piece between each
-                    // skewback and the bond: the skewback takes it in. Rectangles only: in the
-                    // mill's framed tree the jamb quoin under the loading door's left skewback is
-                    // cut against the skewback to about 4 cm, six-sided, and not counted.
-                    EXPECT_EQ(r.narrow_pieces, 0);
+                    // skewback and the bond: the skewback takes it in. Pieces notched by a
+                    // skewback or a fixed end are measured too (the rectangle round them).
+                    std::string narrow;
+                    for (Point p : r.narrow_at)
+                        narrow += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+                    EXPECT_EQ(r.narrow_pieces, 0) << "at" << narrow;
                 }
                 // King closers only at a reveal or quoin, the bond going on beside: a
                 // stretcher, one cut to an arch, or the course cut at the next reveal (Flemish
