@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
+#include <utility>
 
 #include "brick_grid.hpp"
 #include "closers.hpp"
@@ -81,9 +83,12 @@ Rect BrickLayout::drawn(int row, int piece) const {
     return drawn(row, p.start, p.start + p.length);
 }
 
-BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins,
-                              bool lintels) {
+namespace {
+
+BrickLayout lay(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
+                const FramedMoves& moves) {
     BrickLayout layout;
+    layout.moves = moves;
     layout.grid = make_brick_grid(facade, face, o);
     layout.unit = (o.brick_length + o.mortar) / 4;
     layout.gauge = o.brick_height + o.mortar;
@@ -137,6 +142,152 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
             for (int u = pieces[k].start; u < pieces[k].start + pieces[k].length; ++u)
                 index[static_cast<std::size_t>(u)] = static_cast<int>(k);
         layout.taken[static_cast<std::size_t>(r)].assign(pieces.size(), 0);
+    }
+    return layout;
+}
+
+// Head joints within a run, by unit line; `beside_head`: those at a lintel's end.
+std::set<int> joints_in(const std::vector<Piece>& pieces, std::set<int>* beside_head = nullptr) {
+    std::set<int> out;
+    for (std::size_t k = 0; k + 1 < pieces.size(); ++k)
+        if (pieces[k].start + pieces[k].length == pieces[k + 1].start) {
+            out.insert(pieces[k + 1].start);
+            if (beside_head && (pieces[k].head || pieces[k + 1].head))
+                beside_head->insert(pieces[k + 1].start);
+        }
+    return out;
+}
+
+// Joints over joints: (upper row, unit line). With `at_heads`, those at a lintel's end (a
+// lintel is one stone two courses deep: its end is no head joint of a course) are counted there
+// instead.
+std::vector<std::pair<int, int>> straight_in(const BrickLayout& layout, long* at_heads = nullptr) {
+    std::vector<std::pair<int, int>> out;
+    if (layout.bond.bond == Bond::stack) return out;
+    std::set<int> below, below_heads;
+    for (int r = layout.grid.rows() - 1; r >= 0; --r) {
+        std::set<int> heads;
+        const std::set<int> here = joints_in(layout.rows[static_cast<std::size_t>(r)], &heads);
+        for (int j : here) {
+            if (!below.count(j)) continue;
+            if (at_heads && (heads.count(j) || below_heads.count(j)))
+                ++*at_heads;
+            else
+                out.push_back({r, j});
+        }
+        below = here, below_heads = heads;
+    }
+    return out;
+}
+
+// What a mason minds most, then less: straight joints in the courses, then quarter bats at a
+// run's end (a moved end may leave one at a jamb or the wall's end) and joints under a lintel's
+// end.
+long badness(const BrickLayout& layout) {
+    long quarters = 0, at_heads = 0;
+    for (const auto& pieces : layout.rows)
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+            if (pieces[k].length != 1) continue;
+            const bool left =
+                k == 0 || pieces[k - 1].start + pieces[k - 1].length != pieces[k].start;
+            const bool right =
+                k + 1 == pieces.size() || pieces[k].start + pieces[k].length != pieces[k + 1].start;
+            quarters += left || right;
+        }
+    const long straight = static_cast<long>(straight_in(layout, &at_heads).size());
+    return 100 * straight + 2 * quarters + at_heads;
+}
+
+bool plumb_edge(const Edge& e) {
+    return !e.arc && !e.closed && e.bounds.width() <= 1e-9 * std::max(1.0, std::abs(e.bounds.x1)) &&
+           e.bounds.height() > 0;
+}
+
+// The moves one step from `moves` that could break straight joint (row, unit): a bearing, a
+// window-bottom row's end or a quoin near it moved a quarter brick.
+std::vector<FramedMoves> moves_near(const Facade& facade, int face, const Options& o,
+                                    const BrickLayout& layout, const FramedMoves& moves, int row,
+                                    int unit) {
+    std::vector<FramedMoves> out;
+    auto add = [&](std::map<std::pair<int, int>, int> FramedMoves::*field, int edge, int side,
+                   int d, int lo, int hi) {
+        FramedMoves m = moves;
+        int& v = (m.*field)[{edge, side}];
+        v += d;
+        if (v < lo || v > hi) return;
+        if (v == 0) (m.*field).erase({edge, side});
+        out.push_back(std::move(m));
+    };
+    const CourseGrid& g = layout.grid;
+    const double tiny = 1e-6 * (g.xs.back() - g.xs.front());
+    for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        if (auto it = layout.lintel_units.find(e); it != layout.lintel_units.end()) {
+            for (int side : {0, 1}) {
+                const int end = side == 0 ? it->second.first : it->second.second;
+                if (std::abs(unit - end) > 8) continue;
+                for (int d : {1, -1, 2}) add(&FramedMoves::bearing, e, side, d, -1, 3);
+            }
+        }
+        int sr = 0, u0 = 0, u1 = 0;
+        if (sill_span(facade, edge, layout, sr, u0, u1) && std::abs(sr - row) <= 40) {
+            for (int side : {0, 1}) {
+                const int end = side == 0 ? u0 - 2 : u1 + 3;
+                if (std::abs(unit - end) > 6) continue;
+                for (int d : {1, -1}) add(&FramedMoves::sill_end, e, side, d, -1, 1);
+            }
+        }
+        if (plumb_edge(edge)) {
+            const bool right = edge.inward(edge.length / 2).x > 0;
+            const int u = g.unit_at(right ? edge.bounds.x0 + tiny : edge.bounds.x0 - tiny);
+            if (u < 0 || std::abs(u - unit) > 5) continue;
+            for (int r = row - 1; r <= row + 2; ++r) {
+                if (r < 0 || r >= g.rows()) continue;
+                const double mid = (g.ys[static_cast<std::size_t>(r)] + g.ys[r + 1]) / 2;
+                if (mid < edge.bounds.y0 || mid > edge.bounds.y1) continue;
+                const int usual = g.course(r) % 2 == 0 ? o.quoin_long : o.quoin_short;
+                auto it = moves.quoin_length.find({e, r});
+                const int now = it == moves.quoin_length.end() ? usual : it->second;
+                for (int len : {o.quoin_short, 3, o.quoin_long}) {
+                    if (len == now) continue;
+                    FramedMoves m = moves;
+                    if (len == usual)
+                        m.quoin_length.erase({e, r});
+                    else
+                        m.quoin_length[{e, r}] = len;
+                    out.push_back(std::move(m));
+                }
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins,
+                              bool lintels) {
+    BrickLayout layout = lay(facade, face, o, quoins, lintels, {});
+    if (!quoins || !lintels) return layout;
+    // The framed tree: where fixed ends still meet over each other, move the ones round each
+    // such joint a quarter brick, the move that leaves the wall best first, while one helps.
+    long worst = badness(layout);
+    for (int step = 0; step < 6 && worst >= 100; ++step) {
+        long at_heads = 0;
+        const auto straight = straight_in(layout, &at_heads);
+        BrickLayout best;
+        long best_badness = worst;
+        std::set<FramedMoves> tried;
+        for (auto [row, unit] : straight)
+            for (FramedMoves& m : moves_near(facade, face, o, layout, layout.moves, row, unit)) {
+                if (!tried.insert(m).second) continue;
+                BrickLayout next = lay(facade, face, o, quoins, lintels, m);
+                const long b = badness(next);
+                if (b < best_badness) best_badness = b, best = std::move(next);
+            }
+        if (best_badness >= worst) break;
+        worst = best_badness;
+        layout = std::move(best);
     }
     return layout;
 }

@@ -4,10 +4,13 @@
 #pragma once
 
 #include <acanthus/stdlib/cells.hpp>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "bond.hpp"
 #include "course_grid.hpp"
+#include "framed_moves.hpp"
 
 namespace acanthus::cells::detail {
 
@@ -20,6 +23,9 @@ struct BrickLayout {
     std::vector<std::vector<char>> taken;         // per row and piece: laid already
     long cut_pieces = 0;
     bool quoined = false;  // jamb quoins are pieces of the layout (quoin_rows.hpp)
+    FramedMoves moves;     // fixed ends moved a quarter brick (framed_moves.hpp)
+    // Per straight head edge with a lintel in the layout: its units [u0, u1) (lintel.hpp).
+    std::map<int, std::pair<int, int>> lintel_units;
 
     double unit = 0, gauge = 0, tolerance = 0, mortar = 0;  // nominal, from the options
 
@@ -34,7 +40,8 @@ struct BrickLayout {
 
 // With `quoins`, jambs and the wall's vertical ends get quoins in the layout (quoin_rows.hpp);
 // with `lintels`, every straight head's lintel is a fixed piece of the courses it fills
-// (lintel.hpp).
+// (lintel.hpp). With both (the framed tree), where two fixed ends still stand over each other,
+// the fixed ends round them are moved a quarter brick (framed_moves.hpp) while that leaves fewer.
 BrickLayout make_brick_layout(const Facade& facade, int face, const Options& options,
                               bool quoins = false, bool lintels = false);
 // Cut pieces the face would have with `phase` (for the fewest-half-bricks choice and its test).

@@ -2,6 +2,7 @@
 // a jamb, as the bond gives them), then every brick of the face left free. All of them come
 // from the face's one layout, so corners, edges and face agree on the bond.
 #include <acanthus/stdlib/cells.hpp>
+#include <cmath>
 #include <set>
 
 #include "brick_layout.hpp"
@@ -15,12 +16,22 @@ using detail::BrickLayout;
 
 namespace {
 
-// A king closer looks like a three-quarter bat on the face: the cells say which it is.
+// Four corners, sides plumb and level: the piece as laid out, not cut to a curve or a rake.
+bool uncut(const std::vector<Point>& poly) {
+    if (poly.size() != 4) return false;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Point a = poly[i], b = poly[(i + 1) % 4];
+        if (std::abs(a.x - b.x) > 1e-9 && std::abs(a.y - b.y) > 1e-9) return false;
+    }
+    return true;
+}
+
+// A king closer looks like a three-quarter bat on the face: the cells say which it is. One cut
+// to an arch's extrados or a rake is a cut brick like any other, named by its face alone.
 void name(Context& c, const detail::Piece& p, int added) {
-    if (!p.king) return;
-    auto& cells = c.cells();
-    for (int i = 0; i < added; ++i)
-        cells[cells.size() - 1 - static_cast<std::size_t>(i)].piece = "king closer";
+    if (!p.king || added != 1) return;
+    Cell& cell = c.cells().back();
+    if (uncut(cell.polygon)) cell.piece = "king closer";
 }
 
 void lay(Context& c, BrickLayout& layout, int row, int piece) {

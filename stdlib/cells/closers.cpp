@@ -296,7 +296,16 @@ void repair_straight_joints(BrickLayout& layout) {
                     const int cut = dir < 0 ? r : r + 1;
                     const auto saved = rows;
                     auto& row = rows[static_cast<std::size_t>(cut)];
-                    const std::set<int> other = joints(dir < 0 ? r + 1 : r);
+                    // Off the other course, and off the fixed ends of the course beyond (a
+                    // quoin's or a lintel's end there cannot be pushed on).
+                    std::set<int> other = joints(dir < 0 ? r + 1 : r);
+                    if (cut + dir >= 0 && cut + dir < n) {
+                        const auto& beyond = rows[static_cast<std::size_t>(cut + dir)];
+                        for (std::size_t k = 0; k + 1 < beyond.size(); ++k)
+                            if (beyond[k].start + beyond[k].length == beyond[k + 1].start &&
+                                (beyond[k].fixed() || beyond[k + 1].fixed()))
+                                other.insert(beyond[k + 1].start);
+                    }
                     if ((recut(row, j, other) || recut_pier(row, j, other)) &&
                         push(rows, cut, dir, 40)) {
                         changed = true;
@@ -343,7 +352,17 @@ void set_king_closers(BrickLayout& layout) {
                 if (!whole(pieces[end].start, pieces[end].start + pieces[end].length) ||
                     !whole(pieces[next].start, pieces[next].start + pieces[next].length))
                     continue;
-                if (pieces[end].length == 2 && pieces[next].length == 1) {
+                // The bond goes on with a stretcher beyond the closer (or one cut to an arch,
+                // or a lintel's end); before a header or a bat it stays a header and a closer.
+                const bool beyond_exists = left ? k + 2 < pieces.size() : k >= 1;
+                const std::size_t beyond = left ? k + 2 : k - 1;
+                const bool goes_on =
+                    beyond_exists &&
+                    (left ? pieces[k + 1].start + pieces[k + 1].length == pieces[beyond].start
+                          : pieces[beyond].start + pieces[beyond].length == pieces[k].start) &&
+                    (pieces[beyond].length == 4 || pieces[beyond].head ||
+                     !whole(pieces[beyond].start, pieces[beyond].start + pieces[beyond].length));
+                if (pieces[end].length == 2 && pieces[next].length == 1 && goes_on) {
                     Piece kc{u0, 3, true, false};
                     kc.king = true;
                     pieces[k] = kc;

@@ -102,9 +102,15 @@ Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o) {
     // Never by more than a quarter joint: a quarter brick is a quarter joint shorter than a unit,
     // so two such joints moved towards each other in consecutive courses stay a quarter brick
     // apart (no straight joint).
+    // On a grid whose units the joints squeezed to fit the wall, a unit is less than a quarter
+    // joint over a quarter brick: the joint moves by half what the brick reaches into it, and
+    // stays a tenth of a joint clear of that margin.
     const double most = std::min(o.mortar / 4, o.joint_tolerance);
-    const bool fits =
-        short_by > 0 ? short_by <= std::min(h, 2 * most) + eps : -short_by <= most + eps;
+    const double units =
+        std::max(1.0, std::round(claim.width() / ((o.brick_length + o.mortar) / 4)));
+    const double margin = claim.width() / units - o.brick_length / 4;
+    const double reach = std::min({h, 2 * most, 2 * margin - 0.1 * o.mortar});
+    const bool fits = short_by > 0 ? short_by <= reach + eps : -short_by <= most + eps;
     if (w <= 0 || std::abs(short_by) <= eps || !fits || left == right || r.y0 > drawn.y0 + eps ||
         r.y1 < drawn.y1 - eps ||
         std::abs(r.height() - (drawn.height() + o.mortar)) > o.joint_tolerance + eps)

@@ -39,6 +39,16 @@ void set_lintel_rows(const Facade& facade, int face, const Options& o, BrickLayo
         if (!lintel_span(e, layout.grid, o.brick_height, o.lintel_bearing, o.lintel_courses, top,
                          bottom, u0, u1))
             continue;
+        // A bearing moved by a quarter brick (framed_moves.hpp), never under the least a lintel
+        // bears on (to the drawn end: half a joint inside the claim).
+        const double least = kMinBearing * o.brick_length + 0.5 * o.mortar;
+        const int l = u0 - layout.moves.count(layout.moves.bearing, h, 0);
+        const int r = u1 + layout.moves.count(layout.moves.bearing, h, 1);
+        if (l >= 0 && e.bounds.x0 - layout.grid.xs[static_cast<std::size_t>(l)] >= least) u0 = l;
+        if (r <= layout.grid.units() &&
+            layout.grid.xs[static_cast<std::size_t>(r)] - e.bounds.x1 >= least)
+            u1 = r;
+        layout.lintel_units[h] = {u0, u1};
         for (int row = top; row <= bottom; ++row) {
             auto& pieces = layout.rows[static_cast<std::size_t>(row)];
             // Within the run the head's middle is in (a lintel never reaches past the wall).
@@ -94,6 +104,12 @@ Generator lintel() {
                              b * (o.brick_length + o.mortar) / 4 / detail::ashlar_unit(o) - 1e-9)));
         int top = 0, row = 0, u0 = 0, u1 = 0;
         if (!detail::lintel_span(e, grid, unit, b, o.lintel_courses, top, row, u0, u1)) return;
+        // Bonded into the courses (the framed tree): as long as the layout laid it.
+        if (!c.data().stone && c.data().lintels) {
+            const auto& spans = detail::brick_layout(c, e.face).lintel_units;
+            if (auto it = spans.find(head); it != spans.end())
+                u0 = it->second.first, u1 = it->second.second;
+        }
         Rect r = grid.cell(row, u0, u1);
         r.y0 = grid.ys[static_cast<std::size_t>(top)];
         c.place(detail::polygon_of(r), grid.course(row));

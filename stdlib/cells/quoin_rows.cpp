@@ -242,7 +242,11 @@ void set_quoin_rows(const Facade& facade, int face, const Options& o, BrickLayou
             const double mid = (g.ys[static_cast<std::size_t>(row)] + g.ys[row + 1]) / 2;
             if (mid < edge.bounds.y0 || mid > edge.bounds.y1) continue;
             if (g.at(row, u) == kOutside) continue;
-            const int len = g.course(row) % 2 == 0 ? o.quoin_long : o.quoin_short;
+            // Long and short by course, or as the layout moved it (framed_moves.hpp).
+            int len = g.course(row) % 2 == 0 ? o.quoin_long : o.quoin_short;
+            if (auto it = layout.moves.quoin_length.find({e, row});
+                it != layout.moves.quoin_length.end())
+                len = it->second;
             int a = right ? u : u - len + 1, b = right ? u + len : u + 1;
             // Within the run.
             int lo = u, hi = u + 1;

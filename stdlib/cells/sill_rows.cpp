@@ -66,7 +66,11 @@ void set_sill_rows(const Facade& facade, int face, BrickLayout& layout) {
     for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
         const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
         int row = 0, u0 = 0, u1 = 0;
-        if (sill_span(facade, edge, layout, row, u0, u1)) spans[row].push_back({u0 - 2, u1 + 3});
+        if (!sill_span(facade, edge, layout, row, u0, u1)) continue;
+        // Two units past each jamb, or a quarter brick more or less there (framed_moves.hpp).
+        const FramedMoves& m = layout.moves;
+        spans[row].push_back(
+            {u0 - 2 - m.count(m.sill_end, e, 0), u1 + 3 + m.count(m.sill_end, e, 1)});
     }
     const int units = layout.grid.units();
     for (auto& [row, list] : spans) {

@@ -46,7 +46,11 @@ struct MasonReport {
     std::vector<Point> off_gauge_at;  // (pitch, the upper line) of each course off gauge
     double smallest_piece = 1e9;      // smallest cell's area over a brick face's
     long slivers = 0;                 // cells under 10% of a brick face
-    long narrow_pieces = 0;           // brick pieces narrower than a queen closer
+    // Brick pieces narrower than a queen closer: rectangles, and pieces of plumb and level sides
+    // only (a quoin notched by a skewback) by the width of the rectangle round them (a lug cut
+    // round a sill's horn is part of its brick); not those cut to a curve or rake.
+    long narrow_pieces = 0;
+    std::vector<Point> narrow_at;  // their extents' centres
     long voussoirs = 0;
     long voussoirs_clipped = 0;
     long crowns = 0;       // tops of arches and rings (a pointed arch's apex)
@@ -66,6 +70,11 @@ struct MasonReport {
     long king_closers = 0;
     long king_closers_misplaced = 0;
     std::vector<Point> misplaced_kings;
+    // Lintels (generator "lintel") over straight heads: the shortest bearing past a jamb, and
+    // those under 100 mm on a 215 mm brick (what a mason lets a lintel bear on).
+    long lintels = 0;
+    long short_bearings = 0;
+    double shortest_bearing = 1e9;
     long openings = 0;
     long openings_without_head = 0;
     std::vector<std::string> headless;
@@ -87,6 +96,24 @@ inline bool contains(const std::vector<Point>& poly, Point p) {
 // Laid in courses of bricks: the library's own reading (head_joints.hpp), so that the
 // straight-joint map shows what this checker counts.
 using acanthus::cells::coursed;
+
+// The smallest rectangle round a polygon, sides plumb and level.
+inline Rect extent(const std::vector<Point>& poly) {
+    Rect r{1e300, 1e300, -1e300, -1e300};
+    for (Point p : poly)
+        r.x0 = std::min(r.x0, p.x), r.y0 = std::min(r.y0, p.y), r.x1 = std::max(r.x1, p.x),
+        r.y1 = std::max(r.y1, p.y);
+    return r;
+}
+
+// Sides plumb or level only.
+inline bool rectilinear(const std::vector<Point>& poly) {
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Point a = poly[i], b = poly[(i + 1) % poly.size()];
+        if (std::abs(a.x - b.x) > 1e-9 && std::abs(a.y - b.y) > 1e-9) return false;
+    }
+    return true;
+}
 
 inline bool is_head(const std::string& generator) {
     static const std::set<std::string> heads{"lintel", "arch_stones", "arch_bricks",
@@ -112,14 +139,21 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         r.smallest_piece = std::min(r.smallest_piece, a);
         r.slivers += a < 0.1;
         Rect b;
-        if (!coursed(c) || !is_rect(c.polygon, b)) continue;
+        if (!coursed(c)) continue;
+        if (!is_rect(c.polygon, b)) {
+            const Rect e = extent(c.polygon);
+            if (rectilinear(c.polygon) && std::abs(e.height() - s.height) <= 0.2 * s.height &&
+                e.width() < closer)
+                ++r.narrow_pieces, r.narrow_at.push_back(e.center());
+            continue;
+        }
         const double w = b.width(), h = b.height();
         if (std::abs(h - s.height) <= s.tolerance + 1e-9)
             bottoms.push_back(b.y1);
         else
             cut[std::llround(b.y1 / (0.05 * s.mortar + 1e-9))] += w + s.mortar;
         if (std::abs(h - s.height) > 0.2 * s.height) continue;  // a cut course
-        if (w < closer) ++r.narrow_pieces;
+        if (w < closer) ++r.narrow_pieces, r.narrow_at.push_back(b.center());
         const double nominal = std::abs(w - s.length) <= 0.12 * s.length ? s.length
                                : std::abs(w - header) <= 0.12 * header   ? header
                                                                          : 0;
@@ -279,40 +313,82 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         bool ok = is_rect(c.polygon, b) &&
                   std::abs(b.width() - (3 * (s.length + s.mortar) / 4 - s.mortar)) <= s.tolerance &&
                   std::abs(b.height() - s.height) <= s.tolerance;
-        bool reveal = false, stretcher = false;
+        // Each side (0 left, 1 right): a reveal there, and the bond going on there.
+        bool reveal[2] = {false, false}, goes_on[2] = {false, false};
         const double near = s.mortar + s.tolerance;
-        for (const auto& e : facade.edges())
-            if (e.vertical() && !e.arc && e.bounds.y0 < b.y1 && e.bounds.y1 > b.y0 &&
-                (std::abs(e.bounds.x0 - b.x0) < near || std::abs(e.bounds.x0 - b.x1) < near))
-                reveal = true;
-        for (const Cell& d : cells) {
-            Rect n;
-            if (&d == &c || !coursed(d) || !is_rect(d.polygon, n) ||
-                std::abs(n.y0 - b.y0) > 0.05 * s.mortar + 1e-9)
-                continue;
-            const bool beside = std::abs(n.x1 - b.x0) < near || std::abs(b.x1 - n.x0) < near;
-            if (!beside) continue;
-            // A quoin: laid as such, or the piece at a plumb side whatever laid it.
-            reveal |= d.generator == "quoins";
+        // A plumb side of the facade (a jamb, the wall's end) at x, over the rows y0..y1.
+        auto plumb = [&](double x, double y0, double y1) {
             for (const auto& e : facade.edges())
-                if (e.vertical() && !e.arc && e.bounds.y0 < n.y1 && e.bounds.y1 > n.y0 &&
-                    (std::abs(e.bounds.x0 - n.x0) < near || std::abs(e.bounds.x0 - n.x1) < near) &&
-                    n.width() <= s.length + s.tolerance)
-                    reveal = true;
-            stretcher |= std::abs(n.width() - s.length) <= s.tolerance;
-        }
-        // Or the head of an opening beside it (the stretcher there is under the soldiers).
+                if (e.vertical() && !e.arc && e.bounds.y0 < y1 && e.bounds.y1 > y0 &&
+                    std::abs(e.bounds.x0 - x) < near)
+                    return true;
+            return false;
+        };
+        reveal[0] = plumb(b.x0, b.y0, b.y1), reveal[1] = plumb(b.x1, b.y0, b.y1);
+        // The head of an opening or an arch's voussoir at x (walling is cut to it).
+        auto head_at = [&](double x, double y0, double y1) {
+            for (const Cell& d : cells) {
+                if (!mason_detail::is_head(d.generator)) continue;
+                Rect n;
+                if (!is_rect(d.polygon, n)) n = extent(d.polygon);  // a voussoir
+                if (n.y0 > y1 || n.y1 < y0) continue;
+                if (std::abs(n.x1 - x) < near + s.mortar || std::abs(n.x0 - x) < near + s.mortar)
+                    return true;
+            }
+            return false;
+        };
+        goes_on[0] |= head_at(b.x0, b.y0, b.y1), goes_on[1] |= head_at(b.x1, b.y0, b.y1);
         for (const Cell& d : cells) {
+            if (&d == &c || !coursed(d)) continue;
+            // Its neighbours in the course: pieces cut to an arch or a notch by their extent.
             Rect n;
-            if (!mason_detail::is_head(d.generator) || !is_rect(d.polygon, n) || n.y0 > b.y1 ||
-                n.y1 < b.y0)
+            const bool whole = is_rect(d.polygon, n);
+            if (!whole) n = extent(d.polygon);
+            if (std::min(n.y1, b.y1) - std::max(n.y0, b.y0) < s.height / 2) continue;
+            const int side = std::abs(n.x1 - b.x0) < near   ? 0
+                             : std::abs(b.x1 - n.x0) < near ? 1
+                                                            : -1;
+            if (side < 0) continue;
+            const double far = side == 0 ? n.x0 : n.x1;
+            if (d.generator == "quoins") {  // the jamb's dressing: the reveal of the walling
+                reveal[side] = true;
                 continue;
-            stretcher |=
-                std::abs(n.x1 - b.x0) < near + s.mortar || std::abs(b.x1 - n.x0) < near + s.mortar;
+            }
+            // A piece between it and a plumb side, whatever laid it: a quoin (the wall's top
+            // corner is laid by its corner), or the rest of a pier's course cut at the jamb.
+            const bool at_plumb =
+                whole && n.width() <= s.length + s.tolerance && plumb(far, n.y0, n.y1);
+            reveal[side] |= at_plumb;
+            // A stretcher; one cut to an arch's extrados or a rake; or the rest of the course
+            // cut at the next reveal or head: the king closer laps its own reveal by a quarter.
+            goes_on[side] |= at_plumb || !whole || std::abs(n.width() - s.length) <= s.tolerance ||
+                             head_at(far, n.y0, n.y1);
         }
-        if (!ok || !reveal || !stretcher) {
+        const bool reveal_any = reveal[0] || reveal[1];
+        const bool stretcher = (reveal[0] && goes_on[1]) || (reveal[1] && goes_on[0]);
+        if (!ok || !reveal_any || !stretcher) {
             ++r.king_closers_misplaced;
             r.misplaced_kings.push_back(b.center());
+        }
+    }
+    // Lintel bearings: each lintel over the straight head it spans (the head's middle under it,
+    // within a joint and a half of its bottom), measured from each jamb to the lintel's end.
+    for (const Cell& c : cells) {
+        Rect b;
+        if (c.generator != "lintel" || !is_rect(c.polygon, b)) continue;
+        for (const auto& e : facade.edges()) {
+            if (!e.opening || e.arc || e.part != acanthus::cells::Part::top) continue;
+            const double mid = (e.bounds.x0 + e.bounds.x1) / 2;
+            if (mid < b.x0 || mid > b.x1 || std::abs(e.bounds.y0 - b.y1) > 1.5 * s.mortar) continue;
+            ++r.lintels;
+            // A lintel run out to the wall's end bears on the whole pier (an opening nearer the
+            // end than a bearing forces it): only ends within the wall are counted.
+            const Rect wall = facade.bounds();
+            double bearing = 1e9;
+            if (b.x0 > wall.x0 + s.mortar) bearing = std::min(bearing, e.bounds.x0 - b.x0);
+            if (b.x1 < wall.x1 - s.mortar) bearing = std::min(bearing, b.x1 - e.bounds.x1);
+            r.shortest_bearing = std::min(r.shortest_bearing, bearing);
+            r.short_bearings += bearing < 100.0 / 215.0 * s.length - 1e-6;
         }
     }
     // Heads: above the middle of every top edge of an opening, a lintel, arch or soldier cell.

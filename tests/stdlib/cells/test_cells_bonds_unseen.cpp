@@ -97,12 +97,18 @@ Options centimetres() {
 
 }  // namespace
 
-TEST(CellsBondsUnseen, NoStraightJoints) {
+namespace {
+
+// Straight joints on made-up walls `first`..`last`, every bond and tree; each wall's count against
+// `allowed` (by seed; 0 where not named), the total returned.
+long straight_on_walls(std::uint64_t first, std::uint64_t last,
+                       const std::map<std::uint64_t, long>& allowed = {}) {
     Options o = centimetres();
     const auto ts = mason_trees();
     long total = 0;
-    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    for (std::uint64_t seed = first; seed <= last; ++seed) {
         Facade f = made_up(seed, seed % 2 == 0);
+        const long allowance = allowed.count(seed) ? allowed.at(seed) : 0;
         for (Bond bond : {Bond::running, Bond::english, Bond::flemish, Bond::header})
             for (const auto& [name, tree] : ts) {
                 o.bond = bond;
@@ -116,15 +122,38 @@ TEST(CellsBondsUnseen, NoStraightJoints) {
                     std::cout << f.name() << " " << to_string(bond) << " " << name << ": "
                               << r.straight_joints << " straight joints at" << where << "\n";
                 total += r.straight_joints;
-                // Framed: quoins and lintels bonded in, closers and re-cut pieces against their
-                // ends (119 straight joints on these twelve walls before). Left: where two fixed
-                // ends meet over each other (a window-bottom row or a narrow pier's quoins over
-                // the quoins of a jamb below), at most two on a wall.
-                EXPECT_LE(r.straight_joints, name == "framed" ? 2 : 0) << "at" << where;
+                EXPECT_LE(r.straight_joints, allowance) << "at" << where;
+                // Bearings moved a quarter brick shorter stay at 10 cm or more.
+                EXPECT_EQ(r.short_bearings, 0) << "shortest " << r.shortest_bearing;
+                if (name == "framed") {
+                    EXPECT_GT(r.lintels, 0);
+                }
             }
     }
+    return total;
+}
+
+}  // namespace
+
+// Framed: quoins and lintels bonded in, closers and re-cut pieces against their ends (119
+// straight joints on these twelve walls before), and where two fixed ends still met over each
+// other (a window-bottom row or a narrow pier's quoins over the quoins of a jamb below, 12 on these
+// walls), a bearing, a row's end or a quoin moved a quarter brick (framed_moves.hpp).
+TEST(CellsBondsUnseen, NoStraightJoints) {
+    const long total = straight_on_walls(1, 12);
     std::cout << "straight joints on all walls: " << total << "\n";
-    EXPECT_LE(total, 12);  // 119 before lintels were in the layout and pieces were cut again
+    EXPECT_EQ(total, 0);
+}
+
+// Walls made up after the framed tree's fixed ends were moved, seeds nothing was tuned on. (Two
+// of them, 29 and 35, had 17-24 straight joints up a pier between two openings in every tree: a
+// jamb brick drawn whole against the reveal reached into the head joint beside it by half a
+// joint, on units the joints squeezed to fit the wall; context.cpp now lets it reach only as
+// far as the joint stays a quarter brick clear.)
+TEST(CellsBondsUnseen, NoStraightJointsOnWallsNotTunedOn) {
+    const long total = straight_on_walls(13, 36);
+    std::cout << "straight joints on all walls: " << total << "\n";
+    EXPECT_EQ(total, 0);
 }
 
 // King closers (docs/stdlib/cells.md, Closers): in Flemish bond a header against a reveal or a
@@ -171,24 +200,105 @@ TEST(CellsBondsUnseen, KingClosersInFlemishBond) {
     EXPECT_GT(kings, 50);
 }
 
-// The checker finds a king closer laid where no reveal is.
+// The checker finds a king closer laid where no reveal is, on every made-up wall and tree, and
+// one with a header laid beyond it where the bond calls for a stretcher.
 TEST(CellsBondsUnseen, FindsAMisplacedKingCloser) {
     Options o = centimetres();
     o.bond = Bond::flemish;
-    Facade f = made_up(4, true);  // a wall that has them in the brick tree
-    Texture t = texture(f, brick_tree(), o, 1);
+    const double three_quarters = 3 * (21.5 + 1) / 4 - 1, header = (21.5 - 1) / 2;
+    long tried = 0, headers_tried = 0;
+    for (std::uint64_t seed = 1; seed <= 6; ++seed)
+        for (const auto& [name, tree] : mason_trees()) {
+            Facade f = made_up(seed, seed % 2 == 0);
+            Texture t = texture(f, tree, o, 1);
+            MasonReport r = mason_check(f, t.cells, kCm);
+            SCOPED_TRACE("made-up " + std::to_string(seed) + " " + name);
+            EXPECT_EQ(r.king_closers_misplaced, 0);
+            // Name a stretcher in the middle of the wall, away from every reveal, a king closer.
+            const double x_mid = f.bounds().x0 + f.bounds().width() / 2;
+            std::vector<Cell> cells = t.cells;
+            Point laid{-1, -1};
+            for (Cell& c : cells) {
+                Rect b;
+                if (c.generator != "bricks" || !c.piece.empty() || !is_rect(c.polygon, b)) continue;
+                if (std::abs(b.width() - 21.5) > 0.1 || std::abs(b.center().x - x_mid) > 30)
+                    continue;
+                c.piece = "king closer";
+                c.polygon = {{b.x0, b.y0},
+                             {b.x0 + three_quarters, b.y0},
+                             {b.x0 + three_quarters, b.y1},
+                             {b.x0, b.y1}};
+                laid = {b.x0 + three_quarters / 2, b.center().y};
+                ++tried;
+                break;
+            }
+            // It, and a king closer at a pier's reveal whose stretcher it was.
+            const MasonReport mid = mason_check(f, cells, kCm);
+            EXPECT_GE(mid.king_closers_misplaced, 1);
+            bool found = false;
+            for (Point p : mid.misplaced_kings)
+                found |= std::abs(p.x - laid.x) < 0.01 && std::abs(p.y - laid.y) < 0.01;
+            EXPECT_TRUE(found);
+            // A king closer at a reveal with the stretcher beyond it cut to a header, the rest of
+            // the course still running on.
+            cells = t.cells;
+            for (Cell& k : cells) {
+                Rect b;
+                if (k.piece != "king closer" || !is_rect(k.polygon, b)) continue;
+                bool done = false;
+                for (Cell& c : cells) {
+                    Rect n;
+                    if (c.generator != "bricks" || !is_rect(c.polygon, n) ||
+                        std::abs(n.width() - 21.5) > 0.1 || std::abs(n.y0 - b.y0) > 0.05)
+                        continue;
+                    if (std::abs(n.x0 - b.x1 - 1) < 0.2)
+                        c.polygon = {{n.x0, n.y0},
+                                     {n.x0 + header, n.y0},
+                                     {n.x0 + header, n.y1},
+                                     {n.x0, n.y1}};
+                    else if (std::abs(b.x0 - n.x1 - 1) < 0.2)
+                        c.polygon = {{n.x1 - header, n.y0},
+                                     {n.x1, n.y0},
+                                     {n.x1, n.y1},
+                                     {n.x1 - header, n.y1}};
+                    else
+                        continue;
+                    done = true;
+                    break;
+                }
+                if (!done) continue;
+                ++headers_tried;  // it, and any other king closer that stretcher went on from
+                EXPECT_GE(mason_check(f, cells, kCm).king_closers_misplaced, 1);
+                break;
+            }
+        }
+    EXPECT_GT(tried, 12);
+    EXPECT_GT(headers_tried, 10);
+}
+
+// The checker finds a lintel bearing under 10 cm: a framed wall's first lintel cut back to 5 cm
+// past its left jamb.
+TEST(CellsBondsUnseen, FindsAShortBearing) {
+    Options o = centimetres();
+    Facade f = made_up(3, false);
+    Texture t = texture(f, framed_tree(), o, 1);
     MasonReport r = mason_check(f, t.cells, kCm);
-    ASSERT_GT(r.king_closers, 0);
-    EXPECT_EQ(r.king_closers_misplaced, 0);
-    // Name a stretcher in the middle of the wall, away from every reveal, a king closer.
-    const double x_mid = f.bounds().x0 + f.bounds().width() / 2;
+    ASSERT_GT(r.lintels, 0);
+    EXPECT_EQ(r.short_bearings, 0);
+    EXPECT_GE(r.shortest_bearing, 10);
     for (Cell& c : t.cells) {
         Rect b;
-        if (c.generator != "bricks" || !c.piece.empty() || !is_rect(c.polygon, b)) continue;
-        if (std::abs(b.width() - 21.5) > 0.1 || std::abs(b.center().x - x_mid) > 30) continue;
-        c.piece = "king closer";
+        if (c.generator != "lintel" || !is_rect(c.polygon, b)) continue;
+        for (const auto& e : f.edges())
+            if (e.opening && !e.arc && e.part == acanthus::cells::Part::top &&
+                std::abs(e.bounds.y0 - b.y1) < 1.5 && e.bounds.x0 > b.x0 && e.bounds.x1 < b.x1) {
+                const double x = e.bounds.x0 - 5;
+                for (Point& p : c.polygon)
+                    if (p.x < x) p.x = x;
+            }
         break;
     }
     r = mason_check(f, t.cells, kCm);
-    EXPECT_EQ(r.king_closers_misplaced, 1);
+    EXPECT_EQ(r.short_bearings, 1);
+    EXPECT_NEAR(r.shortest_bearing, 5, 1e-6);
 }

@@ -111,6 +111,19 @@ TEST(CellsMason, FindsSliversAndNarrowPieces) {
     EXPECT_EQ(r.slivers, 1);
     EXPECT_EQ(r.narrow_pieces, 1);
     EXPECT_LT(r.smallest_piece, 0.1);
+    // A quoin 4 cm wide notched by a skewback (six sides, plumb and level) is narrow too; one
+    // with a lug of 3 cm round a sill's horn is a whole header, and one cut to a curve is not
+    // read.
+    Cell quoin = brick(0, 60, 5, 67.5, 8, "quoins");
+    quoin.polygon = {{0.5, 60.5}, {4.5, 60.5}, {4.5, 64}, {3, 64}, {3, 67}, {0.5, 67}};
+    Cell lugged = brick(0, 70, 11.25, 77.5, 9);
+    lugged.polygon = {{0.5, 70.5}, {10.75, 70.5}, {10.75, 77}, {3.5, 77}, {3.5, 72.5}, {0.5, 72.5}};
+    Cell curved = brick(0, 80, 5, 87.5, 10);
+    curved.polygon = {{0.5, 80.5}, {4.5, 80.5}, {4.5, 84}, {3, 87}, {0.5, 87}};
+    r = mason_check(plain_wall(), {quoin, lugged, curved}, kCm);
+    EXPECT_EQ(r.narrow_pieces, 1);
+    ASSERT_EQ(r.narrow_at.size(), 1u);
+    EXPECT_NEAR(r.narrow_at[0].x, 2.5, 1e-9);
 }
 
 TEST(CellsMason, FindsHeadlessOpeningsAndClippedVoussoirs) {
@@ -231,11 +244,8 @@ TEST(CellsMason, UnseenFacades) {
                              tree_name);
                 // The mill (made up after the rest, not tuned on): its loading door's ring, 9 cm
                 // from the wall's end, is one half-brick ring (a brick-deep one would reach past
-                // the end); left: in the framed tree the jamb quoin under the door's left
-                // skewback is cut to 4.1 cm. (A brick over the wide window's extrados, its
-                // corner cut by it, was drawn 1.2 mm short off its course line: it keeps its
-                // course's beds now.)
-                const bool mill = std::string(name) == "mill";
+                // the end). (A brick over the wide window's extrados, its corner cut by it, was
+                // drawn 1.2 mm short off its course line: it keeps its course's beds now.)
                 EXPECT_EQ(r.slivers, 0);
                 EXPECT_EQ(r.voussoirs_clipped, 0);  // voussoirs first, walling cut
                 EXPECT_EQ(r.crowns_open, 0);        // a key at every crown
@@ -254,17 +264,33 @@ TEST(CellsMason, UnseenFacades) {
                     // Framed: quoins bonded in (were 99-270 here); the shop front's 41 cm pier
                     // between the wall's end and the shop window, two quoins and what lies
                     // between, set out as a column (was 20-29 straight joints up it); lintels in
-                    // the layout and the pieces round fixed ends cut again (0-9 before). Left:
-                    // on the mill, where a window-bottom row's end meets a quoin's.
-                    EXPECT_LE(r.straight_joints, tree_name == "framed" ? (mill ? 2 : 0) : 0)
-                        << "at" << where;
+                    // the layout and the pieces round fixed ends cut again (0-9 before); fixed
+                    // ends moved a quarter brick where two met, and a course cut again off the
+                    // fixed ends of the course beyond it (the mill 2 before: the wide window's
+                    // window-bottom row over the long quoin of the wall's end below it).
+                    EXPECT_EQ(r.straight_joints, 0) << "at" << where;
                     if (std::string(name) == "shopfront") {
                         for (Point p : r.straight_at) EXPECT_GT(p.x, 41.3) << "up the pier";
                     }
                     // The warehouse's segmental windows left a 3 cm piece between each
-                    // skewback and the bond: the skewback takes it in.
-                    EXPECT_LE(r.narrow_pieces, mill && tree_name == "framed" ? 1 : 0);
+                    // skewback and the bond: the skewback takes it in. Pieces notched by a
+                    // skewback or a fixed end are measured too (the rectangle round them).
+                    std::string narrow;
+                    for (Point p : r.narrow_at)
+                        narrow += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+                    EXPECT_EQ(r.narrow_pieces, 0) << "at" << narrow;
                 }
+                // King closers only at a reveal or quoin, the bond going on beside: a
+                // stretcher, one cut to an arch, or the course cut at the next reveal (Flemish
+                // only). Before: 21 misplaced here, cut to an arch's extrados (the mill's framed
+                // tree: one under the loading door's ring) or a header beyond the closer.
+                if (bond != Bond::flemish) {
+                    EXPECT_EQ(r.king_closers, 0);
+                }
+                std::string kings;
+                for (Point p : r.misplaced_kings)
+                    kings += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+                EXPECT_EQ(r.king_closers_misplaced, 0) << "at" << kings;
             }
     }
 }
@@ -300,14 +326,19 @@ TEST(CellsMason, ExampleFacades) {
                     EXPECT_LE(r.shaved_bricks, 36);
                 }
                 if (tree_name == "framed" && bond != Bond::stack) {
-                    // 297 on the row-house before quoins were bonded in, 0-2 before lintels were;
-                    // left: one on the insets, where a narrow pier's quoins meet a head's.
-                    EXPECT_LE(r.straight_joints, std::string(name) == "insets" ? 1 : 0);
+                    // 297 on the row-house before quoins were bonded in, 0-2 before lintels were,
+                    // one on the insets before fixed ends were moved a quarter brick.
+                    EXPECT_EQ(r.straight_joints, 0);
                     EXPECT_EQ(r.narrow_pieces, 0);
                 }
                 EXPECT_EQ(r.courses_off_gauge, 0);
                 EXPECT_LE(r.cut_courses, 1);
                 EXPECT_EQ(r.openings_without_head, 0);
+                // King closers (Flemish) only at a reveal or quoin, the bond going on beside.
+                EXPECT_EQ(r.king_closers_misplaced, 0);
+                if (bond != Bond::flemish) {
+                    EXPECT_EQ(r.king_closers, 0);
+                }
             }
         o.bond = Bond::ashlar;
         MasonReport r = mason_check(f, texture(f, ashlar_tree(), o, 1).cells, kCm);
