@@ -188,6 +188,17 @@ struct GrowthEngine::Impl {
     bool can_parent_type(const Element& e) const { return rules_by_parent.count(&e.type()) != 0; }
     // The restarts centre_seed() has left: a rotation centre and whether the seed goes beside it.
     std::optional<std::vector<std::pair<Point, bool>>> centre_restarts;
+    double centre_bar = 0;  // a hole no larger than this is as well filled (centre_seed())
+    // Each restart on a centre: the hole, whether the seed grew, and whom the hole was offered.
+    struct CentreOffer {
+        Point centre;
+        double hole = 0;
+        bool grew = false;
+        std::vector<const Element*> offered;
+    };
+    std::vector<CentreOffer> centre_offered;
+    const std::vector<const Element*>* restart_skip = nullptr;  // iterate() offers them nothing
+    std::vector<const Element*>* restart_offered = nullptr;     // iterate() lists its parents
     EmptyCircle goal_found;  // the circle find_goal() refined last
     // C's centre and its distinct images (C's centre alone without symmetry).
     std::vector<Point> orbit_of_point(Point p) const;
@@ -317,16 +328,12 @@ bool GrowthEngine::Impl::second_seed() {
 // images, and the hole as C: first on the centre (an element there coinciding with its images,
 // a fill called again on what is left), then, for the holes that stay, beside it, at the
 // largest circle in the hole clear of its own images (an element that is not symmetric fits
-// only there). One restart per call.
+// only there). One restart per call. Where the rules fail in the hole a restart is costly (a
+// fill over the whole tile): the bar is set once, and the restart beside a centre is skipped or
+// asks only the elements not asked on the centre.
 bool GrowthEngine::Impl::centre_seed() {
     if (!group || group->rosette() || !options.seeds.empty()) return false;
     const double tol = ornament.tolerance();
-    if (!centre_restarts) {
-        centre_restarts.emplace();
-        const std::vector<Point> classes = group->centre_classes(raster.grid().pixel / 4);
-        for (bool beside : {false, true})
-            for (Point c : classes) centre_restarts->emplace_back(c, beside);
-    }
     // The hole on c: its distance to the nearest element that is not a seed.
     auto hole = [&](Point c) {
         for (double reach = 4 * epsilon;; reach *= 2) {
@@ -336,17 +343,30 @@ bool GrowthEngine::Impl::centre_seed() {
                 return reach;
         }
     };
-    // The best-filled class sets the bar: a hole no larger than 1.1 times its own (plus epsilon)
-    // is as well filled.
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& [c, beside] : *centre_restarts)
-        if (region.contains(c)) best = std::min(best, hole(c));
+    // The best-filled class as growth first ended sets the bar: a hole no larger than 1.1 times
+    // its own (plus epsilon) is as well filled. Set once: a class a restart filled is no bar.
+    if (!centre_restarts) {
+        centre_restarts.emplace();
+        const std::vector<Point> classes = group->centre_classes(raster.grid().pixel / 4);
+        for (bool beside : {false, true})
+            for (Point c : classes) centre_restarts->emplace_back(c, beside);
+        double best = std::numeric_limits<double>::infinity();
+        for (Point c : classes)
+            if (region.contains(c)) best = std::min(best, hole(c));
+        centre_bar = std::max(2 * epsilon, 1.1 * best + epsilon);
+    }
     while (!centre_restarts->empty()) {
         const auto [c, beside] = centre_restarts->front();
         centre_restarts->erase(centre_restarts->begin());
         if (!region.contains(c)) continue;
         const double r = hole(c);
-        if (r <= std::max(2 * epsilon, 1.1 * best + epsilon)) continue;
+        if (r <= centre_bar) continue;
+        // A seed on the centre that grew while the hole stayed fills elsewhere, not the hole:
+        // one beside it would do the same.
+        const CentreOffer* on_centre = nullptr;
+        for (const CentreOffer& o : centre_offered)
+            if (distance(o.centre, c) <= epsilon) on_centre = &o;
+        if (beside && on_centre && on_centre->grew && r >= on_centre->hole - epsilon) continue;
         Point s = c;
         if (beside) {
             const std::vector<Circle> clear = group->clear_circles_in({c, r}, c, tol);
@@ -362,11 +382,20 @@ bool GrowthEngine::Impl::centre_seed() {
         if (!commit(std::move(one), nullptr)) continue;
         // The hole itself is the restart's C: the seed and every element round the hole are
         // offered it, and the circles inside it (rule_goals()). The seed is asked there only.
+        // An element the hole was offered to on the centre, it refused or grew elsewhere
+        // (the hole stays): the restart beside the centre offers it to the others only.
         ++stats.iterations;
         restart_goal = true;
+        if (beside && on_centre) restart_skip = &on_centre->offered;
+        if (!beside)
+            restart_offered = &centre_offered.emplace_back(CentreOffer{c, r, false, {}}).offered;
+        const std::size_t before = ornament.size();
         near_goal_radius = 0;
         iterate({c, r});
         restart_goal = false;
+        if (!beside) centre_offered.back().grew = ornament.size() > before;
+        restart_skip = nullptr;
+        restart_offered = nullptr;
         if (!seed->sterile) {
             seed->sterile = true;
             if (can_parent_type(*seed)) --parents_left;
@@ -676,6 +705,9 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         if (original->sterile ||
             std::find(parents.begin(), parents.end(), original) != parents.end())
             return;
+        if (restart_skip &&
+            std::find(restart_skip->begin(), restart_skip->end(), original) != restart_skip->end())
+            return;
         parents.push_back(original);
         Circle g = goal;
         if (image) g.center = image->transform().inverse().apply(goal.center);
@@ -688,6 +720,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
     } else {
         for (const auto& [e, d] : ornament.within(goal.center, reach)) consider(e);
     }
+    if (restart_offered) restart_offered->assign(parents.begin(), parents.end());
 
     const bool debugging = debug_callback && stats.iterations == debug_iteration;
     DebugFrame frame;
