@@ -3,6 +3,7 @@
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "clip.hpp"
 #include "context_data.hpp"
@@ -119,6 +120,24 @@ Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o) {
                 : Rect{r.x1 - h - w, drawn.y0, r.x1 - h, drawn.y1};
 }
 
+// The vertices of `d` (a cut piece drawn inset by `h` from its claim `claimed`) on the claim's
+// beds moved to the drawn brick's beds, unless another vertex lies between, where the move
+// could fold the outline.
+void keep_beds(std::vector<Point>& d, Rect claimed, Rect drawn, double h) {
+    const double eps = 1e-7 * std::max(1.0, std::abs(claimed.x1) + std::abs(claimed.y1));
+    for (auto [from, to] : {std::pair{claimed.y0 + h, drawn.y0}, {claimed.y1 - h, drawn.y1}}) {
+        const double lo = std::min(from, to), hi = std::max(from, to);
+        bool on = false, between = false;
+        for (Point p : d) {
+            on |= std::abs(p.y - from) <= eps;
+            between |= std::abs(p.y - from) > eps && p.y > lo - eps && p.y < hi + eps;
+        }
+        if (!on || between) continue;
+        for (Point& p : d)
+            if (std::abs(p.y - from) <= eps) p.y = to;
+    }
+}
+
 }  // namespace
 
 int Context::place_free_rect(Rect r, int course, const Rect* drawn) {
@@ -202,6 +221,10 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
             if (d.width() > 0 && d.height() > 0) drawn_cells.push_back(detail::polygon_of(d));
         } else {
             drawn_cells = detail::shrink(piece, h, scale);
+            // Cut at a corner only (an extrados through its end), a piece keeps its course's
+            // beds as well: its level sides that lie on the claim's beds move to the drawn ones.
+            if (Rect claimed; drawn && axis_rect(claim, claimed))
+                for (std::vector<Point>& d : drawn_cells) keep_beds(d, claimed, *drawn, h);
         }
         for (std::vector<Point>& d : drawn_cells) {
             // A piece under a tenth of a brick's face is no cell a mason lays: mortar fills it.

@@ -212,9 +212,6 @@ struct Known {
 };
 Known known(const std::string& name, bool stone) {
     Known k;
-    // A header by the arcade ring's extrados, a corner cut off it, is drawn 1.6 mm short,
-    // its bed off the course line (read as a course off gauge).
-    if (name == "wide-opening" && !stone) k.courses_off_gauge = 1, k.height_deviation = 0.16;
     if (stone) return k;
     static const std::map<std::string, long> shaved{
         {"gable-pointed-end", 60}, {"segmental-ends", 33}, {"wide-opening", 56},
