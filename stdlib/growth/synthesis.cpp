@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <map>
 
+#include "own_holes.hpp"
 #include "relaxation.hpp"
 
 namespace acanthus::growth::detail {
@@ -30,6 +31,7 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
       tolerance_(1e-9 * reference.mean_edge),
       pattern_(reference.mean_edge) {
     spacing_ = ring_spacing(reference);
+    restart_radius_ = restart_radius(reference, spacing_);
     check_motif_count(reference, panel.area(), options);
     for (std::size_t i = 0; i < reference.elements.size(); ++i) {
         std::vector<RingEntry> ring;
@@ -246,14 +248,20 @@ void Synthesis::release(int former_seed) {
     }
 }
 
-// A restart needs an empty circle a tenth wider than the spacing: a honeycomb's own holes are
-// exactly one spacing across the centre, and must stay empty. Without a lattice, a circle one
-// spacing wide already holds a motif at the reference's median spacing.
-constexpr double kRestartRadius = 1.1;
-constexpr double kRestartRadiusIrregular = 1.1;
+// A restart needs an empty circle of at least one spacing (a motif there stands no closer to its
+// neighbours than the reference's NN distance), and wider than most of the reference's own:
+// kOwnHoleQuantile of its interior neighbourhoods' widest empty circles, times kOwnHoleMargin.
+// Narrower holes are ones a faithful copy has (a honeycomb's hexagons, a Poisson set's gaps).
+constexpr double kOwnHoleQuantile = 0.9;
+constexpr double kOwnHoleMargin = 1.05;
 // Holes come largest first and a fruitless restart changes nothing, so after this many in a row
 // the smaller circles left would grow nothing either.
 constexpr int kFruitlessInARow = 16;
+
+double restart_radius(const ReferenceData& reference, double spacing) {
+    std::vector<double> own = own_hole_radii(reference, spacing);
+    return std::max(1.0, kOwnHoleMargin * quantile(own, kOwnHoleQuantile));
+}
 
 void Synthesis::run() {
     auto begin = std::chrono::steady_clock::now();
@@ -267,8 +275,7 @@ void Synthesis::run() {
          room() && in_a_row < kFruitlessInARow && options_.fill_holes && !starts_.empty();) {
         Hole hole;
         ++stats_.hole_searches;
-        const double wide = lattice_ ? kRestartRadius : kRestartRadiusIrregular;
-        if (!holes().find(pattern_, wide * spacing_, hole)) {
+        if (!holes().find(pattern_, restart_radius_ * spacing_, hole)) {
             // Before giving up, once after growth: relaxation may have opened a covered hole.
             if (reopened) break;
             holes_->reopen_covered();

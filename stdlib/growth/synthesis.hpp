@@ -35,6 +35,9 @@ double ring_spacing(const ReferenceData& reference);
 // Throws InputError, with the estimate, when a panel of this area would hold more than
 // Options::max_motifs motifs at the reference's spacing (max_elements caps the estimate).
 void check_motif_count(const ReferenceData& reference, double area, const Options& options);
+// The radius (in units of `spacing`) an empty circle needs before growth restarts in it: wider
+// than what the reference itself leaves open (own_holes.hpp).
+double restart_radius(const ReferenceData& reference, double spacing);
 
 class Synthesis {
   public:
@@ -182,6 +185,7 @@ class Synthesis {
     bool priorities_differ_ = false;
     double l_ = 1, l_short_ = 0.5, tolerance_ = 0;
     double spacing_ = 1;
+    double restart_radius_ = 1.1;  // in spacings (restart_radius)
     std::optional<HoleFinder> holes_;
     const Lattice* lattice_ = nullptr;  // the reference's (lattice_of), when used
     bool phase_ = false;                // the lattice's origin is set (by the first motif)

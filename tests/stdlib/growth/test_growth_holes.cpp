@@ -7,10 +7,15 @@
 #include <acanthus/stdlib/growth.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <vector>
 
 #include "fidelity.hpp"
 #include "growth_fixtures.hpp"
 #include "growth_lattices.hpp"
+#include "own_holes.hpp"
+#include "synthesis.hpp"
 
 using namespace acanthus;
 using namespace acanthus::growth;
@@ -108,6 +113,87 @@ TEST(GrowthHoles, NoMotifInAHoneycombsOwnHoles) {
             crowded(after, 10), after.stats.restarts);
         EXPECT_GE(after.motifs.size(), before.motifs.size());
         EXPECT_LE(crowded(after, 10), crowded(before, 10));
+    }
+}
+
+// Each lattice kind's own holes, as the restart threshold measures them (own_holes.hpp): a
+// triangular lattice's 0.58 NN, a square grid's 0.71, a honeycomb's hexagons 1. The threshold is
+// at least one spacing and a twentieth above a honeycomb's hexagons, so that none is restarted in.
+TEST(GrowthHoles, EachLatticeKindsOwnHoles) {
+    namespace gd = acanthus::growth::detail;
+    using growth_lattices::Kind;
+    for (Kind kind : growth_lattices::all_kinds())
+        for (int decimals : {-1, 3}) {
+            Reference reference =
+                Reference::from_elements(growth_lattices::lattice(kind, 10, 7, decimals));
+            const double spacing = gd::ring_spacing(reference.data());
+            const std::vector<double> own = gd::own_hole_radii(reference.data(), spacing);
+            const double want = kind == Kind::honeycomb ? 1.0
+                                : kind == Kind::triangular || kind == Kind::three_colour
+                                    ? 1 / std::sqrt(3.0)
+                                    : 1 / std::sqrt(2.0);
+            const double restart = gd::restart_radius(reference.data(), spacing);
+            std::printf(
+                "%-12s decimals %2d: %zu neighbourhoods, own holes %.4f to %.4f NN, "
+                "restart at %.4f NN\n",
+                growth_lattices::name(kind), decimals, own.size(), gd::quantile(own, 0),
+                gd::quantile(own, 1), restart);
+            ASSERT_GT(own.size(), 20u) << growth_lattices::name(kind);
+            EXPECT_NEAR(gd::quantile(own, 0), want, 0.01) << growth_lattices::name(kind);
+            EXPECT_NEAR(gd::quantile(own, 1), want, 0.01) << growth_lattices::name(kind);
+            EXPECT_NEAR(restart, std::max(1.0, 1.05 * want), 0.01) << growth_lattices::name(kind);
+        }
+}
+
+// A Poisson-disc set (dart throwing, a fixed generator) has gaps of up to about 1 NN itself; the
+// fill restarts in any wider one (the threshold 1.01 to 1.02 NN here), so no hole over 1.05 NN is
+// left (with a fixed 1.1 NN, holes of 1.06 to 1.10 NN stayed open).
+std::vector<ReferenceElement> poisson_set(std::uint64_t seed, double width, double height,
+                                          double gap) {
+    std::uint64_t state = seed;
+    auto next = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(state >> 11) * 0x1.0p-53;
+    };
+    std::vector<ReferenceElement> out;
+    for (int k = 0; k < 20000; ++k) {
+        Point p{next() * width, next() * height};
+        const bool b = next() < 0.3;
+        bool free = true;
+        for (const ReferenceElement& e : out) free = free && distance(e.position, p) >= gap;
+        if (!free) continue;
+        ReferenceElement e;
+        e.symbol = b ? "b" : "a";
+        e.position = p;
+        e.size = b ? 3.5 : 4.5;
+        out.push_back(e);
+    }
+    return out;
+}
+
+TEST(GrowthHoles, APoissonSetsFillClosesItsWiderGaps) {
+    namespace gd = acanthus::growth::detail;
+    const Region panel = Region::from_spec("rect:200,150");
+    for (std::uint64_t set : {1u, 2u}) {
+        Reference reference = Reference::from_elements(poisson_set(set, 110, 100, 12));
+        const double spacing = gd::ring_spacing(reference.data());
+        const double restart = gd::restart_radius(reference.data(), spacing);
+        EXPECT_GE(restart, 1.0);
+        EXPECT_LT(restart, 1.1);
+        for (std::uint64_t seed : {1u, 2u, 3u}) {
+            Options paper;
+            paper.fill_holes = false;
+            SynthesisResult before = synthesize(reference, panel, paper, {}, seed);
+            SynthesisResult after = synthesize(reference, panel, Options{}, {}, seed);
+            const double hole = after.fidelity.largest_hole * after.fidelity.spacing / spacing;
+            std::printf(
+                "poisson set %d seed %d: restart at %.3f NN; %zu motifs without restarts, "
+                "%zu with %ld; largest hole %.3f NN, NN median %.3f\n",
+                static_cast<int>(set), static_cast<int>(seed), restart, before.motifs.size(),
+                after.motifs.size(), after.stats.restarts, hole, after.fidelity.nn_median);
+            EXPECT_GE(after.motifs.size(), before.motifs.size());
+            EXPECT_LE(hole, 1.05);
+        }
     }
 }
 
