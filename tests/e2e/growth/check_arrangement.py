@@ -391,11 +391,13 @@ def dart_reference(path, seed, share_a, width, height, gap, size_a, size_b, jitt
     path.write_text(json.dumps({"elements": elements}))
 
 
-def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03):
+def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015):
     """Each reference in each of its panels, `seeds` seeds: the symbol mix within `mix_allowed`
     of the reference on every run, the same-symbol neighbour share within 3 points on every run,
     the largest empty circle at most 1.5 NN, the NN median within `nn_mean` of the reference's
-    (its interior elements', like for like) on average and `nn_each` on every run."""
+    (its interior elements', like for like) on average and `nn_each` on every run, and its mean
+    over all the runs within `nn_bias` (no bias of the growth as a whole)."""
+    every = []
     for ref, ref_panels in refs:
         for panel in ref_panels:
             worst, holes, nns, sames = 0.0, 0.0, [], []
@@ -418,6 +420,7 @@ def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03):
             check(worst <= mix_allowed, f"mix: {name}: symbol mix at most {100 * worst:.1f} "
                   f"points off over {seeds} seeds ({100 * mix_allowed:.0f} allowed)")
             check(holes <= 1.5, f"mix: {name}: largest empty circle {holes:.2f} NN (1.5 allowed)")
+            every += nns
             mean_nn = sum(nns) / len(nns)
             check(abs(mean_nn - 1) <= nn_mean and all(abs(v - 1) <= nn_each for v in nns),
                   f"mix: {name}: NN median {mean_nn:.3f} of the reference's on average "
@@ -426,6 +429,9 @@ def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03):
             check(all(abs(v) <= 0.03 for v in sames),
                   f"mix: {name}: same-symbol neighbour share {100 * min(sames):+.1f} to "
                   f"{100 * max(sames):+.1f} points off per run (3 allowed)")
+    bias = sum(every) / len(every)
+    check(abs(bias - 1) <= nn_bias, f"mix: NN median {bias:.4f} of the reference's on average "
+          f"over all {len(every)} runs ({100 * nn_bias:.1f}% allowed)")
 
 
 def case_unseen_mix():
