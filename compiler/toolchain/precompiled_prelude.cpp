@@ -32,6 +32,7 @@ constexpr const char* kHostInstantiations =
     "extern template class std::vector<acanthus::ParamInfo>;\n"
     "extern template class std::vector<acanthus::ProxyKind>;\n"
     "extern template class std::vector<acanthus::Point>;\n"
+    "extern template class std::vector<std::vector<acanthus::Point>>;\n"
     "extern template class std::vector<acanthus::Circle>;\n"
     "extern template class std::vector<acanthus::Element*>;\n"
     "extern template class std::vector<double>;\n"

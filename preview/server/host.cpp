@@ -28,6 +28,7 @@ template class std::vector<acanthus::RuleInfo>;
 template class std::vector<acanthus::ParamInfo>;
 template class std::vector<acanthus::ProxyKind>;
 template class std::vector<acanthus::Point>;
+template class std::vector<std::vector<acanthus::Point>>;
 template class std::vector<acanthus::Circle>;
 template class std::vector<acanthus::Element*>;
 template class std::vector<double>;

@@ -138,9 +138,7 @@ FillResult run(const ShapeSet& shapes, const Container& container, const Options
     }
     double placed_area = 0;
     for (const PlacedShape& s : layout.shapes()) {
-        const Pose& pose = s.pose();
-        result.placements.push_back(
-            {s.shape_index(), pose.position, pose.rotation, pose.scale, s.area(), s.outline()});
+        result.placements.push_back(placement_of(s));
         placed_area += s.area();
     }
     result.stats.trials = context.trials();

@@ -1,5 +1,7 @@
+#include <acanthus/partial_picture.hpp>
 #include <acanthus/progress.hpp>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -54,6 +56,14 @@ const PlacedShape* FillContext::place(Layout& layout, const Pose& pose) {
     cycle_ = (cycle_ + 1) % static_cast<int>(shapes_.size());
     // A whole fill is one rule body: each placement is progress to the watchdog.
     report_progress("shapes", static_cast<long>(layout.shapes().size()), options_.max_elements);
+    // The shapes so far, for a partial picture while the fill goes on (the elements are made
+    // only by the copy of the program that draws it).
+    if (detail::PartialMaker make = detail::partial_maker())
+        report_partial(static_cast<long>(layout.shapes().size()),
+                       [&layout, make](std::vector<const Element*>& out) {
+                           for (const PlacedShape& s : layout.shapes())
+                               out.push_back(make(placement_of(s)));
+                       });
     return &layout.shapes().back();
 }
 
@@ -61,5 +71,25 @@ bool FillContext::full(const Layout& layout) const {
     return options_.max_elements > 0 &&
            static_cast<long>(layout.shapes().size()) >= options_.max_elements;
 }
+
+Placement placement_of(const PlacedShape& s) {
+    const Pose& pose = s.pose();
+    return {s.shape_index(), pose.position, pose.rotation, pose.scale, s.area(), s.outline()};
+}
+
+namespace detail {
+
+namespace {
+std::atomic<PartialMaker> g_partial_maker{nullptr};
+}  // namespace
+
+bool set_partial_maker(PartialMaker maker) noexcept {
+    g_partial_maker.store(maker, std::memory_order_relaxed);
+    return true;
+}
+
+PartialMaker partial_maker() noexcept { return g_partial_maker.load(std::memory_order_relaxed); }
+
+}  // namespace detail
 
 }  // namespace acanthus::dartfill

@@ -54,6 +54,14 @@ class FillContext {
     long trials_ = 0;
 };
 
+// What fill() returns of a placed shape.
+Placement placement_of(const PlacedShape& s);
+
+namespace detail {
+// dartfill.acr's maker of partial pictures' elements, or null (set_partial_maker).
+PartialMaker partial_maker() noexcept;
+}  // namespace detail
+
 // Section 3.2: darts at uniform positions until `naive_cancellations` consecutive cancellations.
 void naive_dart_throwing(FillContext& context, Layout& layout);
 // Section 4: Poisson-disk sparse placement, then one round of |P| candidates drawn by d^n from

@@ -67,6 +67,11 @@ pid_t test_process = ::getpid();
 void crash_in_copies(Canvas&, const Element&) {
     if (::getpid() != test_process) std::abort();
 }
+// ... and one that never returns there (with --body-time-limit 0, no alarm stops it).
+void hang_in_copies(Canvas&, const Element&) {
+    if (::getpid() != test_process)
+        for (;;) ::pause();
+}
 const ElementType& seed::type() const { return seed_type; }
 const ElementType& dot::type() const { return dot_type; }
 
@@ -411,6 +416,22 @@ TEST_F(Program, PartialPictureCopyCrashingLeavesTheRunAlone) {
     EXPECT_EQ(o.err.find("abort"), std::string::npos) << o.err;
     EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
     for (const std::string& f : files())  // no picture, and nothing the copies left
+        EXPECT_EQ(f, "out.svg");
+}
+
+// A copy that never ends is stopped once the finished picture is drawn: the run ends, with
+// its outputs and nothing of the copy's left (it waited for the first copy forever before).
+TEST_F(Program, PartialPictureCopyHangingIsStopped) {
+    dot_type.draw = &hang_in_copies;
+    alarm(60);  // the failure this guards against is a run that never returns
+    Outcome o = run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000",
+                     "--param", "dot_radius=2", "--partial", path("partial.svg"), "--partial-every",
+                     "0.01", "--body-time-limit", "0", "-o", path("out.svg")});
+    alarm(0);
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
+    for (const std::string& f : files())  // no picture, and nothing the copy left
         EXPECT_EQ(f, "out.svg");
 }
 

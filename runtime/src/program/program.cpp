@@ -6,6 +6,7 @@
 
 #include <acanthus/error.hpp>
 #include <acanthus/growth.hpp>
+#include <acanthus/partial_picture.hpp>
 #include <acanthus/program.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/render.hpp>
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <new>
@@ -214,7 +216,7 @@ class PartialPictures {
           next_(start_ + seconds(every / 5)) {}
     PartialPictures(const PartialPictures&) = delete;
     PartialPictures& operator=(const PartialPictures&) = delete;
-    ~PartialPictures() { finish(); }
+    ~PartialPictures() { settle(); }
 
     // `placed`: how many successes the growth has had (what the picture shows changes with them).
     bool due(long placed) {
@@ -256,10 +258,16 @@ class PartialPictures {
 
     // The growth is over: the picture being drawn is stopped (the finished one follows; drawn,
     // it would reach a viewer just before that one and hold it up), unless it would be the
-    // first: a run that started drawing one leaves one.
+    // first: that one may go on while the finished picture is drawn, and is settled then.
     void finish() {
-        if (drawing_ <= 0) return;
-        if (published_ > 0) ::kill(drawing_, SIGKILL);
+        if (drawing_ > 0 && published_ > 0) settle();
+    }
+
+    // The finished picture is drawn: a copy still drawing is stopped now, whatever it does (a
+    // %draw body that never returns in the copy alone, say, without --body-time-limit's alarm).
+    void settle() {
+        if (drawing_ <= 0 || reaped(false)) return;
+        ::kill(drawing_, SIGKILL);
         reaped(true);
     }
 
@@ -403,11 +411,38 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         });
     }
 
+    // A library's placements inside one long body (report_partial): drawn with the elements
+    // placed before it, by the same copies.
+    struct BodyPartials {
+        PartialPictures& partials;
+        GrowthEngine& engine;
+        const std::function<void(const std::string&, const std::vector<const Element*>&)> draw;
+    } body_partials{partials, engine,
+                    [&](const std::string& path, const std::vector<const Element*>& elements) {
+                        render_to_file(path, pattern, region, elements, o.render);
+                    }};
+    const auto body_partial = [](void* context, long placed, const PartialElements& extra) {
+        BodyPartials& b = *static_cast<BodyPartials*>(context);
+        long total = placed;
+        for (const RuleStats& r : b.engine.stats().rules) total += r.successes;
+        if (!b.partials.due(total)) return;
+        b.partials.write(total, [&](const std::string& path) {
+            std::vector<const Element*> elements = b.engine.elements();
+            extra(elements);
+            b.draw(path, elements);
+        });
+    };
+    struct HandlerScope {
+        ~HandlerScope() { detail::set_partial_handler(nullptr, nullptr); }
+    } handler_scope;
+    if (!o.partial.empty()) detail::set_partial_handler(body_partial, &body_partials);
+
     detail::install_crash_handler();
     {
         const detail::BodyWatchdog watchdog(o.body_time_limit, o.growth.time_limit);
         engine.run();
     }
+    detail::set_partial_handler(nullptr, nullptr);
     partials.finish();
     progress.finish();
     // Growth is over: its field and buffers make room for the drawing (Cairo's vector pages keep
@@ -426,6 +461,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     const Clock::time_point render_start = Clock::now();
     render_to_file(o.output, pattern, region, elements, o.render);
     const double render_seconds = seconds_since(render_start);
+    partials.settle();
 
     if (!o.json.empty()) detail::write_tree_json(o.json, region, elements);
     if (o.debug_iteration > 0 && !debug_written)

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <acanthus/environment.hpp>
+#include <acanthus/partial_picture.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/stdlib/dartfill.hpp>
 #include <cmath>
@@ -169,4 +170,71 @@ TEST(DartfillEnvironmentPaths, WithoutTheRegionEveryTestGoesToTheEngine) {
         << "fast " << fast.engine_tests() << ", slow " << slow.engine_tests();
     // Both see about the same room.
     EXPECT_NEAR(a.stats.space_area, b.stats.space_area, 0.1 * b.stats.space_area);
+}
+
+// A fill reports the shapes it placed so far (report_partial) for the program's partial
+// pictures: each report has one more, made by dartfill.acr's maker as elements with the
+// outlines the finished fill returns, in its order; the result is the same with the reports.
+struct Piece : Element {
+    PolygonProxy p0;
+    int shape = 0;
+    double rotation = 0, scale = 0;
+    const ElementType& type() const override {
+        static const ElementType t{"aggregate", {ProxyKind::polygon}, nullptr, nullptr, 0};
+        return t;
+    }
+    std::size_t proxy_count() const override { return 1; }
+    Proxy& proxy(std::size_t) override { return p0; }
+};
+
+TEST(DartfillPartialPictures, EachReportHasTheShapesPlacedSoFar) {
+    Region region = Region::from_spec("circle:45");
+    FakeEnvironment plain_env(region, true), env(region, true);
+    const FillResult plain = fill_in(plain_env, Method::fill_gap);
+
+    struct Seen {
+        std::vector<long> placed;
+        std::vector<std::vector<std::vector<Point>>> outlines;
+    } seen;
+    acanthus::detail::set_partial_handler(
+        [](void* context, long placed, const PartialElements& extra) {
+            Seen& s = *static_cast<Seen*>(context);
+            std::vector<const Element*> made;
+            extra(made);
+            s.placed.push_back(placed);
+            s.outlines.emplace_back();
+            for (const Element* e : made) {
+                s.outlines.back().push_back(static_cast<const Piece*>(e)->p0.points);
+                delete e;
+            }
+        },
+        &seen);
+    dartfill::detail::set_partial_maker(
+        [](const Placement& p) -> const Element* { return new_aggregate<Piece>(p); });
+    const FillResult reported = fill_in(env, Method::fill_gap);
+    acanthus::detail::set_partial_handler(nullptr, nullptr);
+    dartfill::detail::set_partial_maker(nullptr);
+
+    ASSERT_EQ(reported.placements.size(), plain.placements.size());
+    for (std::size_t i = 0; i < plain.placements.size(); ++i)
+        EXPECT_EQ(reported.placements[i].outline, plain.placements[i].outline);
+    ASSERT_EQ(seen.placed.size(), plain.placements.size());
+    for (std::size_t k = 0; k < seen.placed.size(); ++k) {
+        EXPECT_EQ(seen.placed[k], static_cast<long>(k + 1));
+        ASSERT_EQ(seen.outlines[k].size(), k + 1);
+        EXPECT_EQ(seen.outlines[k].back(), plain.placements[k].outline);
+    }
+}
+
+// Without a maker (a fill outside a rule file that imports dartfill), nothing is reported.
+TEST(DartfillPartialPictures, NoMakerNoReport) {
+    Region region = Region::from_spec("circle:45");
+    FakeEnvironment env(region, true);
+    long reports = 0;
+    acanthus::detail::set_partial_handler(
+        [](void* context, long, const PartialElements&) { ++*static_cast<long*>(context); },
+        &reports);
+    fill_in(env, Method::fill_gap);
+    acanthus::detail::set_partial_handler(nullptr, nullptr);
+    EXPECT_EQ(reports, 0);
 }

@@ -117,19 +117,31 @@ FillResult fill(const ShapeSet& shapes, const Options& options);
 // new_child() and returns how many were added. Sterile aggregates (the default) end growth
 // around them at once; pass false when other rules grow on them.
 template <class T>
+T* new_aggregate(const Placement& p, bool sterile = true) {
+    T* e = new T;
+    e->p0.set(p.outline);
+    e->shape = p.shape;
+    e->rotation = p.rotation;
+    e->scale = p.scale;
+    e->sterile = sterile;
+    return e;
+}
+
+template <class T>
 int add_aggregates(const FillResult& result, bool sterile = true) {
     int added = 0;
     for (const Placement& p : result.placements) {
-        T* e = new T;
-        e->p0.set(p.outline);
-        e->shape = p.shape;
-        e->rotation = p.rotation;
-        e->scale = p.scale;
-        e->sterile = sterile;
-        acanthus::body::new_child(*e);
+        acanthus::body::new_child(*new_aggregate<T>(p, sterile));
         ++added;
     }
     return added;
 }
+
+namespace detail {
+// The shapes a running fill placed so far are shown in the program's partial pictures (its
+// --partial, acanthus preview) as elements made by this (dartfill.acr sets it: `aggregate`).
+using PartialMaker = const Element* (*)(const Placement&);
+bool set_partial_maker(PartialMaker maker) noexcept;
+}  // namespace detail
 
 }  // namespace acanthus::dartfill
