@@ -103,19 +103,23 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
                 if (held <= -2) lone.emplace_back(row, u);
                 continue;
             }
-            const Point m = grid.cell(row, u, u + 1).center();
-            if (s == detail::kFull || !occupancy
-                                           .free_part(detail::polygon_of(
-                                               {m.x - tiny, m.y - tiny, m.x + tiny, m.y + tiny}))
-                                           .empty())
+            const Rect unit = grid.cell(row, u, u + 1);
+            const Point m = unit.center();
+            if (s == detail::kFull && occupancy.rect_is_free(unit)) {
                 rules.free(row, u);
-            else if (const double part = wall_part(occupancy, grid.cell(row, u, u + 1));
-                     part > 0.2) {
-                // A strip of wall beside a jamb off the grid's lines: laid one piece a row it
-                // would stand on end, its beds meeting the next column's four ways; it joins a
-                // stone of the layout, cut to the jamb.
+                continue;
+            }
+            const bool centre = !occupancy
+                                     .free_part(detail::polygon_of(
+                                         {m.x - tiny, m.y - tiny, m.x + tiny, m.y + tiny}))
+                                     .empty();
+            if (const double part = wall_part(occupancy, unit); centre || part > 0.01) {
+                // A strip of wall beside a jamb or a skewback off the grid's lines: laid one
+                // piece a row it would stand on end, its beds meeting the next column's four
+                // ways; it joins a stone of the layout, cut to the jamb, and counts as narrow
+                // as what is left of it.
                 rules.free(row, u);
-                rules.cut(row, u, part);
+                rules.cut(row, u, std::min(1.0, part));
             } else
                 lone.emplace_back(row, u);
         }

@@ -2,6 +2,7 @@
 
 #include <acanthus/progress.hpp>
 #include <algorithm>
+#include <functional>
 #include <utility>
 
 namespace acanthus::cells::detail {
@@ -34,10 +35,11 @@ void AshlarRules::lay(Random& random) {
     four_way_ = four_ways(0, rows_, 0, units_);
     // Each repair can leave work for the other (a stone split off makes a four-way joint, a
     // joint moved frees a unit): both run until neither changes anything, bounded.
-    for (int pass = 0; pass < 8; ++pass) {
+    for (int pass = 0; pass < 16; ++pass) {
         const bool joined = join_on_end(gone);
         const bool broken = break_four_ways(gone);
-        if (!joined && !broken) break;
+        const bool relaid = relay_faults(gone);
+        if (!joined && !broken && !relaid) break;
     }
     std::size_t n = 0;
     for (std::size_t k = 0; k < stones_.size(); ++k)
@@ -53,6 +55,153 @@ bool AshlarRules::on_end(const Stone& s) const {
     const auto y0 = static_cast<std::size_t>(s.row), y1 = y0 + static_cast<std::size_t>(s.h);
     return g_.ys[y1] - g_.ys[y0] > 1.1 * w &&
            !jamb_[static_cast<std::size_t>(s.row * units_ + s.unit)];
+}
+
+bool AshlarRules::upright(const Stone& s) const {
+    if (s.h == 1) return true;
+    if (s.w == 1 && jamb_[static_cast<std::size_t>(s.row * units_ + s.unit)]) return true;
+    double w = 0;
+    for (int u = s.unit; u < s.unit + s.w; ++u)
+        w += (g_.xs[static_cast<std::size_t>(u + 1)] - g_.xs[static_cast<std::size_t>(u)]) *
+             share_[static_cast<std::size_t>(s.row * units_ + u)];
+    return w >=
+           g_.ys[static_cast<std::size_t>(s.row + s.h)] - g_.ys[static_cast<std::size_t>(s.row)];
+}
+
+bool AshlarRules::relay(std::vector<int> ks, std::vector<char>& gone, bool ends_first) {
+    std::sort(ks.begin(), ks.end());
+    ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
+    if (ks.empty()) return false;
+    int r0 = rows_, r1 = 0, u0 = units_, u1 = 0;
+    std::vector<std::pair<int, int>> units;  // the region, in reading order
+    for (int k : ks) {
+        const Stone& s = stones_[static_cast<std::size_t>(k)];
+        r0 = std::min(r0, s.row), r1 = std::max(r1, s.row + s.h);
+        u0 = std::min(u0, s.unit), u1 = std::max(u1, s.unit + s.w);
+        for (int r = s.row; r < s.row + s.h; ++r)
+            for (int u = s.unit; u < s.unit + s.w; ++u) units.emplace_back(r, u);
+    }
+    std::sort(units.begin(), units.end());
+    std::vector<int> ids;
+    for (int k : ks) ids.push_back(first_id_ + k);
+    auto id_of = [&](std::size_t n) {
+        return n < ids.size() ? ids[n]
+                              : first_id_ + static_cast<int>(stones_.size() + n - ids.size());
+    };
+    // The stone holding unit (r, u) while `laid` stands in for the region's.
+    auto stone_at = [&](const std::vector<Stone>& laid, int r, int u) -> const Stone* {
+        const int id = get(r, u);
+        for (std::size_t n = 0; n < laid.size(); ++n)
+            if (id_of(n) == id) return &laid[n];
+        if (std::find(ids.begin(), ids.end(), id) != ids.end()) return nullptr;
+        return own(id);
+    };
+    auto score = [&](const std::vector<Stone>& laid) {
+        long ends = 0, squares = 0;
+        for (const Stone& s : laid) {
+            ends += on_end(s);
+            if (s.h != 1 || s.w != 1) continue;
+            for (auto [a, b] : {std::pair{s.row - 1, s.unit},
+                                {s.row + 1, s.unit},
+                                {s.row, s.unit - 1},
+                                {s.row, s.unit + 1}})
+                if (const Stone* t = stone_at(laid, a, b); t && t->h == 1 && t->w == 1) ++squares;
+        }
+        const long fw = four_ways(r0, r1, u0, u1);
+        return ends_first ? 100000L * ends + 1000L * fw + squares
+                          : 10000L * fw + 100L * ends + squares;
+    };
+    std::vector<Stone> now;
+    for (int k : ks) now.push_back(stones_[static_cast<std::size_t>(k)]);
+    const long before = score(now);
+    if (before == 0) return false;
+    // Laid again: the region's units free, then every tiling (largest stones first) up to a
+    // bound, each stone taking the id of the region's stone it replaces (new ids past the end).
+    for (auto [r, u] : units) at(r, u) = kEmpty;
+    std::vector<Stone> laid, best;
+    long best_score = before;
+    long nodes = 0;
+    const long max_nodes = ends_first ? 200000 : 20000;
+    std::function<void(std::size_t)> search = [&](std::size_t next) {
+        if (++nodes > max_nodes || best_score == 0) return;
+        while (next < units.size() && get(units[next].first, units[next].second) != kEmpty) ++next;
+        if (next == units.size()) {
+            const long sc = score(laid);
+            if (sc < best_score) best_score = sc, best = laid;
+            return;
+        }
+        const auto [r, u] = units[next];
+        for (int h = max_h_; h >= 1; --h)
+            for (int w = max_w_; w >= 1; --w) {
+                const Stone s{r, u, h, w};
+                if (!fits(r, u, h, w) || !upright(s)) continue;
+                const int id = id_of(laid.size());
+                for (int i = r; i < r + h; ++i)
+                    for (int j = u; j < u + w; ++j) at(i, j) = id;
+                laid.push_back(s);
+                // Four-way joints at its corners that all four units now show cannot go away.
+                if ((ends_first ? 1000L : 10000L) * four_ways(r, r + h, u, u + w) < best_score)
+                    search(next + 1);
+                laid.pop_back();
+                for (int i = r; i < r + h; ++i)
+                    for (int j = u; j < u + w; ++j) at(i, j) = kEmpty;
+            }
+    };
+    search(0);
+    const bool better = !best.empty() && best_score < before;
+    const std::vector<Stone>& use = better ? best : now;
+    const int fw_before = four_ways(r0, r1, u0, u1);
+    for (std::size_t n = 0; n < use.size(); ++n) {
+        const Stone& s = use[n];
+        const int id = better ? id_of(n) : ids[n];
+        for (int i = s.row; i < s.row + s.h; ++i)
+            for (int j = s.unit; j < s.unit + s.w; ++j) at(i, j) = id;
+    }
+    if (!better) return false;
+    four_way_ += four_ways(r0, r1, u0, u1) - fw_before;
+    for (std::size_t n = 0; n < best.size(); ++n) {
+        if (n < ks.size()) {
+            stones_[static_cast<std::size_t>(ks[n])] = best[n];
+        } else {
+            stones_.push_back(best[n]);
+            gone.push_back(0);
+        }
+    }
+    for (std::size_t n = best.size(); n < ks.size(); ++n) gone[static_cast<std::size_t>(ks[n])] = 1;
+    return true;
+}
+
+bool AshlarRules::relay_faults(std::vector<char>& gone) {
+    bool changed = false;
+    four_way_ = four_ways(0, rows_, 0, units_);
+    // The layout's stones among units (rows r0..r1, units u0..u1, inclusive).
+    auto around = [&](int ra, int rb, int ua, int ub) {
+        std::vector<int> ks;
+        for (int r = ra; r <= rb; ++r)
+            for (int u = ua; u <= ub; ++u)
+                if (const Stone* s = own(get(r, u)))
+                    ks.push_back(static_cast<int>(s - stones_.data()));
+        return ks;
+    };
+    for (int i = 1; i < rows_; ++i)
+        for (int j = 1; j < units_; ++j)
+            if (four_ways(i, i, j, j) > 0)
+                changed |= relay(around(i - 1, i, j - 1, j), gone) ||
+                           relay(around(i - 2, i + 1, j - 2, j + 1), gone);
+    for (std::size_t k = 0; k < stones_.size(); ++k) {
+        if (gone[k]) continue;
+        const Stone s = stones_[k];
+        const bool square = s.h == 1 && s.w == 1 && lone_square(s, kBlocked);
+        if (!on_end(s) && !square) continue;
+        const int r0 = s.row, r1 = s.row + s.h - 1, u0 = s.unit, u1 = s.unit + s.w - 1;
+        // Wider round it where the stones beside it cannot take it; an end stood up is worse
+        // than a four-way joint while the face keeps within 1% of those.
+        changed |= relay(around(r0 - 1, r1 + 1, u0 - 1, u1 + 1), gone) ||
+                   relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone) ||
+                   (on_end(s) && 100 * (four_way_ + 1) <= static_cast<int>(stones_.size()) &&
+                    relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone, true));
+    }
+    return changed;
 }
 
 bool AshlarRules::join_on_end(std::vector<char>& gone) {
@@ -329,11 +478,7 @@ void AshlarRules::lay_at(int r, int u, Random& random) {
     std::vector<std::pair<int, int>> sizes;
     for (int h = 1; h <= max_h_; ++h)
         for (int w = h; w <= max_w_; ++w)
-            if (fits(r, u, h, w) &&
-                (h == 1 ||
-                 g_.xs[static_cast<std::size_t>(u + w)] - g_.xs[static_cast<std::size_t>(u)] >=
-                     g_.ys[static_cast<std::size_t>(r + h)] - g_.ys[static_cast<std::size_t>(r)]))
-                sizes.emplace_back(h, w);
+            if (fits(r, u, h, w) && upright({r, u, h, w})) sizes.emplace_back(h, w);
     if (jamb_[static_cast<std::size_t>(r * units_ + u)])
         for (int h = 2; h <= max_h_; ++h)
             if (fits(r, u, h, 1)) sizes.emplace_back(h, 1);

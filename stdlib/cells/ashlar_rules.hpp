@@ -62,6 +62,17 @@ class AshlarRules {
     bool break_four_ways(std::vector<char>& gone);
     bool lone_square(const Stone& s, int other) const;
     bool on_end(const Stone& s) const;
+    // Measured as the face holds it (a unit cut by a jamb counts as what is left of it): no
+    // taller than wide, or one unit wide against a jamb.
+    bool upright(const Stone& s) const;
+    // The stones `ks` of the layout laid again over the same units, every way the rules allow
+    // (bounded), the one with the fewest four-way joints, then stones on end (`ends_first`:
+    // the other way round), then unit squares side by side kept where it has fewer than now;
+    // true when it was.
+    bool relay(std::vector<int> ks, std::vector<char>& gone, bool ends_first = false);
+    // Each four-way joint, stone on end and unit square beside another of the layout laid again
+    // with the stones round it; true when any was.
+    bool relay_faults(std::vector<char>& gone);
 
     const CourseGrid& g_;
     int rows_, units_, max_w_, max_h_, max_seam_, first_id_;
