@@ -51,6 +51,16 @@ struct MasonReport {
     // round a sill's horn is part of its brick); not those cut to a curve or rake.
     long narrow_pieces = 0;
     std::vector<Point> narrow_at;  // their extents' centres
+    // The mason's rule for what goes in a course: every brick piece with plumb ends (rectangles:
+    // not cut to a curve or rake) is a whole stretcher, a header or a standard bat or closer
+    // (a quarter, half or three-quarter brick, or whole quarters past a stretcher in a quoin),
+    // each within a third of the tolerance of its nominal; any other length is a brick cut to
+    // what was left. Head joints between such pieces within the tolerance of the joint.
+    long odd_pieces = 0;
+    std::vector<std::string> odd;  // each: its generator, size and place
+    long joints_off = 0;  // head joints wider or narrower than the joint by more than the tolerance
+    std::vector<Point> joints_off_at;
+    double joint_deviation = 0;
     long voussoirs = 0;
     long voussoirs_clipped = 0;
     long crowns = 0;       // tops of arches and rings (a pointed arch's apex)
@@ -166,6 +176,40 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         }
         ++r.whole_bricks;
         r.height_deviation = std::max(r.height_deviation, std::abs(h - s.height));
+    }
+    // Standard pieces: k quarters of a brick less a joint, for k = 1..12 (bricks to 3/4, quoins
+    // longer); the lintel is a stone, not a brick.
+    if (!s.stone) {
+        const double quarter = (s.length + s.mortar) / 4;
+        std::vector<Rect> pieces;
+        for (const Cell& c : cells) {
+            Rect b;
+            if (!coursed(c) || c.generator == "lintel" || !is_rect(c.polygon, b)) continue;
+            if (b.height() > 1.2 * s.height) continue;  // on end or a soldier: not a coursed unit
+            pieces.push_back(b);
+            const double k = std::round((b.width() + s.mortar) / quarter);
+            if (k < 1 || k > 12 ||
+                std::abs(b.width() - (k * quarter - s.mortar)) > s.tolerance / 3 + 1e-9) {
+                ++r.odd_pieces;
+                r.odd.push_back(c.generator + " " + std::to_string(b.width()) + " x " +
+                                std::to_string(b.height()) + " at (" + std::to_string(b.x0) + ", " +
+                                std::to_string(b.y0) + ")");
+            }
+        }
+        const double same = 0.05 * s.mortar + 1e-9;
+        auto row = [&](const Rect& b) { return std::llround(b.y1 / same); };
+        std::sort(pieces.begin(), pieces.end(), [&](const Rect& a, const Rect& b) {
+            return row(a) != row(b) ? row(a) < row(b) : a.x0 < b.x0;
+        });
+        for (std::size_t i = 0; i + 1 < pieces.size(); ++i) {
+            const Rect &a = pieces[i], &b = pieces[i + 1];
+            const double gap = b.x0 - a.x1;
+            if (row(a) != row(b) || std::abs(a.y0 - b.y0) > same || gap <= 0 || gap > 2 * s.mortar)
+                continue;
+            r.joint_deviation = std::max(r.joint_deviation, std::abs(gap - s.mortar));
+            if (std::abs(gap - s.mortar) > s.tolerance + 1e-9)
+                ++r.joints_off, r.joints_off_at.push_back({(a.x1 + b.x0) / 2, a.center().y});
+        }
     }
     // Straight joints by the library's rule, the one the straight-joint map draws.
     const acanthus::cells::HeadJoints hj =
@@ -438,7 +482,9 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << ", headless " << r.openings_without_head << "/" << r.openings << ", stones "
                << r.stones << " four-way " << r.four_way << " on end " << r.stones_on_end
                << " unit-square pairs " << r.unit_square_pairs << " runs " << r.unit_square_runs
-               << ", king closers " << r.king_closers << " misplaced " << r.king_closers_misplaced;
+               << ", king closers " << r.king_closers << " misplaced " << r.king_closers_misplaced
+               << ", odd pieces " << r.odd_pieces << ", head joints off " << r.joints_off
+               << " (max " << r.joint_deviation << ")";
 }
 
 }  // namespace cells_test

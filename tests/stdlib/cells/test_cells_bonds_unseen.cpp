@@ -95,40 +95,47 @@ Options centimetres() {
     return o;
 }
 
-}  // namespace
-
-namespace {
+// Every bond a course is bonded in (not stack) and every tree of the checker, laid on `f` at seed
+// 1 and read by the mason's checker: fn(options, tree name, texture, report), under a trace
+// naming the wall, bond and tree.
+template <class Fn>
+void each_bond_and_tree(const Facade& f, Fn fn) {
+    static const auto trees = mason_trees();
+    Options o = centimetres();
+    for (Bond bond : {Bond::running, Bond::english, Bond::flemish, Bond::header})
+        for (const auto& [name, tree] : trees) {
+            o.bond = bond;
+            const Texture t = texture(f, tree, o, 1);
+            const MasonReport r = mason_check(f, t.cells, kCm);
+            SCOPED_TRACE(f.name() + " " + std::string(to_string(bond)) + " " + name);
+            fn(o, name, t, r);
+        }
+}
 
 // Straight joints on made-up walls `first`..`last`, every bond and tree; each wall's count against
 // `allowed` (by seed; 0 where not named), the total returned.
 long straight_on_walls(std::uint64_t first, std::uint64_t last,
                        const std::map<std::uint64_t, long>& allowed = {}) {
-    Options o = centimetres();
-    const auto ts = mason_trees();
     long total = 0;
     for (std::uint64_t seed = first; seed <= last; ++seed) {
         Facade f = made_up(seed, seed % 2 == 0);
         const long allowance = allowed.count(seed) ? allowed.at(seed) : 0;
-        for (Bond bond : {Bond::running, Bond::english, Bond::flemish, Bond::header})
-            for (const auto& [name, tree] : ts) {
-                o.bond = bond;
-                Texture t = texture(f, tree, o, 1);
-                MasonReport r = mason_check(f, t.cells, kCm);
-                SCOPED_TRACE(f.name() + " " + std::string(to_string(bond)) + " " + name);
-                std::string where;
-                for (Point p : r.straight_at)
-                    where += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
-                if (r.straight_joints > 0)
-                    std::cout << f.name() << " " << to_string(bond) << " " << name << ": "
-                              << r.straight_joints << " straight joints at" << where << "\n";
-                total += r.straight_joints;
-                EXPECT_LE(r.straight_joints, allowance) << "at" << where;
-                // Bearings moved a quarter brick shorter stay at 10 cm or more.
-                EXPECT_EQ(r.short_bearings, 0) << "shortest " << r.shortest_bearing;
-                if (name == "framed") {
-                    EXPECT_GT(r.lintels, 0);
-                }
+        each_bond_and_tree(f, [&](const Options& o, const std::string& name, const Texture&,
+                                  const MasonReport& r) {
+            std::string where;
+            for (Point p : r.straight_at)
+                where += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+            if (r.straight_joints > 0)
+                std::cout << f.name() << " " << to_string(o.bond) << " " << name << ": "
+                          << r.straight_joints << " straight joints at" << where << "\n";
+            total += r.straight_joints;
+            EXPECT_LE(r.straight_joints, allowance) << "at" << where;
+            // Bearings moved a quarter brick shorter stay at 10 cm or more.
+            EXPECT_EQ(r.short_bearings, 0) << "shortest " << r.shortest_bearing;
+            if (name == "framed") {
+                EXPECT_GT(r.lintels, 0);
             }
+        });
     }
     return total;
 }
@@ -161,23 +168,17 @@ TEST(CellsBondsUnseen, NoStraightJointsOnWallsNotTunedOn) {
 // it; other bonds lay none. The checker finds each where the bond calls for it, and the cut list
 // counts them apart from the three-quarter bats they look like.
 TEST(CellsBondsUnseen, KingClosersInFlemishBond) {
-    Options o = centimetres();
-    const auto ts = mason_trees();
     const std::string examples = std::string(ACANTHUS_SOURCE_DIR) + "/examples/facades/";
     std::vector<Facade> walls;
     walls.push_back(Facade::from_svg_file(examples + "row-house.svg"));
     for (std::uint64_t seed = 1; seed <= 6; ++seed) walls.push_back(made_up(seed, seed % 2 == 0));
     long kings = 0;
     for (const Facade& f : walls)
-        for (Bond bond : {Bond::running, Bond::english, Bond::flemish, Bond::header})
-            for (const auto& [name, tree] : ts) {
-                o.bond = bond;
-                Texture t = texture(f, tree, o, 1);
-                MasonReport r = mason_check(f, t.cells, kCm);
-                SCOPED_TRACE(f.name() + " " + std::string(to_string(bond)) + " " + name);
-                if (bond != Bond::flemish) {
+        each_bond_and_tree(
+            f, [&](const Options& o, const std::string&, const Texture& t, const MasonReport& r) {
+                if (o.bond != Bond::flemish) {
                     EXPECT_EQ(r.king_closers, 0);
-                    continue;
+                    return;
                 }
                 kings += r.king_closers;
                 std::string where;
@@ -195,7 +196,7 @@ TEST(CellsBondsUnseen, KingClosersInFlemishBond) {
                         EXPECT_NEAR(item.width, 159, 1);  // three quarters less a joint
                     }
                 EXPECT_EQ(listed, r.king_closers);
-            }
+            });
     std::cout << "king closers in Flemish bond, all walls and trees: " << kings << "\n";
     EXPECT_GT(kings, 50);
 }

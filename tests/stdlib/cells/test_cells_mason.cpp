@@ -311,8 +311,10 @@ TEST(CellsMason, ExampleFacades) {
                           << "\n";
                 SCOPED_TRACE(std::string(name) + " " + std::string(to_string(bond)) + " " +
                              tree_name);
-                // Fixed units: whole bricks keep their height, courses their gauge.
+                // Fixed units: whole bricks keep their height, courses their gauge, head joints
+                // between bricks their width within the tolerance.
                 EXPECT_LE(r.height_deviation, kCm.tolerance / 3);
+                EXPECT_EQ(r.joints_off, 0) << "up to " << r.joint_deviation;
                 EXPECT_EQ(r.slivers, 0);  // pieces under 10% of a face are left to the mortar
                 EXPECT_EQ(r.voussoirs_clipped, 0);
                 EXPECT_EQ(r.crowns_open, 0);
