@@ -455,11 +455,21 @@ std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
     std::vector<Point> out{p};
     if (!group) return out;
     const Rect bounds = region.bounds();
+    // distance(o, q) <= tol, by the square where it surely tells (hypot() is dear).
+    constexpr double kLoose = 1 + 1e-12;
+    const double tol = ornament.tolerance(), tol2 = tol * tol;
+    auto same = [&](Point o, Point q) {
+        const Vector v = q - o;
+        const double s = v.x * v.x + v.y * v.y;
+        if (s * kLoose < tol2) return true;
+        if (s > tol2 * kLoose) return false;
+        return distance(o, q) <= tol;
+    };
     for (std::size_t k = 1; k < group->size(); ++k) {
         const Point q = group->transforms()[k].apply(p);
         if (!group->rosette() && !bounds.contains(q)) continue;  // translates beyond the region
         bool seen = false;
-        for (Point o : out) seen = seen || distance(o, q) <= ornament.tolerance();
+        for (Point o : out) seen = seen || same(o, q);
         if (!seen) out.push_back(q);
     }
     return out;

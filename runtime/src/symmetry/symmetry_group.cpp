@@ -205,10 +205,30 @@ Point SymmetryGroup::snap(Point p, double tolerance) const {
 }
 
 double SymmetryGroup::clearance(Point c, double tolerance) const {
+    // Squared distances decide what they surely can; hypot() (distance()) is taken only near
+    // the tolerance and for the images that may be the nearest: distance()'s answer to the bit.
+    constexpr double kLoose = 1 + 1e-12;
+    const double tol2 = tolerance * tolerance;
     double best = std::numeric_limits<double>::infinity();
+    double least = std::numeric_limits<double>::infinity();  // of the images surely beyond
+    auto square = [&](std::size_t k) {
+        const Vector v = c - transforms_[k].apply(c);
+        return v.x * v.x + v.y * v.y;
+    };
     for (std::size_t k = 1; k < transforms_.size(); ++k) {
-        const double d = distance(transforms_[k].apply(c), c);
-        if (d > tolerance) best = std::min(best, d / 2);
+        const double s = square(k);
+        if (s * kLoose < tol2) continue;  // surely within the tolerance
+        if (s <= tol2 * kLoose) {
+            const double d = distance(transforms_[k].apply(c), c);
+            if (d > tolerance) best = std::min(best, d / 2);
+        } else {
+            least = std::min(least, s);
+        }
+    }
+    for (std::size_t k = 1; k < transforms_.size(); ++k) {
+        const double s = square(k);
+        if (s > tol2 * kLoose && s <= least * kLoose)
+            best = std::min(best, distance(transforms_[k].apply(c), c) / 2);
     }
     return best;
 }
