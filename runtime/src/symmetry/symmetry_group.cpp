@@ -270,7 +270,10 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
             c.radius -
             std::sqrt(to_centre.x * to_centre.x + to_centre.y * to_centre.y) * (1 - kBound) +
             kBound * c.radius;
-        if (inside < std::min(bar_fixed, bar_free)) return kNone;
+        const double low = std::min(bar_fixed, bar_free);
+        if (inside < low) return kNone;
+        // An image nearer than twice the lower bar rules the point out whatever fixes it.
+        const double least_bar = low > 0 ? 4 * low * low * (1 - 1e-9) : 0;
         double least = std::numeric_limits<double>::infinity();
         for (std::size_t k = 0; k < near.size(); ++k) {
             const Vector v = near[k]->apply(p) - p;
@@ -282,6 +285,7 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
             }
             squares[k] = s;
             if (s >= 0) least = std::min(least, s);
+            if (least < least_bar) return kNone;
         }
         if (std::min(inside, std::sqrt(least) / 2 * (1 + kBound)) < (fixed ? bar_fixed : bar_free))
             return kNone;
