@@ -151,6 +151,19 @@ std::vector<Point> SymmetryGroup::centre_classes(double tolerance) const {
     return out;
 }
 
+std::vector<std::pair<Point, Point>> SymmetryGroup::mirror_edges(double tolerance) const {
+    std::vector<std::pair<Point, Point>> out;
+    if (!lattice_) return out;
+    for (const auto& [a, b] : domain_edges(0))
+        for (const auto& [o, dir] : mirrors_)
+            if (std::abs(dir.cross(a - o)) <= tolerance &&
+                std::abs(dir.cross(b - o)) <= tolerance) {
+                out.emplace_back(a, b);
+                break;
+            }
+    return out;
+}
+
 bool SymmetryGroup::in_domain(Point p, double tolerance) const {
     if (lattice_) {
         for (const auto& [m, n] : halfplanes_)
