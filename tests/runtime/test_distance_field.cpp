@@ -133,6 +133,35 @@ TEST(DistanceField, FullComputeMatchesBruteForceOnRandomScenes) {
     }
 }
 
+// Without a feature transform a few element sites (a seed and its images under a group) are
+// measured one by one, each only over the runs of pixels it can come nearer to.
+TEST(DistanceField, FewElementSitesWithoutSitesMatchBruteForce) {
+    Random rng(7);
+    for (int scene = 0; scene < 30; ++scene) {
+        const int w = static_cast<int>(rng.uniform_int(1, 300));
+        const int h = static_cast<int>(rng.uniform_int(1, 120));
+        std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 0);
+        // A boundary frame (not always: then the sites alone decide) and up to 16 sites.
+        if (scene % 3 != 0)
+            for (int j = 0; j < h; ++j)
+                for (int i = 0; i < w; ++i)
+                    if (i == 0 || j == 0 || i == w - 1 || j == h - 1) occ[j * w + i] = 1;
+        const int sites = static_cast<int>(rng.uniform_int(1, 16));
+        for (int k = 0; k < sites; ++k)
+            occ[rng.uniform_int(0, h - 1) * w + rng.uniform_int(0, w - 1)] = 2;
+        std::vector<int> at;
+        for (int p = 0; p < w * h; ++p)
+            if (occ[p]) at.push_back(p);
+        DistanceField f(w, h, false);
+        f.compute(occ);
+        for (int p = 0; p < w * h; ++p) {
+            std::int64_t best = DistanceField::infinite;
+            for (int q : at) best = std::min(best, sq(p % w - q % w) + sq(p / w - q / w));
+            ASSERT_EQ(f.squared_distance(p), best) << "scene " << scene << " pixel " << p;
+        }
+    }
+}
+
 // After every add_sites, the incremental field equals a full computation and brute force.
 TEST(DistanceField, IncrementalMatchesFullComputeAfterEveryStep) {
     Random rng(7);

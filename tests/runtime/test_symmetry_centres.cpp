@@ -145,3 +145,33 @@ TEST(CentreClasses, RosetteHasItsCentre) {
     ASSERT_EQ(got.size(), 1u);
     EXPECT_LE(distance(got[0], {10, 20}), 1e-12);
 }
+
+// The fundamental domain's edges on a mirror, where growth also restarts (the largest hole on
+// each): every point of each is fixed by a reflection, each is one of the domain's edges; p4m's
+// and p6m's triangles are bounded by mirrors alone (the mirror edges make the whole perimeter);
+// pm's domain has mirrors on two sides; p4, pg, p2 and a rosette have none.
+TEST(MirrorEdges, TheDomainsEdgesOnMirrors) {
+    struct Case {
+        Wallpaper tile;
+        double share;  // of the domain's perimeter on mirrors
+    };
+    for (const Case& k : {Case{{"p4m", 150, 150, 90}, 1}, Case{{"p6m", 150, 150, 60}, 1},
+                          Case{{"p4", 150, 150, 90}, 0}, Case{{"pg", 150, 100, 90}, 0},
+                          Case{{"p2", 150, 100, 90}, 0}}) {
+        const TranslationSetup s = wallpaper_setup(k.tile);
+        ASSERT_TRUE(s.box);
+        const SymmetryGroup g(s.group, *s.box);
+        const auto got = g.mirror_edges(1e-6);
+        const auto all = g.domain_edges(0);
+        double on = 0, perimeter = 0;
+        for (const auto& [a, b] : got) on += distance(a, b);
+        for (const auto& [a, b] : all) perimeter += distance(a, b);
+        EXPECT_NEAR(on, k.share * perimeter, 1e-6 * perimeter) << k.tile.group;
+        for (const auto& [a, b] : got) {
+            for (double t : {0.0, 0.3, 0.5, 1.0})
+                EXPECT_TRUE(on_mirror(g, a + (b - a) * t)) << k.tile.group;
+            EXPECT_NE(std::find(all.begin(), all.end(), std::pair<Point, Point>{a, b}), all.end());
+        }
+    }
+    EXPECT_TRUE(SymmetryGroup(Symmetry::parse("d6"), {10, 20}).mirror_edges(1e-6).empty());
+}

@@ -8,6 +8,7 @@
 #include <acanthus/region.hpp>
 #include <acanthus/symmetry.hpp>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 #include <string>
@@ -295,6 +296,33 @@ TEST(OrbitOf, ImagesDecidedByTheirBoxAreThoseOfEveryImageBuilt) {
                 EXPECT_TRUE(acanthus::detail::same_isometry(orbit.images[k], *want[k], 0))
                     << pg.name;
             EXPECT_EQ(orbit.clear, clear) << pg.name << " dot at " << c.x << "," << c.y;
+        }
+    }
+}
+
+// clearance() measures most images by their squared distance; it answers, to the bit, half
+// the distance to the nearest image beyond the tolerance measured image by image, on random
+// points, on the rotation centres and on points snapped onto mirrors (some images there
+// coincide, others lie about the tolerance away).
+TEST(SymmetryClearance, IsHalfTheNearestImageDistanceToTheBit) {
+    std::mt19937 rng(5);
+    for (const PlacedGroup& pg : placed_groups()) {
+        const acanthus::detail::SymmetryGroup& g = *pg.group;
+        const Rect b = pg.region.bounds();
+        std::uniform_real_distribution<double> x(b.x0, b.x1), y(b.y0, b.y1);
+        for (int n = 0; n < 400; ++n) {
+            Point p{x(rng), y(rng)};
+            if (n % 4 == 1) p = g.snap(p, 5);
+            if (n % 4 == 2) p = g.snap(p, 1e-3) + acanthus::Vector(1e-3, -2e-3) * (n % 3);
+            if (n == 3) p = g.center();
+            for (double tol : {1e-9, 1e-3, 2e-3, 0.5}) {
+                double want = std::numeric_limits<double>::infinity();
+                for (std::size_t k = 1; k < g.size(); ++k) {
+                    const double d = acanthus::distance(g.transforms()[k].apply(p), p);
+                    if (d > tol) want = std::min(want, d / 2);
+                }
+                EXPECT_EQ(g.clearance(p, tol), want) << pg.name << " at " << p.x << "," << p.y;
+            }
         }
     }
 }

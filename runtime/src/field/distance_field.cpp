@@ -21,8 +21,8 @@ constexpr std::int32_t kInfinite = DistanceField::infinite;
 // row in `site`; it runs over columns [c0, c1), row by row for cache friendliness: nearest site
 // above, then below.
 template <class IsSite>
-void edt_columns(int w, int h, int c0, int c1, IsSite is_site, std::int32_t* g,
-                 std::int32_t* row, DistanceField::Scratch& s) {
+void edt_columns(int w, int h, int c0, int c1, IsSite is_site, std::int32_t* g, std::int32_t* row,
+                 DistanceField::Scratch& s) {
     s.last.assign(w, -1);
     for (int j = 0; j < h; ++j) {
         std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
@@ -113,7 +113,6 @@ void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site,
     }
 }
 
-
 // Grids of at least this many pixels are transformed by two threads (columns, then rows, split
 // in halves): the start of a large growth waits for whole-grid transforms.
 constexpr long long kTwoThreadPixels = 1LL << 20;
@@ -188,22 +187,43 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
             elements.push_back(static_cast<int>(p));
     if (!site && elements.size() <= kFewSites) {
         std::copy(boundary2_.begin(), boundary2_.end(), dist2_.begin());
-        for (const int e : elements) nearer_site(e % w, e / w);
+        // Under a group the sites are a seed's images, spread over the grid: each lowers only
+        // the runs of rows nearer to it than to the boundary and the sites before.
+        const int chunks = (w + kChunk - 1) / kChunk;
+        std::vector<std::int32_t> chunk_max(static_cast<std::size_t>(chunks) * height_);
+        for (int j = 0; j < height_; ++j)
+            for (int c = 0; c < chunks; ++c) {
+                const std::int32_t* row = dist2_.data() + static_cast<std::size_t>(j) * w;
+                chunk_max[static_cast<std::size_t>(j) * chunks + c] =
+                    *std::max_element(row + c * kChunk, row + std::min(w, (c + 1) * kChunk));
+            }
+        for (const int e : elements) nearer_site(e % w, e / w, chunk_max);
     } else {
         separable_edt(
-            w, height_,
-            [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
+            w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
             dist2_.data(), site, scratch_, other_scratch_);
     }
     if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
 }
 
-void DistanceField::nearer_site(int si, int sj) {
+void DistanceField::nearer_site(int si, int sj, std::vector<std::int32_t>& chunk_max) {
     // Squared distances of grids up to 30,000 pixels a side fit in 32 bits.
+    const int chunks = (width_ + kChunk - 1) / kChunk;
     for (int j = 0; j < height_; ++j) {
         std::int32_t* row = dist2_.data() + static_cast<std::size_t>(j) * width_;
+        std::int32_t* most = chunk_max.data() + static_cast<std::size_t>(j) * chunks;
         const std::int32_t dy2 = (j - sj) * (j - sj);
-        for (int i = 0; i < width_; ++i) row[i] = std::min(row[i], (i - si) * (i - si) + dy2);
+        for (int c = 0; c < chunks; ++c) {
+            const int x0 = c * kChunk, x1 = std::min(width_, x0 + kChunk);
+            const int dx = si < x0 ? x0 - si : si >= x1 ? si - (x1 - 1) : 0;
+            if (dx * dx + dy2 >= most[c]) continue;  // no pixel of the run comes nearer
+            std::int32_t m = 0;
+            for (int i = x0; i < x1; ++i) {
+                row[i] = std::min(row[i], (i - si) * (i - si) + dy2);
+                m = std::max(m, row[i]);
+            }
+            most[c] = m;
+        }
     }
 }
 
@@ -214,8 +234,8 @@ void DistanceField::recompute_elements(const std::vector<std::uint8_t>& occupanc
     const std::uint8_t* occ = occupancy.data();
     std::int32_t* site = site_.empty() ? nullptr : site_.data();
     if (metric_ == DistanceMetric::manhattan) {
-        manhattan_transform(w, height_, occ, false, static_cast<std::uint8_t>(ObstacleKind::boundary),
-                            dist2_.data(), site);
+        manhattan_transform(w, height_, occ, false,
+                            static_cast<std::uint8_t>(ObstacleKind::boundary), dist2_.data(), site);
     } else {
         separable_edt(
             w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },

@@ -85,8 +85,11 @@ class DistanceField {
     };
 
   private:
-    // Lowers the distances to those to the site at column si, row sj.
-    void nearer_site(int si, int sj);
+    // Lowers the distances to those to the site at column si, row sj. `chunk_max` holds the
+    // largest distance of each run of kChunk pixels of a row (row by row): a run no pixel of
+    // which the site comes nearer to than that is left alone, and the others' maxima updated.
+    static constexpr int kChunk = 64;
+    void nearer_site(int si, int sj, std::vector<std::int32_t>& chunk_max);
     // Updates `d2` (and `site` when not null) for the new sites; returns changed pixels in `out`.
     void propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
                    std::vector<std::int32_t>* site, std::vector<int>* out);

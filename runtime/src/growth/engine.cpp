@@ -14,6 +14,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <limits>
 #include <map>
@@ -41,6 +42,16 @@ using namespace detail;
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The disc `c` as a region: the panel a fill library sees during a restart (centre_seed()).
+Region circle_region(const Circle& c) {
+    char svg[256];
+    std::snprintf(svg, sizeof svg,
+                  "<svg xmlns=\"http://www.w3.org/2000/svg\"><circle cx=\"%.17g\" cy=\"%.17g\" "
+                  "r=\"%.17g\"/></svg>",
+                  c.center.x, c.center.y, c.radius);
+    return Region::from_svg_string(svg, "the hole of a restart");
+}
 
 // Consecutive %exhausted CONTINUE rounds that place nothing before the engine gives up.
 constexpr int kMaxFruitlessRounds = 16;
@@ -188,7 +199,10 @@ struct GrowthEngine::Impl {
     bool can_parent_type(const Element& e) const { return rules_by_parent.count(&e.type()) != 0; }
     // The restarts centre_seed() has left: a rotation centre and whether the seed goes beside it.
     std::optional<std::vector<std::pair<Point, bool>>> centre_restarts;
-    double centre_bar = 0;  // a hole no larger than this is as well filled (centre_seed())
+    double centre_bar = 0;     // a hole no larger than this is as well filled (centre_seed())
+    long exhausted_calls = 0;  // how often %exhausted was called
+    long centre_round = -1;    // exhausted_calls when the last round of restarts began
+    std::size_t centre_round_size = 0;  // the ornament's size when that round ended
     // Each restart on a centre: the hole, whether the seed grew, and whom the hole was offered.
     struct CentreOffer {
         Point centre;
@@ -321,39 +335,72 @@ bool GrowthEngine::Impl::second_seed() {
     return true;
 }
 
-// Under a group with translations, growth from the default seed reaches some classes of rotation
-// centre worse than others (a hole stays on the corner of a p4m tile, while the tile's centre,
-// of the same kind, fills). When growth ends, each class of rotation centre whose empty circle
-// is larger than the best-filled class's (by 10% and epsilon) gets a seed of its own, with its
-// images, and the hole as C: first on the centre (an element there coinciding with its images,
-// a fill called again on what is left), then, for the holes that stay, beside it, at the
-// largest circle in the hole clear of its own images (an element that is not symmetric fits
-// only there). One restart per call. Where the rules fail in the hole a restart is costly (a
-// fill over the whole tile): the bar is set once, and the restart beside a centre is skipped or
-// asks only the elements not asked on the centre.
+// Growth from the default seed reaches the special points of a group (its rotation centres, its
+// mirrors) worse than the rest: a hole stays on the corner of a p4m tile while the tile's
+// centre, of the same kind, fills; the centre of a rosette, where the seed's curves leave,
+// stays empty. When growth ends, each such point whose hole is larger than the bar gets a seed
+// of its own, with its images, and the hole as C: first on the point (an element there
+// coinciding with its images, a fill called again on the hole), then, for the holes that stay,
+// beside it, at the largest circle in the hole clear of its own images (an element that is
+// not symmetric fits only there). One restart per call; one round of restarts per stretch of
+// growth between two calls of %exhausted (a phase of a pattern with phases: the flowers of a
+// later phase may fill what the vines could not). Under a group with translations the points
+// are one rotation centre of each class and, on each mirror edge of the fundamental domain,
+// its point with the largest hole; the bar is 1.1 times the best-filled class's hole (plus
+// epsilon) as the round begins. A rosette's centre, the first thing an artist fills, is
+// offered whenever anything fits there. Where the rules fail in the hole a restart costs a
+// synthesis on each circle offered, so the restart beside a point is skipped or asks only the
+// elements not asked on it.
 bool GrowthEngine::Impl::centre_seed() {
-    if (!group || group->rosette() || !options.seeds.empty()) return false;
+    if (!group || !options.seeds.empty()) return false;
     const double tol = ornament.tolerance();
-    // The hole on c: its distance to the nearest element that is not a seed.
+    // The hole on c: its distance to the nearest element that is not a seed, or to the
+    // region's boundary (a frieze's band).
     auto hole = [&](Point c) {
-        for (double reach = 4 * epsilon;; reach *= 2) {
+        const double wall = region.distance_to_boundary(c);
+        for (double reach = 4 * epsilon; reach < wall; reach *= 2)
             for (const auto& [e, d] : ornament.within(c, reach))
-                if (&e->type() != pattern.seed) return d;
-            if (reach > 4 * std::hypot(region.bounds().width(), region.bounds().height()))
-                return reach;
-        }
+                if (&e->type() != pattern.seed) return std::min(d, wall);
+        return wall;
     };
-    // The best-filled class as growth first ended sets the bar: a hole no larger than 1.1 times
-    // its own (plus epsilon) is as well filled. Set once: a class a restart filled is no bar.
-    if (!centre_restarts) {
+    if (!centre_restarts || (centre_restarts->empty() && centre_round != exhausted_calls &&
+                             ornament.size() != centre_round_size)) {
+        centre_round = exhausted_calls;
+        centre_offered.clear();
         centre_restarts.emplace();
-        const std::vector<Point> classes = group->centre_classes(raster.grid().pixel / 4);
+        std::vector<Point> points = group->centre_classes(raster.grid().pixel / 4);
+        if (group->rosette()) {
+            centre_bar = std::max(2 * epsilon, min_radius + epsilon);
+        } else {
+            double best = std::numeric_limits<double>::infinity();
+            for (Point c : points)
+                if (region.contains(c)) best = std::min(best, hole(c));
+            centre_bar = std::max(2 * epsilon, 1.1 * best + epsilon);
+            // On each mirror edge, the sample (a pixel apart, the ends left out: they are
+            // rotation centres or the frame's edge) with the largest hole; only where the plane
+            // is periodic (a tile, a closed band): on an open band's mirrors the hole is mostly
+            // the band's edge.
+            const double step = raster.grid().pixel;
+            const bool periodic = translations && translations->group.window;
+            for (const auto& [a, b] : periodic ? group->mirror_edges(raster.grid().pixel / 4)
+                                               : std::vector<std::pair<Point, Point>>{}) {
+                const int n = static_cast<int>(std::ceil(distance(a, b) / step));
+                double room = centre_bar;
+                std::optional<Point> at;
+                for (int k = 1; k < n; ++k) {
+                    const Point p = a + (b - a) * (static_cast<double>(k) / n);
+                    if (!region.contains(p)) continue;
+                    const double r = hole(p);
+                    if (r > room) {
+                        room = r;
+                        at = p;
+                    }
+                }
+                if (at) points.push_back(*at);
+            }
+        }
         for (bool beside : {false, true})
-            for (Point c : classes) centre_restarts->emplace_back(c, beside);
-        double best = std::numeric_limits<double>::infinity();
-        for (Point c : classes)
-            if (region.contains(c)) best = std::min(best, hole(c));
-        centre_bar = std::max(2 * epsilon, 1.1 * best + epsilon);
+            for (Point c : points) centre_restarts->emplace_back(c, beside);
     }
     while (!centre_restarts->empty()) {
         const auto [c, beside] = centre_restarts->front();
@@ -361,7 +408,7 @@ bool GrowthEngine::Impl::centre_seed() {
         if (!region.contains(c)) continue;
         const double r = hole(c);
         if (r <= centre_bar) continue;
-        // A seed on the centre that grew while the hole stayed fills elsewhere, not the hole:
+        // A seed on the point that grew while the hole stayed fills elsewhere, not the hole:
         // one beside it would do the same.
         const CentreOffer* on_centre = nullptr;
         for (const CentreOffer& o : centre_offered)
@@ -371,7 +418,12 @@ bool GrowthEngine::Impl::centre_seed() {
         if (beside) {
             const std::vector<Circle> clear = group->clear_circles_in({c, r}, c, tol);
             if (clear.empty() || clear.back().radius < min_radius) continue;
-            s = clear.back().center;
+            // On that circle's rim nearest the point: a rule that starts a curve from its seed
+            // and winds it round C (a spiral) can, offered that circle; an element round the
+            // seed fits there as well, between the mirrors.
+            const Circle& room = clear.back();
+            const Vector in = c - room.center;
+            s = in.length() > tol ? room.center - in * (room.radius / in.length()) : room.center;
         }
         if (!region.contains(s)) continue;
         std::unique_ptr<Element> e(pattern.seed->create());
@@ -382,8 +434,8 @@ bool GrowthEngine::Impl::centre_seed() {
         if (!commit(std::move(one), nullptr)) continue;
         // The hole itself is the restart's C: the seed and every element round the hole are
         // offered it, and the circles inside it (rule_goals()). The seed is asked there only.
-        // An element the hole was offered to on the centre, it refused or grew elsewhere
-        // (the hole stays): the restart beside the centre offers it to the others only.
+        // An element the hole was offered to on the point, it refused or grew elsewhere
+        // (the hole stays): the restart beside the point offers it to the others only.
         ++stats.iterations;
         restart_goal = true;
         if (beside && on_centre) restart_skip = &on_centre->offered;
@@ -402,6 +454,7 @@ bool GrowthEngine::Impl::centre_seed() {
         }
         return true;
     }
+    centre_round_size = ornament.size();
     return false;
 }
 
@@ -455,11 +508,21 @@ std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
     std::vector<Point> out{p};
     if (!group) return out;
     const Rect bounds = region.bounds();
+    // distance(o, q) <= tol, by the square where it surely tells (hypot() is dear).
+    constexpr double kLoose = 1 + 1e-12;
+    const double tol = ornament.tolerance(), tol2 = tol * tol;
+    auto same = [&](Point o, Point q) {
+        const Vector v = q - o;
+        const double s = v.x * v.x + v.y * v.y;
+        if (s * kLoose < tol2) return true;
+        if (s > tol2 * kLoose) return false;
+        return distance(o, q) <= tol;
+    };
     for (std::size_t k = 1; k < group->size(); ++k) {
         const Point q = group->transforms()[k].apply(p);
         if (!group->rosette() && !bounds.contains(q)) continue;  // translates beyond the region
         bool seen = false;
-        for (Point o : out) seen = seen || distance(o, q) <= ornament.tolerance();
+        for (Point o : out) seen = seen || same(o, q);
         if (!seen) out.push_back(q);
     }
     return out;
@@ -667,6 +730,7 @@ std::optional<Circle> GrowthEngine::Impl::find_goal() {
 // %exhausted runs with the environment installed, like a rule body: it may clear the exclude
 // list or draw random numbers.
 Flow GrowthEngine::Impl::call_exhausted() {
+    ++exhausted_calls;
     if (!pattern.exhausted) return STOP;
     try {
         Flow flow = STOP;
@@ -760,6 +824,9 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                 if (parent->sterile) break;
                 const Circle tried = tries[t];
                 env.set_goal(tried);
+                // A restart's fill library fills the circle offered, not the region again.
+                std::optional<Region> panel;
+                if (restart_goal) env.set_panel(&panel.emplace(circle_region(tried)));
                 const long refusals = env.orbit_refusals();
                 const bool was_sterile = parent->sterile;
                 Result result = FAILURE;
@@ -770,6 +837,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                     result = call.run();
                     if (result == SUCCESS) children = call.take_children();
                 }
+                env.set_panel(nullptr);
                 sync_exclude_clears();
                 // A failure the element's own images did not cause is the rule's answer for C
                 // and the circles about its centre or on its mirror; the circles beside them

@@ -174,7 +174,8 @@ bool same_place(const Element& a, const Element& b, double tolerance) {
 Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     std::vector<std::unique_ptr<ImageElement>> images;
     std::vector<Isometry> transforms;
-    bool fixed = false;  // some image coincides with e
+    std::vector<bool> apart;  // the image's box is clear of the element's bounds
+    bool fixed = false;       // some image coincides with e
     const auto& g = group.transforms();
     Orbit out;
     if (g.size() < 2) return out;
@@ -204,6 +205,7 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
             if (kept == 1) {
                 images.push_back(std::make_unique<ImageElement>(e, g[k]));
                 transforms.push_back(g[k]);
+                apart.push_back(true);
                 continue;
             }
             if (kept == 0) {
@@ -227,6 +229,7 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
         }
         images.push_back(std::make_unique<ImageElement>(e, g[k]));
         transforms.push_back(g[k]);
+        apart.push_back(false);
     }
     // g(e) = h(e) only when an image other than the identity's coincides with e: only then do
     // the images repeat (once per coset of the stabilizer).
@@ -239,7 +242,8 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
         if (repeated) continue;
         kept.push_back(images[k].get());
         out.images.push_back(transforms[k]);
-        if (out.clear && overlaps_any(*images[k], e, tolerance)) out.clear = false;
+        // An image whose box is clear of the element's bounds meets none of its proxies' boxes.
+        if (out.clear && !apart[k] && overlaps_any(*images[k], e, tolerance)) out.clear = false;
         // (Rosettes keep their tested behaviour: their trees stay as they were.)
         for (std::size_t p = 0; out.clear && !group.rosette() && p < e.proxy_count(); ++p)
             if (crosses_mirror(e.proxy(p), transforms[k], tolerance)) out.clear = false;

@@ -151,6 +151,19 @@ std::vector<Point> SymmetryGroup::centre_classes(double tolerance) const {
     return out;
 }
 
+std::vector<std::pair<Point, Point>> SymmetryGroup::mirror_edges(double tolerance) const {
+    std::vector<std::pair<Point, Point>> out;
+    if (!lattice_) return out;
+    for (const auto& [a, b] : domain_edges(0))
+        for (const auto& [o, dir] : mirrors_)
+            if (std::abs(dir.cross(a - o)) <= tolerance &&
+                std::abs(dir.cross(b - o)) <= tolerance) {
+                out.emplace_back(a, b);
+                break;
+            }
+    return out;
+}
+
 bool SymmetryGroup::in_domain(Point p, double tolerance) const {
     if (lattice_) {
         for (const auto& [m, n] : halfplanes_)
@@ -205,10 +218,30 @@ Point SymmetryGroup::snap(Point p, double tolerance) const {
 }
 
 double SymmetryGroup::clearance(Point c, double tolerance) const {
+    // Squared distances decide what they surely can; hypot() (distance()) is taken only near
+    // the tolerance and for the images that may be the nearest: distance()'s answer to the bit.
+    constexpr double kLoose = 1 + 1e-12;
+    const double tol2 = tolerance * tolerance;
     double best = std::numeric_limits<double>::infinity();
+    double least = std::numeric_limits<double>::infinity();  // of the images surely beyond
+    auto square = [&](std::size_t k) {
+        const Vector v = c - transforms_[k].apply(c);
+        return v.x * v.x + v.y * v.y;
+    };
     for (std::size_t k = 1; k < transforms_.size(); ++k) {
-        const double d = distance(transforms_[k].apply(c), c);
-        if (d > tolerance) best = std::min(best, d / 2);
+        const double s = square(k);
+        if (s * kLoose < tol2) continue;  // surely within the tolerance
+        if (s <= tol2 * kLoose) {
+            const double d = distance(transforms_[k].apply(c), c);
+            if (d > tolerance) best = std::min(best, d / 2);
+        } else {
+            least = std::min(least, s);
+        }
+    }
+    for (std::size_t k = 1; k < transforms_.size(); ++k) {
+        const double s = square(k);
+        if (s > tol2 * kLoose && s <= least * kLoose)
+            best = std::min(best, distance(transforms_[k].apply(c), c) / 2);
     }
     return best;
 }
@@ -237,9 +270,23 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
     constexpr double kLoose = 1 + 1e-12;
     const double tol2 = tolerance * tolerance;
     std::vector<double> squares(near.size());
-    auto room = [&](Point p, bool& fixed) {
-        double r = c.radius - distance(p, c.center);
+    // Most points of the sample have less room than the best circle found: an upper bound of
+    // the room from the squares (sqrt() within 1e-12, hypot() not taken) rules them out. Below
+    // `bar_fixed` (a point some transformation fixes) or `bar_free` (else) the room is not
+    // measured: -infinity, and `fixed` then tells nothing.
+    constexpr double kBound = 1e-12;
+    constexpr double kNone = -std::numeric_limits<double>::infinity();
+    auto room = [&](Point p, bool& fixed, double bar_fixed, double bar_free) {
         fixed = false;
+        const Vector to_centre = p - c.center;
+        const double inside =
+            c.radius -
+            std::sqrt(to_centre.x * to_centre.x + to_centre.y * to_centre.y) * (1 - kBound) +
+            kBound * c.radius;
+        const double low = std::min(bar_fixed, bar_free);
+        if (inside < low) return kNone;
+        // An image nearer than twice the lower bar rules the point out whatever fixes it.
+        const double least_bar = low > 0 ? 4 * low * low * (1 - 1e-9) : 0;
         double least = std::numeric_limits<double>::infinity();
         for (std::size_t k = 0; k < near.size(); ++k) {
             const Vector v = near[k]->apply(p) - p;
@@ -251,7 +298,11 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
             }
             squares[k] = s;
             if (s >= 0) least = std::min(least, s);
+            if (least < least_bar) return kNone;
         }
+        if (std::min(inside, std::sqrt(least) / 2 * (1 + kBound)) < (fixed ? bar_fixed : bar_free))
+            return kNone;
+        double r = c.radius - distance(p, c.center);
         // Every image is at least sqrt(least) / 2 away: when that is clearly beyond r, none
         // lowers it.
         if (r <= 0 || least / 4 >= r * r * kLoose) return r;
@@ -273,7 +324,7 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
     auto consider = [&](Point p, const Isometry* mirror) {
         if (on_centre(p)) return;  // C itself
         bool fixed = false;
-        const double r = room(p, fixed);
+        const double r = room(p, fixed, best[0].radius + tolerance, best[1].radius + tolerance);
         Circle& b = best[fixed ? 0 : 1];
         if (r > b.radius + tolerance) {
             b = {p, r};
@@ -309,7 +360,8 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
                     if (k == 0) q = q + (best_mirror[0]->apply(q) - q) * 0.5;
                     if (on_centre(q)) continue;
                     bool fixed = false;
-                    const double r = room(q, fixed);
+                    const double bar = best[k].radius + tolerance;
+                    const double r = room(q, fixed, bar, bar);
                     if (fixed == (k == 0) && r > best[k].radius + tolerance) {
                         best[k] = {q, r};
                         moved = 1;
@@ -325,7 +377,8 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
         for (int k = 1; k < kTouching; ++k) {
             const double r = c.radius * (1 - double(k) / kTouching);
             bool fixed = false;
-            if (room(c.center + u * ((c.radius - r) / u.length()), fixed) >= r - tolerance) {
+            if (room(c.center + u * ((c.radius - r) / u.length()), fixed, r - tolerance,
+                     r - tolerance) >= r - tolerance) {
                 out.push_back({c.center + u * ((c.radius - r) / u.length()), r});
                 break;
             }

@@ -71,6 +71,10 @@ class SymmetryGroup {
     // group), each the representative lying in the fundamental domain (widened by `tolerance`),
     // in the order found; a rosette's centre alone.
     std::vector<Point> centre_classes(double tolerance) const;
+    // With translations: the fundamental domain's edges (domain_edges()) that lie on a mirror
+    // (within `tolerance`); a hole on a mirror away from the rotation centres is one of these
+    // edges' points. None for a rosette.
+    std::vector<std::pair<Point, Point>> mirror_edges(double tolerance) const;
     // The domain's edges: a rosette's two, from the centre out to `radius` (none for c1); the
     // Dirichlet domain's polygon clipped to the frame.
     std::vector<std::pair<Point, Point>> domain_edges(double radius) const;

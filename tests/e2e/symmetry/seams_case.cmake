@@ -1,10 +1,13 @@
 # One wallpaper tile grown and checked across its seams:
 #   cmake -DPROGRAM=<exe> -DCHECK=<check_seams> -DGROUP=<p4m> -DTILE=<W,H[,ANGLE]> -DWORK=<dir>
-#         -P seams_case.cmake
+#         [-DSEED=<rng seed, 1 by default>] -P seams_case.cmake
 cmake_minimum_required(VERSION 3.20)
+if(NOT DEFINED SEED)
+  set(SEED 1)
+endif()
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
-execute_process(COMMAND "${PROGRAM}" --wallpaper ${GROUP} --tile ${TILE} --rng-seed 1 --quiet
+execute_process(COMMAND "${PROGRAM}" --wallpaper ${GROUP} --tile ${TILE} --rng-seed ${SEED} --quiet
     --json tree.json -o tile.png
   WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE code ERROR_VARIABLE err TIMEOUT 300)
 if(NOT code EQUAL 0)
