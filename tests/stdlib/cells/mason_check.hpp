@@ -62,6 +62,8 @@ struct MasonReport {
     std::vector<Point> four_way_at;
     long stones_on_end = 0;      // a tenth taller than wide (a square on a stretched grid is not),
                                  // away from a jamb or the wall's end
+    long pier_stones = 0;        // of those not counted: a pier between two stones of another
+                                 // generator (lintels' bearings) of exactly its height, filling it
     long unit_square_pairs = 0;  // two stones of about one grid unit sharing a side
     long unit_square_runs = 0;   // three or more in a line (counted by their middle ones)
     // King closers (Cell::piece): three quarters of a brick on the face, against a reveal (a
@@ -255,10 +257,12 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         const double unit = s.stone_unit > 0 ? s.stone_unit : s.height + s.mortar;
         const double m = s.mortar / 2;
         std::vector<Rect> stones;
+        std::vector<const std::string*> laid_by;
         for (const Cell& c : cells) {
             Rect b;
             if (!is_rect(c.polygon, b)) continue;
             stones.push_back({b.x0 - m, b.y0 - m, b.x1 + m, b.y1 + m});
+            laid_by.push_back(&c.generator);
         }
         r.stones = static_cast<long>(stones.size());
         const double key = 0.01 * unit;
@@ -274,14 +278,27 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
                     {static_cast<double>(p.first) * key, static_cast<double>(p.second) * key});
             }
         const double near = s.mortar + 1e-6;
-        for (const Rect& b : stones) {
+        for (std::size_t i = 0; i < stones.size(); ++i) {
+            const Rect& b = stones[i];
             if (b.height() <= b.width() * 1.1) continue;
             bool jamb = false;
             for (const auto& e : facade.edges())
                 if (e.vertical() && !e.arc && e.bounds.y0 < b.y1 && e.bounds.y1 > b.y0 &&
                     (std::abs(e.bounds.x0 - b.x0) < near || std::abs(e.bounds.x0 - b.x1) < near))
                     jamb = true;
-            r.stones_on_end += !jamb;
+            // A pier: its sides the ends of two stones of another generator, beds level with
+            // its own (within a micron), the joints between shared.
+            bool left = false, right = false;
+            for (std::size_t j = 0; j < stones.size(); ++j) {
+                const Rect& o = stones[j];
+                if (*laid_by[j] == *laid_by[i] || std::abs(o.y0 - b.y0) > 1e-4 ||
+                    std::abs(o.y1 - b.y1) > 1e-4)
+                    continue;
+                left |= std::abs(o.x1 - b.x0) < 1e-4;
+                right |= std::abs(o.x0 - b.x1) < 1e-4;
+            }
+            r.pier_stones += !jamb && left && right;
+            r.stones_on_end += !jamb && !(left && right);
         }
         auto unit_square = [&](const Rect& b) {
             return b.width() < 1.5 * unit && b.height() < 1.5 * unit;
@@ -437,8 +454,9 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << r.voussoirs << ", crowns open " << r.crowns_open << "/" << r.crowns
                << ", headless " << r.openings_without_head << "/" << r.openings << ", stones "
                << r.stones << " four-way " << r.four_way << " on end " << r.stones_on_end
-               << " unit-square pairs " << r.unit_square_pairs << " runs " << r.unit_square_runs
-               << ", king closers " << r.king_closers << " misplaced " << r.king_closers_misplaced;
+               << " piers " << r.pier_stones << " unit-square pairs " << r.unit_square_pairs
+               << " runs " << r.unit_square_runs << ", king closers " << r.king_closers
+               << " misplaced " << r.king_closers_misplaced;
 }
 
 }  // namespace cells_test

@@ -177,6 +177,27 @@ TEST(CellsMason, FindsFourWayJointsStonesOnEndAndUnitSquares) {
     EXPECT_EQ(r.stones_on_end, 1);
     EXPECT_EQ(r.unit_square_pairs, 2);
     EXPECT_EQ(r.unit_square_runs, 1);
+    EXPECT_EQ(r.pier_stones, 0);
+}
+
+TEST(CellsMason, ReadsAPierBetweenTwoBearings) {
+    // Two lintels' bearings 15 cm apart, the pier between them one stone of their height: not
+    // on end. The same stone a joint shorter, or between two wall stones, is.
+    MasonSpec stone = kCm;
+    stone.stone = true;
+    std::vector<Cell> cells = {brick(0, 60, 45, 90, 0, "lintel"),
+                               brick(60, 60, 105, 90, 0, "lintel"),
+                               brick(45, 60, 60, 90, 0, "ashlar")};
+    MasonReport r = mason_check(plain_wall(), cells, stone);
+    EXPECT_EQ(r.stones_on_end, 0);
+    EXPECT_EQ(r.pier_stones, 1);
+    cells[2] = brick(45, 61, 60, 90, 0, "ashlar");
+    r = mason_check(plain_wall(), cells, stone);
+    EXPECT_EQ(r.stones_on_end, 1);
+    EXPECT_EQ(r.pier_stones, 0);
+    cells[2] = brick(45, 60, 60, 90, 0, "ashlar");
+    cells[0].generator = cells[1].generator = "ashlar";
+    EXPECT_EQ(mason_check(plain_wall(), cells, stone).stones_on_end, 1);
 }
 
 TEST(CellsMason, FindsAJointAtTheCrown) {
