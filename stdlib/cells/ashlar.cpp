@@ -88,15 +88,15 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
                         rect ? static_cast<int>(k) : -2 - static_cast<int>(k);
             }
     }
-    // A pier one unit wide between two rectangular stones laid before over the same rows (two
-    // lintels' bearings): a stone of its full height, as a jamb stone, since any stone there
-    // stands on end; its units are held like those of a stone laid before.
+    // A pier one unit wide between two stones laid before over the same rows (two lintels'
+    // bearings, two sills' lugs): a stone of its full height, as a jamb stone, since any stone
+    // there stands on end; its units are held like those of a stone laid before.
     const auto held_at = [&](int row, int u) {
         return u < 0 || u >= grid.units() ? -1
                                           : owner[static_cast<std::size_t>(row * grid.units() + u)];
     };
     const auto spans = [&](int k, int u, int r0, int r1) {  // stone k holds exactly rows r0..r1
-        return k >= 0 && (r0 == 0 || held_at(r0 - 1, u) != k) &&
+        return k != -1 && (r0 == 0 || held_at(r0 - 1, u) != k) &&
                (r1 + 1 == grid.rows() || held_at(r1 + 1, u) != k);
     };
     std::vector<Rect> piers;
@@ -107,7 +107,7 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
             while (end < grid.rows() && held_at(end, u) == -1 && grid.at(end, u) == detail::kFull &&
                    held_at(end, u - 1) == left && held_at(end, u + 1) == right)
                 ++end;
-            if (end > row && left >= 0 && right >= 0 && left != right &&
+            if (end > row && left != -1 && right != -1 && left != right &&
                 spans(left, u - 1, row, end - 1) && spans(right, u + 1, row, end - 1)) {
                 const Rect r{grid.xs[static_cast<std::size_t>(u)],
                              grid.ys[static_cast<std::size_t>(row)],

@@ -63,7 +63,7 @@ struct MasonReport {
     long stones_on_end = 0;      // a tenth taller than wide (a square on a stretched grid is not),
                                  // away from a jamb or the wall's end
     long pier_stones = 0;        // of those not counted: a pier between two stones of another
-                                 // generator (lintels' bearings) of exactly its height, filling it
+                                 // generator (lintels' bearings, sills' lugs) of its height
     long unit_square_pairs = 0;  // two stones of about one grid unit sharing a side
     long unit_square_runs = 0;   // three or more in a line (counted by their middle ones)
     // King closers (Cell::piece): three quarters of a brick on the face, against a reveal (a
@@ -257,7 +257,7 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         const double unit = s.stone_unit > 0 ? s.stone_unit : s.height + s.mortar;
         const double m = s.mortar / 2;
         std::vector<Rect> stones;
-        std::vector<const std::string*> laid_by;
+        std::vector<const std::string*> laid_by;  // the generator of each
         for (const Cell& c : cells) {
             Rect b;
             if (!is_rect(c.polygon, b)) continue;
@@ -286,16 +286,20 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
                 if (e.vertical() && !e.arc && e.bounds.y0 < b.y1 && e.bounds.y1 > b.y0 &&
                     (std::abs(e.bounds.x0 - b.x0) < near || std::abs(e.bounds.x0 - b.x1) < near))
                     jamb = true;
-            // A pier: its sides the ends of two stones of another generator, beds level with
-            // its own (within a micron), the joints between shared.
+            // A pier: each side a joint from a plumb end of a stone of another generator
+            // (a lintel's bearing, a sill's lug) as tall as it (within a micron).
             bool left = false, right = false;
-            for (std::size_t j = 0; j < stones.size(); ++j) {
-                const Rect& o = stones[j];
-                if (*laid_by[j] == *laid_by[i] || std::abs(o.y0 - b.y0) > 1e-4 ||
-                    std::abs(o.y1 - b.y1) > 1e-4)
-                    continue;
-                left |= std::abs(o.x1 - b.x0) < 1e-4;
-                right |= std::abs(o.x0 - b.x1) < 1e-4;
+            for (const Cell& c : cells) {
+                if (c.generator == *laid_by[i]) continue;
+                for (std::size_t e = 0, f = c.polygon.size() - 1; e < c.polygon.size(); f = e++) {
+                    const Point p = c.polygon[f], q = c.polygon[e];
+                    if (std::abs(p.x - q.x) > 1e-4 ||
+                        std::abs(std::min(p.y, q.y) - (b.y0 + m)) > 1e-4 ||
+                        std::abs(std::max(p.y, q.y) - (b.y1 - m)) > 1e-4)
+                        continue;
+                    left |= std::abs(p.x - (b.x0 - m)) < 1e-4;
+                    right |= std::abs(p.x - (b.x1 + m)) < 1e-4;
+                }
             }
             r.pier_stones += !jamb && left && right;
             r.stones_on_end += !jamb && !(left && right);

@@ -328,12 +328,10 @@ long stone_walls(const std::vector<std::string>& files, int seeds, double unit =
             MasonReport m;
             Known k = known(name, true);
             // Left on the 15 cm grid, by name (counted, not fixed): the wide opening's four-way
-            // joints (2 in about 130 stones on some seeds), one stone on end on the mill (a
-            // unit 12 cm wide under a 14 cm row), runs of unit squares on the terrace (up to 2)
-            // and the round-headed front (1) on some seeds.
+            // joints (2 in about 130 stones on some seeds), runs of unit squares on the terrace
+            // (up to 2) and the round-headed front (1) on some seeds.
             if (unit > 0) {
                 if (name == "wide-opening.svg") k.four_way_per_1000 = 17;
-                if (name == "mill.svg") k.stones_on_end = 1;
                 if (name == "terrace.svg") k.unit_square_runs = 2;
                 if (name == "ashlar-arches.svg") k.unit_square_runs = 1;
             }
