@@ -67,8 +67,6 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
     const Options& o = c.options();
     FaceOccupancy& occupancy = c.face_occupancy(face);
     const std::vector<Cell>& laid = c.cells();
-    detail::AshlarRules rules(grid, o.ashlar_max_width, o.ashlar_max_height, o.ashlar_max_seam,
-                              static_cast<int>(laid.size()) + 1);
     const double h = o.mortar / 2;
     // Per unit: the rectangular cell k holding it (k), one of another shape (-2 - k), or -1.
     std::vector<int> owner(static_cast<std::size_t>(grid.rows() * grid.units()), -1);
@@ -90,6 +88,47 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
                         rect ? static_cast<int>(k) : -2 - static_cast<int>(k);
             }
     }
+    // A pier one unit wide between two stones laid before over the same rows (two lintels'
+    // bearings, two sills' lugs): a stone of its full height, as a jamb stone, since any stone
+    // there stands on end; its units are held like those of a stone laid before.
+    const auto held_at = [&](int row, int u) {
+        return u < 0 || u >= grid.units() ? -1
+                                          : owner[static_cast<std::size_t>(row * grid.units() + u)];
+    };
+    const auto spans = [&](int k, int u, int r0, int r1) {  // stone k holds exactly rows r0..r1
+        return k != -1 && (r0 == 0 || held_at(r0 - 1, u) != k) &&
+               (r1 + 1 == grid.rows() || held_at(r1 + 1, u) != k);
+    };
+    std::vector<Rect> piers;
+    for (int u = 1; u + 1 < grid.units(); ++u)
+        for (int row = 0; row < grid.rows();) {
+            const int left = held_at(row, u - 1), right = held_at(row, u + 1);
+            int end = row;
+            while (end < grid.rows() && held_at(end, u) == -1 && grid.at(end, u) == detail::kFull &&
+                   held_at(end, u - 1) == left && held_at(end, u + 1) == right)
+                ++end;
+            if (end > row && left != -1 && right != -1 && left != right &&
+                spans(left, u - 1, row, end - 1) && spans(right, u + 1, row, end - 1)) {
+                const Rect r{grid.xs[static_cast<std::size_t>(u)],
+                             grid.ys[static_cast<std::size_t>(row)],
+                             grid.xs[static_cast<std::size_t>(u + 1)],
+                             grid.ys[static_cast<std::size_t>(end)]};
+                if (wall_part(occupancy, r) > 0.5) piers.push_back(r);
+            }
+            row = std::max(end, row + 1);
+        }
+    detail::AshlarRules rules(grid, o.ashlar_max_width, o.ashlar_max_height, o.ashlar_max_seam,
+                              static_cast<int>(laid.size() + piers.size()) + 1);
+    for (std::size_t i = 0; i < piers.size(); ++i) {
+        const Point m = piers[i].center();
+        const int u = grid.unit_at(m.x), pier = static_cast<int>(laid.size() + i);
+        for (int row = grid.row_at(piers[i].y0 + 1e-6);
+             row >= 0 && row < grid.rows() &&
+             grid.ys[static_cast<std::size_t>(row)] < piers[i].y1 - 1e-6;
+             ++row) {
+            owner[static_cast<std::size_t>(row * grid.units() + u)] = pier;
+        }
+    }
     const double tiny = 1e-4 * std::min(grid.xs[1] - grid.xs[0], grid.ys[1] - grid.ys[0]);
     std::vector<std::pair<int, int>> lone;  // units laid as a clipped stone each
     for (int row = 0; row < grid.rows(); ++row)
@@ -97,13 +136,29 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
             const auto s = grid.at(row, u);
             const int held = owner[static_cast<std::size_t>(row * grid.units() + u)];
             if (s == detail::kOutside) continue;
+            const Rect unit = grid.cell(row, u, u + 1);
+            if (held <= -2 && s == detail::kFull) {
+                // What a voussoir or skewback leaves of a unit holding its centre: a plumb strip
+                // laid alone would stand on end, so one worth a stone joins one of the layout,
+                // cut to the skewback, and counts as narrow as it is. Pieces cut to a curve are
+                // laid alone, as before.
+                const std::vector<std::vector<Point>> left =
+                    occupancy.free_part(detail::polygon_of(unit));
+                Rect strip;
+                if (const double part = wall_part(occupancy, unit);
+                    part > 0.1 && left.size() == 1 && detail::axis_rect(left[0], strip) &&
+                    strip.y1 - strip.y0 > 1.1 * (strip.x1 - strip.x0)) {
+                    rules.free(row, u);
+                    rules.cut(row, u, part);
+                    continue;
+                }
+            }
             if (held >= 0 || held <= -2) {
                 rules.hold(row, u, held >= 0 ? held : -2 - held, held <= -2);
                 // What a voussoir leaves of the unit is cut to its extrados.
                 if (held <= -2) lone.emplace_back(row, u);
                 continue;
             }
-            const Rect unit = grid.cell(row, u, u + 1);
             const Point m = unit.center();
             if (s == detail::kFull && occupancy.rect_is_free(unit)) {
                 rules.free(row, u);
@@ -141,6 +196,8 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
         });
     }
     rules.lay(c.random());
+    for (const Rect& r : piers)
+        c.place(detail::polygon_of(r), grid.course(grid.row_at(r.y1 - 1e-6)));
     for (const detail::Stone& s : rules.stones()) {
         const Rect r{grid.xs[s.unit], grid.ys[s.row], grid.xs[s.unit + s.w], grid.ys[s.row + s.h]};
         bool full = true;

@@ -72,6 +72,8 @@ struct MasonReport {
     std::vector<Point> four_way_at;
     long stones_on_end = 0;      // a tenth taller than wide (a square on a stretched grid is not),
                                  // away from a jamb or the wall's end
+    long pier_stones = 0;        // of those not counted: a pier between two stones of another
+                                 // generator (lintels' bearings, sills' lugs) of its height
     long unit_square_pairs = 0;  // two stones of about one grid unit sharing a side
     long unit_square_runs = 0;   // three or more in a line (counted by their middle ones)
     // King closers (Cell::piece): three quarters of a brick on the face, against a reveal (a
@@ -299,10 +301,12 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         const double unit = s.stone_unit > 0 ? s.stone_unit : s.height + s.mortar;
         const double m = s.mortar / 2;
         std::vector<Rect> stones;
+        std::vector<const std::string*> laid_by;  // the generator of each
         for (const Cell& c : cells) {
             Rect b;
             if (!is_rect(c.polygon, b)) continue;
             stones.push_back({b.x0 - m, b.y0 - m, b.x1 + m, b.y1 + m});
+            laid_by.push_back(&c.generator);
         }
         r.stones = static_cast<long>(stones.size());
         const double key = 0.01 * unit;
@@ -318,14 +322,31 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
                     {static_cast<double>(p.first) * key, static_cast<double>(p.second) * key});
             }
         const double near = s.mortar + 1e-6;
-        for (const Rect& b : stones) {
+        for (std::size_t i = 0; i < stones.size(); ++i) {
+            const Rect& b = stones[i];
             if (b.height() <= b.width() * 1.1) continue;
             bool jamb = false;
             for (const auto& e : facade.edges())
                 if (e.vertical() && !e.arc && e.bounds.y0 < b.y1 && e.bounds.y1 > b.y0 &&
                     (std::abs(e.bounds.x0 - b.x0) < near || std::abs(e.bounds.x0 - b.x1) < near))
                     jamb = true;
-            r.stones_on_end += !jamb;
+            // A pier: each side a joint from a plumb end of a stone of another generator
+            // (a lintel's bearing, a sill's lug) as tall as it (within a micron).
+            bool left = false, right = false;
+            for (const Cell& c : cells) {
+                if (c.generator == *laid_by[i]) continue;
+                for (std::size_t e = 0, f = c.polygon.size() - 1; e < c.polygon.size(); f = e++) {
+                    const Point p = c.polygon[f], q = c.polygon[e];
+                    if (std::abs(p.x - q.x) > 1e-4 ||
+                        std::abs(std::min(p.y, q.y) - (b.y0 + m)) > 1e-4 ||
+                        std::abs(std::max(p.y, q.y) - (b.y1 - m)) > 1e-4)
+                        continue;
+                    left |= std::abs(p.x - (b.x0 - m)) < 1e-4;
+                    right |= std::abs(p.x - (b.x1 + m)) < 1e-4;
+                }
+            }
+            r.pier_stones += !jamb && left && right;
+            r.stones_on_end += !jamb && !(left && right);
         }
         auto unit_square = [&](const Rect& b) {
             return b.width() < 1.5 * unit && b.height() < 1.5 * unit;
@@ -481,10 +502,10 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << r.voussoirs << ", crowns open " << r.crowns_open << "/" << r.crowns
                << ", headless " << r.openings_without_head << "/" << r.openings << ", stones "
                << r.stones << " four-way " << r.four_way << " on end " << r.stones_on_end
-               << " unit-square pairs " << r.unit_square_pairs << " runs " << r.unit_square_runs
-               << ", king closers " << r.king_closers << " misplaced " << r.king_closers_misplaced
-               << ", odd pieces " << r.odd_pieces << ", head joints off " << r.joints_off
-               << " (max " << r.joint_deviation << ")";
+               << " piers " << r.pier_stones << " unit-square pairs " << r.unit_square_pairs
+               << " runs " << r.unit_square_runs << ", king closers " << r.king_closers
+               << " misplaced " << r.king_closers_misplaced << ", odd pieces " << r.odd_pieces
+               << ", head joints off " << r.joints_off << " (max " << r.joint_deviation << ")";
 }
 
 }  // namespace cells_test

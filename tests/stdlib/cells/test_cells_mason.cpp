@@ -177,6 +177,35 @@ TEST(CellsMason, FindsFourWayJointsStonesOnEndAndUnitSquares) {
     EXPECT_EQ(r.stones_on_end, 1);
     EXPECT_EQ(r.unit_square_pairs, 2);
     EXPECT_EQ(r.unit_square_runs, 1);
+    EXPECT_EQ(r.pier_stones, 0);
+}
+
+TEST(CellsMason, ReadsAPierBetweenTwoBearings) {
+    // Two lintels' bearings 15 cm apart, the pier between them one stone of their height: not
+    // on end; beside a lugged sill's plumb end too. The same stone a joint shorter, or between
+    // two wall stones, is.
+    MasonSpec stone = kCm;
+    stone.stone = true;
+    std::vector<Cell> cells = {brick(0, 60, 45, 90, 0, "lintel"),
+                               brick(60, 60, 105, 90, 0, "lintel"),
+                               brick(45, 60, 60, 90, 0, "ashlar")};
+    MasonReport r = mason_check(plain_wall(), cells, stone);
+    EXPECT_EQ(r.stones_on_end, 0);
+    EXPECT_EQ(r.pier_stones, 1);
+    cells[2] = brick(45, 61, 60, 90, 0, "ashlar");
+    r = mason_check(plain_wall(), cells, stone);
+    EXPECT_EQ(r.stones_on_end, 1);
+    EXPECT_EQ(r.pier_stones, 0);
+    cells[2] = brick(45, 60, 60, 90, 0, "ashlar");
+    // A sill with a lug at its far end: its plumb end beside the pier is as tall, so a pier.
+    cells[0].polygon = {{0.5, 65}, {10, 65}, {10, 60.5}, {44.5, 60.5}, {44.5, 89.5}, {0.5, 89.5}};
+    cells[0].generator = "window_bottom";
+    r = mason_check(plain_wall(), cells, stone);
+    EXPECT_EQ(r.stones_on_end, 0);
+    EXPECT_EQ(r.pier_stones, 1);
+    cells[0] = brick(0, 60, 45, 90, 0, "ashlar");
+    cells[1].generator = "ashlar";
+    EXPECT_EQ(mason_check(plain_wall(), cells, stone).stones_on_end, 1);
 }
 
 TEST(CellsMason, FindsAJointAtTheCrown) {
