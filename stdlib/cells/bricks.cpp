@@ -31,7 +31,13 @@ bool uncut(const std::vector<Point>& poly) {
 void name(Context& c, const detail::Piece& p, int added) {
     if (!p.king || added != 1) return;
     Cell& cell = c.cells().back();
-    if (uncut(cell.polygon)) cell.piece = "king closer";
+    if (!uncut(cell.polygon)) return;
+    // Cut short at a jamb it is a bat, not a king closer: three quarters less a joint, to 1 mm.
+    const Options& o = c.options();
+    double x0 = cell.polygon[0].x, x1 = x0;
+    for (Point q : cell.polygon) x0 = std::min(x0, q.x), x1 = std::max(x1, q.x);
+    const double king = 3 * (o.brick_length + o.mortar) / 4 - o.mortar;
+    if (std::abs(x1 - x0 - king) <= o.joint_tolerance / 3) cell.piece = "king closer";
 }
 
 void lay(Context& c, BrickLayout& layout, int row, int piece) {
