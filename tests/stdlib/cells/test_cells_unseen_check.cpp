@@ -512,6 +512,25 @@ TEST(CellsUnseen, SameSeedSameBytes) {
 }
 
 // The check fails on layouts broken as the issue describes them.
+namespace {
+
+// `cells` with the first whole stretcher's right end moved by `dx` (cm): a brick shaved or
+// stretched, for the checks that must fail on it.
+std::vector<Cell> with_stretcher_end_moved(std::vector<Cell> cells, double dx) {
+    for (Cell& cell : cells) {
+        Rect b;
+        if (cell.generator == "bricks" && mason_detail::is_rect(cell.polygon, b) &&
+            std::abs(b.width() - 21.5) < 1e-6) {
+            for (Point& p : cell.polygon)
+                if (p.x > b.center().x) p.x += dx;
+            break;
+        }
+    }
+    return cells;
+}
+
+}  // namespace
+
 TEST(CellsUnseen, FailsOnBrokenLayouts) {
     Options o = centimetres();
     o.bond = Bond::flemish;
@@ -522,16 +541,7 @@ TEST(CellsUnseen, FailsOnBrokenLayouts) {
         << list(faults(f, t.cells, kCm, nullptr, k));
     // A shaved brick: a stretcher drawn 2 mm short, one more than the wall has.
     {
-        std::vector<Cell> c = t.cells;
-        for (Cell& cell : c) {
-            Rect b;
-            if (cell.generator == "bricks" && mason_detail::is_rect(cell.polygon, b) &&
-                std::abs(b.width() - 21.5) < 1e-6) {
-                for (Point& p : cell.polygon)
-                    if (p.x > b.center().x) p.x -= 0.2;
-                break;
-            }
-        }
+        const std::vector<Cell> c = with_stretcher_end_moved(t.cells, -0.2);
         Known tight = k;
         tight.shaved_bricks = mason_check(f, t.cells, kCm).shaved_bricks;
         EXPECT_TRUE(faults(f, t.cells, kCm, nullptr, tight).empty());
@@ -562,16 +572,7 @@ TEST(CellsUnseen, FailsOnBrokenLayouts) {
     }
     // A stretched brick: a stretcher drawn 2 mm long.
     {
-        std::vector<Cell> c = t.cells;
-        for (Cell& cell : c) {
-            Rect b;
-            if (cell.generator == "bricks" && mason_detail::is_rect(cell.polygon, b) &&
-                std::abs(b.width() - 21.5) < 1e-6) {
-                for (Point& p : cell.polygon)
-                    if (p.x > b.center().x) p.x += 0.2;  // 2 mm longer than a stretcher
-                break;
-            }
-        }
+        const std::vector<Cell> c = with_stretcher_end_moved(t.cells, 0.2);
         EXPECT_EQ(arch_check(f, c, kCm).stretched, 1);
         EXPECT_FALSE(faults(f, c, kCm, nullptr, k).empty());
     }
