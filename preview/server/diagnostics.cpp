@@ -3,16 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-// GCC 12 with -fsanitize=address takes the std::function a std::regex state moves for maybe
-// uninitialized, inside the standard headers (a false positive).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
 #include <regex>
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
 #include <sstream>
 
 namespace acanthus {
