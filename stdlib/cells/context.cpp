@@ -82,10 +82,10 @@ using detail::axis_rect;
 
 namespace {
 
-// A brick cut off by a jamb a few millimetres off a whole number of quarter bricks: laid whole,
-// a half joint from the reveal. Shorter, it reaches into that half joint (the brick's face may
-// be the reveal); longer, its head joint opens by the difference. That head joint never closes:
-// moved, it could come within a quarter brick of the joint above or below.
+// A brick cut off by a jamb a few millimetres off a whole number of quarter bricks: laid whole.
+// Shorter than its space, it reaches into the reveal's half joint (the brick's face may be the
+// reveal); longer, its head joint opens by the difference. That head joint never closes (past
+// the tolerance, or within a quarter brick of the joint above or below).
 double nominal_width(Rect r, const Options& o) {
     const double q = (o.brick_length + o.mortar) / 4;
     const double m = std::round(r.width() / q);
@@ -115,7 +115,14 @@ Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o) {
         r.y1 < drawn.y1 - eps ||
         std::abs(r.height() - (drawn.height() + o.mortar)) > o.joint_tolerance + eps)
         return {0, 0, 0, 0};
-    // Against the jamb: the side the face cut off.
+    // Short of its space, the brick keeps its uncut end where a whole brick's is (its head
+    // joint as laid) and reaches into the reveal's half joint, never past the reveal; longer,
+    // it stands a half joint off the reveal and the head joint opens, by a quarter joint at most.
+    if (short_by > 0)
+        return left ? Rect{std::max(r.x0, drawn.x1 - w), drawn.y0, std::max(r.x0, drawn.x1 - w) + w,
+                           drawn.y1}
+                    : Rect{std::min(r.x1, drawn.x0 + w) - w, drawn.y0, std::min(r.x1, drawn.x0 + w),
+                           drawn.y1};
     return left ? Rect{r.x0 + h, drawn.y0, r.x0 + h + w, drawn.y1}
                 : Rect{r.x1 - h - w, drawn.y0, r.x1 - h, drawn.y1};
 }
@@ -212,11 +219,15 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
         } else if (axis_rect(piece, r)) {
             // A cut piece keeps its course's beds: where the joints took up a course's
             // difference, whole bricks are drawn at nominal height and so are the cut ones.
+            // One bounded by joints at both ends (cut only in height, or not at all) is drawn
+            // at the brick's nominal length too.
             Rect claimed, d{r.x0 + h, r.y0 + h, r.x1 - h, r.y1 - h};
             if (drawn && axis_rect(claim, claimed)) {
                 const double eps = 1e-9 * std::max(1.0, std::abs(r.x1) + std::abs(r.y1));
                 if (std::abs(r.y0 - claimed.y0) <= eps) d.y0 = drawn->y0;
                 if (std::abs(r.y1 - claimed.y1) <= eps) d.y1 = drawn->y1;
+                if (std::abs(r.x0 - claimed.x0) <= eps && std::abs(r.x1 - claimed.x1) <= eps)
+                    d.x0 = drawn->x0, d.x1 = drawn->x1;
             }
             if (d.width() > 0 && d.height() > 0) drawn_cells.push_back(detail::polygon_of(d));
         } else {
