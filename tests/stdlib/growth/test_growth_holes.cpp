@@ -142,8 +142,8 @@ std::vector<ReferenceElement> jittered_honeycomb(std::uint64_t seed, double widt
 
 // The crowding rule: in a jittered honeycomb neither the front nor a restart puts a motif in a
 // hexagon's own hole, so no motif well inside the panel has more neighbours within 1.2 NN than
-// the fullest interior reference ring (3 here). Without the rule growth put such motifs in the
-// heart, and its NN median fell 6% short.
+// the fullest interior reference ring (3 here). Without the rule growth put 7 to 15 such motifs
+// in the heart, and its NN median fell to 0.955 of the reference's (0.989 to 1.003 with it).
 TEST(GrowthHoles, NothingInAJitteredLatticesOwnHoles) {
     namespace gd = acanthus::growth::detail;
     const Region panel =
