@@ -223,6 +223,21 @@ ReferenceProfile::ReferenceProfile(const ReferenceData& reference) : checker(ref
     std::vector<double> copied;
     for (int c : reference.candidates) copied.push_back(nn[static_cast<std::size_t>(c)]);
     if (!copied.empty() && spacing > 0) copied_nn_median = median(copied) / spacing;
+    // Inner: two rings in from the reference's edge, like the inner motifs from the panel's.
+    const Neighbours within(ref.points, checker.interior_clearance());
+    std::vector<double> inner;
+    for (int c : reference.candidates) {
+        bool far = true;
+        for (std::size_t j : within.of(static_cast<std::size_t>(c)))
+            far = far && !reference.connectivity.boundary[j];
+        if (far) inner.push_back(nn[static_cast<std::size_t>(c)]);
+    }
+    inner_nn_median = !inner.empty() && spacing > 0 ? median(inner) / spacing : copied_nn_median;
+    // The crowding rule's limit: the fullest interior ring within the checker's reach.
+    Neighbours near(ref.points, checker.reach());
+    for (int c : reference.candidates)
+        most_neighbours = std::max(most_neighbours,
+                                   static_cast<int>(near.of(static_cast<std::size_t>(c)).size()));
     symbol_mix = mix(ref);
     same_symbol_share = same_share(ref, checker.reach());
 }
@@ -254,6 +269,12 @@ Fidelity measure_fidelity(const ReferenceData& reference, const std::vector<Moti
     f.spacing = spacing;
     f.nn_median = got.points.size() > 1 ? median(got_nn) / spacing : 0.0;
     f.reference_nn_median = profile.copied_nn_median;
+    f.reference_nn_median_inner = profile.inner_nn_median;
+    std::vector<double> inner_nn;
+    for (std::size_t i = 0; i < got.points.size(); ++i)
+        if (panel.clearance(got.points[i]) >= checker.interior_clearance())
+            inner_nn.push_back(got_nn[i]);
+    f.nn_median_inner = inner_nn.empty() ? f.nn_median : median(inner_nn) / spacing;
     f.reference_nn_histogram = profile.nn_histogram;
     f.nn_histogram = got.points.size() > 1 ? histogram(got_nn, spacing, f.histogram_bin)
                                            : std::vector<double>(21, 0.0);
@@ -297,6 +318,8 @@ std::string fidelity_json(const SynthesisResult& result) {
     out["spacing"] = f.spacing;
     out["nn_median"] = f.nn_median;
     out["nn_median_reference"] = f.reference_nn_median;
+    out["nn_median_inner"] = f.nn_median_inner;
+    out["nn_median_reference_inner"] = f.reference_nn_median_inner;
     out["nn_histogram"] = Json{{"bin", f.histogram_bin},
                                {"result", f.nn_histogram},
                                {"reference", f.reference_nn_histogram}};

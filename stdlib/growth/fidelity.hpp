@@ -59,6 +59,10 @@ struct ReferenceProfile {
     std::map<std::string, double> symbol_mix;
     double same_symbol_share = 0;
     double copied_nn_median = 1;  // Fidelity::reference_nn_median
+    double inner_nn_median = 1;   // Fidelity::reference_nn_median_inner
+    // The most neighbours within the checker's reach any interior (candidate) element has: the
+    // crowding rule's limit (synthesis.hpp).
+    int most_neighbours = 0;
 };
 const ReferenceProfile& profile_of(const ReferenceData& reference);
 

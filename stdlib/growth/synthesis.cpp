@@ -106,6 +106,9 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         }
     for (double& g : gap_any_)
         if (!std::isfinite(g)) g = 0;
+    const ReferenceProfile& profile = profile_of(reference);
+    crowd_reach_ = profile.checker.reach();
+    crowd_limit_ = profile.most_neighbours;
     placed_per_symbol_.assign(symbols, 0);
     reference_share_.assign(reference.symbols.size(), 0.0);
     for (int s : reference.symbol)
@@ -344,7 +347,7 @@ bool Synthesis::restart(const Hole& hole) {
                 if (d >= best || d > hole.radius || pattern_.nearest(q, 0.9 * spacing_, -1) >= 0 ||
                     !panel_.contains(q) || !panel_.reaches(o.position, q) ||
                     !motif_fits(-1, q, r) || pattern_.crosses(o.position, q, other, -1) ||
-                    (pass == 0 && !fits(q, wanted)))
+                    crowded(-1, q) || (pass == 0 && !fits(q, wanted)))
                     continue;
                 best = d;
                 at = q;
@@ -523,6 +526,25 @@ int Synthesis::too_close(int id, Point at, int symbol, bool placed_only) const {
     return best;
 }
 
+bool Synthesis::crowded(int id, Point at) const {
+    if (on_lattice() || crowd_limit_ <= 0) return false;
+    auto placed_near = [&](Point p, int self) {
+        std::vector<int> out;
+        for (int other : pattern_.near(p, crowd_reach_))
+            if (other != id && other != self && pattern_[other].placed() &&
+                distance(pattern_[other].position, p) < crowd_reach_)
+                out.push_back(other);
+        return out;
+    };
+    const std::vector<int> around = placed_near(at, -1);
+    if (static_cast<int>(around.size()) > crowd_limit_) return true;
+    for (int other : around)
+        if (static_cast<int>(placed_near(pattern_[other].position, other).size()) + 1 >
+            crowd_limit_)
+            return true;
+    return false;
+}
+
 void Synthesis::grow(int id) {
     const std::vector<int>* candidates = &candidates_;
     if (on_lattice()) {
@@ -577,7 +599,8 @@ void Synthesis::grow(int id) {
     if (!motif_fits(id, pattern_[id].position, radius)) return drop(id);
     // Fronts meeting (and relaxation) can bring a seed closer to a motif than the reference
     // ever has those symbols: the reference's own closest spacing holds.
-    if (too_close(id, pattern_[id].position, reference_.symbol[choice.element], true) >= 0)
+    if (too_close(id, pattern_[id].position, reference_.symbol[choice.element], true) >= 0 ||
+        crowded(id, pattern_[id].position))
         return drop(id);
 
     Node& n = pattern_[id];
@@ -614,9 +637,10 @@ void Synthesis::grow(int id) {
 
 bool Synthesis::still_valid(int id) const {
     const Node& n = pattern_[id];
-    return n.placed() ? motif_fits(id, n.position, n.radius) &&
-                            too_close(id, n.position, n.symbol, true) < 0
-                      : panel_.contains(n.position);
+    return n.placed()
+               ? motif_fits(id, n.position, n.radius) &&
+                     too_close(id, n.position, n.symbol, true) < 0 && !crowded(id, n.position)
+               : panel_.contains(n.position);
 }
 
 void Synthesis::relax_around(int centre) {

@@ -103,6 +103,11 @@ class Synthesis {
     // `placed_only`) that a `symbol` would stand closer to than the reference ever puts those
     // two symbols (gap_), or -1.
     int too_close(int id, Point at, int symbol, bool placed_only) const;
+    // Off a lattice, the crowding rule: a motif at `at` (node `id`, or -1) would give itself or a
+    // placed neighbour more motifs within crowd_reach_ than any interior reference element has
+    // (a near-regular reference's own holes, which the spacing rule alone lets fill). Relaxation
+    // moves that would crowd are undone too.
+    bool crowded(int id, Point at) const;
     // Section 5.4: new seeds from the chosen ring, merged, dropped or extended by the heuristics.
     void spawn(int centre, const Choice& choice, const std::vector<int>& target_nodes);
     void link_ring_pair(int centre, int a, int b, double original, Vector desired);
@@ -148,6 +153,8 @@ class Synthesis {
     // seeds without one). Irregular growth keeps the reference's own closest spacing.
     std::vector<double> gap_, gap_any_;
     double gap_max_ = 0;
+    double crowd_reach_ = 0;  // 1.2 NN (RingChecker::reach)
+    int crowd_limit_ = 0;     // ReferenceProfile::most_neighbours; 0: no rule
     std::vector<std::vector<OuterEntry>> outer_rings_;  // per reference element (two_ring only)
     // Candidate pruning (mode none or flow, 1-ring): every (candidate, ring slot) by the slot's
     // offset on a grid, so that a seed evaluates only the alignments whose first pair is close

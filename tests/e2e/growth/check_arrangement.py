@@ -287,6 +287,9 @@ def case_metrics():
         check(abs(g["spacing"] - want) <= 1e-9 * want,
               f"{name}: spacing {g['spacing']:.4f} is the reference's NN median {want:.4f}")
         check(abs(g["nn_median"] - 1) <= 0.05, f"{name}: NN median {g['nn_median']:.3f} NN (within 5%)")
+        check(abs(g["nn_median_inner"] / g["nn_median_reference_inner"] - 1) <= 0.05,
+              f"{name}: inner NN median {g['nn_median_inner']:.3f} NN, the inner reference "
+              f"elements' {g['nn_median_reference_inner']:.3f} (within 5%)")
         h = g["nn_histogram"]
         check(len(h["result"]) == len(h["reference"]) == 21 and
               abs(sum(h["result"]) - 1) < 1e-9 and abs(sum(h["reference"]) - 1) < 1e-9,
@@ -391,13 +394,14 @@ def dart_reference(path, seed, share_a, width, height, gap, size_a, size_b, jitt
     path.write_text(json.dumps({"elements": elements}))
 
 
-def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015):
+def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015, nn_inner=None):
     """Each reference in each of its panels, `seeds` seeds: the symbol mix within `mix_allowed`
     of the reference on every run, the same-symbol neighbour share within 3 points on every run,
     the largest empty circle at most 1.5 NN, the NN median within `nn_mean` of the reference's
     (its interior elements', like for like) on average and `nn_each` on every run, and its mean
-    over all the runs within `nn_bias` (no bias of the growth as a whole)."""
-    every = []
+    over all the runs within `nn_bias` (no bias of the growth as a whole). With `nn_inner`, also
+    the inner motifs' NN median within it of the inner reference elements' on every run."""
+    every, inner_every = [], []
     for ref, ref_panels in refs:
         for panel in ref_panels:
             worst, holes, nns, sames = 0.0, 0.0, [], []
@@ -414,6 +418,10 @@ def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015):
                                        for v in g["symbols"].values()))
                 holes = max(holes, g["largest_hole"])
                 nns.append(g["nn_median"] / g["nn_median_reference"])
+                inner_every.append(g["nn_median_inner"] / g["nn_median_reference_inner"])
+                print(f"   {ref.name} in {pathlib.Path(panel).name} seed {seed}: "
+                      f"{g['motifs']} motifs, NN median all {nns[-1]:.3f}, "
+                      f"inner {inner_every[-1]:.3f}")
                 same = g["same_symbol_neighbours"]
                 sames.append(same["result"] - same["reference"])
             name = f"{ref.name} in {pathlib.Path(panel).name}"
@@ -429,6 +437,14 @@ def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015):
             check(all(abs(v) <= 0.03 for v in sames),
                   f"mix: {name}: same-symbol neighbour share {100 * min(sames):+.1f} to "
                   f"{100 * max(sames):+.1f} points off per run (3 allowed)")
+    within = sum(abs(v - 1) <= 0.05 for v in every)
+    print(f"   NN median within 5%: {within} of {len(every)} runs (all motifs), "
+          f"{sum(abs(v - 1) <= 0.05 for v in inner_every)} (inner); worst "
+          f"{max(abs(v - 1) for v in every):.3f}, inner {max(abs(v - 1) for v in inner_every):.3f}")
+    if nn_inner is not None:
+        check(all(abs(v - 1) <= nn_inner for v in inner_every),
+              f"mix: inner NN median {min(inner_every):.3f} to {max(inner_every):.3f} of the "
+              f"inner reference's per run ({100 * nn_inner:.0f}% allowed)")
     bias = sum(every) / len(every)
     check(abs(bias - 1) <= nn_bias, f"mix: NN median {bias:.4f} of the reference's on average "
           f"over all {len(every)} runs ({100 * nn_bias:.1f}% allowed)")
@@ -501,9 +517,9 @@ def case_unseen_more():
     (none of the code was tuned on them): Poisson-disc sets of spacing 6.5 to 13 (one with three
     symbols), a triangular lattice jittered by 0.1 of its spacing and a honeycomb jittered by 0.05
     of its edge, each in the rectangle, the heart, the arch with a window and the narrow neck, 3
-    seeds: grow_unseen's checks, the NN median within 5% on average and 6.5% on every run (3 of
-    the 72 runs are 6.1% off, all in the heart: two of the 13-spacing set with 52 motifs and one
-    of the jittered honeycomb, docs/stdlib/growth.md)."""
+    seeds: grow_unseen's checks, the NN median within 5% on average and 6.5% on every run (2 of
+    the 72 runs are 6.1% off, both in the heart, of the 13-spacing set with 52 motifs; the jittered
+    honeycomb's 0.939 there is 0.986 since the crowding rule, docs/stdlib/growth.md)."""
     refs = []
     for seed, share, w, h, gap, sa, sb, jitter, shares in (
             (201, 0.4, 95, 85, 8.5, 3.0, 2.5, None, None),
@@ -518,6 +534,31 @@ def case_unseen_more():
     panels = ["rect:200,150", str(PANELS / "heart.svg"), str(PANELS / "arch-window.svg"),
               str(PANELS / "narrow-neck.svg")]
     grow_unseen([(ref, panels) for ref in refs], 3, 0.05, 0.065)
+
+
+def case_unseen_fresh():
+    """References made after the crowding rule and the inner NN medians (none of the code was
+    tuned on them): Poisson-disc sets of spacing 6, 9 and 14, a three-symbol set of spacing 8,
+    triangular lattices jittered by 0.08 and 0.15 of their spacing and a honeycomb jittered by
+    0.06 of its edge, each in the heart, the arch with a window, the narrow neck, the shield and
+    the circle, 3 seeds: grow_unseen's checks with the NN bounds measured (docs/stdlib/growth.md,
+    Limitations), all motifs against the copied reference elements and inner against inner."""
+    refs = []
+    for seed, share, w, h, gap, sa, sb, jitter, shares in (
+            (301, 0.45, 100, 85, 9, 3.0, 3.5, None, None),
+            (302, 0.25, 130, 110, 14, 5.0, 4.5, None, None),
+            (303, 0.6, 70, 60, 6, 2.0, 2.4, None, None),
+            (304, 0.5, 90, 80, 9, 3.0, 3.0, 0.08, None),
+            (305, 0.35, 90, 80, 8.5, 2.8, 2.8, ("honeycomb", 0.06), None),
+            (306, 0.0, 95, 85, 8, 2.5, 3.0, None, (0.45, 0.35, 0.2)),
+            (307, 0.4, 90, 80, 10, 3.2, 3.0, 0.15, None)):
+        path = WORK / f"fresh-{seed}.json"
+        dart_reference(path, seed, share, w, h, gap, sa, sb, jitter, shares)
+        refs.append(path)
+    panels = [str(PANELS / p) for p in ("heart.svg", "arch-window.svg", "narrow-neck.svg",
+                                        "shield.svg", "circle.svg")]
+    grow_unseen([(ref, panels) for ref in refs], 3, 0.05, 0.09,
+                mix_allowed=0.05, nn_inner=0.10)
 
 
 def case_gap_factor():

@@ -39,6 +39,20 @@ std::vector<Motif> as_motifs(const std::vector<ReferenceElement>& elements) {
     return out;
 }
 
+// The box of the motifs' centres, one unit wider on every side.
+Region box_around(const std::vector<Motif>& motifs) {
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    for (const Motif& m : motifs) {
+        x0 = std::min(x0, m.position.x), x1 = std::max(x1, m.position.x);
+        y0 = std::min(y0, m.position.y), y1 = std::max(y1, m.position.y);
+    }
+    return Region::from_svg_string("<svg xmlns='http://www.w3.org/2000/svg'><rect x='" +
+                                       std::to_string(x0 - 1) + "' y='" + std::to_string(y0 - 1) +
+                                       "' width='" + std::to_string(x1 - x0 + 2) + "' height='" +
+                                       std::to_string(y1 - y0 + 2) + "'/></svg>",
+                                   "patch box");
+}
+
 Fidelity grow(const Reference& ref, std::uint64_t seed, const Options& options = {}) {
     Region region = Region::from_spec("rect:240,180");
     SynthesisResult r = synthesize(ref, region, options, {}, seed);
@@ -70,23 +84,15 @@ TEST(GrowthFidelity, CheckerFindsMovedAndSwappedMotifsOnly) {
         std::vector<Motif> patch =
             as_motifs(growth_lattices::lattice(kind, 24, 10, -1, Point{60, 60}));
         // The panel is the patch's box, so that its edge motifs are not interior.
-        double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-        for (const Motif& m : patch) {
-            x0 = std::min(x0, m.position.x), x1 = std::max(x1, m.position.x);
-            y0 = std::min(y0, m.position.y), y1 = std::max(y1, m.position.y);
-        }
-        Region region = Region::from_svg_string(
-            "<svg xmlns='http://www.w3.org/2000/svg'><rect x='" + std::to_string(x0 - 1) +
-                "' y='" + std::to_string(y0 - 1) + "' width='" + std::to_string(x1 - x0 + 2) +
-                "' height='" + std::to_string(y1 - y0 + 2) + "'/></svg>",
-            "patch box");
+        Region region = box_around(patch);
         Fidelity clean = measure(ref, patch, region);
         EXPECT_GT(clean.interior, 250) << growth_lattices::name(kind);
         EXPECT_EQ(clean.defects, 0) << growth_lattices::name(kind);
         // The motif nearest the middle.
         std::size_t middle = 0;
         for (std::size_t i = 0; i < patch.size(); ++i)
-            if (distance(patch[i].position, {180, 170}) < distance(patch[middle].position, {180, 170}))
+            if (distance(patch[i].position, {180, 170}) <
+                distance(patch[middle].position, {180, 170}))
                 middle = i;
         std::vector<Motif> moved = patch;
         moved[middle].position += Vector{2.0, 0.0};
@@ -99,6 +105,41 @@ TEST(GrowthFidelity, CheckerFindsMovedAndSwappedMotifsOnly) {
             EXPECT_GE(measure(ref, swapped, region).defects, 4) << growth_lattices::name(kind);
         }
     }
+}
+
+// The NN median three ways: a square patch whose edge motifs (within 1.5 NN of the panel's edge)
+// each have a companion 0.6 NN further out. Over all motifs the median falls to 0.6 NN; the inner
+// motifs' stays the reference's 1, as does the inner reference elements'.
+TEST(GrowthFidelity, InnerNNMediansLeaveTheEdgesOut) {
+    Reference ref = lattice(Kind::square, -1);
+    std::vector<Motif> patch =
+        as_motifs(growth_lattices::lattice(Kind::square, 12, 10, -1, Point{60, 60}));
+    Region region = box_around(patch);
+    const Rect box = region.bounds();
+    const Point middle{(box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2};
+    std::vector<Motif> crowded = patch;
+    long edge = 0;
+    for (const Motif& m : patch) {
+        if (region.distance_to_boundary(m.position) >= 15) continue;
+        ++edge;
+        Motif companion = m;
+        companion.position += (m.position - middle).normalized() * 6.0;
+        crowded.push_back(companion);
+    }
+    Fidelity f = measure(ref, crowded, region);
+    std::printf(
+        "%ld edge motifs doubled: NN median %.3f all, %.3f inner; reference %.3f, inner "
+        "%.3f\n",
+        edge, f.nn_median, f.nn_median_inner, f.reference_nn_median, f.reference_nn_median_inner);
+    EXPECT_GT(edge, 60);
+    EXPECT_LT(f.nn_median, 0.7);
+    EXPECT_NEAR(f.nn_median_inner, 1.0, 1e-9);
+    EXPECT_NEAR(f.reference_nn_median, 1.0, 1e-9);
+    EXPECT_NEAR(f.reference_nn_median_inner, 1.0, 1e-9);
+    // Without edge effects the three ways agree.
+    Fidelity plain = measure(ref, patch, region);
+    EXPECT_NEAR(plain.nn_median, 1.0, 1e-9);
+    EXPECT_NEAR(plain.nn_median_inner, 1.0, 1e-9);
 }
 
 // Labels shared by symbol ("0", "1", "2") were the sub-id term once, and collapsed every lattice

@@ -116,6 +116,65 @@ TEST(GrowthHoles, NoMotifInAHoneycombsOwnHoles) {
     }
 }
 
+// A honeycomb of edge `a` over about width x height, each point moved by up to jitter x a in x and
+// y (a fixed generator), symbol b with probability 0.3: near-regular, so not grown as a lattice.
+std::vector<ReferenceElement> jittered_honeycomb(std::uint64_t seed, double width, double height,
+                                                 double a, double jitter) {
+    std::uint64_t state = seed;
+    auto next = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(state >> 11) * 0x1.0p-53;
+    };
+    const double h = std::sqrt(3.0) * a;
+    std::vector<ReferenceElement> out;
+    for (int row = 0; row * 1.5 * a <= height; ++row)
+        for (int col = 0; col * h <= width; ++col)
+            for (double dy : {0.0, a}) {
+                ReferenceElement e;
+                e.position = {col * h + (row % 2) * h / 2 + (2 * next() - 1) * jitter * a,
+                              row * 1.5 * a + dy + (2 * next() - 1) * jitter * a};
+                e.symbol = next() < 0.3 ? "b" : "a";
+                e.size = 2.5;
+                out.push_back(e);
+            }
+    return out;
+}
+
+// The crowding rule: in a jittered honeycomb neither the front nor a restart puts a motif in a
+// hexagon's own hole, so no motif well inside the panel has more neighbours within 1.2 NN than
+// the fullest interior reference ring (3 here). Without the rule growth put 7 to 15 such motifs
+// in the heart, and its NN median fell to 0.955 of the reference's (0.989 to 1.003 with it).
+TEST(GrowthHoles, NothingInAJitteredLatticesOwnHoles) {
+    namespace gd = acanthus::growth::detail;
+    const Region panel =
+        Region::from_svg_file(std::string(ACANTHUS_SOURCE_DIR) + "/examples/panels/heart.svg");
+    Reference reference = Reference::from_elements(jittered_honeycomb(3, 90, 80, 8, 0.05));
+    const gd::ReferenceProfile& profile = gd::profile_of(reference.data());
+    const double reach = profile.checker.reach();
+    const double inside = profile.checker.interior_clearance();
+    EXPECT_EQ(profile.most_neighbours, 3);
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+        SynthesisResult r = synthesize(reference, panel, Options{}, {}, seed);
+        int interior = 0, crowded_motifs = 0;
+        for (const Motif& m : r.motifs) {
+            if (panel.distance_to_boundary(m.position) < inside) continue;
+            ++interior;
+            int close = 0;
+            for (const Motif& o : r.motifs)
+                close += &o != &m && distance(o.position, m.position) < reach;
+            crowded_motifs += close > profile.most_neighbours;
+        }
+        std::printf(
+            "jittered honeycomb in the heart, seed %d: %zu motifs, %d interior, %d of "
+            "them crowded; NN median %.3f of the reference's %.3f\n",
+            static_cast<int>(seed), r.motifs.size(), interior, crowded_motifs, r.fidelity.nn_median,
+            r.fidelity.reference_nn_median);
+        EXPECT_GT(interior, 50);
+        EXPECT_EQ(crowded_motifs, 0) << "seed " << seed;
+        EXPECT_NEAR(r.fidelity.nn_median / r.fidelity.reference_nn_median, 1.0, 0.05);
+    }
+}
+
 // Each lattice kind's own holes, as the restart threshold measures them (own_holes.hpp): a
 // triangular lattice's 0.58 NN, a square grid's 0.71, a honeycomb's hexagons 1. The threshold is
 // at least one spacing and a twentieth above a honeycomb's hexagons, so that none is restarted in.
@@ -146,7 +205,7 @@ TEST(GrowthHoles, EachLatticeKindsOwnHoles) {
 }
 
 // A Poisson-disc set (dart throwing, a fixed generator) has gaps of up to about 1 NN itself; the
-// fill restarts in any wider one (the threshold 1.01 to 1.02 NN here), so no hole over 1.05 NN is
+// fill restarts in any wider one (the threshold 1.01 to 1.02 NN here), so no hole over 1.07 NN is
 // left (with a fixed 1.1 NN, holes of 1.06 to 1.10 NN stayed open).
 std::vector<ReferenceElement> poisson_set(std::uint64_t seed, double width, double height,
                                           double gap) {
@@ -192,7 +251,8 @@ TEST(GrowthHoles, APoissonSetsFillClosesItsWiderGaps) {
                 static_cast<int>(set), static_cast<int>(seed), restart, before.motifs.size(),
                 after.motifs.size(), after.stats.restarts, hole, after.fidelity.nn_median);
             EXPECT_GE(after.motifs.size(), before.motifs.size());
-            EXPECT_LE(hole, 1.05);
+            // The crowding rule leaves a Poisson fill a little looser: 1.064 NN at worst.
+            EXPECT_LE(hole, 1.07);
         }
     }
 }

@@ -218,6 +218,12 @@ struct Fidelity {
     // The NN median of the reference elements growth copies (its interior ones, whose rings are
     // whole) / spacing: what nn_median is compared with, like for like.
     double reference_nn_median = 1;
+    // The same away from edges, where an NN is measured from one side only: the NN median of the
+    // motifs at least 1.5 NN inside the panel (nn_median when there are none), and of the
+    // reference's interior elements at least 1.5 NN from its boundary elements
+    // (reference_nn_median when there are none), both / spacing.
+    double nn_median_inner = 0;
+    double reference_nn_median_inner = 1;
     double histogram_bin = 0.1;  // NN histograms: shares per bin of this width from 0, the last
     std::vector<double> nn_histogram, reference_nn_histogram;  // bin holding everything beyond
     std::map<std::string, double> symbol_mix, reference_symbol_mix;  // share per symbol
