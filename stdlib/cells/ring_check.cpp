@@ -205,8 +205,8 @@ RingPlan plan_rings(const Facade& f, const Options& o, double depth) {
             it.shape = ring_shape(f, o, it.arcs, half);
         }
     std::pair<std::size_t, std::size_t> first{items.size(), items.size()};
-    // A lintel's bearing is shortened where a half-brick ring still meets it (lintel.cpp); two
-    // rings that still meet refuse the facade.
+    // Two rings that still meet refuse the facade (a ring and a lintel that still meet are
+    // laid as they come: the lintel's shape here is the most it may take, not what it takes).
     each_meeting([&](std::size_t i, std::size_t j) {
         if (items[i].key >= 0 && items[j].key >= 0) first = std::min(first, std::pair{i, j});
     });
