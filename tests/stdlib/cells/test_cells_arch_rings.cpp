@@ -74,28 +74,27 @@ TEST(CellsArchRings, PolygonsMeetOnlyWhereTheyShareArea) {
     EXPECT_TRUE(detail::polygons_meet(c, {{3, 10}, {20, 10}, {20, 20}, {3, 20}}));
 }
 
-TEST(CellsArchRings, RingsApartKeepTheirDepth) {
-    const Facade f = two_arches(60);
+// Both rings of two_arches() planned `depth` deep, neither refused.
+void expect_both(const Facade& f, double depth) {
     const detail::RingPlan p = detail::plan_rings(f, centimetres(), 22.5);
-    EXPECT_DOUBLE_EQ(planned(f, p, "a"), 22.5);
-    EXPECT_DOUBLE_EQ(planned(f, p, "b"), 22.5);
+    EXPECT_DOUBLE_EQ(planned(f, p, "a"), depth);
+    EXPECT_DOUBLE_EQ(planned(f, p, "b"), depth);
     EXPECT_TRUE(p.clash_a.empty());
 }
+
+TEST(CellsArchRings, RingsApartKeepTheirDepth) { expect_both(two_arches(60), 22.5); }
 
 // 30 cm apart: brick-deep rings would overlap by 15 cm at the springing; half-brick ones leave
 // 7.5 cm of walling between them.
 TEST(CellsArchRings, RingsThatWouldMeetAreHalfBrickRings) {
     const Facade f = two_arches(30);
-    const detail::RingPlan p = detail::plan_rings(f, centimetres(), 22.5);
-    EXPECT_DOUBLE_EQ(planned(f, p, "a"), 11.25);
-    EXPECT_DOUBLE_EQ(planned(f, p, "b"), 11.25);
-    EXPECT_TRUE(p.clash_a.empty());
+    expect_both(f, 11.25);
     Options o = centimetres();
     for (const auto& [name, tree] : mason_trees()) {
         const Texture t = texture(f, tree, o, 1);
         SCOPED_TRACE(name);
-        EXPECT_NEAR(ring_reach(f, t.cells, "a"), 11.25 - o.mortar / 2,
-                    0.01);  // cells inside the joints
+        // The cells lie inside the joints.
+        EXPECT_NEAR(ring_reach(f, t.cells, "a"), 11.25 - o.mortar / 2, 0.01);
         EXPECT_NEAR(ring_reach(f, t.cells, "b"), 11.25 - o.mortar / 2, 0.01);
         EXPECT_EQ(mason_check(f, t.cells, kCm).voussoirs_clipped, 0);
     }
