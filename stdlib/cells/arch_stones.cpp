@@ -8,6 +8,7 @@
 
 #include "brick_layout.hpp"
 #include "context_data.hpp"
+#include "ring_check.hpp"
 #include "voussoirs.hpp"
 
 namespace acanthus::cells {
@@ -50,7 +51,8 @@ bool in_face(const Face& face, Point p) {
     return in;
 }
 
-// The straight plumb jamb a segmental arc springs from at its end `corner`, if any.
+}  // namespace
+
 const Edge* plumb_jamb(const Facade& f, const Edge& arc, int corner) {
     if (corner < 0) return nullptr;
     const Corner& k = f.corners()[static_cast<std::size_t>(corner)];
@@ -63,6 +65,8 @@ const Edge* plumb_jamb(const Facade& f, const Edge& arc, int corner) {
     }
     return nullptr;
 }
+
+namespace {
 
 // A circle the reader split into arcs with no corner between them (their centres a rounding
 // error apart): the arcs of that one ring, in edge order; else just `edge`.
@@ -117,9 +121,6 @@ bool ring_fits(const Facade& f, const Edge& edge, double depth) {
     return true;
 }
 
-namespace {
-
-// The arcs of one arch: `e` and the arcs it meets at an angle (a pointed arch's two halves).
 std::vector<const Edge*> arch_arcs(const Facade& f, const Edge& e) {
     std::vector<const Edge*> out = ring_of(f, e);
     for (std::size_t i = 0; i < out.size(); ++i)
@@ -134,8 +135,6 @@ std::vector<const Edge*> arch_arcs(const Facade& f, const Edge& e) {
         }
     return out;
 }
-
-}  // namespace
 
 double ring_depth(const Facade& f, const Edge& e, const Options& o, double depth) {
     const std::vector<const Edge*> arcs = arch_arcs(f, e);
@@ -318,17 +317,29 @@ void place_skewback(const Corner& k, Context& c, double depth, double bed) {
 
 namespace {
 
+// The depth the ring of arc `e` is laid at: by the wall, and half a brick where it would meet
+// another ring or a lintel (plan_rings, made once per depth).
+double planned_depth(Context& c, const Edge& e, double depth) {
+    const detail::RingPlan& plan = c.data().layout<detail::RingPlan>(
+        "arch:rings:" + std::to_string(depth),
+        [&] { return detail::plan_rings(c.facade(), c.options(), depth); });
+    auto it = plan.depth.find(detail::arch_key(c.facade(), e));
+    return it != plan.depth.end() ? it->second
+                                  : detail::ring_depth(c.facade(), e, c.options(), depth);
+}
+
 // A corner on an arc: the keystone or skewback there, then the whole ring of each arc edge at
 // it, recorded against that edge (the checker and add_cells see voussoirs on their arc).
 void set_out_from(const FeatureRef& f, Context& c, double width, double depth, int rows) {
     const Facade& facade = c.facade();
     const Corner& k = facade.corners()[static_cast<std::size_t>(f.index)];
-    // A ring that would reach past the wall (a springing near its end) is turned in one
-    // half-brick ring; check() refuses an arch where not even that fits.
+    // A ring that would reach past the wall (a springing near its end) or meet another ring or
+    // a lintel is turned in one half-brick ring; check_limits() refuses an arch where not even
+    // that fits.
     for (int e : {k.edge_in, k.edge_out}) {
         if (e < 0 || !facade.edges()[static_cast<std::size_t>(e)].arc) continue;
-        const double d = detail::ring_depth(facade, facade.edges()[static_cast<std::size_t>(e)],
-                                            c.options(), depth * rows);
+        const double d =
+            planned_depth(c, facade.edges()[static_cast<std::size_t>(e)], depth * rows);
         if (d > 0 && d < depth * rows) depth = d, rows = 1;
     }
     auto& keyed = c.data().layout<std::set<int>>("arch:keystones", [] { return std::set<int>{}; });
@@ -375,7 +386,7 @@ Generator arch_stones() {
         }
         if (f.kind != FeatureKind::edge) return;
         const Edge& e = c.facade().edges()[static_cast<std::size_t>(f.index)];
-        const double fit = detail::ring_depth(c.facade(), e, o, depth * rows);
+        const double fit = planned_depth(c, e, depth * rows);
         if (fit > 0 && fit < depth * rows)
             detail::place_voussoirs(e, c, width, fit, 1);
         else
@@ -394,7 +405,7 @@ Generator arch_bricks() {
         }
         if (f.kind != FeatureKind::edge) return;
         const Edge& e = c.facade().edges()[static_cast<std::size_t>(f.index)];
-        const double fit = detail::ring_depth(c.facade(), e, o, depth);
+        const double fit = planned_depth(c, e, depth);
         detail::place_voussoirs(e, c, width, fit > 0 ? fit : depth, 1);
     };
 }

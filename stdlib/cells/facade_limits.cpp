@@ -10,7 +10,7 @@
 #include <string>
 
 #include "facade_data.hpp"
-#include "voussoirs.hpp"
+#include "ring_check.hpp"
 
 namespace acanthus::cells::detail {
 
@@ -100,8 +100,11 @@ void check_limits(const Facade& facade, const Options& o) {
     // half-brick ring fits (an arched opening at the wall's very end), the opening is refused.
     const double ring =
         (o.arch_depth > 0 ? o.arch_depth : o.brick_length + o.mortar) * std::max(1, o.arch_rows);
+    const RingPlan rings = plan_rings(facade, o, ring);
     for (const Edge& e : facade.edges()) {
-        if (!e.arc || !e.opening || ring_depth(facade, e, o, ring) > 0) continue;
+        if (!e.arc || !e.opening) continue;
+        auto it = rings.depth.find(arch_key(facade, e));
+        if (it == rings.depth.end() || it->second > 0) continue;
         std::string names;
         for (const std::string& l : e.labels) names += (names.empty() ? "" : " ") + l;
         throw InputError(facade.name() + ": the opening \"" + names +
@@ -112,6 +115,14 @@ void check_limits(const Facade& facade, const Options& o) {
                          "opening further from the wall's end or the other opening, or give it a "
                          "flat head");
     }
+    // Two rings that meet even as half-brick rings: one would cut the other's stones.
+    if (!rings.clash_a.empty())
+        throw InputError(facade.name() + ": the openings \"" + rings.clash_a + "\" and \"" +
+                         rings.clash_b +
+                         "\" are too close: the rings of their arches would meet even as "
+                         "half-brick rings (" +
+                         number((o.brick_length + o.mortar) / 2) +
+                         " deep); move them apart or give one a flat head");
     const double course = o.brick_height + o.mortar;
     for (std::size_t f = 0; f < data.faces.size(); ++f) {
         if (!thinner_than(data, static_cast<int>(f), course)) continue;

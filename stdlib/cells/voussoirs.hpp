@@ -3,6 +3,7 @@
 #pragma once
 
 #include <acanthus/stdlib/cells.hpp>
+#include <vector>
 
 namespace acanthus::cells::detail {
 
@@ -14,10 +15,16 @@ void place_keystone(const Corner& k, Context& c, double depth, double width);
 // The skewback under a ring springing from a plumb jamb at corner `k` (a segmental arch), its
 // bed at y = `bed` (SVG numbers, at or below the springing).
 void place_skewback(const Corner& k, Context& c, double depth, double bed);
+// The straight plumb jamb a segmental arc springs from at its end `corner`, if any.
+const Edge* plumb_jamb(const Facade& facade, const Edge& arc, int corner);
+// The arcs of one arch: `e` and the arcs it meets at an angle (a pointed arch's two halves), or
+// the arcs of one circle.
+std::vector<const Edge*> arch_arcs(const Facade& facade, const Edge& e);
 // Whether a ring `depth` deep round arc `edge`, with its skewbacks, lies in the wall.
 bool ring_fits(const Facade& facade, const Edge& edge, double depth);
 // The depth the ring of the arch `edge` belongs to (with a pointed arch's other half) is turned
-// in: `depth` where it fits, else a half brick (one half-brick ring) where that fits, else 0.
+// in, by the wall alone: `depth` where it fits, else a half brick (one half-brick ring) where
+// that fits, else 0. Other rings and lintels near it: plan_rings() (ring_check.hpp).
 double ring_depth(const Facade& facade, const Edge& edge, const Options& options, double depth);
 
 }  // namespace acanthus::cells::detail

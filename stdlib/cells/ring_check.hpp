@@ -1,0 +1,49 @@
+// Rings of arches that would meet (two arched openings close together, or an arch beside a
+// flat head's lintel): they are turned as half-brick rings where that clears them; two rings
+// that still meet refuse the facade, naming both openings. A voussoir cut by another ring or a
+// lintel is no voussoir.
+#pragma once
+
+#include <acanthus/stdlib/cells.hpp>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace acanthus::cells::detail {
+
+// The area a ring covers, as simple polygons (its band cut into short pieces, its skewbacks'
+// triangles, or a lintel's rectangle), with their bounding box.
+struct RingShape {
+    std::vector<std::vector<Point>> parts;
+    Rect box;
+};
+
+// The ring `depth` deep round the arcs of one arch (`arcs`: arch_arcs()), with the room its
+// skewbacks may take.
+RingShape ring_shape(const Facade& facade, const Options& options,
+                     const std::vector<const Edge*>& arcs, double depth);
+// The rectangle a lintel over straight head `head` may take on the grid (its bearing past each
+// jamb rounded out to a whole unit, the courses over the head), never smaller than it lays.
+RingShape lintel_shape(const Edge& head, const Options& options);
+
+// Whether two shapes share area: edges that cross, or one inside the other (touching passes).
+bool shapes_meet(const RingShape& a, const RingShape& b);
+bool polygons_meet(const std::vector<Point>& a, const std::vector<Point>& b);
+
+struct RingPlan {
+    // Per arch, by the lowest index of its arc edges: the depth its ring is laid at (0: none
+    // fits beside the wall's end).
+    std::map<int, double> depth;
+    // Two arched openings whose rings meet even as half-brick rings; empty when none. Named by
+    // their labels.
+    std::string clash_a, clash_b;
+};
+
+// The rings of every arched opening of `facade`, `depth` deep where they fit: an arch whose
+// ring would meet another's, or a lintel's, is turned as one half-brick ring.
+RingPlan plan_rings(const Facade& facade, const Options& options, double depth);
+
+// The key plan_rings() files the arch of arc edge `e` under.
+int arch_key(const Facade& facade, const Edge& e);
+
+}  // namespace acanthus::cells::detail
