@@ -4,6 +4,7 @@
 #include <acanthus/error.hpp>
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -143,5 +144,20 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options) 
     if (!env) throw std::logic_error("cells::texture(facade, tree, options) needs a rule body");
     return texture(facade, tree, options, env->random().next_u64());
 }
+
+namespace detail {
+
+namespace {
+std::atomic<PartialMaker> g_partial_maker{nullptr};
+}  // namespace
+
+bool set_partial_maker(PartialMaker maker) noexcept {
+    g_partial_maker.store(maker, std::memory_order_relaxed);
+    return true;
+}
+
+PartialMaker partial_maker() noexcept { return g_partial_maker.load(std::memory_order_relaxed); }
+
+}  // namespace detail
 
 }  // namespace acanthus::cells
