@@ -2,9 +2,9 @@
 // all faces.
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
+#include <acanthus/partial_maker.hpp>
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -148,15 +148,11 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options) 
 namespace detail {
 
 namespace {
-std::atomic<PartialMaker> g_partial_maker{nullptr};
+PartialMakerSlot<Cell> g_partial_maker;
 }  // namespace
 
-bool set_partial_maker(PartialMaker maker) noexcept {
-    g_partial_maker.store(maker, std::memory_order_relaxed);
-    return true;
-}
-
-PartialMaker partial_maker() noexcept { return g_partial_maker.load(std::memory_order_relaxed); }
+bool set_partial_maker(PartialMaker maker) noexcept { return g_partial_maker.set(maker); }
+PartialMaker partial_maker() noexcept { return g_partial_maker.get(); }
 
 }  // namespace detail
 

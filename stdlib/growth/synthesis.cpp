@@ -1,10 +1,10 @@
 #include "synthesis.hpp"
 
 #include <acanthus/error.hpp>
+#include <acanthus/partial_maker.hpp>
 #include <acanthus/partial_picture.hpp>
 #include <acanthus/progress.hpp>
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,13 +20,10 @@ namespace acanthus::growth::detail {
 constexpr long kFewEdges = 12;
 
 namespace {
-std::atomic<PartialMaker> g_partial_maker{nullptr};
+PartialMakerSlot<Motif> g_partial_maker;
 }  // namespace
 
-bool set_partial_maker(PartialMaker maker) noexcept {
-    g_partial_maker.store(maker, std::memory_order_relaxed);
-    return true;
-}
+bool set_partial_maker(PartialMaker maker) noexcept { return g_partial_maker.set(maker); }
 
 Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const Options& options,
                      Random& random)
@@ -608,7 +605,7 @@ void Synthesis::grow(int id) {
     report_progress("motifs", static_cast<long>(placed_.size()), options_.max_elements);
     // The motifs so far, for a partial picture while the growth goes on (the elements are made
     // only by the copy of the program that draws it).
-    if (PartialMaker make = g_partial_maker.load(std::memory_order_relaxed))
+    if (PartialMaker make = g_partial_maker.get())
         report_partial(static_cast<long>(placed_.size()),
                        [this, make](std::vector<const Element*>& out) {
                            for (const Motif& m : result().motifs) out.push_back(make(m));
