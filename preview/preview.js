@@ -160,20 +160,17 @@ async function loadPicture(revision, partial) {
   const stale = () => ticket !== page.pictureTicket || (partial && page.status.state !== "running");
   const r = await fetch(partial ? `/partial.svg?n=${partial}` : `/render.svg?revision=${revision}`);
   if (!r.ok || stale()) return;
-  // The bytes as they came, for the <img>: no text decoded and encoded again (5 MB for spiral).
-  const blob = await r.blob();
-  if (stale()) return;
-  // The viewBox from the root element's tag alone: parsing the whole document here cost as
-  // much again as the <img> decoding it (a fifth of a second for a 5 MB render).
-  const head = await blob.slice(0, 4096).text();
+  const text = await r.text();
   if (stale()) return;
   page.showingPartial = Boolean(partial);
-  const open = /<svg\b[^>]*>/.exec(head);
+  // The viewBox from the root element's tag alone: parsing the whole document here cost as
+  // much again as the <img> decoding it (a fifth of a second for a 5 MB render).
+  const open = /<svg\b[^>]*>/.exec(text.slice(0, 4096));
   const box = open && /\bviewBox\s*=\s*["']([^"']*)["']/.exec(open[0]);
   const vb = box ? box[1].trim().split(/[\s,]+/).map(Number) : [];
   const first = page.pictureUrl === null;
   if (vb.length === 4 && vb[2] > 0) page.size = { width: vb[2], height: vb[3] };
-  const url = URL.createObjectURL(blob.type === "image/svg+xml" ? blob : new Blob([blob], { type: "image/svg+xml" }));
+  const url = URL.createObjectURL(new Blob([text], { type: "image/svg+xml" }));
   const img = $("picture");
   img.onload = () => { if (page.pictureUrl) URL.revokeObjectURL(page.pictureUrl); page.pictureUrl = url;
                        document.body.dataset.picture = partial ? "partial" : "render";
