@@ -191,45 +191,57 @@ class Generator {
     void pattern() {
         const SourceFile& main = files_[model_.program.main_file];
         std::string stem = std::filesystem::path(main.path()).stem().string();
-        out_ << "\nstatic const acanthus::Pattern& acr_pattern() {\n"
-             << "    static const acanthus::Pattern pattern = [] {\n"
-             << "        acanthus::Pattern p;\n"
-             << "        p.name = " << cpp_string(stem) << ";\n"
-             << "        p.file = " << cpp_string(main.path()) << ";\n"
-             << "        p.types = {";
+        // Constant tables, turned into the Pattern by the runtime (make_pattern).
+        out_ << "\nstatic const acanthus::ElementType* const acr_types_[] = {";
         for (std::size_t i = 0; i < model_.elements.size(); ++i) {
             out_ << (i ? ", " : "") << "&acr_type_" << model_.elements[i]->name;
         }
-        out_ << "};\n"
-             << "        p.seed = &acr_type_" << model_.seed->name << ";\n";
+        out_ << "};\n";
         for (const RuleModel& r : model_.rules) {
-            out_ << "        p.rules.push_back({" << cpp_string(r.name) << ", "
-                 << static_cast<long>(r.decl->keyword.begin.line) << ", "
-                 << cpp_string(files_[r.file].path()) << ", &acr_type_" << r.parent->name << ", {";
+            if (r.children.empty()) continue;
+            out_ << "static const acanthus::ElementType* const acr_children_"
+                 << static_cast<long>(r.index) << "_[] = {";
             for (std::size_t j = 0; j < r.children.size(); ++j) {
                 out_ << (j ? ", " : "") << "&acr_type_" << r.children[j]->name;
             }
-            out_ << "}, &acr_rule_" << static_cast<long>(r.index) << "});\n";
+            out_ << "};\n";
         }
-        for (const ParamModel& p : model_.params) {
-            const std::string& n = p.decl->name.text;
-            out_ << "        p.params.push_back({" << cpp_string(n) << ", "
-                 << cpp_string(p.type.info) << ", " << cpp_string(p.decl->default_value.text)
-                 << ", " << static_cast<long>(p.decl->keyword.begin.line) << ", &acr_param_set_"
-                 << n << ", &acr_param_get_" << n << ", "
-                 << cpp_string(p.decl->range ? p.decl->range->low.text : "") << ", "
-                 << cpp_string(p.decl->range ? p.decl->range->high.text : "") << "});\n";
+        if (!model_.rules.empty()) out_ << "static const acanthus::RuleEntry acr_rules_[] = {\n";
+        for (const RuleModel& r : model_.rules) {
+            const long index = static_cast<long>(r.index);
+            out_ << "    {" << cpp_string(r.name) << ", "
+                 << static_cast<long>(r.decl->keyword.begin.line) << ", "
+                 << cpp_string(files_[r.file].path()) << ", &acr_type_" << r.parent->name << ", "
+                 << (r.children.empty() ? std::string("nullptr")
+                                        : "acr_children_" + std::to_string(index) + "_")
+                 << ", " << static_cast<long>(r.children.size()) << ", &acr_rule_" << index
+                 << "},\n";
         }
-        if (model_.exhausted) {
-            out_ << "        p.exhausted = &acr_exhausted;\n"
-                 << "        p.exhausted_line = "
-                 << static_cast<long>(model_.exhausted->keyword.begin.line) << ";\n";
-        } else {
-            out_ << "        p.exhausted = nullptr;\n"
-                 << "        p.exhausted_line = 0;\n";
+        if (!model_.rules.empty()) out_ << "};\n";
+        if (!model_.params.empty()) {
+            out_ << "static const acanthus::ParamEntry acr_params_[] = {\n";
+            for (const ParamModel& p : model_.params) {
+                const std::string& n = p.decl->name.text;
+                out_ << "    {" << cpp_string(n) << ", " << cpp_string(p.type.info) << ", "
+                     << cpp_string(p.decl->default_value.text) << ", "
+                     << static_cast<long>(p.decl->keyword.begin.line) << ", &acr_param_set_" << n
+                     << ", &acr_param_get_" << n << ", "
+                     << cpp_string(p.decl->range ? p.decl->range->low.text : "") << ", "
+                     << cpp_string(p.decl->range ? p.decl->range->high.text : "") << "},\n";
+            }
+            out_ << "};\n";
         }
-        out_ << "        return p;\n"
-             << "    }();\n"
+        out_ << "\nstatic const acanthus::Pattern& acr_pattern() {\n"
+             << "    static const acanthus::Pattern pattern = acanthus::make_pattern({"
+             << cpp_string(stem) << ", " << cpp_string(main.path()) << ", acr_types_, "
+             << static_cast<long>(model_.elements.size()) << ", &acr_type_" << model_.seed->name
+             << ", " << (model_.rules.empty() ? "nullptr" : "acr_rules_") << ", "
+             << static_cast<long>(model_.rules.size()) << ", "
+             << (model_.params.empty() ? "nullptr" : "acr_params_") << ", "
+             << static_cast<long>(model_.params.size()) << ", "
+             << (model_.exhausted ? "&acr_exhausted" : "nullptr") << ", "
+             << (model_.exhausted ? static_cast<long>(model_.exhausted->keyword.begin.line) : 0L)
+             << "});\n"
              << "    return pattern;\n"
              << "}\n";
         if (options_.emit_main) {

@@ -2,6 +2,7 @@
 // generator, and per-face layouts that generators share (a brick layout, an ashlar grid).
 #pragma once
 
+#include <acanthus/partial_picture.hpp>
 #include <acanthus/progress.hpp>
 #include <acanthus/stdlib/cells.hpp>
 #include <map>
@@ -35,6 +36,14 @@ struct ContextData {
     Cell& add_cell(int course) {
         Cell& c = cells.emplace_back();
         report_progress("cells", static_cast<long>(cells.size()), expected_cells);
+        // The cells so far (this one's polygon is not set yet) for a partial picture while the
+        // texture goes on: the elements are made only by the copy of the program that draws it.
+        if (PartialMaker make = partial_maker())
+            report_partial(static_cast<long>(cells.size()) - 1,
+                           [this, make](std::vector<const Element*>& out) {
+                               for (const Cell& done : cells)
+                                   if (done.polygon.size() >= 3) out.push_back(make(done));
+                           });
         c.generator = generator;
         c.feature = feature.kind;
         c.label = label;

@@ -64,16 +64,72 @@ Vector Edge::inward(double s) const {
     return interior_left ? t.perp() : -t.perp();
 }
 
+namespace {
+// A lower bound of the distance from p to any point Segment::at gives: the distance to the
+// segment's box (an arc's: its ends and the axis extremes it sweeps over), widened a little for
+// the rounding of at().
+double box_distance(const Segment& seg, Point p) {
+    double x0 = std::min(seg.a.x, seg.b.x), x1 = std::max(seg.a.x, seg.b.x);
+    double y0 = std::min(seg.a.y, seg.b.y), y1 = std::max(seg.a.y, seg.b.y);
+    double scale = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
+    if (seg.arc) {
+        // Not every arc's `a` and `b` are at() of its ends to the last bit: take those too.
+        Point e0 = seg.at(0), e1 = seg.at(seg.length());
+        x0 = std::min({x0, e0.x, e1.x}), x1 = std::max({x1, e0.x, e1.x});
+        y0 = std::min({y0, e0.y, e1.y}), y1 = std::max({y1, e0.y, e1.y});
+        double lo = std::min(seg.start, seg.start + seg.sweep);
+        double hi = std::max(seg.start, seg.start + seg.sweep);
+        for (double k = std::ceil(lo / (M_PI / 2)); k * (M_PI / 2) <= hi; ++k) {
+            switch (((static_cast<long>(k) % 4) + 4) % 4) {
+                case 0:
+                    x1 = std::max(x1, seg.center.x + seg.radius);
+                    break;
+                case 1:
+                    y1 = std::max(y1, seg.center.y + seg.radius);
+                    break;
+                case 2:
+                    x0 = std::min(x0, seg.center.x - seg.radius);
+                    break;
+                default:
+                    y0 = std::min(y0, seg.center.y - seg.radius);
+                    break;
+            }
+        }
+        scale = std::max(scale, std::abs(seg.center.x) + std::abs(seg.center.y) + seg.radius);
+    }
+    double margin = 1e-9 * (scale + 1);
+    double dx = std::max({x0 - p.x, p.x - x1, 0.0});
+    double dy = std::max({y0 - p.y, p.y - y1, 0.0});
+    return std::max(0.0, std::hypot(dx, dy) - margin);
+}
+}  // namespace
+
 double Edge::project(Point p) const {
+    // The nearest box's segment first; then only segments whose box is no farther than the best
+    // distance so far. The same answer as trying all: the least distance, the first segment on
+    // a tie.
+    const std::size_t n = segments.size();
+    std::size_t first = 0;
+    double first_box = 1e300;
+    if (n > 1)
+        for (std::size_t i = 0; i < n; ++i) {
+            double b = box_distance(segments[i], p);
+            if (b < first_box) first_box = b, first = i;
+        }
     double best = 0, best_d = 1e300;
-    for (std::size_t i = 0; i < segments.size(); ++i) {
+    std::size_t best_i = n;
+    auto try_segment = [&](std::size_t i) {
         double s = segments[i].project(p);
         double d = distance(segments[i].at(s), p);
-        if (d < best_d) {
+        if (d < best_d || (d == best_d && i < best_i)) {
             best_d = d;
             best = offsets[i] + s;
+            best_i = i;
         }
-    }
+    };
+    if (n > 0) try_segment(first);
+    for (std::size_t i = 0; i < n; ++i)
+        if (i != first && (n == 1 || box_distance(segments[i], p) <= best_d)) try_segment(i);
     return best;
 }
 

@@ -2,6 +2,7 @@
 // all faces.
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
+#include <acanthus/partial_maker.hpp>
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 #include <chrono>
@@ -143,5 +144,16 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options) 
     if (!env) throw std::logic_error("cells::texture(facade, tree, options) needs a rule body");
     return texture(facade, tree, options, env->random().next_u64());
 }
+
+namespace detail {
+
+namespace {
+PartialMakerSlot<Cell> g_partial_maker;
+}  // namespace
+
+bool set_partial_maker(PartialMaker maker) noexcept { return g_partial_maker.set(maker); }
+PartialMaker partial_maker() noexcept { return g_partial_maker.get(); }
+
+}  // namespace detail
 
 }  // namespace acanthus::cells

@@ -1,7 +1,7 @@
+#include <acanthus/partial_maker.hpp>
 #include <acanthus/partial_picture.hpp>
 #include <acanthus/progress.hpp>
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -80,15 +80,11 @@ Placement placement_of(const PlacedShape& s) {
 namespace detail {
 
 namespace {
-std::atomic<PartialMaker> g_partial_maker{nullptr};
+PartialMakerSlot<Placement> g_partial_maker;
 }  // namespace
 
-bool set_partial_maker(PartialMaker maker) noexcept {
-    g_partial_maker.store(maker, std::memory_order_relaxed);
-    return true;
-}
-
-PartialMaker partial_maker() noexcept { return g_partial_maker.load(std::memory_order_relaxed); }
+bool set_partial_maker(PartialMaker maker) noexcept { return g_partial_maker.set(maker); }
+PartialMaker partial_maker() noexcept { return g_partial_maker.get(); }
 
 }  // namespace detail
 

@@ -1,6 +1,8 @@
 #include "synthesis.hpp"
 
 #include <acanthus/error.hpp>
+#include <acanthus/partial_maker.hpp>
+#include <acanthus/partial_picture.hpp>
 #include <acanthus/progress.hpp>
 #include <algorithm>
 #include <chrono>
@@ -16,6 +18,12 @@ namespace acanthus::growth::detail {
 // A pair of symbols with fewer reference edges than this has no reliable shortest edge of its
 // own (the spacing rule, Options::gap_factor).
 constexpr long kFewEdges = 12;
+
+namespace {
+PartialMakerSlot<Motif> g_partial_maker;
+}  // namespace
+
+bool set_partial_maker(PartialMaker maker) noexcept { return g_partial_maker.set(maker); }
 
 Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const Options& options,
                      Random& random)
@@ -618,6 +626,13 @@ void Synthesis::grow(int id) {
     release(id);
     // Thousands of motifs are one rule body: the watchdog needs to see them coming.
     report_progress("motifs", static_cast<long>(placed_.size()), options_.max_elements);
+    // The motifs so far, for a partial picture while the growth goes on (the elements are made
+    // only by the copy of the program that draws it).
+    if (PartialMaker make = g_partial_maker.get())
+        report_partial(static_cast<long>(placed_.size()),
+                       [this, make](std::vector<const Element*>& out) {
+                           for (const Motif& m : result().motifs) out.push_back(make(m));
+                       });
     if (lattice_ && !phase_) {
         // The first motif puts the lattice down: its site's point is where it stands.
         phase_ = true;

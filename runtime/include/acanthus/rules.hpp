@@ -6,6 +6,7 @@
 #include <acanthus/element.hpp>
 #include <acanthus/param.hpp>
 #include <acanthus/pattern.hpp>
+#include <acanthus/pattern_tables.hpp>
 #include <acanthus/point.hpp>
 #include <acanthus/program.hpp>
 #include <acanthus/proxy.hpp>

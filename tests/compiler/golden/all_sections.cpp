@@ -252,28 +252,28 @@ const acanthus::ElementType acr_type_seed{"seed", {acanthus::ProxyKind::point}, 
 const acanthus::ElementType acr_type_sprig{"sprig", {acanthus::ProxyKind::arc, acanthus::ProxyKind::linesegment, acanthus::ProxyKind::bezier, acanthus::ProxyKind::polygon, acanthus::ProxyKind::circle, acanthus::ProxyKind::point}, &acr_create_sprig, &acr_draw_sprig, 19};
 const acanthus::ElementType acr_type_ring{"ring", {acanthus::ProxyKind::circle}, &acr_create_ring, nullptr, 2};
 
+static const acanthus::ElementType* const acr_types_[] = {&acr_type_seed, &acr_type_sprig, &acr_type_ring};
+static const acanthus::ElementType* const acr_children_0_[] = {&acr_type_ring};
+static const acanthus::ElementType* const acr_children_1_[] = {&acr_type_sprig, &acr_type_ring};
+static const acanthus::ElementType* const acr_children_2_[] = {&acr_type_sprig};
+static const acanthus::RuleEntry acr_rules_[] = {
+    {"ring --> ring", 7, "golden/lib/shapes.acr", &acr_type_ring, acr_children_0_, 1, &acr_rule_0},
+    {"seed --> sprig ring", 46, "golden/all_sections.acr", &acr_type_seed, acr_children_1_, 2, &acr_rule_1},
+    {"sprig --> sprig", 69, "golden/all_sections.acr", &acr_type_sprig, acr_children_2_, 1, &acr_rule_2},
+    {"ring -->", 90, "golden/all_sections.acr", &acr_type_ring, nullptr, 0, &acr_rule_3},
+};
+static const acanthus::ParamEntry acr_params_[] = {
+    {"max_radius", "double", "3.0", 2, &acr_param_set_max_radius, &acr_param_get_max_radius, "", ""},
+    {"phases", "int", "3", 3, &acr_param_set_phases, &acr_param_get_phases, "", ""},
+    {"big", "long", "-1234567890123", 4, &acr_param_set_big, &acr_param_get_big, "", ""},
+    {"thin", "float", "0.25", 5, &acr_param_set_thin, &acr_param_get_thin, "", ""},
+    {"hollow", "bool", "false", 6, &acr_param_set_hollow, &acr_param_get_hollow, "", ""},
+    {"label", "std::string", "\"a \\\"quoted\\\" label\"", 7, &acr_param_set_label, &acr_param_get_label, "", ""},
+    {"tint", "std::string", "\"#336699\"", 8, &acr_param_set_tint, &acr_param_get_tint, "", ""},
+};
+
 static const acanthus::Pattern& acr_pattern() {
-    static const acanthus::Pattern pattern = [] {
-        acanthus::Pattern p;
-        p.name = "all_sections";
-        p.file = "golden/all_sections.acr";
-        p.types = {&acr_type_seed, &acr_type_sprig, &acr_type_ring};
-        p.seed = &acr_type_seed;
-        p.rules.push_back({"ring --> ring", 7, "golden/lib/shapes.acr", &acr_type_ring, {&acr_type_ring}, &acr_rule_0});
-        p.rules.push_back({"seed --> sprig ring", 46, "golden/all_sections.acr", &acr_type_seed, {&acr_type_sprig, &acr_type_ring}, &acr_rule_1});
-        p.rules.push_back({"sprig --> sprig", 69, "golden/all_sections.acr", &acr_type_sprig, {&acr_type_sprig}, &acr_rule_2});
-        p.rules.push_back({"ring -->", 90, "golden/all_sections.acr", &acr_type_ring, {}, &acr_rule_3});
-        p.params.push_back({"max_radius", "double", "3.0", 2, &acr_param_set_max_radius, &acr_param_get_max_radius, "", ""});
-        p.params.push_back({"phases", "int", "3", 3, &acr_param_set_phases, &acr_param_get_phases, "", ""});
-        p.params.push_back({"big", "long", "-1234567890123", 4, &acr_param_set_big, &acr_param_get_big, "", ""});
-        p.params.push_back({"thin", "float", "0.25", 5, &acr_param_set_thin, &acr_param_get_thin, "", ""});
-        p.params.push_back({"hollow", "bool", "false", 6, &acr_param_set_hollow, &acr_param_get_hollow, "", ""});
-        p.params.push_back({"label", "std::string", "\"a \\\"quoted\\\" label\"", 7, &acr_param_set_label, &acr_param_get_label, "", ""});
-        p.params.push_back({"tint", "std::string", "\"#336699\"", 8, &acr_param_set_tint, &acr_param_get_tint, "", ""});
-        p.exhausted = &acr_exhausted;
-        p.exhausted_line = 98;
-        return p;
-    }();
+    static const acanthus::Pattern pattern = acanthus::make_pattern({"all_sections", "golden/all_sections.acr", acr_types_, 3, &acr_type_seed, acr_rules_, 4, acr_params_, 7, &acr_exhausted, 98});
     return pattern;
 }
 

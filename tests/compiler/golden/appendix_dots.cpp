@@ -93,19 +93,16 @@ static acanthus::Element* acr_create_dot() { return new dot; }
 const acanthus::ElementType acr_type_seed{"seed", {acanthus::ProxyKind::point}, &acr_create_seed, nullptr, 6};
 const acanthus::ElementType acr_type_dot{"dot", {acanthus::ProxyKind::circle}, &acr_create_dot, nullptr, 10};
 
+static const acanthus::ElementType* const acr_types_[] = {&acr_type_seed, &acr_type_dot};
+static const acanthus::ElementType* const acr_children_0_[] = {&acr_type_dot};
+static const acanthus::ElementType* const acr_children_1_[] = {&acr_type_dot};
+static const acanthus::RuleEntry acr_rules_[] = {
+    {"seed --> dot", 19, "golden/appendix_dots.acr", &acr_type_seed, acr_children_0_, 1, &acr_rule_0},
+    {"dot --> dot", 31, "golden/appendix_dots.acr", &acr_type_dot, acr_children_1_, 1, &acr_rule_1},
+};
+
 static const acanthus::Pattern& acr_pattern() {
-    static const acanthus::Pattern pattern = [] {
-        acanthus::Pattern p;
-        p.name = "appendix_dots";
-        p.file = "golden/appendix_dots.acr";
-        p.types = {&acr_type_seed, &acr_type_dot};
-        p.seed = &acr_type_seed;
-        p.rules.push_back({"seed --> dot", 19, "golden/appendix_dots.acr", &acr_type_seed, {&acr_type_dot}, &acr_rule_0});
-        p.rules.push_back({"dot --> dot", 31, "golden/appendix_dots.acr", &acr_type_dot, {&acr_type_dot}, &acr_rule_1});
-        p.exhausted = nullptr;
-        p.exhausted_line = 0;
-        return p;
-    }();
+    static const acanthus::Pattern pattern = acanthus::make_pattern({"appendix_dots", "golden/appendix_dots.acr", acr_types_, 2, &acr_type_seed, acr_rules_, 2, nullptr, 0, nullptr, 0});
     return pattern;
 }
 

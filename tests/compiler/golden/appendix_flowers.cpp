@@ -166,19 +166,16 @@ const acanthus::ElementType acr_type_flower{"flower", {acanthus::ProxyKind::circ
 const acanthus::ElementType acr_type_stem{"stem", {acanthus::ProxyKind::linesegment}, &acr_create_stem, nullptr, 15};
 const acanthus::ElementType acr_type_leaf{"leaf", {acanthus::ProxyKind::bezier, acanthus::ProxyKind::bezier}, &acr_create_leaf, nullptr, 19};
 
+static const acanthus::ElementType* const acr_types_[] = {&acr_type_seed, &acr_type_flower, &acr_type_stem, &acr_type_leaf};
+static const acanthus::ElementType* const acr_children_0_[] = {&acr_type_flower};
+static const acanthus::ElementType* const acr_children_1_[] = {&acr_type_stem, &acr_type_flower};
+static const acanthus::RuleEntry acr_rules_[] = {
+    {"seed --> flower", 23, "golden/appendix_flowers.acr", &acr_type_seed, acr_children_0_, 1, &acr_rule_0},
+    {"flower --> stem flower", 34, "golden/appendix_flowers.acr", &acr_type_flower, acr_children_1_, 2, &acr_rule_1},
+};
+
 static const acanthus::Pattern& acr_pattern() {
-    static const acanthus::Pattern pattern = [] {
-        acanthus::Pattern p;
-        p.name = "appendix_flowers";
-        p.file = "golden/appendix_flowers.acr";
-        p.types = {&acr_type_seed, &acr_type_flower, &acr_type_stem, &acr_type_leaf};
-        p.seed = &acr_type_seed;
-        p.rules.push_back({"seed --> flower", 23, "golden/appendix_flowers.acr", &acr_type_seed, {&acr_type_flower}, &acr_rule_0});
-        p.rules.push_back({"flower --> stem flower", 34, "golden/appendix_flowers.acr", &acr_type_flower, {&acr_type_stem, &acr_type_flower}, &acr_rule_1});
-        p.exhausted = nullptr;
-        p.exhausted_line = 0;
-        return p;
-    }();
+    static const acanthus::Pattern pattern = acanthus::make_pattern({"appendix_flowers", "golden/appendix_flowers.acr", acr_types_, 4, &acr_type_seed, acr_rules_, 2, nullptr, 0, nullptr, 0});
     return pattern;
 }
 

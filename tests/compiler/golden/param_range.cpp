@@ -81,23 +81,21 @@ static acanthus::Element* acr_create_dot() { return new dot; }
 const acanthus::ElementType acr_type_seed{"seed", {acanthus::ProxyKind::point}, &acr_create_seed, nullptr, 8};
 const acanthus::ElementType acr_type_dot{"dot", {acanthus::ProxyKind::circle}, &acr_create_dot, nullptr, 12};
 
+static const acanthus::ElementType* const acr_types_[] = {&acr_type_seed, &acr_type_dot};
+static const acanthus::ElementType* const acr_children_0_[] = {&acr_type_dot};
+static const acanthus::RuleEntry acr_rules_[] = {
+    {"seed --> dot", 16, "golden/param_range.acr", &acr_type_seed, acr_children_0_, 1, &acr_rule_0},
+};
+static const acanthus::ParamEntry acr_params_[] = {
+    {"leaf", "double", "3.0", 2, &acr_param_set_leaf, &acr_param_get_leaf, "1", "6"},
+    {"count", "int", "4", 3, &acr_param_set_count, &acr_param_get_count, "-2", "100"},
+    {"spread", "float", "0.25", 4, &acr_param_set_spread, &acr_param_get_spread, "0", "1e1"},
+    {"show", "bool", "false", 5, &acr_param_set_show, &acr_param_get_show, "", ""},
+    {"name", "std::string", "\"leafy\"", 6, &acr_param_set_name, &acr_param_get_name, "", ""},
+};
+
 static const acanthus::Pattern& acr_pattern() {
-    static const acanthus::Pattern pattern = [] {
-        acanthus::Pattern p;
-        p.name = "param_range";
-        p.file = "golden/param_range.acr";
-        p.types = {&acr_type_seed, &acr_type_dot};
-        p.seed = &acr_type_seed;
-        p.rules.push_back({"seed --> dot", 16, "golden/param_range.acr", &acr_type_seed, {&acr_type_dot}, &acr_rule_0});
-        p.params.push_back({"leaf", "double", "3.0", 2, &acr_param_set_leaf, &acr_param_get_leaf, "1", "6"});
-        p.params.push_back({"count", "int", "4", 3, &acr_param_set_count, &acr_param_get_count, "-2", "100"});
-        p.params.push_back({"spread", "float", "0.25", 4, &acr_param_set_spread, &acr_param_get_spread, "0", "1e1"});
-        p.params.push_back({"show", "bool", "false", 5, &acr_param_set_show, &acr_param_get_show, "", ""});
-        p.params.push_back({"name", "std::string", "\"leafy\"", 6, &acr_param_set_name, &acr_param_get_name, "", ""});
-        p.exhausted = nullptr;
-        p.exhausted_line = 0;
-        return p;
-    }();
+    static const acanthus::Pattern pattern = acanthus::make_pattern({"param_range", "golden/param_range.acr", acr_types_, 2, &acr_type_seed, acr_rules_, 1, acr_params_, 5, nullptr, 0});
     return pattern;
 }
 

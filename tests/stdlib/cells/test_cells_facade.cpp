@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <acanthus/error.hpp>
+#include <acanthus/partial_picture.hpp>
 #include <algorithm>
 #include <chrono>
 
@@ -185,4 +186,162 @@ TEST(CellsFacade, EdgeOccupancyMergesIntervals) {
     ASSERT_EQ(free.size(), 2u);
     EXPECT_DOUBLE_EQ(free[0].second, 2);
     EXPECT_DOUBLE_EQ(free[1].first, 6);
+}
+
+namespace {
+
+// Edge::project as it was, trying every segment in order: the least distance, the first on a tie.
+double project_by_all_segments(const Edge& e, Point p) {
+    double best = 0, best_d = 1e300;
+    for (std::size_t i = 0; i < e.segments.size(); ++i) {
+        double s = e.segments[i].project(p);
+        double d = distance(e.segments[i].at(s), p);
+        if (d < best_d) {
+            best_d = d;
+            best = e.offsets[i] + s;
+        }
+    }
+    return best;
+}
+
+Segment arc_segment(Point center, double radius, double start, double sweep) {
+    Segment s;
+    s.arc = true;
+    s.center = center;
+    s.radius = radius;
+    s.start = start;
+    s.sweep = sweep;
+    s.a = s.at(0);
+    s.b = s.at(s.length());
+    return s;
+}
+
+void add_segment(Edge& e, Segment s) {
+    e.offsets.push_back(e.length);
+    e.length += s.length();
+    e.segments.push_back(s);
+}
+
+}  // namespace
+
+// The pruned search (nearest box first) answers exactly as a look at every segment, ties
+// included: points on a grid through the segments' joints, on the row house's edges and on an
+// edge of many lines and arcs, some of them meeting at the same points.
+TEST(CellsFacade, ProjectIsTheNearestOfAllSegments) {
+    Edge zigzag;
+    for (int i = 0; i < 12; ++i) {
+        Segment s;
+        s.a = {i * 100.0, (i % 2) * 100.0};
+        s.b = {(i + 1) * 100.0, ((i + 1) % 2) * 100.0};
+        add_segment(zigzag, s);
+    }
+    // Arcs over the zigzag, and back through the same points: equal distances to several.
+    for (int i = 0; i < 6; ++i)
+        add_segment(zigzag, arc_segment({1250.0 - i * 200.0, 50.0}, 100.0 + 10 * i,
+                                        -M_PI * (0.25 * i), (i % 2 ? -1 : 1) * M_PI * 1.5));
+    add_segment(zigzag, arc_segment({600, 50}, 650, -3 * M_PI, 7 * M_PI / 2));
+    // From the origin: the second segment's box is nearer (80) than the first's (100), both
+    // segments are exactly 100 away; the first segment is the answer.
+    Edge tie;
+    Segment level, away;
+    level.a = {-50, 100};
+    level.b = {50, 100};
+    away.a = {60, 80};
+    away.b = {-20, 140};
+    add_segment(tie, level);
+    add_segment(tie, away);
+    EXPECT_EQ(tie.project({0, 0}), 50.0);
+    std::vector<Edge> edges = row_house().edges();
+    edges.push_back(zigzag);
+    edges.push_back(tie);
+    long tried = 0;
+    for (const Edge& e : edges) {
+        acanthus::Rect b = e.bounds;
+        for (const Segment& s : e.segments)
+            for (Point q : {s.a, s.b})
+                b = {std::min(b.x0, q.x), std::min(b.y0, q.y), std::max(b.x1, q.x),
+                     std::max(b.y1, q.y)};
+        double x0 = b.x0 - 200, y0 = b.y0 - 200;
+        double w = b.width() + 400, h = b.height() + 400;
+        for (int i = 0; i <= 40; ++i)
+            for (int j = 0; j <= 40; ++j) {
+                Point p{x0 + w * i / 40, y0 + h * j / 40};
+                ASSERT_EQ(e.project(p), project_by_all_segments(e, p))
+                    << "point " << p.x << "," << p.y << " edge of " << e.segments.size();
+                ++tried;
+            }
+        for (const Segment& s : e.segments)
+            for (Point p : {s.a, s.b, s.at(s.length() / 3), Point{s.center.x, s.center.y}}) {
+                ASSERT_EQ(e.project(p), project_by_all_segments(e, p));
+                ++tried;
+            }
+    }
+    EXPECT_GT(tried, 1000);
+}
+
+namespace {
+
+struct PartialCell : acanthus::Element {
+    acanthus::PolygonProxy p0;
+    std::string generator, feature, label;
+    int course = -1;
+    const acanthus::ElementType& type() const override {
+        static const acanthus::ElementType t{
+            "cell", {acanthus::ProxyKind::polygon}, nullptr, nullptr, 0};
+        return t;
+    }
+    std::size_t proxy_count() const override { return 1; }
+    acanthus::Proxy& proxy(std::size_t) override { return p0; }
+};
+
+}  // namespace
+
+// A texture reports the cells laid so far (report_partial) for the program's partial pictures,
+// made by cells.acr's maker: at each report the cells before the one being laid, most as the
+// finished texture has them; the texture is the same with the reports as without.
+TEST(CellsFacade, PartialPicturesHaveTheCellsLaidSoFar) {
+    Facade f = row_house();
+    const Texture plain = texture(f, brick_tree(), Options{}, 3);
+
+    struct Seen {
+        std::vector<long> placed;
+        std::vector<std::vector<std::vector<Point>>> polygons;
+    } seen;
+    acanthus::detail::set_partial_handler(
+        [](void* context, long placed, const acanthus::PartialElements& extra) {
+            Seen& s = *static_cast<Seen*>(context);
+            s.placed.push_back(placed);
+            if (placed % 64 != 0) return;  // every cell each time: quadratic
+            std::vector<const acanthus::Element*> made;
+            extra(made);
+            s.polygons.emplace_back();
+            for (const acanthus::Element* e : made) {
+                s.polygons.back().push_back(static_cast<const PartialCell*>(e)->p0.points);
+                delete e;
+            }
+            EXPECT_LE(made.size(), static_cast<std::size_t>(placed));
+        },
+        &seen);
+    acanthus::cells::detail::set_partial_maker(
+        [](const Cell& c) -> const acanthus::Element* { return new_cell<PartialCell>(c); });
+    const Texture reported = texture(f, brick_tree(), Options{}, 3);
+    acanthus::detail::set_partial_handler(nullptr, nullptr);
+    acanthus::cells::detail::set_partial_maker(nullptr);
+
+    ASSERT_EQ(reported.cells.size(), plain.cells.size());
+    for (std::size_t i = 0; i < plain.cells.size(); ++i) {
+        EXPECT_EQ(reported.cells[i].polygon, plain.cells[i].polygon);
+        EXPECT_EQ(reported.cells[i].generator, plain.cells[i].generator);
+    }
+    ASSERT_EQ(seen.placed.size(), plain.cells.size());
+    for (std::size_t k = 0; k < seen.placed.size(); ++k)
+        EXPECT_EQ(seen.placed[k], static_cast<long>(k));
+    // The last picture made shows nearly every cell, most of them as they end up.
+    ASSERT_FALSE(seen.polygons.empty());
+    EXPECT_GT(seen.polygons.back().size() + 64, plain.cells.size());
+    std::size_t same = 0;
+    for (std::size_t i = 0; i + 1 < plain.cells.size(); ++i)
+        same += std::count(seen.polygons.back().begin(), seen.polygons.back().end(),
+                           plain.cells[i].polygon) > 0;
+    EXPECT_GT(same, plain.cells.size() * 9 / 10);
 }

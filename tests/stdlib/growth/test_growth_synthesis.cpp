@@ -5,6 +5,7 @@
 
 #include <acanthus/environment.hpp>
 #include <acanthus/error.hpp>
+#include <acanthus/partial_picture.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/stdlib/growth.hpp>
 #include <algorithm>
@@ -358,4 +359,67 @@ TEST(GrowthSynthesis, AbsurdMotifCountIsRefusedUpFrontWithTheEstimate) {
         EXPECT_NE(std::string(e.what()).find("max_motifs must be >= 1"), std::string::npos)
             << e.what();
     }
+}
+
+// A synthesis reports the motifs placed so far (report_partial) for the program's partial
+// pictures, made by growth.acr's maker; the result is the same with the reports as without.
+namespace {
+
+struct PartialMotif : Element {
+    CircleProxy p0;
+    std::string symbol, sub;
+    double angle = 0, scale = 0, tint = 0;
+    int source = -1;
+    const ElementType& type() const override {
+        static const ElementType t{"motif", {ProxyKind::circle}, nullptr, nullptr, 0};
+        return t;
+    }
+    std::size_t proxy_count() const override { return 1; }
+    Proxy& proxy(std::size_t) override { return p0; }
+};
+
+}  // namespace
+
+TEST(GrowthPartialPictures, EachReportHasTheMotifsPlacedSoFar) {
+    Reference ref = lattice();
+    Region region = Region::from_spec("circle:40");
+    Options o;
+    o.scale_min = 0.8;
+    o.scale_max = 1.1;
+    const SynthesisResult plain = synthesize(ref, region, o, {}, 5);
+
+    struct Seen {
+        std::vector<long> placed;
+        std::vector<std::size_t> shown;
+    } seen;
+    acanthus::detail::set_partial_handler(
+        [](void* context, long placed, const PartialElements& extra) {
+            Seen& s = *static_cast<Seen*>(context);
+            std::vector<const Element*> made;
+            extra(made);
+            s.placed.push_back(placed);
+            s.shown.push_back(made.size());
+            for (const Element* e : made) delete e;
+        },
+        &seen);
+    growth::detail::set_partial_maker(
+        [](const Motif& m) -> const Element* { return new_motif<PartialMotif>(m); });
+    const SynthesisResult reported = synthesize(ref, region, o, {}, 5);
+    acanthus::detail::set_partial_handler(nullptr, nullptr);
+    growth::detail::set_partial_maker(nullptr);
+
+    ASSERT_EQ(reported.motifs.size(), plain.motifs.size());
+    for (std::size_t i = 0; i < plain.motifs.size(); ++i) {
+        EXPECT_EQ(reported.motifs[i].position, plain.motifs[i].position);
+        EXPECT_EQ(reported.motifs[i].source, plain.motifs[i].source);
+        EXPECT_EQ(reported.motifs[i].scale, plain.motifs[i].scale);
+    }
+    EXPECT_EQ(reported.edges, plain.edges);
+    // One report per motif placed (motifs taken out by a lattice repair are placed again).
+    ASSERT_GE(seen.placed.size(), plain.motifs.size());
+    ASSERT_GT(plain.motifs.size(), 10u);
+    for (std::size_t k = 0; k < seen.placed.size(); ++k)
+        EXPECT_EQ(seen.shown[k], static_cast<std::size_t>(seen.placed[k]));
+    EXPECT_EQ(seen.placed.front(), 1);
+    EXPECT_EQ(seen.shown.back(), plain.motifs.size());
 }

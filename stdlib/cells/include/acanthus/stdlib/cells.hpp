@@ -348,6 +348,19 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options, 
 // Inside a rule body: seeded from the program's --rng-seed.
 Texture texture(const Facade& facade, const Node& tree, const Options& options);
 
+// A new element of type T for cell `c` (see add_cells; its tint left alone), not yet added.
+template <class T>
+T* new_cell(const Cell& c, bool sterile = true) {
+    T* e = new T;
+    e->p0.set(c.polygon);
+    e->generator = c.generator;
+    e->feature = std::string(to_string(c.feature));
+    e->label = c.label;
+    e->course = c.course;
+    e->sterile = sterile;
+    return e;
+}
+
 // Inside a rule body: one element of type T per cell (T has a polygon proxy p0 and fields
 // generator, feature, label and course, as `cell` in cells.acr; a field `tint`, when T has one,
 // gets a uniform number in [-1, 1] from the program's --rng-seed for colour variation). Returns
@@ -358,19 +371,21 @@ int add_cells(const Texture& texture, bool sterile = true) {
     const auto total = static_cast<long>(texture.cells.size());
     int added = 0;
     for (const Cell& c : texture.cells) {
-        T* e = new T;
-        e->p0.set(c.polygon);
-        e->generator = c.generator;
-        e->feature = std::string(to_string(c.feature));
-        e->label = c.label;
-        e->course = c.course;
+        T* e = new_cell<T>(c, sterile);
         if constexpr (requires { e->tint = 0.0; }) e->tint = acanthus::body::rng.uniform(-1, 1);
-        e->sterile = sterile;
         acanthus::body::new_child(*e);
         ++added;
         acanthus::report_progress("elements", added, total);
     }
     return added;
 }
+
+namespace detail {
+// The cells a running texture laid so far are shown in the program's partial pictures (its
+// --partial, acanthus preview) as elements made by this (cells.acr sets it: `cell`).
+using PartialMaker = const Element* (*)(const Cell&);
+bool set_partial_maker(PartialMaker maker) noexcept;
+PartialMaker partial_maker() noexcept;
+}  // namespace detail
 
 }  // namespace acanthus::cells

@@ -271,23 +271,36 @@ void draw_motif(Canvas& canvas, const Reference& reference, int source, Point ce
 // Inside a rule body: one element of type T per motif (T has a circle proxy p0 and fields symbol,
 // sub (the label), angle, scale and source, as `motif` in growth.acr), each added with
 // new_child(). Returns how many were added.
+// A new element of type T for motif `m` (see add_motifs), not yet added to anything.
+template <class T>
+T* new_motif(const Motif& m, bool sterile = true) {
+    T* e = new T;
+    e->p0.set(m.position, m.radius);
+    e->symbol = m.symbol;
+    e->sub = m.label;
+    e->angle = m.angle;
+    e->scale = m.scale;
+    e->source = m.source;
+    if constexpr (requires { e->tint; }) e->tint = m.tint;
+    e->sterile = sterile;
+    return e;
+}
+
 template <class T>
 int add_motifs(const SynthesisResult& result, bool sterile = true) {
     int added = 0;
     for (const Motif& m : result.motifs) {
-        T* e = new T;
-        e->p0.set(m.position, m.radius);
-        e->symbol = m.symbol;
-        e->sub = m.label;
-        e->angle = m.angle;
-        e->scale = m.scale;
-        e->source = m.source;
-        if constexpr (requires { e->tint; }) e->tint = m.tint;
-        e->sterile = sterile;
-        acanthus::body::new_child(*e);
+        acanthus::body::new_child(*new_motif<T>(m, sterile));
         ++added;
     }
     return added;
 }
+
+namespace detail {
+// The motifs a running synthesis placed so far are shown in the program's partial pictures (its
+// --partial, acanthus preview) as elements made by this (growth.acr sets it: `motif`).
+using PartialMaker = const Element* (*)(const Motif&);
+bool set_partial_maker(PartialMaker maker) noexcept;
+}  // namespace detail
 
 }  // namespace acanthus::growth
