@@ -453,3 +453,72 @@ TEST(DistanceField, LargeGridsMatchBruteForce) {
     few.recompute_elements(occ);
     check(few, "recompute_elements");
 }
+
+// A lazy field with tiles left out (far from every pixel that may centre a circle, as under a
+// symmetry group) is exact on the tiles it keeps from the start, and transforms no row that
+// has none: those stay infinite. Small grids and one large enough for two threads; a seed's
+// few element sites, many, and recompute_elements().
+TEST(DistanceField, LazyFieldIsExactOnTheTilesItKeeps) {
+    struct Scene {
+        int w, h;
+        int elements;
+    };
+    Random rng(31);
+    for (const Scene& s : {Scene{330, 230, 3}, Scene{330, 230, 40}, Scene{1401, 1403, 5}}) {
+        const int w = s.w, h = s.h;
+        std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 0);
+        std::vector<std::pair<int, std::uint8_t>> sites;
+        auto add = [&](int p, std::uint8_t kind) {
+            if (occ[p]) return;
+            occ[p] = kind;
+            sites.emplace_back(p, kind);
+        };
+        for (int k = 0; k < 30; ++k) add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 1);
+        for (int k = 0; k < s.elements; ++k)
+            add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
+        // Centre tiles below a slanted line and the first rows: a wedge's rows begin and end
+        // anywhere, and some rows have none.
+        const int tw = (w + 7) / 8, th = (h + 7) / 8;
+        std::vector<std::uint8_t> centres(static_cast<std::size_t>(tw) * th, 0);
+        for (int tj = 0; tj < th; ++tj)
+            for (int ti = 0; ti < tw; ++ti)
+                centres[static_cast<std::size_t>(tj * tw + ti)] =
+                    tj > th / 8 && ti + tj > (tw + th) * 3 / 10;
+        DistanceField lazy(w, h, /*with_sites=*/false);
+        lazy.set_lazy(true);
+        lazy.far_blocks().set_centre_tiles(centres);
+        auto check = [&](const char* what) {
+            long long kept = 0;
+            for (int j = 0; j < h; ++j) {
+                bool row_kept = false;
+                for (int i = 0; i < w; ++i)
+                    row_kept = row_kept || lazy.far_blocks().keeps(j * w + i);
+                for (int i = 0; i < w; ++i) {
+                    const int p = j * w + i;
+                    if (!row_kept) {
+                        ASSERT_EQ(lazy.squared_distance(p), DistanceField::infinite) << what;
+                        ASSERT_EQ(lazy.boundary_squared_distance(p), DistanceField::infinite);
+                        continue;
+                    }
+                    if (!lazy.far_blocks().keeps(p)) continue;
+                    ++kept;
+                    std::int64_t all = DistanceField::infinite, bnd = DistanceField::infinite;
+                    for (const auto& [q, kind] : sites) {
+                        const std::int64_t d = sq(i - q % w) + sq(j - q / w);
+                        all = std::min(all, d);
+                        if (kind == 1) bnd = std::min(bnd, d);
+                    }
+                    ASSERT_EQ(lazy.squared_distance(p), all) << what << " pixel " << i << "," << j;
+                    ASSERT_EQ(lazy.boundary_squared_distance(p), bnd) << what << " pixel " << p;
+                }
+            }
+            ASSERT_GT(kept, 0);
+            ASSERT_LT(kept, static_cast<long long>(w) * h);
+        };
+        lazy.compute(occ);
+        check("compute");
+        for (int k = 0; k < 30; ++k) add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
+        lazy.recompute_elements(occ);
+        check("recompute_elements");
+    }
+}
