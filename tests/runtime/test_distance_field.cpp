@@ -88,6 +88,30 @@ void compare_fields(const DistanceField& a, const DistanceField& b, const char* 
     }
 }
 
+// A grid with a few sites, kept in a list for brute force.
+struct SparseSites {
+    int w, h;
+    std::vector<std::uint8_t> occ;
+    std::vector<std::pair<int, std::uint8_t>> sites;
+    SparseSites(int width, int height)
+        : w(width), h(height), occ(static_cast<std::size_t>(width) * height, 0) {}
+    void add(int p, std::uint8_t kind) {
+        if (occ[p]) return;
+        occ[p] = kind;
+        sites.emplace_back(p, kind);
+    }
+    // Squared distances from pixel p to the nearest site and to the nearest boundary site.
+    std::pair<std::int64_t, std::int64_t> nearest(int p) const {
+        std::int64_t all = DistanceField::infinite, boundary = DistanceField::infinite;
+        for (const auto& [q, kind] : sites) {
+            const std::int64_t d = sq(p % w - q % w) + sq(p / w - q / w);
+            all = std::min(all, d);
+            if (kind == 1) boundary = std::min(boundary, d);
+        }
+        return {all, boundary};
+    }
+};
+
 }  // namespace
 
 TEST(DistanceField, EmptyGridIsInfiniteEverywhere) {
@@ -417,25 +441,16 @@ TEST(Witness, OutranksOnlyWhenEveryPixelIsAtLeastAsNear) {
 TEST(DistanceField, LargeGridsMatchBruteForce) {
     const int w = 1201, h = 901;  // over 2^20 pixels, odd sizes to split unevenly
     Random rng(7);
-    std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 0);
-    std::vector<std::pair<int, std::uint8_t>> sites;
-    auto add = [&](int p, std::uint8_t kind) {
-        if (occ[p]) return;
-        occ[p] = kind;
-        sites.emplace_back(p, kind);
-    };
+    SparseSites grid(w, h);
+    const std::vector<std::uint8_t>& occ = grid.occ;
+    auto add = [&](int p, std::uint8_t kind) { grid.add(p, kind); };
     for (int k = 0; k < 40; ++k)  // boundary sites
         add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 1);
     for (int k = 0; k < 3; ++k)  // a few element sites: the seeds of a start
         add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
     auto check = [&](const DistanceField& f, const char* what) {
         for (int p = 0; p < w * h; ++p) {
-            std::int64_t all = DistanceField::infinite, boundary = DistanceField::infinite;
-            for (const auto& [s, kind] : sites) {
-                const std::int64_t d = sq(p % w - s % w) + sq(p / w - s / w);
-                all = std::min(all, d);
-                if (kind == 1) boundary = std::min(boundary, d);
-            }
+            const auto [all, boundary] = grid.nearest(p);
             ASSERT_EQ(f.squared_distance(p), all) << what << " pixel " << p;
             ASSERT_EQ(f.boundary_squared_distance(p), boundary) << what << " pixel " << p;
             if (f.nearest_site(p) >= 0) {
@@ -466,13 +481,8 @@ TEST(DistanceField, LazyFieldIsExactOnTheTilesItKeeps) {
     Random rng(31);
     for (const Scene& s : {Scene{330, 230, 3}, Scene{330, 230, 40}, Scene{1401, 1403, 5}}) {
         const int w = s.w, h = s.h;
-        std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 0);
-        std::vector<std::pair<int, std::uint8_t>> sites;
-        auto add = [&](int p, std::uint8_t kind) {
-            if (occ[p]) return;
-            occ[p] = kind;
-            sites.emplace_back(p, kind);
-        };
+        SparseSites grid(w, h);
+        auto add = [&](int p, std::uint8_t kind) { grid.add(p, kind); };
         for (int k = 0; k < 30; ++k) add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 1);
         for (int k = 0; k < s.elements; ++k)
             add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
@@ -502,12 +512,7 @@ TEST(DistanceField, LazyFieldIsExactOnTheTilesItKeeps) {
                     }
                     if (!lazy.far_blocks().keeps(p)) continue;
                     ++kept;
-                    std::int64_t all = DistanceField::infinite, bnd = DistanceField::infinite;
-                    for (const auto& [q, kind] : sites) {
-                        const std::int64_t d = sq(i - q % w) + sq(j - q / w);
-                        all = std::min(all, d);
-                        if (kind == 1) bnd = std::min(bnd, d);
-                    }
+                    const auto [all, bnd] = grid.nearest(p);
                     ASSERT_EQ(lazy.squared_distance(p), all) << what << " pixel " << i << "," << j;
                     ASSERT_EQ(lazy.boundary_squared_distance(p), bnd) << what << " pixel " << p;
                 }
@@ -515,10 +520,10 @@ TEST(DistanceField, LazyFieldIsExactOnTheTilesItKeeps) {
             ASSERT_GT(kept, 0);
             ASSERT_LT(kept, static_cast<long long>(w) * h);
         };
-        lazy.compute(occ);
+        lazy.compute(grid.occ);
         check("compute");
         for (int k = 0; k < 30; ++k) add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
-        lazy.recompute_elements(occ);
+        lazy.recompute_elements(grid.occ);
         check("recompute_elements");
     }
 }
