@@ -43,20 +43,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The part of the disc `c` in the group's fundamental domain as a region: the panel a fill
-// library sees during a restart (centre_seed()). The images fill the rest of the hole, and
-// what the fill tries outside the domain only clashes with them. Null when they do not meet.
-std::optional<Region> domain_region(const SymmetryGroup& group, const Circle& c, double tolerance,
-                                    double flatness) {
-    const std::vector<Point> part = group.domain_part(c, tolerance, flatness);
-    if (part.empty()) return std::nullopt;
-    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\"><path d=\"M";
-    char point[64];
-    for (const Point p : part) {
-        std::snprintf(point, sizeof point, " %.17g %.17g", p.x, p.y);
-        svg += point;
-    }
-    svg += " Z\"/></svg>";
+// The disc `c` as a region: the panel a fill library sees during a restart (centre_seed()).
+Region circle_region(const Circle& c) {
+    char svg[256];
+    std::snprintf(svg, sizeof svg,
+                  "<svg xmlns=\"http://www.w3.org/2000/svg\"><circle cx=\"%.17g\" cy=\"%.17g\" "
+                  "r=\"%.17g\"/></svg>",
+                  c.center.x, c.center.y, c.radius);
     return Region::from_svg_string(svg, "the hole of a restart");
 }
 
@@ -831,15 +824,9 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                 if (parent->sterile) break;
                 const Circle tried = tries[t];
                 env.set_goal(tried);
-                // A restart's fill library fills the circle offered (its part in the
-                // fundamental domain), not the region again.
+                // A restart's fill library fills the circle offered, not the region again.
                 std::optional<Region> panel;
-                if (restart_goal) {
-                    panel = domain_region(*group, tried, ornament.tolerance(),
-                                          0.02 * raster.grid().pixel);
-                    if (!panel) continue;
-                    env.set_panel(&*panel);
-                }
+                if (restart_goal) env.set_panel(&panel.emplace(circle_region(tried)));
                 const long refusals = env.orbit_refusals();
                 const bool was_sterile = parent->sterile;
                 Result result = FAILURE;

@@ -180,45 +180,6 @@ bool SymmetryGroup::in_domain(Point p, double tolerance) const {
     return t <= wedge_ + slack || t >= 2 * M_PI - slack;
 }
 
-std::vector<Point> SymmetryGroup::domain_part(const Circle& c, double tolerance,
-                                              double flatness) const {
-    // The circle as a polygon through points on it (the chord's sagitta at most `flatness`).
-    const double step = c.radius > flatness ? 2 * std::acos(1 - flatness / c.radius) : M_PI / 2;
-    const int n = std::clamp(static_cast<int>(std::ceil(2 * M_PI / step)), 16, 4096);
-    std::vector<Point> poly;
-    poly.reserve(static_cast<std::size_t>(n));
-    for (int k = 0; k < n; ++k) {
-        const double a = 2 * M_PI * k / n;
-        poly.push_back(c.center + Vector(std::cos(a), std::sin(a)) * c.radius);
-    }
-    // The domain as half-planes (p - m) . normal <= slack.
-    std::vector<std::pair<Point, Vector>> cuts;
-    if (lattice_) {
-        cuts = halfplanes_;
-    } else if (transforms_.size() > 1) {
-        // The wedge from angle kStart to kStart + wedge_ about the centre (at most a half-turn).
-        const Vector first(std::cos(kStart), std::sin(kStart));
-        const Vector last(std::cos(kStart + wedge_), std::sin(kStart + wedge_));
-        cuts.emplace_back(center_, Vector(first.y, -first.x));
-        cuts.emplace_back(center_, Vector(-last.y, last.x));
-    }
-    // Sutherland-Hodgman, one half-plane at a time.
-    for (const auto& [m, normal] : cuts) {
-        std::vector<Point> out;
-        const std::size_t size = poly.size();
-        for (std::size_t k = 0; k < size; ++k) {
-            const Point a = poly[k], b = poly[(k + 1) % size];
-            const double da = (a - m).dot(normal) - tolerance, db = (b - m).dot(normal) - tolerance;
-            if (da <= 0) out.push_back(a);
-            if ((da < 0 && db > 0) || (da > 0 && db < 0))
-                out.push_back(a + (b - a) * (da / (da - db)));
-        }
-        poly = std::move(out);
-        if (poly.size() < 3) return {};
-    }
-    return poly;
-}
-
 Point SymmetryGroup::snap(Point p, double tolerance) const {
     if (lattice_) {
         double best = tolerance;

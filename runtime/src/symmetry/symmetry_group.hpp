@@ -67,11 +67,6 @@ class SymmetryGroup {
     // centre with mirrors, where an element fits on `c` only if its images coincide with it, these
     // hold an element beside the centre.
     std::vector<Circle> clear_circles_in(const Circle& c, Point toward, double tolerance) const;
-    // The part of the disc `c` in the fundamental domain widened by `tolerance`, as a polygon
-    // (the circle flattened within `flatness`, counter-clockwise in y-down coordinates as the
-    // disc's); empty when they do not meet. A fill offered a hole fills this part alone: the
-    // images fill the rest.
-    std::vector<Point> domain_part(const Circle& c, double tolerance, double flatness) const;
     // With translations: one rotation centre of each class (a point and its images under the
     // group), each the representative lying in the fundamental domain (widened by `tolerance`),
     // in the order found; a rosette's centre alone.
