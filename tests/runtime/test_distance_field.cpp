@@ -88,6 +88,30 @@ void compare_fields(const DistanceField& a, const DistanceField& b, const char* 
     }
 }
 
+// A grid with a few sites, kept in a list for brute force.
+struct SparseSites {
+    int w, h;
+    std::vector<std::uint8_t> occ;
+    std::vector<std::pair<int, std::uint8_t>> sites;
+    SparseSites(int width, int height)
+        : w(width), h(height), occ(static_cast<std::size_t>(width) * height, 0) {}
+    void add(int p, std::uint8_t kind) {
+        if (occ[p]) return;
+        occ[p] = kind;
+        sites.emplace_back(p, kind);
+    }
+    // Squared distances from pixel p to the nearest site and to the nearest boundary site.
+    std::pair<std::int64_t, std::int64_t> nearest(int p) const {
+        std::int64_t all = DistanceField::infinite, boundary = DistanceField::infinite;
+        for (const auto& [q, kind] : sites) {
+            const std::int64_t d = sq(p % w - q % w) + sq(p / w - q / w);
+            all = std::min(all, d);
+            if (kind == 1) boundary = std::min(boundary, d);
+        }
+        return {all, boundary};
+    }
+};
+
 }  // namespace
 
 TEST(DistanceField, EmptyGridIsInfiniteEverywhere) {
@@ -417,25 +441,16 @@ TEST(Witness, OutranksOnlyWhenEveryPixelIsAtLeastAsNear) {
 TEST(DistanceField, LargeGridsMatchBruteForce) {
     const int w = 1201, h = 901;  // over 2^20 pixels, odd sizes to split unevenly
     Random rng(7);
-    std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 0);
-    std::vector<std::pair<int, std::uint8_t>> sites;
-    auto add = [&](int p, std::uint8_t kind) {
-        if (occ[p]) return;
-        occ[p] = kind;
-        sites.emplace_back(p, kind);
-    };
+    SparseSites grid(w, h);
+    const std::vector<std::uint8_t>& occ = grid.occ;
+    auto add = [&](int p, std::uint8_t kind) { grid.add(p, kind); };
     for (int k = 0; k < 40; ++k)  // boundary sites
         add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 1);
     for (int k = 0; k < 3; ++k)  // a few element sites: the seeds of a start
         add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
     auto check = [&](const DistanceField& f, const char* what) {
         for (int p = 0; p < w * h; ++p) {
-            std::int64_t all = DistanceField::infinite, boundary = DistanceField::infinite;
-            for (const auto& [s, kind] : sites) {
-                const std::int64_t d = sq(p % w - s % w) + sq(p / w - s / w);
-                all = std::min(all, d);
-                if (kind == 1) boundary = std::min(boundary, d);
-            }
+            const auto [all, boundary] = grid.nearest(p);
             ASSERT_EQ(f.squared_distance(p), all) << what << " pixel " << p;
             ASSERT_EQ(f.boundary_squared_distance(p), boundary) << what << " pixel " << p;
             if (f.nearest_site(p) >= 0) {
@@ -452,4 +467,63 @@ TEST(DistanceField, LargeGridsMatchBruteForce) {
     check(full, "two threads with the feature transform");
     few.recompute_elements(occ);
     check(few, "recompute_elements");
+}
+
+// A lazy field with tiles left out (far from every pixel that may centre a circle, as under a
+// symmetry group) is exact on the tiles it keeps from the start, and transforms no row that
+// has none: those stay infinite. Small grids and one large enough for two threads; a seed's
+// few element sites, many, and recompute_elements().
+TEST(DistanceField, LazyFieldIsExactOnTheTilesItKeeps) {
+    struct Scene {
+        int w, h;
+        int elements;
+    };
+    Random rng(31);
+    for (const Scene& s : {Scene{330, 230, 3}, Scene{330, 230, 40}, Scene{1401, 1403, 5}}) {
+        const int w = s.w, h = s.h;
+        SparseSites grid(w, h);
+        auto add = [&](int p, std::uint8_t kind) { grid.add(p, kind); };
+        for (int k = 0; k < 30; ++k) add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 1);
+        for (int k = 0; k < s.elements; ++k)
+            add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
+        // Centre tiles below a slanted line and the first rows: a wedge's rows begin and end
+        // anywhere, and some rows have none.
+        const int tw = (w + 7) / 8, th = (h + 7) / 8;
+        std::vector<std::uint8_t> centres(static_cast<std::size_t>(tw) * th, 0);
+        for (int tj = 0; tj < th; ++tj)
+            for (int ti = 0; ti < tw; ++ti)
+                centres[static_cast<std::size_t>(tj * tw + ti)] =
+                    tj > th / 8 && ti + tj > (tw + th) * 3 / 10;
+        DistanceField lazy(w, h, /*with_sites=*/false);
+        lazy.set_lazy(true);
+        lazy.far_blocks().set_centre_tiles(centres);
+        auto check = [&](const char* what) {
+            long long kept = 0;
+            for (int j = 0; j < h; ++j) {
+                bool row_kept = false;
+                for (int i = 0; i < w; ++i)
+                    row_kept = row_kept || lazy.far_blocks().keeps(j * w + i);
+                for (int i = 0; i < w; ++i) {
+                    const int p = j * w + i;
+                    if (!row_kept) {
+                        ASSERT_EQ(lazy.squared_distance(p), DistanceField::infinite) << what;
+                        ASSERT_EQ(lazy.boundary_squared_distance(p), DistanceField::infinite);
+                        continue;
+                    }
+                    if (!lazy.far_blocks().keeps(p)) continue;
+                    ++kept;
+                    const auto [all, bnd] = grid.nearest(p);
+                    ASSERT_EQ(lazy.squared_distance(p), all) << what << " pixel " << i << "," << j;
+                    ASSERT_EQ(lazy.boundary_squared_distance(p), bnd) << what << " pixel " << p;
+                }
+            }
+            ASSERT_GT(kept, 0);
+            ASSERT_LT(kept, static_cast<long long>(w) * h);
+        };
+        lazy.compute(grid.occ);
+        check("compute");
+        for (int k = 0; k < 30; ++k) add(static_cast<int>(rng.uniform_int(0, w * h - 1)), 2);
+        lazy.recompute_elements(grid.occ);
+        check("recompute_elements");
+    }
 }

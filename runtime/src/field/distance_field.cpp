@@ -20,6 +20,43 @@ constexpr std::int32_t kInfinite = DistanceField::infinite;
 // Phase 1 keeps each pixel's column distance in d2 and, with a feature transform, that site's
 // row in `site`; it runs over columns [c0, c1), row by row for cache friendliness: nearest site
 // above, then below.
+// Row j's kept columns [spans[2j], spans[2j+1]); empty: the row is not needed. Null: every
+// pixel is kept.
+using Spans = const int*;
+
+bool row_kept(Spans spans, int j) { return !spans || spans[2 * j] < spans[2 * j + 1]; }
+
+// Phase 1 for the rows kept by `spans` alone (no feature transform): every row is read for its
+// sites, only the kept rows are written.
+template <class IsSite>
+void edt_columns_kept(int w, int h, int c0, int c1, IsSite is_site, std::int32_t* g, Spans spans,
+                      DistanceField::Scratch& s) {
+    s.last.assign(w, -1);
+    for (int j = 0; j < h; ++j) {
+        std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
+        const bool kept = row_kept(spans, j);
+        for (int i = c0; i < c1; ++i) {
+            if (is_site(i, j)) s.last[i] = j;
+            if (kept) gj[i] = s.last[i] >= 0 ? j - s.last[i] : kInfinite;
+        }
+    }
+    s.last.assign(w, -1);
+    for (int j = h - 1; j >= 0; --j) {
+        std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
+        if (!row_kept(spans, j)) {
+            for (int i = c0; i < c1; ++i)
+                if (is_site(i, j)) s.last[i] = j;
+            continue;
+        }
+        for (int i = c0; i < c1; ++i) {
+            if (gj[i] == 0)
+                s.last[i] = j;
+            else if (s.last[i] >= 0 && s.last[i] - j < gj[i])
+                gj[i] = s.last[i] - j;
+        }
+    }
+}
+
 template <class IsSite>
 void edt_columns(int w, int h, int c0, int c1, IsSite is_site, std::int32_t* g, std::int32_t* row,
                  DistanceField::Scratch& s) {
@@ -53,7 +90,7 @@ void edt_columns(int w, int h, int c0, int c1, IsSite is_site, std::int32_t* g, 
 // Phase 2, rows [j0, j1): per row, the lower envelope of parabolas (x - q)^2 + g(q)^2 over
 // columns q that have a site, copied one row at a time before the row is overwritten. The
 // envelope piece k starts at num[k] / den[k].
-void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site,
+void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site, Spans spans,
               DistanceField::Scratch& s) {
     const std::int32_t* g = d2;
     const std::int32_t* row = site;
@@ -69,6 +106,13 @@ void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site,
     std::int64_t* den = s.hull_den.data();
     for (int j = j0; j < j1; ++j) {
         const std::size_t base = static_cast<std::size_t>(j) * w;
+        // Outside the kept columns: infinite (nothing reads it; an element drawn there is
+        // still a new site).
+        const int xa = spans ? spans[2 * j] : 0, xb = spans ? std::max(xa, spans[2 * j + 1]) : w;
+        if (xa >= xb) {
+            std::fill(d2 + base, d2 + base + w, kInfinite);
+            continue;
+        }
         std::copy(g + base, g + base + w, s.column_distance.begin());
         if (row) std::copy(row + base, row + base + w, s.column_site_row.begin());
         const std::int32_t* gj = s.column_distance.data();
@@ -102,7 +146,9 @@ void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site,
         }
         const int top = k;
         k = 0;
-        for (int x = 0; x < w; ++x) {
+        std::fill(d2 + base, d2 + base + xa, kInfinite);
+        std::fill(d2 + base + xb, d2 + base + w, kInfinite);
+        for (int x = xa; x < xb; ++x) {
             while (k < top && num[k + 1] <= static_cast<std::int64_t>(x) * den[k + 1]) ++k;
             const int c = v[k];
             const std::int64_t dx = x - c;
@@ -117,20 +163,40 @@ void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site,
 // in halves): the start of a large growth waits for whole-grid transforms.
 constexpr long long kTwoThreadPixels = 1LL << 20;
 
+// `spans` (null: all) limits the exact values to each row's kept columns; only without a
+// feature transform.
 template <class IsSite>
-void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t* site,
+void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t* site, Spans spans,
                    DistanceField::Scratch& s, DistanceField::Scratch& other) {
-    if (static_cast<long long>(w) * h < kTwoThreadPixels) {
-        edt_columns(w, h, 0, w, is_site, d2, site, s);
-        edt_rows(w, 0, h, d2, site, s);
+    const auto columns = [&](int c0, int c1, DistanceField::Scratch& scratch) {
+        if (spans)
+            edt_columns_kept(w, h, c0, c1, is_site, d2, spans, scratch);
+        else
+            edt_columns(w, h, c0, c1, is_site, d2, site, scratch);
+    };
+    long long kept_pixels = static_cast<long long>(w) * h;
+    if (spans) {
+        kept_pixels = 0;
+        for (int j = 0; j < h; ++j) kept_pixels += std::max(0, spans[2 * j + 1] - spans[2 * j]);
+    }
+    if (kept_pixels < kTwoThreadPixels) {
+        columns(0, w, s);
+        edt_rows(w, 0, h, d2, site, spans, s);
         return;
     }
-    const int cm = w / 2, jm = h / 2;
-    std::thread columns([&] { edt_columns(w, h, cm, w, is_site, d2, site, other); });
-    edt_columns(w, h, 0, cm, is_site, d2, site, s);
-    columns.join();
-    std::thread rows([&] { edt_rows(w, jm, h, d2, site, other); });
-    edt_rows(w, 0, jm, d2, site, s);
+    // The rows split where half the kept pixels lie on each side.
+    int jm = h / 2;
+    if (spans) {
+        long long seen = 0;
+        for (jm = 0; jm < h && 2 * seen < kept_pixels; ++jm)
+            seen += std::max(0, spans[2 * jm + 1] - spans[2 * jm]);
+    }
+    const int cm = w / 2;
+    std::thread right([&] { columns(cm, w, other); });
+    columns(0, cm, s);
+    right.join();
+    std::thread rows([&] { edt_rows(w, jm, h, d2, site, spans, other); });
+    edt_rows(w, 0, jm, d2, site, spans, s);
     rows.join();
 }
 
@@ -164,6 +230,26 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
     const int w = width_;
     const std::uint8_t* occ = occupancy.data();
     std::int32_t* site = site_.empty() ? nullptr : site_.data();
+    // A lazy field's tiles left out are never read: only each row's kept columns are exact
+    // (the others infinite), and no row without a kept tile is transformed.
+    spans_.clear();
+    if (lazy_ && !site && metric_ == DistanceMetric::euclidean) {
+        const std::vector<std::uint8_t> kept = far_.kept_tiles(w, height_);
+        if (!kept.empty()) {
+            constexpr int kTile = 1 << PendingBlocks::kTileShift;
+            const int tiles_w = (w + kTile - 1) / kTile;
+            spans_.assign(2 * static_cast<std::size_t>(height_), 0);
+            for (int j = 0; j < height_; ++j) {
+                const std::uint8_t* row =
+                    kept.data() + static_cast<std::size_t>(j / kTile) * tiles_w;
+                int a = 0, b = tiles_w;
+                while (a < b && !row[a]) ++a;
+                while (b > a && !row[b - 1]) --b;
+                spans_[2 * static_cast<std::size_t>(j)] = a * kTile;
+                spans_[2 * static_cast<std::size_t>(j) + 1] = std::min(w, b * kTile);
+            }
+        }
+    }
     if (metric_ == DistanceMetric::manhattan) {
         const auto boundary = static_cast<std::uint8_t>(ObstacleKind::boundary);
         manhattan_transform(w, height_, occ, false, boundary, dist2_.data(), site);
@@ -177,7 +263,7 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
             return occ[static_cast<std::size_t>(j) * w + i] ==
                    static_cast<std::uint8_t>(ObstacleKind::boundary);
         },
-        boundary2_.data(), nullptr, scratch_, other_scratch_);
+        boundary2_.data(), nullptr, kept_spans(), scratch_, other_scratch_);
     // At the start of growth the element sites are a seed's few pixels: the nearer of the
     // boundary and of each of them costs less than a second transform.
     constexpr std::size_t kFewSites = 16;
@@ -194,16 +280,26 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
         for (int j = 0; j < height_; ++j)
             for (int c = 0; c < chunks; ++c) {
                 const std::int32_t* row = dist2_.data() + static_cast<std::size_t>(j) * w;
+                const auto [x0, x1] = kept_run(j, c);
                 chunk_max[static_cast<std::size_t>(j) * chunks + c] =
-                    *std::max_element(row + c * kChunk, row + std::min(w, (c + 1) * kChunk));
+                    x0 < x1 ? *std::max_element(row + x0, row + x1) : 0;
             }
         for (const int e : elements) nearer_site(e % w, e / w, chunk_max);
     } else {
         separable_edt(
             w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
-            dist2_.data(), site, scratch_, other_scratch_);
+            dist2_.data(), site, kept_spans(), scratch_, other_scratch_);
     }
     if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
+}
+
+std::pair<int, int> DistanceField::kept_run(int j, int chunk) const {
+    int x0 = chunk * kChunk, x1 = std::min(width_, x0 + kChunk);
+    if (!spans_.empty()) {
+        x0 = std::max(x0, spans_[2 * static_cast<std::size_t>(j)]);
+        x1 = std::min(x1, spans_[2 * static_cast<std::size_t>(j) + 1]);
+    }
+    return {x0, x1};
 }
 
 void DistanceField::nearer_site(int si, int sj, std::vector<std::int32_t>& chunk_max) {
@@ -214,7 +310,8 @@ void DistanceField::nearer_site(int si, int sj, std::vector<std::int32_t>& chunk
         std::int32_t* most = chunk_max.data() + static_cast<std::size_t>(j) * chunks;
         const std::int32_t dy2 = (j - sj) * (j - sj);
         for (int c = 0; c < chunks; ++c) {
-            const int x0 = c * kChunk, x1 = std::min(width_, x0 + kChunk);
+            const auto [x0, x1] = kept_run(j, c);
+            if (x0 >= x1) continue;
             const int dx = si < x0 ? x0 - si : si >= x1 ? si - (x1 - 1) : 0;
             if (dx * dx + dy2 >= most[c]) continue;  // no pixel of the run comes nearer
             std::int32_t m = 0;
@@ -239,7 +336,7 @@ void DistanceField::recompute_elements(const std::vector<std::uint8_t>& occupanc
     } else {
         separable_edt(
             w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
-            dist2_.data(), site, scratch_, other_scratch_);
+            dist2_.data(), site, kept_spans(), scratch_, other_scratch_);
     }
     if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
 }
@@ -477,7 +574,7 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
         const std::uint8_t* mask = window_sites_.data();
         separable_edt(
             ww, wh, [&](int i, int j) { return mask[static_cast<std::size_t>(j) * ww + i] != 0; },
-            window_d2_.data(), window_site_.data(), window_scratch_, other_scratch_);
+            window_d2_.data(), window_site_.data(), nullptr, window_scratch_, other_scratch_);
         WindowMeasure measure{window_d2_.data(), window_site_.data(), w, ww, wx0, wy0};
         auto measurable = [&](int i, int j) {
             return i >= wx0 && i <= wx1 && j >= wy0 && j <= wy1;

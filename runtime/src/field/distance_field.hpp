@@ -90,6 +90,9 @@ class DistanceField {
     // which the site comes nearer to than that is left alone, and the others' maxima updated.
     static constexpr int kChunk = 64;
     void nearer_site(int si, int sj, std::vector<std::int32_t>& chunk_max);
+    // Columns [first, second) of run `chunk` of row j that are kept exact.
+    std::pair<int, int> kept_run(int j, int chunk) const;
+    const int* kept_spans() const { return spans_.empty() ? nullptr : spans_.data(); }
     // Updates `d2` (and `site` when not null) for the new sites; returns changed pixels in `out`.
     void propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
                    std::vector<std::int32_t>* site, std::vector<int>* out);
@@ -104,6 +107,8 @@ class DistanceField {
     DistanceMetric metric_;
     bool lazy_ = false;
     PendingBlocks far_;
+    // Lazy, with tiles left out: per row, the columns [2j], [2j + 1] kept exact. Empty: all.
+    std::vector<int> spans_;
     std::vector<std::int32_t> dist2_;      // to the nearest site of any kind
     std::vector<std::int32_t> boundary2_;  // to the nearest boundary site
     std::vector<std::int32_t> site_;       // empty without a feature transform

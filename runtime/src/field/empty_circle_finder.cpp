@@ -280,7 +280,9 @@ void EmptyCircleFinder::rebuild() {
             floor[ti] = m;
         }
     }
-    for (int t = 0; t < tiles_w_ * tiles_h_; ++t) refresh(t, ~std::uint64_t{0});
+    // A tile the lazy field leaves out holds no pixel that may centre a circle: none to decide.
+    for (int t = 0; t < tiles_w_ * tiles_h_; ++t)
+        if (!field_.lazy() || field_.far_blocks().keeps_tile(t)) refresh(t, ~std::uint64_t{0});
     blocks_.reset(field_.lazy() ? static_cast<std::size_t>(field_.far_blocks().count()) : 0);
     if (field_.lazy()) {
         field_.far_blocks().clear_raised();

@@ -38,28 +38,31 @@ void PendingBlocks::reset(int width, int height, const std::int32_t* d2, Distanc
     witness_.assign(n, -1);
     witness_d2_.assign(n, 0);
     tile_bound_.assign(n << 6, 0);
+    kept_ = kept_tiles(width, height);
+    // Tiles left out keep bound 0, so that defer() skips them.
     for (int t = 0; t < tiles_w_ * tiles_h_; ++t)
-        tile_bound_[slot_of(t % tiles_w_, t / tiles_w_)] = max_over(tile_rect(t), d2);
-    kept_.clear();
-    const std::size_t tiles = static_cast<std::size_t>(tiles_w_) * tiles_h_;
-    if (centre_tiles_.size() == tiles) {
-        // Tiles left out (set_centre_tiles()): bound 0, so that defer() skips them.
-        kept_.assign(tiles, 0);
-        for (int tj = 0; tj < tiles_h_; ++tj)
-            for (int ti = 0; ti < tiles_w_; ++ti) {
-                bool kept = false;
-                for (int j = std::max(0, tj - 1); j <= std::min(tiles_h_ - 1, tj + 1); ++j)
-                    for (int i = std::max(0, ti - 1); i <= std::min(tiles_w_ - 1, ti + 1); ++i)
-                        kept = kept || centre_tiles_[static_cast<std::size_t>(j * tiles_w_ + i)];
-                kept_[static_cast<std::size_t>(tj * tiles_w_ + ti)] = kept;
-                if (!kept) tile_bound_[slot_of(ti, tj)] = 0;
-            }
-    }
+        if (kept_.empty() || kept_[static_cast<std::size_t>(t)])
+            tile_bound_[slot_of(t % tiles_w_, t / tiles_w_)] = max_over(tile_rect(t), d2);
     groups_w_ = ((blocks_w_ - 1) >> kGroupShift) + 1;
     groups_h_ = ((blocks_h_ - 1) >> kGroupShift) + 1;
     group_bound_.assign(static_cast<std::size_t>(groups_w_) * groups_h_, 0);
     groups_.reset(group_bound_.size());
     for (int b = 0; b < count(); ++b) update_bound(b);
+}
+
+std::vector<std::uint8_t> PendingBlocks::kept_tiles(int width, int height) const {
+    const int tw = ((width - 1) >> kTileShift) + 1, th = ((height - 1) >> kTileShift) + 1;
+    std::vector<std::uint8_t> kept;
+    if (centre_tiles_.size() != static_cast<std::size_t>(tw) * th) return kept;
+    kept.assign(centre_tiles_.size(), 0);
+    for (int tj = 0; tj < th; ++tj)
+        for (int ti = 0; ti < tw; ++ti) {
+            if (!centre_tiles_[static_cast<std::size_t>(tj * tw + ti)]) continue;
+            for (int j = std::max(0, tj - 1); j <= std::min(th - 1, tj + 1); ++j)
+                for (int i = std::max(0, ti - 1); i <= std::min(tw - 1, ti + 1); ++i)
+                    kept[static_cast<std::size_t>(j * tw + i)] = 1;
+        }
+    return kept;
 }
 
 PendingBlocks::Rect PendingBlocks::square_at(int x0, int y0, int shift) const {

@@ -34,9 +34,15 @@ class PendingBlocks {
     // chosen, and a crest test of a pixel that may centre one reads only its own and the
     // neighbouring tiles, which are kept.
     void set_centre_tiles(std::vector<std::uint8_t> tiles) { centre_tiles_ = std::move(tiles); }
+    // Per tile of a width x height grid, whether it is kept: within one tile of a centre tile.
+    // Empty when every tile is kept (no centre tiles set, or set for another grid).
+    std::vector<std::uint8_t> kept_tiles(int width, int height) const;
     // False for a pixel of a tile left out (set_centre_tiles()).
     bool keeps(int pixel) const {
         return kept_.empty() || kept_[static_cast<std::size_t>(tile_of(pixel))] != 0;
+    }
+    bool keeps_tile(int tile) const {
+        return kept_.empty() || kept_[static_cast<std::size_t>(tile)] != 0;
     }
     int count() const { return blocks_w_ * blocks_h_; }
     // >= every squared distance in the field.
