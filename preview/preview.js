@@ -421,6 +421,9 @@ function fillFidelity(g) {
   };
   row("motifs", `${g.motifs}` + (g.restarts ? ` (${g.restarts} restarts)` : ""), "");
   row("NN median", num(g.nn_median, 3), "1", Math.abs((g.nn_median || 0) - 1) > 0.1);
+  // Away from the panel's and the reference's edges, where an edge motif's neighbours are few.
+  row("NN median inner", num(g.nn_median_inner, 3), num(g.nn_median_reference_inner, 3),
+      Math.abs((g.nn_median_inner || 0) / (g.nn_median_reference_inner || 1) - 1) > 0.1);
   const same = g.same_symbol_neighbours || {};
   row("same-symbol pairs", pct(same.result), pct(same.reference),
       Math.abs((same.result || 0) - (same.reference || 0)) > 0.1);

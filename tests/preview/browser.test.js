@@ -289,6 +289,8 @@ async function growthTools(browser) {
   }));
   check(g && !fidelity.hidden && fidelity.rows.motifs[0] === String(g.motifs) &&
         fidelity.rows["NN median"][0] === g.nn_median.toFixed(3) &&
+        fidelity.rows["NN median inner"][0] === g.nn_median_inner.toFixed(3) &&
+        fidelity.rows["NN median inner"][1] === g.nn_median_reference_inner.toFixed(3) &&
         Object.keys(g.symbols).every((k) => fidelity.rows[k][1] === (100 * g.symbols[k].reference).toFixed(1) + "%") &&
         fidelity.rows["largest hole"][0] === g.largest_hole.toFixed(2) &&
         fidelity.bars === g.nn_histogram.result.length + g.nn_histogram.reference.length,
