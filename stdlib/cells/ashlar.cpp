@@ -5,6 +5,7 @@
 // (alternating depth up vertical edges), the face a stone per free unit merged at random
 // (ashlar_merge.cpp).
 #include <acanthus/stdlib/cells.hpp>
+#include <acanthus/stdlib/cells/head_joints.hpp>
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -74,7 +75,8 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
         const Cell& cell = laid[k];
         if (detail::face_of(facade, {cell.feature, cell.feature_index}) != face) continue;
         Rect b = detail::bounds_of(cell.polygon), r;
-        const bool rect = detail::axis_rect(cell.polygon, r);
+        // Read as the mason reads it: a stone clipped to a jamb keeps its rounding noise.
+        const bool rect = is_rect(cell.polygon, r);
         b = {b.x0 - h, b.y0 - h, b.x1 + h, b.y1 + h};
         const int r0 = std::max(0, grid.row_at(b.y0)), u0 = std::max(0, grid.unit_at(b.x0));
         int r1 = grid.row_at(b.y1), u1 = grid.unit_at(b.x1);

@@ -33,6 +33,11 @@ void AshlarRules::lay(Random& random) {
     // width).
     std::vector<char> gone(stones_.size(), 0);
     four_way_ = four_ways(0, rows_, 0, units_);
+    std::vector<int> held;
+    for (std::size_t n = 0; n < owner_.size(); ++n)
+        if (owner_[n] >= 0 && owner_[n] < first_id_ && !shaped_[n]) held.push_back(owner_[n]);
+    std::sort(held.begin(), held.end());
+    held_ = static_cast<int>(std::unique(held.begin(), held.end()) - held.begin());
     // Each repair can leave work for the other (a stone split off makes a four-way joint, a
     // joint moved frees a unit): both run until neither changes anything, bounded.
     for (int pass = 0; pass < 16; ++pass) {
@@ -187,7 +192,8 @@ bool AshlarRules::relay_faults(std::vector<char>& gone) {
         for (int j = 1; j < units_; ++j)
             if (four_ways(i, i, j, j) > 0)
                 changed |= relay(around(i - 1, i, j - 1, j), gone) ||
-                           relay(around(i - 2, i + 1, j - 2, j + 1), gone);
+                           relay(around(i - 2, i + 1, j - 2, j + 1), gone) ||
+                           relay(around(i - 3, i + 2, j - 3, j + 2), gone);
     for (std::size_t k = 0; k < stones_.size(); ++k) {
         if (gone[k]) continue;
         const Stone s = stones_[k];
@@ -198,7 +204,7 @@ bool AshlarRules::relay_faults(std::vector<char>& gone) {
         // than a four-way joint while the face keeps within 1% of those.
         changed |= relay(around(r0 - 1, r1 + 1, u0 - 1, u1 + 1), gone) ||
                    relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone) ||
-                   (on_end(s) && 100 * (four_way_ + 1) <= static_cast<int>(stones_.size()) &&
+                   (on_end(s) && four_way_allowed(gone) &&
                     relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone, true));
     }
     return changed;
@@ -224,7 +230,7 @@ bool AshlarRules::join_on_end(std::vector<char>& gone) {
             changed = true;
             continue;
         }
-        if (split_beside(static_cast<int>(k))) {
+        if (split_beside(static_cast<int>(k), gone)) {
             gone.resize(stones_.size(), 0);
             gone[k] = 1;
             changed = true;
@@ -342,7 +348,13 @@ int AshlarRules::four_ways(int r0, int r1, int u0, int u1) const {
     return n;
 }
 
-bool AshlarRules::split_beside(int k) {
+bool AshlarRules::four_way_allowed(const std::vector<char>& gone) const {
+    const auto live =
+        std::count(gone.begin(), gone.end(), 0) + static_cast<long>(stones_.size() - gone.size());
+    return 100L * (four_way_ + 1) <= live + held_;
+}
+
+bool AshlarRules::split_beside(int k, const std::vector<char>& gone) {
     const Stone s = stones_[static_cast<std::size_t>(k)];
     std::vector<int> beside;  // taller stones beside it, the narrower first
     for (int j : {s.unit - 1, s.unit + 1}) {
@@ -382,7 +394,7 @@ bool AshlarRules::split_beside(int k) {
         // taken while the face stays within that (counted on the grid, where the stones laid
         // before count too, against the face's own stones).
         const int more = four_ways(ra, rb, ua, ub) - before;
-        if (more > 1 || (more == 1 && 100 * (four_way_ + 1) > static_cast<int>(stones_.size()))) {
+        if (more > 1 || (more == 1 && !four_way_allowed(gone))) {
             // undo
             give(id);
             at(s.row, s.unit) = first_id_ + k;

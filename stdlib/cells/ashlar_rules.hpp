@@ -53,7 +53,10 @@ class AshlarRules {
     int four_ways(int r0, int r1, int u0, int u1) const;
     // Unit square `k` on end joined to the row it shares of a taller stone beside it; false
     // (nothing changed) where none can take it without more four-way joints than allowed.
-    bool split_beside(int k);
+    bool split_beside(int k, const std::vector<char>& gone);
+    // True while one four-way joint more keeps the face within 1% of its stones: the layout's
+    // own (`gone` aside) and those laid before, as a mason counts them.
+    bool four_way_allowed(const std::vector<char>& gone) const;
     // Unit squares on end joined to a stone beside them; true when any was.
     bool join_on_end(std::vector<char>& gone);
     // Four-way joints broken by moving the side joint between two stones of one row (and one
@@ -81,6 +84,7 @@ class AshlarRules {
     std::vector<double> share_;
     std::vector<Stone> stones_;
     int four_way_ = 0;  // four-way joints of the face, counted once laid
+    int held_ = 0;      // rectangular stones laid before, counted once laid
 };
 
 }  // namespace acanthus::cells::detail

@@ -264,8 +264,12 @@ std::vector<std::string> faults(const Facade& f, const std::vector<Cell>& cells,
                                                " head joints off by up to " +
                                                std::to_string(m.joint_deviation));
     } else {
+        std::string at;
+        for (Point p : m.four_way_at)
+            at += " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
         fault(m.four_way * 1000 > m.stones * k.four_way_per_1000,
-              std::to_string(m.four_way) + " four-way joints in " + std::to_string(m.stones));
+              std::to_string(m.four_way) + " four-way joints in " + std::to_string(m.stones) +
+                  " at" + at);
         fault(m.unit_square_runs > k.unit_square_runs,
               std::to_string(m.unit_square_runs) + " runs of unit squares");
         fault(m.stones_on_end > k.stones_on_end,
@@ -457,14 +461,11 @@ long stone_walls(const std::vector<std::string>& files, int seeds, double unit =
             const Texture t = texture(f, ashlar_tree(), o, static_cast<std::uint64_t>(seed));
             MasonReport m;
             Known k = known(name, true);
-            // Left on the 15 cm grid, by name (counted, not fixed): the wide opening's four-way
-            // joints (2 in about 130 stones on some seeds), runs of unit squares on the terrace
-            // (up to 2) and the round-headed front (1) on some seeds.
-            if (unit > 0) {
-                if (name == "wide-opening.svg") k.four_way_per_1000 = 17;
-                if (name == "terrace.svg") k.unit_square_runs = 2;
-                if (name == "ashlar-arches.svg") k.unit_square_runs = 1;
-            }
+            // Left on the 15 cm grid, by name (counted, not fixed): runs of unit squares on the
+            // terrace (up to 3, stones 21 cm wide stacked in one column) and the
+            // round-headed front (1) on a few seeds.
+            if (unit > 0 && name == "terrace.svg") k.unit_square_runs = 3;
+            if (unit > 0 && name == "ashlar-arches.svg") k.unit_square_runs = 1;
             std::vector<std::string> v = faults(f, t.cells, spec, &m, k);
             // Left, by name (found here, not fixed): on the 15 cm grid one voussoir of the stone
             // gable is clipped by a stone laid before it (on every seed; its two close rings,
@@ -521,15 +522,17 @@ TEST(CellsUnseen, AshlarWallsOverSeeds) {
     EXPECT_GT(stone_walls(files, 24), 100);
 }
 
-// The coarser grid of the pictures (15 cm units) held to the same rules, seeds 1-12.
+// The coarser grid of the pictures (15 cm units) held to the same rules, seeds 1-24 on every
+// facade (the few faults left allowed by name in stone_walls).
 TEST(CellsUnseen, AshlarWallsCoarseGrid) {
     std::vector<std::string> files = stone_facades();
     for (const char* n : {"row-house", "gable", "oculus", "insets"})
         files.push_back(std::string(ACANTHUS_SOURCE_DIR) + "/examples/facades/" + n + ".svg");
-    for (const char* n : {"chapel", "terrace", "mill", "ashlar-front"})
+    for (const char* n :
+         {"shopfront", "chapel", "terrace", "gable-lancet", "warehouse", "ashlar-front", "mill"})
         files.push_back(std::string(ACANTHUS_SOURCE_DIR) + "/tests/stdlib/cells/facades/" + n +
                         ".svg");
-    EXPECT_GT(stone_walls(files, 12, 15), 20);
+    EXPECT_GT(stone_walls(files, 24, 15), 20);
 }
 
 // A level top 2.2 cm past whole courses over a window head: one cut course under it, not two,
