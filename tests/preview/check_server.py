@@ -244,6 +244,13 @@ def main():
             check(s["state"] == "ok" and any("#include <acanthus/environment.hpp>\n" in p
                                              for p in preludes),
                   "an #include <acanthus/...> is precompiled with the prelude: %s" % s["output"][:300])
+            # The standard library's members generated code uses most are instantiated in the
+            # prelude, and it precompiled (a prelude that fails falls back to slower builds).
+            with_env = [p for p in glob.glob(os.path.join(cache, "prelude-*", "prelude.hpp"))
+                        if "#include <acanthus/environment.hpp>\n" in open(p).read()]
+            check(with_env and all("acanthus::prelude_detail" in open(p).read() and
+                                   os.path.exists(p + ".gch") for p in with_env),
+                  "the prelude instantiates the common templates and is precompiled: %s" % with_env)
             save(rules, good + "\n%source\n#include <acanthus/no_such_header.hpp>\n%endsource\n")
             s = server.wait_revision(s["revision"])
             check(s["state"] == "error" and "no_such_header" in s["output"],
