@@ -112,7 +112,11 @@ inline void instantiate() {
 // a third of a small rule file's build, the growth library's and the cells library's headers half
 // of arrangement's and facade's. Only names of those forms, which do not change while the
 // preview runs (the prelude's cache key has the libraries they come with).
-std::string library_includes(const std::string& cpp) {
+//
+// A library's header may have a `_prelude.hpp` beside it (<acanthus/stdlib/growth_prelude.hpp>):
+// what the library's rule code instantiates, instantiated once with the prelude too. Its size and
+// time are in the prelude's text, so an edited one makes a new prelude.
+std::string library_includes(const std::string& cpp, const std::vector<std::string>& dirs) {
     static const std::regex include(
         R"(^[ \t]*#[ \t]*include[ \t]*<([a-z_]+|acanthus/[A-Za-z0-9_/]+\.hpp)>)",
         std::regex::multiline);
@@ -122,6 +126,16 @@ std::string library_includes(const std::string& cpp) {
         names.insert((*it)[1]);
     std::string text;
     for (const std::string& name : names) text += "#include <" + name + ">\n";
+    for (const std::string& name : names) {
+        if (name.rfind("acanthus/", 0) != 0) continue;
+        const std::string extra = name.substr(0, name.size() - 4) + "_prelude.hpp";
+        for (const std::string& dir : dirs) {
+            const std::string path = (fs::path(dir) / extra).string();
+            if (!fs::is_regular_file(path)) continue;
+            text += "#include <" + extra + ">  // " + file_identity(path) + "\n";
+            break;
+        }
+    }
     return text;
 }
 
@@ -193,7 +207,7 @@ bool use_precompiled_prelude(const Toolchain& toolchain, BuildOptions& options, 
     std::string prelude = kPrelude;
     if (options.shared_library) prelude += kHostInstantiations;
     prelude += kCommonInstantiations;
-    const std::string own = library_includes(generated);
+    const std::string own = library_includes(generated, toolchain.include_dirs);
     // A misspelt header fails here too: then the prelude without them (the build reports it).
     if (!own.empty() && precompile(toolchain, options, prelude + own, error)) return true;
     error.clear();

@@ -248,8 +248,8 @@ def main():
             # prelude, and it precompiled (a prelude that fails falls back to slower builds).
             with_env = [p for p in glob.glob(os.path.join(cache, "prelude-*", "prelude.hpp"))
                         if "#include <acanthus/environment.hpp>\n" in open(p).read()]
-            check(with_env and all("acanthus::prelude_detail" in open(p).read() and
-                                   os.path.exists(p + ".gch") for p in with_env),
+            check(any("acanthus::prelude_detail" in open(p).read() and os.path.exists(p + ".gch")
+                      for p in with_env),
                   "the prelude instantiates the common templates and is precompiled: %s" % with_env)
             save(rules, good + "\n%source\n#include <acanthus/no_such_header.hpp>\n%endsource\n")
             s = server.wait_revision(s["revision"])
@@ -453,6 +453,14 @@ def main():
                   tools[0]["file_param"] == "growth_guides" and
                   tools[0]["kinds"] == ["flow", "boundary", "spray"],
                   "growth's stroke tools offered when it is imported: %s" % tools)
+            # The library's own instantiations (growth_prelude.hpp) precompiled with its header.
+            cache = (os.environ.get("ACANTHUS_CACHE_DIR") or
+                     os.path.expanduser(os.path.join("~", ".cache", "acanthus")))
+            with_growth = [p for p in glob.glob(os.path.join(cache, "prelude-*", "prelude.hpp"))
+                           if "#include <acanthus/stdlib/growth.hpp>\n" in open(p).read()]
+            check(any("#include <acanthus/stdlib/growth_prelude.hpp>" in open(p).read() and
+                      os.path.exists(p + ".gch") for p in with_growth),
+                  "growth's prelude instantiations precompiled with its header: %s" % with_growth)
             code, _ = server.post("/guides", {"library": "cells", "strokes": []})
             check(code == 409, "strokes for a library the program does not use refused (%d)" % code)
             # Guides are written beside the rule file without following links: neither a
