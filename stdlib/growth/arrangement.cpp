@@ -66,24 +66,10 @@ void Arrangement::set_desired(int from, int to, Vector desired) {
 
 std::vector<int> Arrangement::near(Point p, double radius) const {
     std::vector<int> out;
-    // Fewer nodes than cells to look in: every node is looked at instead.
-    const double span = 2 * radius / cell_ + 2;
-    if (span * span > static_cast<double>(nodes_.size())) {
-        for (int id = 0; id < static_cast<int>(nodes_.size()); ++id)
-            if (nodes_[id].alive && distance(nodes_[id].position, p) <= radius) out.push_back(id);
-        return out;
-    }
-    auto i0 = static_cast<std::int64_t>(std::floor((p.x - radius) / cell_));
-    auto i1 = static_cast<std::int64_t>(std::floor((p.x + radius) / cell_));
-    auto j0 = static_cast<std::int64_t>(std::floor((p.y - radius) / cell_));
-    auto j1 = static_cast<std::int64_t>(std::floor((p.y + radius) / cell_));
-    for (auto i = i0; i <= i1; ++i)
-        for (auto j = j0; j <= j1; ++j) {
-            auto it = grid_.find(key(i, j));
-            if (it == grid_.end()) continue;
-            for (int id : it->second)
-                if (distance(nodes_[id].position, p) <= radius) out.push_back(id);
-        }
+    any_near(p, radius, [&](int id) {
+        out.push_back(id);
+        return false;
+    });
     std::sort(out.begin(), out.end());
     return out;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <acanthus/point.hpp>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -45,6 +46,10 @@ class Arrangement {
 
     // Alive nodes within `radius` of p, by index.
     std::vector<int> near(Point p, double radius) const;
+    // Calls visit(id) for each alive node within `radius` of p, in no set order, until it
+    // returns true (then true); nothing is allocated, for the hottest queries.
+    template <class Visit>
+    bool any_near(Point p, double radius, Visit visit) const;
     // The nearest alive node within `radius` other than `except`, or -1.
     int nearest(Point p, double radius, int except) const;
     // True when segment a-b crosses a link that shares no end with it.
@@ -68,5 +73,32 @@ class Arrangement {
     double longest_link_ = 0;
     double largest_radius_ = 0;
 };
+
+template <class Visit>
+bool Arrangement::any_near(Point p, double radius, Visit visit) const {
+    // Fewer nodes than cells to look in: every node is looked at instead.
+    const double span = 2 * radius / cell_ + 2;
+    if (span * span > static_cast<double>(nodes_.size())) {
+        for (int id = 0; id < static_cast<int>(nodes_.size()); ++id)
+            if (nodes_[static_cast<std::size_t>(id)].alive &&
+                distance(nodes_[static_cast<std::size_t>(id)].position, p) <= radius && visit(id))
+                return true;
+        return false;
+    }
+    const auto i0 = static_cast<std::int64_t>(std::floor((p.x - radius) / cell_));
+    const auto i1 = static_cast<std::int64_t>(std::floor((p.x + radius) / cell_));
+    const auto j0 = static_cast<std::int64_t>(std::floor((p.y - radius) / cell_));
+    const auto j1 = static_cast<std::int64_t>(std::floor((p.y + radius) / cell_));
+    for (auto i = i0; i <= i1; ++i)
+        for (auto j = j0; j <= j1; ++j) {
+            auto it = grid_.find(key(i, j));
+            if (it == grid_.end()) continue;
+            for (int id : it->second)
+                if (distance(nodes_[static_cast<std::size_t>(id)].position, p) <= radius &&
+                    visit(id))
+                    return true;
+        }
+    return false;
+}
 
 }  // namespace acanthus::growth::detail

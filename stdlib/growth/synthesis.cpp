@@ -536,21 +536,22 @@ int Synthesis::too_close(int id, Point at, int symbol, bool placed_only) const {
 
 bool Synthesis::crowded(int id, Point at) const {
     if (on_lattice() || crowd_limit_ <= 0) return false;
-    auto placed_near = [&](Point p, int self) {
-        std::vector<int> out;
-        for (int other : pattern_.near(p, crowd_reach_))
-            if (other != id && other != self && pattern_[other].placed() &&
-                distance(pattern_[other].position, p) < crowd_reach_)
-                out.push_back(other);
-        return out;
+    // Counted in place, stopping as soon as a count is over: this runs per seed, per restart
+    // candidate and per relaxation move.
+    auto over = [&](Point p, int self, int limit, auto each) {
+        int count = 0;
+        return pattern_.any_near(p, crowd_reach_, [&](int other) {
+            const Node& o = pattern_[other];
+            if (other == id || other == self || !o.placed() ||
+                !(distance(o.position, p) < crowd_reach_))
+                return false;
+            return ++count > limit || each(other);
+        });
     };
-    const std::vector<int> around = placed_near(at, -1);
-    if (static_cast<int>(around.size()) > crowd_limit_) return true;
-    for (int other : around)
-        if (static_cast<int>(placed_near(pattern_[other].position, other).size()) + 1 >
-            crowd_limit_)
-            return true;
-    return false;
+    // A neighbour gains the motif at `at` too: over when it has crowd_limit_ others already.
+    return over(at, -1, crowd_limit_, [&](int other) {
+        return over(pattern_[other].position, other, crowd_limit_ - 1, [](int) { return false; });
+    });
 }
 
 void Synthesis::grow(int id) {

@@ -394,9 +394,10 @@ def dart_reference(path, seed, share_a, width, height, gap, size_a, size_b, jitt
     path.write_text(json.dumps({"elements": elements}))
 
 
-def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015, nn_inner=None):
+def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015, nn_inner=None,
+                same_allowed=0.03):
     """Each reference in each of its panels, `seeds` seeds: the symbol mix within `mix_allowed`
-    of the reference on every run, the same-symbol neighbour share within 3 points on every run,
+    of the reference on every run, the same-symbol neighbour share within `same_allowed` on every run,
     the largest empty circle at most 1.5 NN, the NN median within `nn_mean` of the reference's
     (its interior elements', like for like) on average and `nn_each` on every run, and its mean
     over all the runs within `nn_bias` (no bias of the growth as a whole). With `nn_inner`, also
@@ -434,9 +435,9 @@ def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015, 
                   f"mix: {name}: NN median {mean_nn:.3f} of the reference's on average "
                   f"({100 * nn_mean:.0f}% allowed), {min(nns):.3f} to {max(nns):.3f} per run "
                   f"({100 * nn_each:.0f}% allowed)")
-            check(all(abs(v) <= 0.03 for v in sames),
+            check(all(abs(v) <= same_allowed for v in sames),
                   f"mix: {name}: same-symbol neighbour share {100 * min(sames):+.1f} to "
-                  f"{100 * max(sames):+.1f} points off per run (3 allowed)")
+                  f"{100 * max(sames):+.1f} points off per run ({100 * same_allowed:.1f} allowed)")
     within = sum(abs(v - 1) <= 0.05 for v in every)
     print(f"   NN median within 5%: {within} of {len(every)} runs (all motifs), "
           f"{sum(abs(v - 1) <= 0.05 for v in inner_every)} (inner); worst "
@@ -559,6 +560,33 @@ def case_unseen_fresh():
                                         "shield.svg", "circle.svg")]
     grow_unseen([(ref, panels) for ref in refs], 3, 0.05, 0.09,
                 mix_allowed=0.05, nn_inner=0.10)
+
+
+def case_unseen_later():
+    """References made while the jittered lattice's close spacing was studied (none of the code
+    was tuned on them): triangular lattices jittered by 0.12 and
+    0.18 of their spacing, a honeycomb jittered by 0.1 of its edge, Poisson-disc sets of spacing
+    11 and 16 and a three-symbol one of spacing 7, each in the L, the star, the frame and a
+    rectangle, 3 seeds: grow_unseen's checks with the bounds measured (docs/stdlib/growth.md,
+    Limitations): the NN median within 7% per run, all against all and inner against inner (70
+    and 64 of the 72 runs within 5%, 6.4% off at worst), 5% on average per reference and panel;
+    the same-symbol share within 3.5 points (the spacing-16 set puts 30 motifs in the star: 3.3
+    points off once)."""
+    refs = []
+    for seed, share, w, h, gap, sa, sb, jitter, shares in (
+            (401, 0.5, 95, 85, 11, 3.5, 3.5, 0.12, None),
+            (402, 0.3, 90, 80, 9.5, 3.0, 3.2, 0.18, None),
+            (403, 0.4, 100, 90, 10, 3.2, 3.0, ("honeycomb", 0.1), None),
+            (404, 0.55, 110, 95, 11, 3.5, 4.0, None, None),
+            (405, 0.0, 90, 80, 7, 2.2, 2.6, None, (0.3, 0.3, 0.4)),
+            (406, 0.35, 140, 120, 16, 5.5, 5.0, None, None)):
+        path = WORK / f"later-{seed}.json"
+        dart_reference(path, seed, share, w, h, gap, sa, sb, jitter, shares)
+        refs.append(path)
+    panels = [str(PANELS / p) for p in ("l-shape.svg", "star.svg", "frame.svg")] + \
+        ["rect:170,120"]
+    grow_unseen([(ref, panels) for ref in refs], 3, 0.05, 0.07, mix_allowed=0.05, nn_inner=0.07,
+                same_allowed=0.035)
 
 
 def case_gap_factor():
