@@ -47,6 +47,17 @@ struct AnyProxy {
     }
 };
 
+// The bounds of every proxy of `e` (an empty rectangle at the origin without one).
+Rect bounds_of(const Element& e) {
+    Rect bounds = e.proxy_count() > 0 ? e.proxy(0).bounds() : Rect{};
+    for (std::size_t p = 1; p < e.proxy_count(); ++p) {
+        const Rect b = e.proxy(p).bounds();
+        bounds = {std::min(bounds.x0, b.x0), std::min(bounds.y0, b.y0), std::max(bounds.x1, b.x1),
+                  std::max(bounds.y1, b.y1)};
+    }
+    return bounds;
+}
+
 bool boxes_meet(const Rect& a, const Rect& b) {
     return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
 }
@@ -179,17 +190,15 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     const auto& g = group.transforms();
     Orbit out;
     if (g.size() < 2) return out;
+    images.reserve(g.size());
+    transforms.reserve(g.size());
+    apart.reserve(g.size());
     // The element lies within `reach` of the middle of its bounds, so an image under g within
     // `reach` of g(middle). An image whose box is clear of the element's is neither in its
     // place nor overlapping it, and the box alone often tells whether the image is kept: then
     // no scratch image is needed (the margin covers the rounding of the transformed proxies).
     const bool boxed = e.proxy_count() > 0;
-    Rect bounds = boxed ? e.proxy(0).bounds() : Rect{};
-    for (std::size_t p = 1; p < e.proxy_count(); ++p) {
-        const Rect b = e.proxy(p).bounds();
-        bounds = {std::min(bounds.x0, b.x0), std::min(bounds.y0, b.y0), std::max(bounds.x1, b.x1),
-                  std::max(bounds.y1, b.y1)};
-    }
+    const Rect bounds = bounds_of(e);
     const Point middle = bounds.center();
     const double reach = 0.5 * std::hypot(bounds.width(), bounds.height());
     const double margin =
@@ -234,6 +243,9 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     // g(e) = h(e) only when an image other than the identity's coincides with e: only then do
     // the images repeat (once per coset of the stabilizer).
     std::vector<const ImageElement*> kept;
+    kept.reserve(images.size());
+    out.images.reserve(images.size());
+    out.elements.reserve(images.size());
     for (std::size_t k = 0; k < images.size(); ++k) {
         bool repeated = false;
         if (fixed)
@@ -285,7 +297,8 @@ bool same_isometry(const Isometry& a, const Isometry& b, double tolerance) {
 std::vector<std::optional<Orbit>> placeable_orbits(
     const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region* region,
     double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image,
-    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed) {
+    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed,
+    const std::function<bool(const Proxy&)>& hits_placed_fundamental) {
     std::vector<std::optional<Orbit>> out;
     out.reserve(batch.size());
     const bool every_image = static_cast<bool>(hits_placed);
@@ -323,7 +336,26 @@ std::vector<std::optional<Orbit>> placeable_orbits(
             }
             ok = !hits_batch(p, identity, !every_image);
         }
-        for (std::size_t i = 0; ok && every_image && i < orbit.elements.size(); ++i) {
+        // An image g(e) overlaps a placed y = t(f) (or an earlier one of the batch) just when e
+        // overlaps t'(f) = g^-1(y). When e lies inside the window t'(f) meets it and is placed,
+        // so the checks of e above have decided for its images, unless t'(f) is f itself: an
+        // overlap of e with a fundamental element is the rule's business, not g(e)'s with y.
+        bool each = every_image && ok;
+        if (each && hits_placed_fundamental &&
+            group.keeps_within(bounds_of(*e), 10 * tolerance) == 1) {
+            each = false;
+            for (std::size_t k = 0; !each && k < e->proxy_count(); ++k) {
+                const Proxy& p = e->proxy(k);
+                each = hits_placed_fundamental(p) ||
+                       index.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
+                           const auto m = static_cast<std::size_t>(en.element);
+                           return same_isometry(transforms[m], identity, tolerance) &&
+                                  overlaps(p, images[m]->proxy(static_cast<std::size_t>(en.proxy)),
+                                           tolerance);
+                       });
+            }
+        }
+        for (std::size_t i = 0; ok && each && i < orbit.elements.size(); ++i) {
             ImageElement& image = *orbit.elements[i];
             for (std::size_t k = 0; ok && k < image.proxy_count(); ++k) {
                 const Proxy& p = image.proxy(k);
