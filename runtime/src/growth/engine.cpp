@@ -186,10 +186,9 @@ struct GrowthEngine::Impl {
     std::unique_ptr<CircleSource> make_source() {
         CircleSourceOptions o{options.distance, min_radius, options.lazy_field_pixels, {}};
         if (group) o.centres = domain_pixels(raster.grid(), *group);
-        // A frieze checks every kept image against the placed elements (placeable_orbits()):
-        // queries reach all over the band, and nothing would be deferred. A tile's element
-        // inside its window needs no such check.
-        if (group && !options.frieze) near_cells = near_zone(raster.grid(), o.centres);
+        // With translations every kept image is checked against the placed elements
+        // (placeable_orbits()): queries reach all over the box, and nothing would be deferred.
+        if (group && group->rosette()) near_cells = near_zone(raster.grid(), o.centres);
         return options.reference_engine ? reference_circle_source(raster, o)
                                         : incremental_circle_source(raster, o);
     }
@@ -569,10 +568,7 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
             [&](const Proxy& p) {
                 return ornament.overlaps_any(p, [](const Element& e) { return as_image(e); });
             },
-            hits_placed,
-            [&](const Proxy& p) {
-                return ornament.overlaps_any(p, [](const Element& e) { return !as_image(e); });
-            });
+            hits_placed);
         std::vector<std::unique_ptr<Element>> kept;
         for (std::size_t k = 0; k < children.size(); ++k) {
             if (!placeable[k]) continue;

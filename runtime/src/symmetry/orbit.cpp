@@ -297,8 +297,7 @@ bool same_isometry(const Isometry& a, const Isometry& b, double tolerance) {
 std::vector<std::optional<Orbit>> placeable_orbits(
     const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region* region,
     double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image,
-    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed,
-    const std::function<bool(const Proxy&)>& hits_placed_fundamental) {
+    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed) {
     std::vector<std::optional<Orbit>> out;
     out.reserve(batch.size());
     const bool every_image = static_cast<bool>(hits_placed);
@@ -336,26 +335,7 @@ std::vector<std::optional<Orbit>> placeable_orbits(
             }
             ok = !hits_batch(p, identity, !every_image);
         }
-        // An image g(e) overlaps a placed y = t(f) (or an earlier one of the batch) just when e
-        // overlaps t'(f) = g^-1(y). When e lies inside the window t'(f) meets it and is placed,
-        // so the checks of e above have decided for its images, unless t'(f) is f itself: an
-        // overlap of e with a fundamental element is the rule's business, not g(e)'s with y.
-        bool each = every_image && ok;
-        if (each && hits_placed_fundamental &&
-            group.keeps_within(bounds_of(*e), 10 * tolerance) == 1) {
-            each = false;
-            for (std::size_t k = 0; !each && k < e->proxy_count(); ++k) {
-                const Proxy& p = e->proxy(k);
-                each = hits_placed_fundamental(p) ||
-                       index.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
-                           const auto m = static_cast<std::size_t>(en.element);
-                           return same_isometry(transforms[m], identity, tolerance) &&
-                                  overlaps(p, images[m]->proxy(static_cast<std::size_t>(en.proxy)),
-                                           tolerance);
-                       });
-            }
-        }
-        for (std::size_t i = 0; ok && each && i < orbit.elements.size(); ++i) {
+        for (std::size_t i = 0; ok && every_image && i < orbit.elements.size(); ++i) {
             ImageElement& image = *orbit.elements[i];
             for (std::size_t k = 0; ok && k < image.proxy_count(); ++k) {
                 const Proxy& p = image.proxy(k);

@@ -52,14 +52,10 @@ bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region* 
 // every kept image is checked too, against placed elements and the batch's earlier elements
 // and images under another transformation (`hits_placed(proxy, transform)`: a placed element
 // that is not the image of a fundamental one under that transformation overlaps the proxy).
-// With `hits_placed_fundamental` (a placed fundamental element overlaps the proxy), an element
-// inside the group's window that overlaps no fundamental element has its images decided by its
-// own checks: the images' checks are left out, with the same answer.
 std::vector<std::optional<Orbit>> placeable_orbits(
     const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region* region,
     double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image,
-    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed = nullptr,
-    const std::function<bool(const Proxy&)>& hits_placed_fundamental = nullptr);
+    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed = nullptr);
 
 // True when the two isometries are the same within `tolerance` (on the translation; the
 // matrix within 1e-9).
