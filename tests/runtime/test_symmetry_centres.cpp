@@ -175,3 +175,41 @@ TEST(MirrorEdges, TheDomainsEdgesOnMirrors) {
     }
     EXPECT_TRUE(SymmetryGroup(Symmetry::parse("d6"), {10, 20}).mirror_edges(1e-6).empty());
 }
+
+// The part of a hole in the fundamental domain (what a fill is offered on a restart): inside the
+// hole and the domain, its area the hole's over the transformations fixing the hole's centre (a
+// rotation centre of each class, and a rosette's).
+TEST(DomainPart, TheHolesShareInTheDomain) {
+    const SymmetryGroup d6(Symmetry::parse("d6"), {10, 20});
+    const SymmetryGroup c5(Symmetry::parse("c5"), {10, 20});
+    const SymmetryGroup c1(Symmetry::parse("c1"), {10, 20});
+    const TranslationSetup p4m = wallpaper_setup(Wallpaper{"p4m", 150, 150, 90});
+    const TranslationSetup p6m = wallpaper_setup(Wallpaper{"p6m", 150, 150, 60});
+    const TranslationSetup p4 = wallpaper_setup(Wallpaper{"p4", 150, 150, 90});
+    ASSERT_TRUE(p4m.box && p6m.box && p4.box);
+    const SymmetryGroup g4m(p4m.group, *p4m.box), g6m(p6m.group, *p6m.box), g4(p4.group, *p4.box);
+    int holes = 0;
+    for (const SymmetryGroup* g : {&d6, &c5, &c1, &g4m, &g6m, &g4})
+        for (const Point centre : g->centre_classes(1e-6)) {
+            const Circle hole{centre, 12};
+            int fixing = 0;
+            for (const Isometry& t : g->transforms())
+                if (distance(t.apply(centre), centre) <= 1e-6) ++fixing;
+            const std::vector<Point> part = g->domain_part(hole, 1e-9, 1e-3);
+            ASSERT_GE(part.size(), 3u) << g->name();
+            double area = 0;
+            for (std::size_t i = 0; i < part.size(); ++i) {
+                const Point a = part[i], b = part[(i + 1) % part.size()];
+                area += a.x * b.y - a.y * b.x;
+                EXPECT_TRUE(g->in_domain(a, 1e-6)) << g->name();
+                EXPECT_LE(distance(a, hole.center), hole.radius + 1e-9) << g->name();
+            }
+            const double disc = M_PI * hole.radius * hole.radius;
+            EXPECT_NEAR(std::abs(area) / 2, disc / fixing, 2e-3 * disc)
+                << g->name() << " at " << centre.x << "," << centre.y;
+            ++holes;
+        }
+    EXPECT_EQ(holes, 12);  // the rosettes one each; p4m, p6m and p4 three classes each
+    // A disc that misses the domain has no part.
+    EXPECT_TRUE(d6.domain_part({{10, 60}, 5}, 1e-9, 1e-3).empty());
+}

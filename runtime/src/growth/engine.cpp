@@ -43,14 +43,27 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The disc `c` as a region: the panel a fill library sees during a restart (centre_seed()).
-Region circle_region(const Circle& c) {
-    char svg[256];
-    std::snprintf(svg, sizeof svg,
-                  "<svg xmlns=\"http://www.w3.org/2000/svg\"><circle cx=\"%.17g\" cy=\"%.17g\" "
-                  "r=\"%.17g\"/></svg>",
-                  c.center.x, c.center.y, c.radius);
-    return Region::from_svg_string(svg, "the hole of a restart");
+// The panel a fill library sees during a restart (centre_seed()): the part of the disc `c` in
+// the group's fundamental domain, since the images fill the rest of the hole and what the fill
+// tries outside the domain only clashes with them; the whole disc when the two do not meet (a
+// circle beside a rotation centre may lie off the domain).
+Region hole_region(const SymmetryGroup& group, const Circle& c, double tolerance, double flatness) {
+    const std::vector<Point> part = group.domain_part(c, tolerance, flatness);
+    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\">";
+    char text[256];
+    if (part.empty()) {
+        std::snprintf(text, sizeof text, "<circle cx=\"%.17g\" cy=\"%.17g\" r=\"%.17g\"/>",
+                      c.center.x, c.center.y, c.radius);
+        svg += text;
+    } else {
+        svg += "<path d=\"M";
+        for (const Point p : part) {
+            std::snprintf(text, sizeof text, " %.17g %.17g", p.x, p.y);
+            svg += text;
+        }
+        svg += " Z\"/>";
+    }
+    return Region::from_svg_string(svg + "</svg>", "the hole of a restart");
 }
 
 // Consecutive %exhausted CONTINUE rounds that place nothing before the engine gives up.
@@ -477,7 +490,11 @@ std::optional<Point> GrowthEngine::Impl::roomiest_in_domain() const {
             const Point p{box.x0 + (i + 0.5) / kSamples * box.width(),
                           box.y0 + (j + 0.5) / kSamples * box.height()};
             if (!group->in_domain(p, 0) || !region.contains(p)) continue;
-            const double r = std::min(group->clearance(p, tol), region.distance_to_boundary(p));
+            // Only a point with more room than the best so far matters: the boundary's distance
+            // first, the images only while it can beat it.
+            const double boundary = region.distance_to_boundary(p);
+            if (!(boundary > room)) continue;
+            const double r = std::min(group->clearance(p, tol, room), boundary);
             if (r > room) {
                 room = r;
                 best = p;
@@ -824,9 +841,17 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                 if (parent->sterile) break;
                 const Circle tried = tries[t];
                 env.set_goal(tried);
-                // A restart's fill library fills the circle offered, not the region again.
+                // A restart's fill library fills the circle offered (its part in the
+                // fundamental domain), not the region again. Made only for a rule that reads
+                // it: the panel steers no other rule.
                 std::optional<Region> panel;
-                if (restart_goal) env.set_panel(&panel.emplace(circle_region(tried)));
+                if (restart_goal)
+                    env.set_panel([&, tried]() -> const Region* {
+                        if (!panel)
+                            panel = hole_region(*group, tried, ornament.tolerance(),
+                                                0.02 * raster.grid().pixel);
+                        return &*panel;
+                    });
                 const long refusals = env.orbit_refusals();
                 const bool was_sterile = parent->sterile;
                 Result result = FAILURE;

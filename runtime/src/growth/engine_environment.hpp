@@ -5,6 +5,7 @@
 #include <acanthus/environment.hpp>
 #include <acanthus/random.hpp>
 #include <acanthus/region.hpp>
+#include <functional>
 
 #include "growth/exclude_list.hpp"
 #include "growth/ornament.hpp"
@@ -62,9 +63,10 @@ class GrowthEnvironment : public Environment {
     void clear_exclude_list() override { exclude_.clear(); }
     Random& random() override { return random_; }
     // During a restart on a hole (GrowthEngine's centre_seed()) a fill library sees the hole
-    // as its panel, and fills it alone rather than the whole region again.
-    void set_panel(const Region* panel) { panel_ = panel; }
-    const Region* region() const override { return panel_ ? panel_ : &region_; }
+    // as its panel, and fills it alone rather than the whole region again. The panel is made
+    // on the first call (most rules never read it).
+    void set_panel(std::function<const Region*()> panel) { panel_ = std::move(panel); }
+    const Region* region() const override { return panel_ ? panel_() : &region_; }
 
   private:
     const Region& region_;
@@ -72,8 +74,8 @@ class GrowthEnvironment : public Environment {
     ExcludeList& exclude_;
     Random random_;
     const SymmetryGroup* group_;
-    const Region* panel_ = nullptr;     // set_panel()
-    const Region* const* core_region_;  // the engine's: null when images never leave R
+    std::function<const Region*()> panel_;  // set_panel()
+    const Region* const* core_region_;      // the engine's: null when images never leave R
     mutable long orbit_refusals_ = 0;
     bool core_differs() const { return group_ && core_region_ && *core_region_; }
     bool count_orbit(bool refused) const {

@@ -47,6 +47,17 @@ struct AnyProxy {
     }
 };
 
+// The bounds of every proxy of `e` (an empty rectangle at the origin without one).
+Rect bounds_of(const Element& e) {
+    Rect bounds = e.proxy_count() > 0 ? e.proxy(0).bounds() : Rect{};
+    for (std::size_t p = 1; p < e.proxy_count(); ++p) {
+        const Rect b = e.proxy(p).bounds();
+        bounds = {std::min(bounds.x0, b.x0), std::min(bounds.y0, b.y0), std::max(bounds.x1, b.x1),
+                  std::max(bounds.y1, b.y1)};
+    }
+    return bounds;
+}
+
 bool boxes_meet(const Rect& a, const Rect& b) {
     return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
 }
@@ -179,17 +190,15 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     const auto& g = group.transforms();
     Orbit out;
     if (g.size() < 2) return out;
+    images.reserve(g.size());
+    transforms.reserve(g.size());
+    apart.reserve(g.size());
     // The element lies within `reach` of the middle of its bounds, so an image under g within
     // `reach` of g(middle). An image whose box is clear of the element's is neither in its
     // place nor overlapping it, and the box alone often tells whether the image is kept: then
     // no scratch image is needed (the margin covers the rounding of the transformed proxies).
     const bool boxed = e.proxy_count() > 0;
-    Rect bounds = boxed ? e.proxy(0).bounds() : Rect{};
-    for (std::size_t p = 1; p < e.proxy_count(); ++p) {
-        const Rect b = e.proxy(p).bounds();
-        bounds = {std::min(bounds.x0, b.x0), std::min(bounds.y0, b.y0), std::max(bounds.x1, b.x1),
-                  std::max(bounds.y1, b.y1)};
-    }
+    const Rect bounds = bounds_of(e);
     const Point middle = bounds.center();
     const double reach = 0.5 * std::hypot(bounds.width(), bounds.height());
     const double margin =
@@ -234,6 +243,9 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     // g(e) = h(e) only when an image other than the identity's coincides with e: only then do
     // the images repeat (once per coset of the stabilizer).
     std::vector<const ImageElement*> kept;
+    kept.reserve(images.size());
+    out.images.reserve(images.size());
+    out.elements.reserve(images.size());
     for (std::size_t k = 0; k < images.size(); ++k) {
         bool repeated = false;
         if (fixed)

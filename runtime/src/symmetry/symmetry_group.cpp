@@ -180,6 +180,45 @@ bool SymmetryGroup::in_domain(Point p, double tolerance) const {
     return t <= wedge_ + slack || t >= 2 * M_PI - slack;
 }
 
+std::vector<Point> SymmetryGroup::domain_part(const Circle& c, double tolerance,
+                                              double flatness) const {
+    // The circle as a polygon through points on it (the chord's sagitta at most `flatness`).
+    const double step = c.radius > flatness ? 2 * std::acos(1 - flatness / c.radius) : M_PI / 2;
+    const int n = std::clamp(static_cast<int>(std::ceil(2 * M_PI / step)), 16, 4096);
+    std::vector<Point> poly;
+    poly.reserve(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+        const double a = 2 * M_PI * k / n;
+        poly.push_back(c.center + Vector(std::cos(a), std::sin(a)) * c.radius);
+    }
+    // The domain as half-planes (p - m) . normal <= slack.
+    std::vector<std::pair<Point, Vector>> cuts;
+    if (lattice_) {
+        cuts = halfplanes_;
+    } else if (transforms_.size() > 1) {
+        // The wedge from angle kStart to kStart + wedge_ about the centre (at most a half-turn).
+        const Vector first(std::cos(kStart), std::sin(kStart));
+        const Vector last(std::cos(kStart + wedge_), std::sin(kStart + wedge_));
+        cuts.emplace_back(center_, Vector(first.y, -first.x));
+        cuts.emplace_back(center_, Vector(-last.y, last.x));
+    }
+    // Sutherland-Hodgman, one half-plane at a time.
+    for (const auto& [m, normal] : cuts) {
+        std::vector<Point> out;
+        const std::size_t size = poly.size();
+        for (std::size_t k = 0; k < size; ++k) {
+            const Point a = poly[k], b = poly[(k + 1) % size];
+            const double da = (a - m).dot(normal) - tolerance, db = (b - m).dot(normal) - tolerance;
+            if (da <= 0) out.push_back(a);
+            if ((da < 0 && db > 0) || (da > 0 && db < 0))
+                out.push_back(a + (b - a) * (da / (da - db)));
+        }
+        poly = std::move(out);
+        if (poly.size() < 3) return {};
+    }
+    return poly;
+}
+
 Point SymmetryGroup::snap(Point p, double tolerance) const {
     if (lattice_) {
         double best = tolerance;
@@ -217,7 +256,7 @@ Point SymmetryGroup::snap(Point p, double tolerance) const {
     return out;
 }
 
-double SymmetryGroup::clearance(Point c, double tolerance) const {
+double SymmetryGroup::clearance(Point c, double tolerance, double at_most) const {
     // Squared distances decide what they surely can; hypot() (distance()) is taken only near
     // the tolerance and for the images that may be the nearest: distance()'s answer to the bit.
     constexpr double kLoose = 1 + 1e-12;
@@ -236,6 +275,8 @@ double SymmetryGroup::clearance(Point c, double tolerance) const {
             if (d > tolerance) best = std::min(best, d / 2);
         } else {
             least = std::min(least, s);
+            // Surely beyond the tolerance and surely nearer than 2 at_most: done.
+            if (s * kLoose < 4 * at_most * at_most) return at_most;
         }
     }
     for (std::size_t k = 1; k < transforms_.size(); ++k) {

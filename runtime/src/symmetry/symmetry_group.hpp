@@ -58,7 +58,9 @@ class SymmetryGroup {
     Point snap(Point p, double tolerance) const;
     // Half the distance from c to its nearest image farther than `tolerance` (infinite when
     // every image coincides with c): a circle about c no larger stays clear of its images.
-    double clearance(Point c, double tolerance) const;
+    // With `at_most` > 0 the answer may be any value no larger than it once the clearance is
+    // known to be below it (the search for the roomiest point needs no more).
+    double clearance(Point c, double tolerance, double at_most = 0) const;
     // The largest circles inside `c` (other than `c`) each of which stays clear of its images
     // (radius at most the clearance of its centre): the one touching `c` where `c` is nearest
     // `toward`; then one centred on a mirror and one off every mirror, found on a polar sample
@@ -67,6 +69,11 @@ class SymmetryGroup {
     // centre with mirrors, where an element fits on `c` only if its images coincide with it, these
     // hold an element beside the centre.
     std::vector<Circle> clear_circles_in(const Circle& c, Point toward, double tolerance) const;
+    // The part of the disc `c` in the fundamental domain widened by `tolerance`, as a polygon
+    // (the circle flattened within `flatness`, counter-clockwise in y-down coordinates as the
+    // disc's); empty when they do not meet. A fill offered a hole fills this part alone: the
+    // images fill the rest.
+    std::vector<Point> domain_part(const Circle& c, double tolerance, double flatness) const;
     // With translations: one rotation centre of each class (a point and its images under the
     // group), each the representative lying in the fundamental domain (widened by `tolerance`),
     // in the order found; a rosette's centre alone.
