@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "field/distance_field.hpp"
@@ -187,7 +188,10 @@ TEST(DistanceField, FewElementSitesWithoutSitesMatchBruteForce) {
 }
 
 // After every add_sites, the incremental field equals a full computation and brute force.
-TEST(DistanceField, IncrementalMatchesFullComputeAfterEveryStep) {
+// Wide blobs go through their row envelopes, or (no pieces allowed) through a window's EDT.
+class IncrementalField : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(IncrementalField, MatchesFullComputeAfterEveryStep) {
     Random rng(7);
     for (int scene = 0; scene < 12; ++scene) {
         const int w = static_cast<int>(rng.uniform_int(8, 48));
@@ -199,6 +203,7 @@ TEST(DistanceField, IncrementalMatchesFullComputeAfterEveryStep) {
                 for (int i = 0; i < w; ++i)
                     if (i == 0 || j == 0 || i == w - 1 || j == h - 1) occ[j * w + i] = 1;
         DistanceField inc(w, h);
+        inc.set_direct_pieces(GetParam());
         inc.compute(occ);
         for (int step = 0; step < 60; ++step) {
             // A blob of new sites (a disc or a scatter), as a placed element would add.
@@ -257,6 +262,12 @@ TEST(DistanceField, IncrementalMatchesFullComputeAfterEveryStep) {
         expect_matches(inc, occ, w, h, "incremental final");
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Blobs, IncrementalField,
+                         ::testing::Values(std::size_t{1} << 20, std::size_t{0}),
+                         [](const auto& info) {
+                             return info.param ? std::string("Envelopes") : std::string("Window");
+                         });
 
 // Dense point scatters are where propagating nearest sites through 8-neighbours classically
 // goes wrong; the wavefront with exact window distances must still be exact.

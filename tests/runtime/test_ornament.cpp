@@ -51,6 +51,41 @@ TEST(Ornament, NearestWithinMatchesBruteForceWhateverTheLikelyRadius) {
     }
 }
 
+// With a slack, the search measures no element whose bounds are farther than the nearest one
+// plus the slack, and returns exactly the elements within the slack of the nearest, with the
+// distances and the order the full search gives them.
+TEST(Ornament, NearestWithinASlackKeepsWhatTheFullSearchHasWithinIt) {
+    const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
+    Ornament ornament(region, 1e-9);
+    acanthus::Random rng(43);
+    for (int k = 0; k < 400; ++k) {
+        auto d = std::make_unique<dots::dot>();
+        // Coarse centres and radii: many elements tie on their distance.
+        d->p0.set({std::round(rng.uniform(10, 190)), std::round(rng.uniform(10, 190))},
+                  rng.uniform(0, 1) < 0.5 ? 1 : 2);
+        ornament.add(std::move(d));
+    }
+    for (int q = 0; q < 300; ++q) {
+        const Point p{std::round(rng.uniform(0, 200)), std::round(rng.uniform(0, 200))};
+        const double hint = rng.uniform(0.5, 20);
+        double covered_full = -1;
+        const auto full = ornament.nearest_within(p, hint, &covered_full);
+        ASSERT_FALSE(full.empty());
+        for (const double slack : {0.0, 0.5, 2.0, 8.0}) {
+            double covered = -1;
+            const auto hits = ornament.nearest_within(p, hint, &covered, 0, slack);
+            EXPECT_EQ(covered, covered_full) << "query " << q;
+            std::vector<std::pair<int, double>> expected, got;
+            for (const auto& [e, d] : full)
+                if (d <= full.front().second + slack) expected.emplace_back(e->id, d);
+            for (const auto& [e, d] : hits) got.emplace_back(e->id, d);
+            EXPECT_EQ(got, expected) << "query " << q << " slack " << slack;
+        }
+        // nearest() measures with no slack: the nearest element, ties to the smaller id.
+        EXPECT_EQ(ornament.nearest(p, hint).first, full.front().first) << "query " << q;
+    }
+}
+
 // add_all() gives ids in order and answers the growth loop's searches as add() does.
 TEST(Ornament, AddAllMatchesAddingOneByOne) {
     const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
@@ -73,7 +108,8 @@ TEST(Ornament, AddAllMatchesAddingOneByOne) {
     }
     const auto added = all.add_all(std::move(batch));
     ASSERT_EQ(added.size(), 490u);
-    for (std::size_t k = 0; k < added.size(); ++k) EXPECT_EQ(added[k]->id, static_cast<int>(k + 10));
+    for (std::size_t k = 0; k < added.size(); ++k)
+        EXPECT_EQ(added[k]->id, static_cast<int>(k + 10));
     ASSERT_EQ(all.size(), one.size());
     for (int q = 0; q < 100; ++q) {
         const Point p{rng.uniform(0, 200), rng.uniform(0, 200)};

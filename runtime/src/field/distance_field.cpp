@@ -390,7 +390,9 @@ void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
 
 namespace {
 
-// Blobs spanning at most this many columns are measured directly from their runs of sites.
+// Blobs spanning at most this many columns are measured directly from their runs of sites;
+// wider ones too while their row envelopes fit in direct_pieces_ (the window's EDT reads every
+// pixel of a window wider than the blob, the envelopes only the rows the fill visits).
 constexpr std::size_t kDirectColumns = 32;
 
 // Distances to the new sites from their EDT over a window (pixels inside the window only).
@@ -541,7 +543,8 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
     const int w = width_, h = height_;
     std::int32_t* site_data = site ? site->data() : nullptr;
     blob_.reset(sites, w, h);
-    if (blob_.columns() <= kDirectColumns) {
+    if (blob_.columns() <= kDirectColumns ||
+        blob_.columns() * static_cast<std::size_t>(h) <= direct_pieces_) {
         wavefront<true>(sites, d2, site_data, out, blob_, [](int, int) { return true; });
         return;
     }

@@ -38,6 +38,9 @@ class DistanceField {
     // Marks free pixels (indices j*width+i) as sites of `kind` and updates the field.
     // Pixels whose distance changed are appended to `changed` when it is not null.
     void add_sites(const std::vector<int>& pixels, ObstacleKind kind, std::vector<int>* changed);
+    // Sites wider than 32 columns are measured from their row envelopes when these fit in this
+    // many pieces, else by a window EDT (the tests set 0 to test the window's path too).
+    void set_direct_pieces(std::size_t pieces) { direct_pieces_ = pieces; }
 
     // Lazy far field (docs/field.md, "The lazy far field"): element sites added later are not
     // measured when added; every block they may lower keeps them pending, and its values are
@@ -123,6 +126,7 @@ class DistanceField {
     };
     std::vector<Seed> stack_;
     SiteBlob blob_;
+    std::size_t direct_pieces_ = std::size_t{1} << 20;
     std::vector<std::uint8_t> window_sites_;
     std::vector<std::int32_t> window_d2_, window_site_;
     Scratch scratch_, other_scratch_, window_scratch_;

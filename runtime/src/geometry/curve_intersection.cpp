@@ -88,9 +88,23 @@ bool misses_circle(const Geom::EllipticalArc& arc, const Geom::BezierCurve& bezi
     return true;
 }
 
+// Whether two curves' bounds (which hold the curves) are apart by more than the solvers'
+// resolution: then they cannot meet. lib2geom's solvers do not test this first, and most pairs
+// the growth asks about (a proxy against the region's sides) are far apart.
+bool apart(const Geom::Rect& a, const Geom::Rect& b) {
+    const double scale =
+        1 + std::max({std::abs(a.left()), std::abs(a.right()), std::abs(a.top()),
+                      std::abs(a.bottom()), std::abs(b.left()), std::abs(b.right()),
+                      std::abs(b.top()), std::abs(b.bottom())});
+    const double margin = 1e-4 * scale;
+    return a.left() > b.right() + margin || b.left() > a.right() + margin ||
+           a.top() > b.bottom() + margin || b.top() > a.bottom() + margin;
+}
+
 }  // namespace
 
 std::vector<Geom::CurveIntersection> intersect_curves(const Geom::Curve& a, const Geom::Curve& b) {
+    if (apart(a.boundsFast(), b.boundsFast())) return {};
     const Geom::EllipticalArc* ca = circular_arc(a);
     const Geom::EllipticalArc* cb = circular_arc(b);
     if (ca && cb) return intersect_circular(*ca, *cb);

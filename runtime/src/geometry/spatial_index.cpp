@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
+#include <boost/iterator/function_output_iterator.hpp>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
@@ -103,6 +104,21 @@ std::vector<SpatialIndex::Entry> SpatialIndex::within(Point p, double radius) co
             bgi::satisfies([&](const Value& v) { return bg::distance(q, v.first) <= radius; }),
         std::back_inserter(found));
     return sorted_entries(found);
+}
+
+std::vector<SpatialIndex::Hit> SpatialIndex::within_by_distance(Point p, double radius) const {
+    std::vector<Hit> out;
+    BPoint q(p.x, p.y);
+    tree_->rtree.query(
+        bgi::intersects(to_box({p.x - radius, p.y - radius, p.x + radius, p.y + radius})),
+        boost::iterators::make_function_output_iterator([&](const Value& v) {
+            const double d = bg::distance(q, v.first);
+            if (d <= radius) out.push_back({v.second, d});
+        }));
+    std::sort(out.begin(), out.end(), [](const Hit& a, const Hit& b) {
+        return a.distance != b.distance ? a.distance < b.distance : a.entry < b.entry;
+    });
+    return out;
 }
 
 std::vector<SpatialIndex::Entry> SpatialIndex::nearest(Point p, std::size_t k) const {

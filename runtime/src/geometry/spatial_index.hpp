@@ -49,6 +49,9 @@ class SpatialIndex {
     bool any_of(Rect box, const std::function<bool(Entry)>& test) const;
     // Entries whose bounds come within `radius` of p, sorted by (element, proxy).
     std::vector<Entry> within(Point p, double radius) const;
+    // The same entries with the distance from p to their bounds, by (that distance, element,
+    // proxy).
+    std::vector<Hit> within_by_distance(Point p, double radius) const;
     // The k entries with the nearest bounds to p, by (bounds distance, element, proxy).
     std::vector<Entry> nearest(Point p, std::size_t k) const;
     // The entry minimizing the caller's exact distance (e.g. distance_to(proxy, p), which is

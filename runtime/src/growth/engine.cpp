@@ -704,8 +704,9 @@ std::optional<Circle> GrowthEngine::Impl::refine(const EmptyCircle& found) {
     // some 16 times the elements needed).
     const double likely =
         (std::sqrt(static_cast<double>(found.d2)) + 1.5) * raster.grid().pixel + epsilon;
+    // iterate() wants the elements within epsilon of the nearest: no farther one is measured.
     near_goal = ornament.nearest_within(c.center, c.radius + 2 * raster.grid().pixel + epsilon,
-                                        &near_goal_radius, likely);
+                                        &near_goal_radius, likely, epsilon);
     if (near_goal.empty()) return std::nullopt;
     const double r = near_goal.front().second;
     if (!std::isfinite(r)) return std::nullopt;

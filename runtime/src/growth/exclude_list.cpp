@@ -2,6 +2,7 @@
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -33,13 +34,25 @@ int ExcludeList::add(Point p) {
 
 int ExcludeList::find_inside(const Circle& c) const {
     if (index_->tree.empty() || !(c.radius > 0)) return -1;
-    const BoostPoint centre(c.center.x, c.center.y);
-    // The nearest point decides: inside when it is closer than the radius.
-    for (auto it = index_->tree.qbegin(bgi::nearest(centre, 1)); it != index_->tree.qend(); ++it) {
-        const Point q{bg::get<0>(it->first), bg::get<1>(it->first)};
-        return distance(q, c.center) < c.radius ? it->second : -1;
-    }
-    return -1;
+    // Any point inside will do (the search only caches the answer, and asks again when that
+    // point is removed): the first one a box query meets, which costs less than the nearest.
+    const double r = c.radius;
+    // (widened by far more than the rounding of its corners)
+    const double half = r * (1 + 1e-9) + 1e-9 * (std::abs(c.center.x) + std::abs(c.center.y));
+    const BoostBox box(BoostPoint(c.center.x - half, c.center.y - half),
+                       BoostPoint(c.center.x + half, c.center.y + half));
+    const double r2 = r * r;
+    const auto inside = [&](const Entry& e) {
+        const Point q{bg::get<0>(e.first), bg::get<1>(e.first)};
+        // The squared distance decides unless it is within rounding of r^2: then distance()
+        // does, as it always did.
+        const double dx = q.x - c.center.x, dy = q.y - c.center.y, d2 = dx * dx + dy * dy;
+        if (d2 < r2 * (1 - 1e-9)) return true;
+        if (d2 > r2 * (1 + 1e-9)) return false;
+        return distance(q, c.center) < r;
+    };
+    const auto it = index_->tree.qbegin(bgi::intersects(box) && bgi::satisfies(inside));
+    return it != index_->tree.qend() ? it->second : -1;
 }
 
 void ExcludeList::remove_within(Point p, double epsilon, std::vector<int>* removed) {

@@ -132,14 +132,14 @@ std::vector<const Element*> Ornament::view() const {
 
 std::pair<Element*, double> Ornament::nearest(Point p, double hint) const {
     double covered = 0;
-    const auto hits = nearest_within(p, hint, &covered);
+    const auto hits = nearest_within(p, hint, &covered, 0, 0);
     if (hits.empty()) return {nullptr, std::numeric_limits<double>::infinity()};
     return hits.front();
 }
 
 std::vector<std::pair<Element*, double>> Ornament::nearest_within(Point p, double hint,
-                                                                  double* covered,
-                                                                  double likely) const {
+                                                                  double* covered, double likely,
+                                                                  double slack) const {
     *covered = 0;
     if (elements_.empty() || !p.finite()) return {};
     // Any proxy nearer than the best one found within r has bounds within r too, so the first
@@ -151,7 +151,7 @@ std::vector<std::pair<Element*, double>> Ornament::nearest_within(Point p, doubl
         size + acanthus::distance(p, b.center()) + 1;  // beyond this, every bound is in
     double r = hint > 0 ? hint : size / 256;
     for (;;) {
-        auto hits = within(p, r);
+        auto hits = within(p, r, slack);
         if (!hits.empty()) {
             *covered = r;
             return hits;
@@ -168,26 +168,42 @@ std::vector<std::pair<Element*, double>> Ornament::nearest_within(Point p, doubl
     return {{&at(hit->entry.element), hit->distance}};
 }
 
-std::vector<std::pair<Element*, double>> Ornament::within(Point p, double radius) const {
-    std::vector<std::pair<Element*, double>> out;
+std::vector<std::pair<Element*, double>> Ornament::within(Point p, double radius,
+                                                          double slack) const {
     cover({p.x - radius, p.y - radius, p.x + radius, p.y + radius});
-    // Entries come sorted by (element, proxy): one distance per element, over its near proxies
-    // (a proxy whose bounds are farther than `radius` cannot be nearer than that).
-    for (const auto& en : index_.within(p, radius)) {
-        // Exact up to `radius`; beyond it the element is dropped below anyway.
-        const double d =
-            distance_to(at(en.element).proxy(static_cast<std::size_t>(en.proxy)), p, radius);
-        if (!out.empty() && out.back().first->id == en.element) {
-            out.back().second = std::min(out.back().second, d);
-        } else {
-            out.emplace_back(&at(en.element), d);
-        }
+    // Entries nearest bounds first: once an element is known within `best`, an entry whose
+    // bounds are farther than best + slack cannot be wanted (a proxy is never nearer than its
+    // bounds), and is not measured.
+    const auto hits = index_.within_by_distance(p, radius);
+    std::vector<std::pair<Element*, double>> out;
+    double best = INFINITY;
+    for (const auto& hit : hits) {
+        const double keep = std::min(radius, best + slack);
+        if (hit.distance > keep) break;
+        // Exact up to `keep`; beyond it the element is dropped below anyway.
+        const double d = distance_to(
+            at(hit.entry.element).proxy(static_cast<std::size_t>(hit.entry.proxy)), p, keep);
+        if (!(d <= keep)) continue;
+        best = std::min(best, d);
+        out.emplace_back(&at(hit.entry.element), d);
     }
-    std::erase_if(out, [&](const auto& x) { return !(x.second <= radius); });
+    const double keep = std::min(radius, best + slack);
+    std::erase_if(out, [&](const auto& x) { return !(x.second <= keep); });
+    // One distance per element: the nearest of its proxies.
     std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
         return a.second != b.second ? a.second < b.second : a.first->id < b.first->id;
     });
-    return out;
+    std::vector<std::pair<Element*, double>> unique;
+    unique.reserve(out.size());
+    std::vector<bool> seen;
+    for (const auto& x : out) {
+        const auto id = static_cast<std::size_t>(x.first->id);
+        if (id >= seen.size()) seen.resize(id + 1, false);
+        if (seen[id]) continue;
+        seen[id] = true;
+        unique.push_back(x);
+    }
+    return unique;
 }
 
 bool Ornament::intersects(const Proxy& p) const {

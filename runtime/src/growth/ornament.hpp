@@ -5,6 +5,7 @@
 
 #include <acanthus/element.hpp>
 #include <acanthus/region.hpp>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -48,11 +49,15 @@ class Ornament {
     // The same search, returning every element within the radius that found one, by
     // (distance, id), and that radius in `covered` (0 when none did: the nearest alone).
     // `likely`: a radius the nearest element is probably within; the search widens to it
-    // before it widens fourfold.
+    // before it widens fourfold. Elements farther than the nearest by more than `slack` may be
+    // left out.
     std::vector<std::pair<Element*, double>> nearest_within(Point p, double hint, double* covered,
-                                                            double likely = 0) const;
-    // Placed elements within `radius` of p with their distances, by (distance, id).
-    std::vector<std::pair<Element*, double>> within(Point p, double radius) const;
+                                                            double likely = 0,
+                                                            double slack = INFINITY) const;
+    // Placed elements within `radius` of p with their distances, by (distance, id); with
+    // `slack`, only those within it of the nearest one (the others' distances are not measured).
+    std::vector<std::pair<Element*, double>> within(Point p, double radius,
+                                                    double slack = INFINITY) const;
 
     // True when the proxy overlaps a placed proxy or leaves the region. Throws
     // std::invalid_argument for a proxy that is not set or not finite.
