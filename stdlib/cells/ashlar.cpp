@@ -71,6 +71,9 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
     const double h = o.mortar / 2;
     // Per unit: the rectangular cell k holding it (k), one of another shape (-2 - k), or -1.
     std::vector<int> owner(static_cast<std::size_t>(grid.rows() * grid.units()), -1);
+    // Rectangular cells a mason reads as unit squares (under a unit and a half each way).
+    const double square = 1.5 * detail::ashlar_unit(o);
+    std::vector<char> small(laid.size(), 0);
     for (std::size_t k = 0; k < laid.size(); ++k) {
         const Cell& cell = laid[k];
         if (detail::face_of(facade, {cell.feature, cell.feature_index}) != face) continue;
@@ -78,6 +81,7 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
         // Read as the mason reads it: a stone clipped to a jamb keeps its rounding noise.
         const bool rect = is_rect(cell.polygon, r);
         b = {b.x0 - h, b.y0 - h, b.x1 + h, b.y1 + h};
+        small[k] = rect && b.width() < square && b.height() < square;
         const int r0 = std::max(0, grid.row_at(b.y0)), u0 = std::max(0, grid.unit_at(b.x0));
         int r1 = grid.row_at(b.y1), u1 = grid.unit_at(b.x1);
         if (r1 < 0) r1 = grid.rows() - 1;
@@ -120,7 +124,7 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
             row = std::max(end, row + 1);
         }
     detail::AshlarRules rules(grid, o.ashlar_max_width, o.ashlar_max_height, o.ashlar_max_seam,
-                              static_cast<int>(laid.size() + piers.size()) + 1);
+                              static_cast<int>(laid.size() + piers.size()) + 1, square);
     for (std::size_t i = 0; i < piers.size(); ++i) {
         const Point m = piers[i].center();
         const int u = grid.unit_at(m.x), pier = static_cast<int>(laid.size() + i);
@@ -156,7 +160,9 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
                 }
             }
             if (held >= 0 || held <= -2) {
-                rules.hold(row, u, held >= 0 ? held : -2 - held, held <= -2);
+                rules.hold(row, u, held >= 0 ? held : -2 - held, held <= -2,
+                           held >= 0 && static_cast<std::size_t>(held) < laid.size() &&
+                               small[static_cast<std::size_t>(held)]);
                 // What a voussoir leaves of the unit is cut to its extrados.
                 if (held <= -2) lone.emplace_back(row, u);
                 continue;

@@ -7,7 +7,8 @@
 
 namespace acanthus::cells::detail {
 
-AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam, int first_id)
+AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam, int first_id,
+                         double square)
     : g_(g),
       rows_(g.rows()),
       units_(g.units()),
@@ -16,8 +17,10 @@ AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam
       max_seam_(max_seam),
       first_id_(first_id),
       owner_(static_cast<std::size_t>(g.rows()) * static_cast<std::size_t>(g.units()), kBlocked),
+      square_(square),
       jamb_(owner_.size(), 0),
       shaped_(owner_.size(), 0),
+      small_held_(owner_.size(), 0),
       share_(owner_.size(), 1.0) {}
 
 void AshlarRules::lay(Random& random) {
@@ -105,12 +108,11 @@ bool AshlarRules::relay(std::vector<int> ks, std::vector<char>& gone, bool ends_
         long ends = 0, squares = 0;
         for (const Stone& s : laid) {
             ends += on_end(s);
-            if (s.h != 1 || s.w != 1) continue;
-            for (auto [a, b] : {std::pair{s.row - 1, s.unit},
-                                {s.row + 1, s.unit},
-                                {s.row, s.unit - 1},
-                                {s.row, s.unit + 1}})
-                if (const Stone* t = stone_at(laid, a, b); t && t->h == 1 && t->w == 1) ++squares;
+            if (!small(s)) continue;
+            for (auto [a, b] : beside(s)) {
+                const Stone* t = stone_at(laid, a, b);
+                if (t ? small(*t) : small_at(a, b) && !own(get(a, b))) ++squares;
+            }
         }
         const long fw = four_ways(r0, r1, u0, u1);
         return ends_first ? 100000L * ends + 1000L * fw + squares
@@ -197,7 +199,7 @@ bool AshlarRules::relay_faults(std::vector<char>& gone) {
     for (std::size_t k = 0; k < stones_.size(); ++k) {
         if (gone[k]) continue;
         const Stone s = stones_[k];
-        const bool square = s.h == 1 && s.w == 1 && lone_square(s, kBlocked);
+        const bool square = lone_square(s, kBlocked);
         if (!on_end(s) && !square) continue;
         const int r0 = s.row, r1 = s.row + s.h - 1, u0 = s.unit, u1 = s.unit + s.w - 1;
         // Wider round it where the stones beside it cannot take it; an end stood up is worse
@@ -242,14 +244,35 @@ bool AshlarRules::join_on_end(std::vector<char>& gone) {
 // A unit square of the layout, or one beside another (`other` aside): what a joint moved may
 // not leave.
 bool AshlarRules::lone_square(const Stone& s, int other) const {
-    if (s.w != 1 || s.h != 1) return false;
-    for (auto [a, b] : {std::pair{s.row - 1, s.unit},
-                        {s.row + 1, s.unit},
-                        {s.row, s.unit - 1},
-                        {s.row, s.unit + 1}})
-        if (const int id = get(a, b); id != other)
-            if (const Stone* t = own(id); t && t->h == 1 && t->w == 1) return true;
+    if (!small(s)) return false;
+    for (auto [a, b] : beside(s))
+        if (get(a, b) != other && small_at(a, b)) return true;
     return false;
+}
+
+bool AshlarRules::small(const Stone& s) const {
+    double w = 0;
+    for (int u = s.unit; u < s.unit + s.w; ++u)
+        w += (g_.xs[static_cast<std::size_t>(u + 1)] - g_.xs[static_cast<std::size_t>(u)]) *
+             share_[static_cast<std::size_t>(s.row * units_ + u)];
+    return w < square_ &&
+           g_.ys[static_cast<std::size_t>(s.row + s.h)] - g_.ys[static_cast<std::size_t>(s.row)] <
+               square_;
+}
+
+bool AshlarRules::small_at(int r, int u) const {
+    if (r < 0 || u < 0 || r >= rows_ || u >= units_) return false;
+    if (const Stone* t = own(get(r, u))) return small(*t);
+    return get(r, u) >= 0 && small_held_[static_cast<std::size_t>(r * units_ + u)];
+}
+
+std::vector<std::pair<int, int>> AshlarRules::beside(const Stone& s) const {
+    std::vector<std::pair<int, int>> out;
+    for (int u = s.unit; u < s.unit + s.w; ++u) out.emplace_back(s.row - 1, u);
+    for (int u = s.unit; u < s.unit + s.w; ++u) out.emplace_back(s.row + s.h, u);
+    for (int r = s.row; r < s.row + s.h; ++r) out.emplace_back(r, s.unit - 1);
+    for (int r = s.row; r < s.row + s.h; ++r) out.emplace_back(r, s.unit + s.w);
+    return out;
 }
 
 bool AshlarRules::break_four_ways(std::vector<char>& gone) {
@@ -445,7 +468,8 @@ int AshlarRules::cross(int r, int u, int h, int w, int i, int j) const {
 int AshlarRules::faults(int r, int u, int h, int w) const {
     int f = cross(r, u, h, w, r, u) + cross(r, u, h, w, r, u + w) + cross(r, u, h, w, r + h, u) +
             cross(r, u, h, w, r + h, u + w);
-    // Unit squares: a last resort, and never two side by side.
+    // Unit squares: a last resort, and never two side by side (measured: two grid units
+    // narrower than a unit and a half are a unit square too, and so is a stone laid before).
     if (h == 1 && w == 1) {
         // A narrow unit (grid lines close together) alone would stand on end: worse.
         const double uw = g_.xs[static_cast<std::size_t>(u + 1)] -
@@ -453,9 +477,10 @@ int AshlarRules::faults(int r, int u, int h, int w) const {
                      uh = g_.ys[static_cast<std::size_t>(r + 1)] -
                           g_.ys[static_cast<std::size_t>(r)];
         f += uh > 1.1 * uw && !jamb_[static_cast<std::size_t>(r * units_ + u)] ? 3 : 1;
-        for (auto [a, b] : {std::pair{r - 1, u}, {r + 1, u}, {r, u - 1}, {r, u + 1}})
-            if (const Stone* s = own(get(a, b)); s && s->h == 1 && s->w == 1) f += 2;
     }
+    if (const Stone c{r, u, h, w}; small(c))
+        for (auto [a, b] : beside(c))
+            if (small_at(a, b)) f += 2;
     // A bed joint under the stone along more than max_seam stones of this layout.
     const int x = u + w, y = r + h;
     int run = 1;

@@ -18,7 +18,10 @@ class AshlarRules {
     static constexpr int kBlocked = -2, kEmpty = -1;
     // Every unit starts blocked; free() opens one for the layout, hold() gives it to a stone
     // laid before (ids from 0, distinct from the layout's own, which count on from `first_id`).
-    AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam, int first_id);
+    // `square`: a stone narrower and lower than this (a unit and a half, measured) is a unit
+    // square to a mason, whatever units of the grid it spans.
+    AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam, int first_id,
+                double square);
 
     void free(int r, int u) { at(r, u) = kEmpty; }
     // A unit against a jamb or the wall's end: a stone starting there may stand on end, one
@@ -30,9 +33,11 @@ class AshlarRules {
         share_[static_cast<std::size_t>(r * units_ + u)] = share;
     }
     // `shaped`: a stone not rectangular (a voussoir), whose joints are no grid lines.
-    void hold(int r, int u, int id, bool shaped = false) {
+    // `small`: that stone is a unit square (see `square`).
+    void hold(int r, int u, int id, bool shaped = false, bool small = false) {
         at(r, u) = id;
         shaped_[static_cast<std::size_t>(r * units_ + u)] = shaped;
+        small_held_[static_cast<std::size_t>(r * units_ + u)] = small;
     }
     int get(int r, int u) const {
         if (r < 0 || u < 0 || r >= rows_ || u >= units_) return kBlocked;
@@ -64,6 +69,12 @@ class AshlarRules {
     // and the joints round them lose one; true when any was.
     bool break_four_ways(std::vector<char>& gone);
     bool lone_square(const Stone& s, int other) const;
+    // Measured as the face holds it, under `square` both ways.
+    bool small(const Stone& s) const;
+    // Unit (r, u) held by a unit square: one of the layout, or one laid before.
+    bool small_at(int r, int u) const;
+    // The units round stone `s` (above, below, left and right of it), each once.
+    std::vector<std::pair<int, int>> beside(const Stone& s) const;
     bool on_end(const Stone& s) const;
     // Measured as the face holds it (a unit cut by a jamb counts as what is left of it): no
     // taller than wide, or one unit wide against a jamb.
@@ -80,7 +91,8 @@ class AshlarRules {
     const CourseGrid& g_;
     int rows_, units_, max_w_, max_h_, max_seam_, first_id_;
     std::vector<int> owner_;
-    std::vector<char> jamb_, shaped_;
+    double square_;
+    std::vector<char> jamb_, shaped_, small_held_;
     std::vector<double> share_;
     std::vector<Stone> stones_;
     int four_way_ = 0;  // four-way joints of the face, counted once laid

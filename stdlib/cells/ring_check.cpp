@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ashlar_grid.hpp"
+#include "lintel.hpp"
 #include "voussoirs.hpp"
 
 namespace acanthus::cells::detail {
@@ -123,23 +125,30 @@ RingShape ring_shape(const Facade& f, const Options& o, const std::vector<const 
     return r;
 }
 
-RingShape lintel_shape(const Edge& head, const Options& o) {
-    double ux = (o.brick_length + o.mortar) / 4, uy = o.brick_height + o.mortar;
-    int bearing = o.lintel_bearing;
-    if (o.bond == Bond::ashlar) {
-        // The ashlar grid's units come within half a unit of the wanted size.
-        const double unit = o.ashlar_unit > 0 ? o.ashlar_unit : o.brick_height + o.mortar;
-        bearing = std::max(
+RingShape lintel_shape(const Edge& head, const Options& o, const CourseGrid* grid) {
+    RingShape r;
+    if (grid) {
+        // In stone the lintel is laid on the face's ashlar grid, whose lines pass through the
+        // jambs: the rectangle it will take is known before any stone is laid.
+        const double unit = ashlar_unit(o);
+        const int bearing = std::max(
             1, static_cast<int>(
                    std::ceil(o.lintel_bearing * (o.brick_length + o.mortar) / 4 / unit - 1e-9)));
-        ux = uy = 1.5 * unit;
+        int top = 0, bottom = 0, u0 = 0, u1 = 0;
+        if (!lintel_span(head, *grid, unit, bearing, o.lintel_courses, top, bottom, u0, u1))
+            return r;
+        const Rect b = grid->cell(bottom, u0, u1);
+        const double y0 = grid->ys[static_cast<std::size_t>(top)];
+        r.parts.push_back({{b.x0, y0}, {b.x1, y0}, {b.x1, b.y1}, {b.x0, b.y1}});
+        r.box = box_of(r.parts);
+        return r;
     }
+    const double ux = (o.brick_length + o.mortar) / 4, uy = o.brick_height + o.mortar;
     // The bearing rounded out to the unit the jamb falls in, and a quarter brick a framed
     // tree may move it by; the courses from the one the head falls in.
-    const double x = (bearing + 2) * ux;
+    const double x = (o.lintel_bearing + 2) * ux;
     const double y = head.bounds.y0;
     const int courses = std::max(1, o.lintel_courses);
-    RingShape r;
     r.parts.push_back({{head.bounds.x0 - x, y - (courses + 0.25) * uy},
                        {head.bounds.x1 + x, y - (courses + 0.25) * uy},
                        {head.bounds.x1 + x, y + 0.75 * uy},
@@ -165,6 +174,7 @@ RingPlan plan_rings(const Facade& f, const Options& o, double depth) {
         bool halve = false;
     };
     std::vector<Item> items;
+    std::map<int, CourseGrid> grids;  // per face, the ashlar grid stone lintels are laid on
     for (const Edge& e : f.edges()) {
         if (!e.opening) continue;
         if (e.arc) {
@@ -174,7 +184,15 @@ RingPlan plan_rings(const Facade& f, const Options& o, double depth) {
             if (it.base > 0) it.shape = ring_shape(f, o, it.arcs, it.base);
             items.push_back(std::move(it));
         } else if (e.part == Part::top) {
-            items.push_back({-1, &e, {}, 0, lintel_shape(e, o), false});
+            const CourseGrid* grid = nullptr;
+            if (o.bond == Bond::ashlar) {
+                auto it = grids.find(e.face);
+                if (it == grids.end())
+                    it = grids.emplace(e.face, make_grid(f, e.face, ashlar_unit(o), ashlar_unit(o)))
+                             .first;
+                grid = &it->second;
+            }
+            items.push_back({-1, &e, {}, 0, lintel_shape(e, o, grid), false});
         }
     }
     RingPlan plan;
@@ -205,8 +223,8 @@ RingPlan plan_rings(const Facade& f, const Options& o, double depth) {
             it.shape = ring_shape(f, o, it.arcs, half);
         }
     std::pair<std::size_t, std::size_t> first{items.size(), items.size()};
-    // Two rings that still meet refuse the facade (a ring and a lintel that still meet are
-    // laid as they come: the lintel's shape here is the most it may take, not what it takes).
+    // Two rings that still meet refuse the facade (a lintel that still meets a half-brick ring
+    // is cut to its extrados: the rings are laid first).
     each_meeting([&](std::size_t i, std::size_t j) {
         if (items[i].key >= 0 && items[j].key >= 0) first = std::min(first, std::pair{i, j});
     });

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "course_grid.hpp"
+
 namespace acanthus::cells::detail {
 
 // The area a ring covers, as simple polygons (its band cut into short pieces, its skewbacks'
@@ -22,9 +24,10 @@ struct RingShape {
 // skewbacks may take.
 RingShape ring_shape(const Facade& facade, const Options& options,
                      const std::vector<const Edge*>& arcs, double depth);
-// The rectangle a lintel over straight head `head` may take on the grid (its bearing past each
-// jamb rounded out to a whole unit, the courses over the head), never smaller than it lays.
-RingShape lintel_shape(const Edge& head, const Options& options);
+// The rectangle the lintel over straight head `head` takes: on the ashlar `grid` of its face,
+// the one it will be laid as; in brick (no grid), the most it may take (its bearing past each
+// jamb rounded out to a whole unit, the courses over the head).
+RingShape lintel_shape(const Edge& head, const Options& options, const CourseGrid* grid);
 
 // Whether two shapes share area: edges that cross, or one inside the other (touching passes).
 bool shapes_meet(const RingShape& a, const RingShape& b);

@@ -120,16 +120,34 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options,
         std::min(1.25 * bricks + 4.0 * static_cast<double>(facade.corners().size()), 2e6)));
     context.data().expected_cells = detail::expected_cells(facade, options);
     Texture out;
-    for (std::size_t i = 0; i < facade.corners().size(); ++i)
-        tree({FeatureKind::corner, static_cast<int>(i)}, context);
-    out.stats.corners = static_cast<long>(context.cells().size());
-    // Arcs before straight edges: voussoirs are set out first and the walling cut to them, so a
-    // jamb's top brick cannot notch the springer.
-    for (bool arcs : {true, false})
+    // The arches first, as they are built: the corners on an arc (springings, apexes), then the
+    // arc edges (a ring springing tangent from its jambs has no corner), then the other corners
+    // and edges, so no lintel, sill row or jamb brick laid from another opening notches a
+    // voussoir: the walling is cut to the rings.
+    auto on_arc = [&](const Corner& k) {
+        for (int e : {k.edge_in, k.edge_out})
+            if (e >= 0 && facade.edges()[static_cast<std::size_t>(e)].arc) return true;
+        return false;
+    };
+    auto corners = [&](bool arcs) {
+        for (std::size_t i = 0; i < facade.corners().size(); ++i)
+            if (on_arc(facade.corners()[i]) == arcs)
+                tree({FeatureKind::corner, static_cast<int>(i)}, context);
+    };
+    auto edges = [&](bool arcs) {
         for (std::size_t i = 0; i < facade.edges().size(); ++i)
             if (facade.edges()[i].arc == arcs)
                 tree({FeatureKind::edge, static_cast<int>(i)}, context);
-    out.stats.edges = static_cast<long>(context.cells().size()) - out.stats.corners;
+    };
+    const auto laid = [&] { return static_cast<long>(context.cells().size()); };
+    corners(true);
+    const long arc_corners = laid();
+    edges(true);
+    const long arc_edges = laid() - arc_corners;
+    corners(false);
+    out.stats.corners = laid() - arc_edges;
+    edges(false);
+    out.stats.edges = laid() - out.stats.corners;
     for (std::size_t i = 0; i < facade.faces().size(); ++i)
         tree({FeatureKind::face, static_cast<int>(i)}, context);
     out.cells = std::move(context.cells());
