@@ -3,6 +3,7 @@
 #include <acanthus/progress.hpp>
 #include <algorithm>
 #include <functional>
+#include <tuple>
 #include <utility>
 
 namespace acanthus::cells::detail {
@@ -43,12 +44,33 @@ void AshlarRules::lay(Random& random) {
     held_ = static_cast<int>(std::unique(held.begin(), held.end()) - held.begin());
     // Each repair can leave work for the other (a stone split off makes a four-way joint, a
     // joint moved frees a unit): both run until neither changes anything, bounded.
+    // A repair may undo another's (a four-way joint relaid into a stone on end, that stone relaid
+    // into a four-way joint, pass after pass): the best layout any pass left is the one kept,
+    // the fewest stones on end while the face keeps within 1% of four-way joints, then the
+    // fewest four-way joints.
+    auto grade = [&] {
+        long ends = 0, live = held_;
+        for (std::size_t k = 0; k < stones_.size(); ++k)
+            if (k >= gone.size() || !gone[k]) ++live, ends += on_end(stones_[k]);
+        const long fw = four_ways(0, rows_, 0, units_);
+        return std::make_tuple(100L * fw > live, ends, fw);
+    };
+    auto best = grade();
+    std::vector<Stone> best_stones = stones_;
+    std::vector<int> best_owner = owner_;
+    std::vector<char> best_gone = gone;
     for (int pass = 0; pass < 16; ++pass) {
         const bool joined = join_on_end(gone);
         const bool broken = break_four_ways(gone);
         const bool relaid = relay_faults(gone);
+        gone.resize(stones_.size(), 0);
+        if (const auto now = grade(); now < best) {
+            best = now;
+            best_stones = stones_, best_owner = owner_, best_gone = gone;
+        }
         if (!joined && !broken && !relaid) break;
     }
+    stones_ = std::move(best_stones), owner_ = std::move(best_owner), gone = std::move(best_gone);
     std::size_t n = 0;
     for (std::size_t k = 0; k < stones_.size(); ++k)
         if (!gone[k]) stones_[n++] = stones_[k];
@@ -207,9 +229,25 @@ bool AshlarRules::relay_faults(std::vector<char>& gone) {
         changed |= relay(around(r0 - 1, r1 + 1, u0 - 1, u1 + 1), gone) ||
                    relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone) ||
                    (on_end(s) && four_way_allowed(gone) &&
-                    relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone, true));
+                    relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone, true)) ||
+                   (on_end(s) && relay(around(r0 - 3, r1 + 3, u0 - 3, u1 + 3), gone)) ||
+                   (on_end(s) && relay_within(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone));
     }
     return changed;
+}
+
+bool AshlarRules::relay_within(const std::vector<int>& ks, std::vector<char>& gone) {
+    const std::vector<Stone> stones = stones_;
+    const std::vector<int> owner = owner_;
+    const std::vector<char> was_gone = gone;
+    const int four_way = four_way_;
+    if (!relay(ks, gone, true)) return false;
+    four_way_ = four_ways(0, rows_, 0, units_);
+    const auto live =
+        std::count(gone.begin(), gone.end(), 0) + static_cast<long>(stones_.size() - gone.size());
+    if (100L * four_way_ <= live + held_) return true;
+    stones_ = stones, owner_ = owner, gone = was_gone, four_way_ = four_way;
+    return false;
 }
 
 bool AshlarRules::join_on_end(std::vector<char>& gone) {

@@ -84,6 +84,9 @@ class AshlarRules {
     // the other way round), then unit squares side by side kept where it has fewer than now;
     // true when it was.
     bool relay(std::vector<int> ks, std::vector<char>& gone, bool ends_first = false);
+    // relay() with stones on end first, kept only where the face stays within 1% of four-way
+    // joints.
+    bool relay_within(const std::vector<int>& ks, std::vector<char>& gone);
     // Each four-way joint, stone on end and unit square beside another of the layout laid again
     // with the stones round it; true when any was.
     bool relay_faults(std::vector<char>& gone);
