@@ -1,7 +1,9 @@
 #include "toolchain/process.hpp"
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <csignal>
@@ -21,6 +23,50 @@ int run_process(const std::vector<std::string>& argv, std::string& error) {
         error = "cannot run '" + argv[0] + "': " + std::strerror(rc);
         return -1;
     }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0) {
+        if (errno != EINTR) {
+            error = std::string("waiting for '") + argv[0] + "': " + std::strerror(errno);
+            return -1;
+        }
+    }
+    if (WIFEXITED(status)) return WEXITSTATUS(status);
+    error = "'" + argv[0] + "' was killed by signal " + std::to_string(WTERMSIG(status));
+    return -1;
+}
+
+int run_process_output(const std::vector<std::string>& argv, std::string& output,
+                       std::string& error) {
+    int pipe_fds[2];
+    if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
+        error = std::string("cannot run '") + argv[0] + "': " + std::strerror(errno);
+        return -1;
+    }
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], 1);
+    posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], 2);
+    pid_t pid = 0;
+    const int rc = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(pipe_fds[1]);
+    if (rc != 0) {
+        ::close(pipe_fds[0]);
+        error = "cannot run '" + argv[0] + "': " + std::strerror(rc);
+        return -1;
+    }
+    output.clear();
+    char buffer[4096];
+    for (;;) {
+        const ssize_t n = ::read(pipe_fds[0], buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        if (output.size() < (1u << 20)) output.append(buffer, static_cast<std::size_t>(n));
+    }
+    ::close(pipe_fds[0]);
     int status = 0;
     while (waitpid(pid, &status, 0) < 0) {
         if (errno != EINTR) {
