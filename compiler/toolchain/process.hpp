@@ -10,6 +10,10 @@ namespace acanthus {
 // killed by a signal.
 int run_process(const std::vector<std::string>& argv, std::string& error);
 
+// As run_process, with the process's standard output and error (at most 1 MiB) in `output`.
+int run_process_output(const std::vector<std::string>& argv, std::string& output,
+                       std::string& error);
+
 // Shell-style quoting, for showing a command line.
 std::string quote_command(const std::vector<std::string>& argv);
 

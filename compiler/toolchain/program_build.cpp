@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "toolchain/process.hpp"
@@ -45,7 +46,75 @@ class Hash {
     std::uint64_t state_ = 0xcbf29ce484222325ULL;
 };
 
+bool is_clang(const std::string& compiler) {
+    return fs::path(compiler).filename().string().find("clang") != std::string::npos;
+}
+
+// Flags that only the link step reads: left out of the compile-only step.
+bool link_only(const std::string& flag) { return flag.rfind("-fuse-ld=", 0) == 0; }
+
+// The arguments of a `-###` line: ` "prog" "arg" ...`, with \" and \\ escaped.
+std::vector<std::string> quoted_words(const std::string& line) {
+    std::vector<std::string> words;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        if (line[i] != '"') continue;
+        std::string word;
+        for (++i; i < line.size() && line[i] != '"'; ++i) {
+            if (line[i] == '\\' && i + 1 < line.size()) ++i;
+            word += line[i];
+        }
+        words.push_back(word);
+    }
+    return words;
+}
+
 }  // namespace
+
+bool direct_link_command(const Toolchain& toolchain, const BuildOptions& options,
+                         std::vector<std::string>& command, std::string& error) {
+    command.clear();
+    std::vector<std::string> cmd = compiler_flags(toolchain, options);
+    if (!is_clang(cmd.front())) return false;
+    cmd.insert(cmd.end(), options.extra_flags.begin(), options.extra_flags.end());
+    // The driver wants its input to exist, even to print the commands.
+    std::error_code ec;
+    std::string dir = (fs::temp_directory_path(ec) / "acanthus-link.XXXXXX").string();
+    if (!mkdtemp(dir.data())) {
+        error = "cannot create a temporary directory";
+        return false;
+    }
+    const std::string object = (fs::path(dir) / "object.o").string();
+    const std::string output = (fs::path(dir) / "library.so").string();
+    std::ofstream(object).put('\n');
+    cmd.insert(cmd.end(), {"-shared", "-###", object, "-o", output});
+    std::string printed;
+    const int status = run_process_output(cmd, printed, error);
+    fs::remove_all(dir, ec);
+    if (status != 0) {
+        if (status > 0) error = "'" + cmd.front() + " -###' failed";
+        return false;
+    }
+    // The last command printed is the linker's.
+    std::string line;
+    for (std::size_t start = 0; start < printed.size();) {
+        std::size_t end = printed.find('\n', start);
+        if (end == std::string::npos) end = printed.size();
+        if (printed.compare(start, 2, " \"") == 0) line = printed.substr(start, end - start);
+        start = end + 1;
+    }
+    std::vector<std::string> words = quoted_words(line);
+    int objects = 0, outputs = 0;
+    for (std::string& w : words) {
+        if (w == object) w = kLinkObject, ++objects;
+        if (w == output) w = kLinkOutput, ++outputs;
+    }
+    if (words.empty() || objects != 1 || outputs != 1) {
+        error = "cannot read the link command from '" + cmd.front() + " -###'";
+        return false;
+    }
+    command = std::move(words);
+    return true;
+}
 
 std::string file_identity(const std::string& path) {
     if (path.empty()) return "-";
@@ -70,6 +139,22 @@ std::vector<std::string> compiler_flags(const Toolchain& toolchain, const BuildO
     if (options.shared_library) cmd.push_back("-fPIC");
     return cmd;
 }
+
+namespace {
+
+// The compile-only step of a shared library linked by `options.link_command`.
+std::vector<std::string> object_command(const Toolchain& toolchain, const BuildOptions& options,
+                                        const std::string& source, const std::string& object) {
+    std::vector<std::string> cmd = compiler_flags(toolchain, options);
+    if (!options.precompiled_header.empty())
+        cmd.insert(cmd.end(), {"-include", options.precompiled_header});
+    for (const std::string& f : options.extra_flags)
+        if (!link_only(f)) cmd.push_back(f);
+    cmd.insert(cmd.end(), {"-c", source, "-o", object});
+    return cmd;
+}
+
+}  // namespace
 
 std::vector<std::string> compile_command(const Toolchain& toolchain, const BuildOptions& options,
                                          const std::string& source, const std::string& executable) {
@@ -112,14 +197,20 @@ bool build_executable(const Toolchain& toolchain, const BuildOptions& options,
         temp = create_temporary_sibling(executable, error);
         ok = !temp.empty();
     }
-    if (ok) {
-        std::vector<std::string> cmd = compile_command(toolchain, options, source, temp);
+    const auto run = [&](const std::vector<std::string>& cmd, const char* what) {
         int status = options.runner ? options.runner(cmd, error) : run_process(cmd, error);
-        if (status != 0) {
-            if (status > 0)
-                error = "the C++ compiler failed (exit status " + std::to_string(status) + ")";
-            ok = false;
-        }
+        if (status > 0) error = std::string(what) + " (exit status " + std::to_string(status) + ")";
+        return status == 0;
+    };
+    const bool two_steps = options.shared_library && !options.link_command.empty();
+    if (ok && two_steps) {
+        const std::string object = (work / (stem + ".o")).string();
+        ok = run(object_command(toolchain, options, source, object), "the C++ compiler failed");
+        std::vector<std::string> link = options.link_command;
+        for (std::string& w : link) w = w == kLinkObject ? object : w == kLinkOutput ? temp : w;
+        ok = ok && run(link, "linking the rule code failed");
+    } else if (ok) {
+        ok = run(compile_command(toolchain, options, source, temp), "the C++ compiler failed");
     }
     if (ok) {
         // The temporary was created 0600; give the program the usual executable mode.
@@ -155,6 +246,8 @@ bool cached_executable(const Toolchain& toolchain, const BuildOptions& options,
     for (const std::string& part : compile_command(toolchain, options, "SOURCE", "EXECUTABLE")) {
         hash.add(part);
     }
+    if (options.shared_library)
+        for (const std::string& part : options.link_command) hash.add(part);
     hash.add(file_identity(toolchain.runtime_library));
     hash.add(file_identity(toolchain.stdlib_library));
     fs::path dir(cache_directory());

@@ -23,7 +23,21 @@ struct BuildOptions {
     std::vector<std::string> extra_flags;
     // A shared library exporting acanthus_pattern() (`--no-main` code) instead of a program.
     bool shared_library = false;
+    // With shared_library: the linker's own command line, as the compiler driver would run it
+    // (kLinkObject and kLinkOutput in place of the object and the library; direct_link_command).
+    // The build compiles an object (the driver runs the compiler in its own process then) and
+    // runs the linker itself. Empty: the driver compiles and links in one command.
+    std::vector<std::string> link_command;
 };
+
+inline constexpr const char* kLinkObject = "{object}";
+inline constexpr const char* kLinkOutput = "{output}";
+
+// The command the compiler driver would run to link one object into a shared library with
+// `options` (its flags, e.g. -fuse-ld=gold), read from `-###`: starting the driver for it took
+// more processor time than the link. False (and no command) for a compiler other than clang.
+bool direct_link_command(const Toolchain& toolchain, const BuildOptions& options,
+                         std::vector<std::string>& command, std::string& error);
 
 // A cache key from `parts` (FNV-1a, not a security boundary), 16 hex digits.
 std::string cache_key(const std::vector<std::string>& parts);

@@ -502,21 +502,23 @@ async function partialPictures(browser) {
   const page = await browser.newPage();
   await watchPolicy(page);
   await page.setViewport({ width: 1280, height: 760 });
-  // Every partial picture the page shows (its number), and the dots in each the server sent.
+  // Every partial picture the page shows (its number), and the dots in it, read from the bytes
+  // the page shows (it hands the fetched body on as a Blob, which puppeteer's response events
+  // then cannot read; and its policy refuses a fetch of the image's blob: address).
   await page.evaluateOnNewDocument(() => {
     window.partials = [];
+    window.partialDots = {};
     new MutationObserver(() => {
-      if (document.body.dataset.picture === "partial") window.partials.push(Number(document.body.dataset.partial));
+      if (document.body.dataset.picture !== "partial") return;
+      const n = Number(document.body.dataset.partial);
+      window.partials.push(n);
+      // (`page` is the page script's own state)
+      window.partialDots[n] = page.pictureBytes.text().then((t) => (t.match(/<circle/g) || []).length);
     }).observe(document, { attributes: true, subtree: true, attributeFilter: ["data-partial", "data-picture"] });
-  });
-  const dots = {};
-  page.on("response", async (r) => {
-    const m = /\/partial\.svg\?n=(\d+)/.exec(r.url());
-    if (m && r.ok()) dots[m[1]] = ((await r.text()).match(/<circle/g) || []).length;
   });
   await page.goto(url);
   let rev = await waitShown(page, 0);
-  const shownDots = async (from) => (await page.evaluate((f) => window.partials.slice(f), from)).map((n) => dots[n]);
+  const shownDots = (from) => page.evaluate((f) => Promise.all(window.partials.slice(f).map((n) => window.partialDots[n])), from);
   const first = await shownDots(0);
   const final = await (await fetch(url + "render.svg")).text();
   const finalDots = (final.match(/<circle/g) || []).length;

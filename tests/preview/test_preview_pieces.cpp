@@ -1,6 +1,7 @@
 // The preview's pure pieces: diagnostics parsed from compiler output, guides written from
 // strokes, the stroke tools libraries declare, program options split into the page's settings, the
-// server's connection threads and program slots, the file watcher.
+// server's connection threads and program slots, the file watcher, the rule code's build.
+#include <dlfcn.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -19,6 +20,8 @@
 #include "server/settings.hpp"
 #include "server/stroke_tools.hpp"
 #include "server/watcher.hpp"
+#include "toolchain/process.hpp"
+#include "toolchain/program_build.hpp"
 #include "toolchain/toolchain.hpp"
 
 namespace acanthus {
@@ -395,6 +398,47 @@ TEST(FileWatcher, ReportsRenamedAndRewrittenSavesOfNewContentOnly) {
     EXPECT_EQ(unchanged(), 2);
     watcher.stop();
     fs::remove_all(dir);
+}
+
+// The preview builds rule code in two processes, neither of them a compiler driver that starts
+// another: the compiler on its own (-c) and the linker itself, with the command the driver gives.
+TEST(PreviewBuild, RuleLibraryCompiledThenLinkedByTheLinkerItself) {
+    std::string error;
+    if (run_process({"sh", "-c", "command -v clang++ >/dev/null"}, error) != 0)
+        GTEST_SKIP() << "no clang++";
+    const test::TempDir dir("build");
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    options.cxx = "clang++";
+    options.optimization = "0";
+    options.shared_library = true;
+    ASSERT_TRUE(direct_link_command(toolchain, options, options.link_command, error)) << error;
+    const auto& link = options.link_command;
+    EXPECT_EQ(std::count(link.begin(), link.end(), kLinkObject), 1);
+    EXPECT_EQ(std::count(link.begin(), link.end(), kLinkOutput), 1);
+    EXPECT_NE(std::filesystem::path(link.front()).filename().string().find("ld"), std::string::npos)
+        << link.front();
+    std::vector<std::vector<std::string>> ran;
+    options.runner = [&ran](const std::vector<std::string>& argv, std::string& e) {
+        ran.push_back(argv);
+        return run_process(argv, e);
+    };
+    const std::string library = (dir.path() / "answer.so").string();
+    ASSERT_TRUE(build_executable(toolchain, options, "answer",
+                                 "extern \"C\" int acanthus_answer() { return 42; }\n", library,
+                                 error))
+        << error;
+    ASSERT_EQ(ran.size(), 2u);
+    EXPECT_EQ(ran[0].front(), "clang++");
+    EXPECT_NE(std::find(ran[0].begin(), ran[0].end(), "-c"), ran[0].end());
+    EXPECT_EQ(ran[1].front(), link.front());
+    void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+    ASSERT_NE(handle, nullptr) << dlerror();
+    using Answer = int (*)();
+    auto answer = reinterpret_cast<Answer>(dlsym(handle, "acanthus_answer"));
+    ASSERT_NE(answer, nullptr);
+    EXPECT_EQ(answer(), 42);
+    dlclose(handle);
 }
 
 }  // namespace
