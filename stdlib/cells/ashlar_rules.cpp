@@ -8,6 +8,11 @@
 
 namespace acanthus::cells::detail {
 
+int& ashlar_rounds() {
+    thread_local int rounds = 0;
+    return rounds;
+}
+
 AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam, int first_id,
                          double square)
     : g_(g),
@@ -43,34 +48,18 @@ void AshlarRules::lay(Random& random) {
     std::sort(held.begin(), held.end());
     held_ = static_cast<int>(std::unique(held.begin(), held.end()) - held.begin());
     // Each repair can leave work for the other (a stone split off makes a four-way joint, a
-    // joint moved frees a unit): both run until neither changes anything, bounded.
-    // A repair may undo another's (a four-way joint relaid into a stone on end, that stone relaid
-    // into a four-way joint, pass after pass): the best layout any pass left is the one kept,
-    // the fewest stones on end while the face keeps within 1% of four-way joints, then the
-    // fewest four-way joints.
-    auto grade = [&] {
-        long ends = 0, live = held_;
-        for (std::size_t k = 0; k < stones_.size(); ++k)
-            if (k >= gone.size() || !gone[k]) ++live, ends += on_end(stones_[k]);
-        const long fw = four_ways(0, rows_, 0, units_);
-        return std::make_tuple(100L * fw > live, ends, fw);
-    };
-    auto best = grade();
-    std::vector<Stone> best_stones = stones_;
-    std::vector<int> best_owner = owner_;
-    std::vector<char> best_gone = gone;
-    for (int pass = 0; pass < 16; ++pass) {
+    // joint moved frees a unit): all run until none changes anything. Every repair is taken
+    // only where it lowers the face's key (see `Key`), so none undoes another's and the rounds
+    // end; the bound is a guard.
+    for (rounds_ = 1; rounds_ <= kMaxRounds; ++rounds_) {
+        four_way_ = four_ways(0, rows_, 0, units_);
         const bool joined = join_on_end(gone);
         const bool broken = break_four_ways(gone);
         const bool relaid = relay_faults(gone);
         gone.resize(stones_.size(), 0);
-        if (const auto now = grade(); now < best) {
-            best = now;
-            best_stones = stones_, best_owner = owner_, best_gone = gone;
-        }
         if (!joined && !broken && !relaid) break;
     }
-    stones_ = std::move(best_stones), owner_ = std::move(best_owner), gone = std::move(best_gone);
+    ashlar_rounds() = std::max(ashlar_rounds(), rounds_);
     std::size_t n = 0;
     for (std::size_t k = 0; k < stones_.size(); ++k)
         if (!gone[k]) stones_[n++] = stones_[k];
@@ -98,7 +87,12 @@ bool AshlarRules::upright(const Stone& s) const {
            g_.ys[static_cast<std::size_t>(s.row + s.h)] - g_.ys[static_cast<std::size_t>(s.row)];
 }
 
-bool AshlarRules::relay(std::vector<int> ks, std::vector<char>& gone, bool ends_first) {
+long AshlarRules::live(const std::vector<char>& gone) const {
+    return std::count(gone.begin(), gone.end(), 0) +
+           static_cast<long>(stones_.size() - gone.size()) + held_;
+}
+
+bool AshlarRules::relay(std::vector<int> ks, std::vector<char>& gone, long max_nodes) {
     std::sort(ks.begin(), ks.end());
     ks.erase(std::unique(ks.begin(), ks.end()), ks.end());
     if (ks.empty()) return false;
@@ -118,45 +112,69 @@ bool AshlarRules::relay(std::vector<int> ks, std::vector<char>& gone, bool ends_
         return n < ids.size() ? ids[n]
                               : first_id_ + static_cast<int>(stones_.size() + n - ids.size());
     };
-    // The stone holding unit (r, u) while `laid` stands in for the region's.
-    auto stone_at = [&](const std::vector<Stone>& laid, int r, int u) -> const Stone* {
-        const int id = get(r, u);
-        for (std::size_t n = 0; n < laid.size(); ++n)
-            if (id_of(n) == id) return &laid[n];
-        if (std::find(ids.begin(), ids.end(), id) != ids.end()) return nullptr;
-        return own(id);
+    // Sides shared by two unit squares, one of them the region's, each counted twice (from
+    // both sides when both are the region's) so that where the region ends does not count.
+    auto squares = [&](const std::vector<Stone>& laid) {
+        long n = 0;
+        for (const Stone& s : laid)
+            if (small(s))
+                each_beside(s, [&](int a, int b) {
+                    const int id = get(a, b);
+                    std::size_t m = 0;
+                    while (m < laid.size() && id_of(m) != id) ++m;
+                    if (m < laid.size()) {
+                        n += small(laid[m]);
+                    } else if (std::find(ids.begin(), ids.end(), id) == ids.end()) {
+                        const Stone* t = own(id);
+                        n += 2 * (t ? small(*t) : small_at(a, b));
+                    }
+                });
+        return n;
     };
-    auto score = [&](const std::vector<Stone>& laid) {
-        long ends = 0, squares = 0;
-        for (const Stone& s : laid) {
-            ends += on_end(s);
-            if (!small(s)) continue;
-            for (auto [a, b] : beside(s)) {
-                const Stone* t = stone_at(laid, a, b);
-                if (t ? small(*t) : small_at(a, b) && !own(get(a, b))) ++squares;
-            }
-        }
-        const long fw = four_ways(r0, r1, u0, u1);
-        return ends_first ? 100000L * ends + 1000L * fw + squares
-                          : 10000L * fw + 100L * ends + squares;
+    // The face's count of four-way joints and stones with the region's `fw` and `n`.
+    const int fw_before = four_ways(r0, r1, u0, u1);
+    const long fw_other = four_way_ - fw_before;
+    const long live_other = live(gone) - static_cast<long>(ks.size());
+    auto over = [&](long fw, std::size_t n) {
+        return static_cast<int>(100 * (fw_other + fw) > live_other + static_cast<long>(n));
     };
     std::vector<Stone> now;
-    for (int k : ks) now.push_back(stones_[static_cast<std::size_t>(k)]);
-    const long before = score(now);
-    if (before == 0) return false;
+    long ends_now = 0;
+    for (int k : ks) {
+        now.push_back(stones_[static_cast<std::size_t>(k)]);
+        ends_now += on_end(now.back());
+    }
+    const Key before{over(fw_before, now.size()), ends_now, fw_before, squares(now)};
+    // A relay that found nothing finds nothing again while the units round it and the room the
+    // face has for four-way joints (up to five more) are as they were: the rounds ask again.
+    std::uint64_t memo = 1469598103934665603ULL;
+    auto mix = [&](long v) { memo = (memo ^ static_cast<std::uint64_t>(v)) * 1099511628211ULL; };
+    mix(max_nodes);
+    mix(std::clamp(live_other - 100 * fw_other, -1000L, 500L));
+    for (int r = r0 - 1; r <= r1; ++r)
+        for (int u = u0 - 1; u <= u1; ++u) {
+            const int id = get(r, u);
+            mix(id);
+            if (const Stone* t = own(id)) mix(t->row), mix(t->unit), mix(t->h), mix(t->w);
+        }
+    if (failed_.count(memo)) return false;
     // Laid again: the region's units free, then every tiling (largest stones first) up to a
     // bound, each stone taking the id of the region's stone it replaces (new ids past the end).
+    // Four-way joints and stones on end only grow as stones are laid (a point all four of whose
+    // units are laid cannot lose its joint), so a tiling begun worse than the best is left.
     for (auto [r, u] : units) at(r, u) = kEmpty;
-    std::vector<Stone> laid, best;
-    long best_score = before;
+    const long base = four_ways(r0, r1, u0, u1);  // those the region's units do not touch
+    const Key ideal{over(base, units.size()), 0, base, 0};
+    std::vector<Stone> laid, best_laid;
+    Key best = before;
     long nodes = 0;
-    const long max_nodes = ends_first ? 200000 : 20000;
-    std::function<void(std::size_t)> search = [&](std::size_t next) {
-        if (++nodes > max_nodes || best_score == 0) return;
+    std::function<void(std::size_t, long, long)> search = [&](std::size_t next, long ends,
+                                                              long fw) {
+        if (++nodes > max_nodes || best <= ideal) return;
         while (next < units.size() && get(units[next].first, units[next].second) != kEmpty) ++next;
         if (next == units.size()) {
-            const long sc = score(laid);
-            if (sc < best_score) best_score = sc, best = laid;
+            if (const Key k{over(fw, laid.size()), ends, fw, squares(laid)}; k < best)
+                best = k, best_laid = laid;
             return;
         }
         const auto [r, u] = units[next];
@@ -168,41 +186,43 @@ bool AshlarRules::relay(std::vector<int> ks, std::vector<char>& gone, bool ends_
                 for (int i = r; i < r + h; ++i)
                     for (int j = u; j < u + w; ++j) at(i, j) = id;
                 laid.push_back(s);
-                // Four-way joints at its corners that all four units now show cannot go away.
-                if ((ends_first ? 1000L : 10000L) * four_ways(r, r + h, u, u + w) < best_score)
-                    search(next + 1);
+                const long e = ends + on_end(s), f = fw + four_ways(r, r + h, u, u + w);
+                if (Key{over(f, units.size()), e, f, 0} < best) search(next + 1, e, f);
                 laid.pop_back();
                 for (int i = r; i < r + h; ++i)
                     for (int j = u; j < u + w; ++j) at(i, j) = kEmpty;
             }
     };
-    search(0);
-    const bool better = !best.empty() && best_score < before;
-    const std::vector<Stone>& use = better ? best : now;
-    const int fw_before = four_ways(r0, r1, u0, u1);
+    if (before > ideal) search(0, 0, base);
+    const bool better = !best_laid.empty() && best < before;
+    const std::vector<Stone>& use = better ? best_laid : now;
     for (std::size_t n = 0; n < use.size(); ++n) {
         const Stone& s = use[n];
         const int id = better ? id_of(n) : ids[n];
         for (int i = s.row; i < s.row + s.h; ++i)
             for (int j = s.unit; j < s.unit + s.w; ++j) at(i, j) = id;
     }
-    if (!better) return false;
-    four_way_ += four_ways(r0, r1, u0, u1) - fw_before;
-    for (std::size_t n = 0; n < best.size(); ++n) {
+    if (!better) {
+        failed_.insert(memo);
+        return false;
+    }
+    four_way_ += std::get<2>(best) - fw_before;
+    for (std::size_t n = 0; n < best_laid.size(); ++n) {
         if (n < ks.size()) {
-            stones_[static_cast<std::size_t>(ks[n])] = best[n];
+            stones_[static_cast<std::size_t>(ks[n])] = best_laid[n];
         } else {
-            stones_.push_back(best[n]);
+            stones_.push_back(best_laid[n]);
             gone.push_back(0);
         }
     }
-    for (std::size_t n = best.size(); n < ks.size(); ++n) gone[static_cast<std::size_t>(ks[n])] = 1;
+    for (std::size_t n = best_laid.size(); n < ks.size(); ++n)
+        gone[static_cast<std::size_t>(ks[n])] = 1;
     return true;
 }
 
 bool AshlarRules::relay_faults(std::vector<char>& gone) {
     bool changed = false;
-    four_way_ = four_ways(0, rows_, 0, units_);
+    four_way_ = four_ways(0, rows_, 0, units_);  // the joins above may have taken some away
     // The layout's stones among units (rows r0..r1, units u0..u1, inclusive).
     auto around = [&](int ra, int rb, int ua, int ub) {
         std::vector<int> ks;
@@ -224,30 +244,15 @@ bool AshlarRules::relay_faults(std::vector<char>& gone) {
         const bool square = lone_square(s, kBlocked);
         if (!on_end(s) && !square) continue;
         const int r0 = s.row, r1 = s.row + s.h - 1, u0 = s.unit, u1 = s.unit + s.w - 1;
-        // Wider round it where the stones beside it cannot take it; an end stood up is worse
-        // than a four-way joint while the face keeps within 1% of those.
+        // Wider round it where the stones beside it cannot take it, and for a stone on end
+        // deeper (a unit square on end at the heart of a pinwheel of two-row stones, on a grid
+        // stretched between a lintel and a sill).
         changed |= relay(around(r0 - 1, r1 + 1, u0 - 1, u1 + 1), gone) ||
                    relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone) ||
-                   (on_end(s) && four_way_allowed(gone) &&
-                    relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone, true)) ||
-                   (on_end(s) && relay(around(r0 - 3, r1 + 3, u0 - 3, u1 + 3), gone)) ||
-                   (on_end(s) && relay_within(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone));
+                   (on_end(s) && (relay(around(r0 - 3, r1 + 3, u0 - 3, u1 + 3), gone) ||
+                                  relay(around(r0 - 2, r1 + 2, u0 - 2, u1 + 2), gone, 200000)));
     }
     return changed;
-}
-
-bool AshlarRules::relay_within(const std::vector<int>& ks, std::vector<char>& gone) {
-    const std::vector<Stone> stones = stones_;
-    const std::vector<int> owner = owner_;
-    const std::vector<char> was_gone = gone;
-    const int four_way = four_way_;
-    if (!relay(ks, gone, true)) return false;
-    four_way_ = four_ways(0, rows_, 0, units_);
-    const auto live =
-        std::count(gone.begin(), gone.end(), 0) + static_cast<long>(stones_.size() - gone.size());
-    if (100L * four_way_ <= live + held_) return true;
-    stones_ = stones, owner_ = owner, gone = was_gone, four_way_ = four_way;
-    return false;
 }
 
 bool AshlarRules::join_on_end(std::vector<char>& gone) {
@@ -261,7 +266,9 @@ bool AshlarRules::join_on_end(std::vector<char>& gone) {
                 t && t->row == s.row && t->h == 1 &&
                 (best < 0 || t->w < stones_[static_cast<std::size_t>(best)].w))
                 best = static_cast<int>(t - stones_.data());
-        if (best >= 0) {
+        // A stone fewer must not take the face over 1% of four-way joints.
+        const long n = live(gone);
+        if (best >= 0 && (100L * four_way_ > n || 100L * four_way_ <= n - 1)) {
             Stone& b = stones_[static_cast<std::size_t>(best)];
             b.unit = std::min(b.unit, s.unit);
             b.w += 1;
@@ -283,9 +290,9 @@ bool AshlarRules::join_on_end(std::vector<char>& gone) {
 // not leave.
 bool AshlarRules::lone_square(const Stone& s, int other) const {
     if (!small(s)) return false;
-    for (auto [a, b] : beside(s))
-        if (get(a, b) != other && small_at(a, b)) return true;
-    return false;
+    bool found = false;
+    each_beside(s, [&](int a, int b) { found |= get(a, b) != other && small_at(a, b); });
+    return found;
 }
 
 bool AshlarRules::small(const Stone& s) const {
@@ -302,15 +309,6 @@ bool AshlarRules::small_at(int r, int u) const {
     if (r < 0 || u < 0 || r >= rows_ || u >= units_) return false;
     if (const Stone* t = own(get(r, u))) return small(*t);
     return get(r, u) >= 0 && small_held_[static_cast<std::size_t>(r * units_ + u)];
-}
-
-std::vector<std::pair<int, int>> AshlarRules::beside(const Stone& s) const {
-    std::vector<std::pair<int, int>> out;
-    for (int u = s.unit; u < s.unit + s.w; ++u) out.emplace_back(s.row - 1, u);
-    for (int u = s.unit; u < s.unit + s.w; ++u) out.emplace_back(s.row + s.h, u);
-    for (int r = s.row; r < s.row + s.h; ++r) out.emplace_back(r, s.unit - 1);
-    for (int r = s.row; r < s.row + s.h; ++r) out.emplace_back(r, s.unit + s.w);
-    return out;
 }
 
 bool AshlarRules::break_four_ways(std::vector<char>& gone) {
@@ -410,9 +408,7 @@ int AshlarRules::four_ways(int r0, int r1, int u0, int u1) const {
 }
 
 bool AshlarRules::four_way_allowed(const std::vector<char>& gone) const {
-    const auto live =
-        std::count(gone.begin(), gone.end(), 0) + static_cast<long>(stones_.size() - gone.size());
-    return 100L * (four_way_ + 1) <= live + held_;
+    return 100L * (four_way_ + 1) <= live(gone);
 }
 
 bool AshlarRules::split_beside(int k, const std::vector<char>& gone) {
@@ -517,8 +513,7 @@ int AshlarRules::faults(int r, int u, int h, int w) const {
         f += uh > 1.1 * uw && !jamb_[static_cast<std::size_t>(r * units_ + u)] ? 3 : 1;
     }
     if (const Stone c{r, u, h, w}; small(c))
-        for (auto [a, b] : beside(c))
-            if (small_at(a, b)) f += 2;
+        each_beside(c, [&](int a, int b) { f += small_at(a, b) ? 2 : 0; });
     // A bed joint under the stone along more than max_seam stones of this layout.
     const int x = u + w, y = r + h;
     int run = 1;

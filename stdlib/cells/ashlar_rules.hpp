@@ -6,6 +6,9 @@
 #pragma once
 
 #include <acanthus/random.hpp>
+#include <cstdint>
+#include <tuple>
+#include <unordered_set>
 #include <vector>
 
 #include "ashlar_merge.hpp"  // Stone
@@ -46,6 +49,10 @@ class AshlarRules {
     // Lays every free unit; whole rows before any becomes a cell, each reported as progress.
     void lay(Random& random);
     const std::vector<Stone>& stones() const { return stones_; }
+    static constexpr int kMaxRounds = 16;
+    // Rounds of repairs lay() ran, the last (which changed nothing) included; kMaxRounds + 1
+    // where the bound stopped them.
+    int rounds() const { return rounds_; }
 
   private:
     int& at(int r, int u) { return owner_[static_cast<std::size_t>(r * units_ + u)]; }
@@ -73,20 +80,26 @@ class AshlarRules {
     bool small(const Stone& s) const;
     // Unit (r, u) held by a unit square: one of the layout, or one laid before.
     bool small_at(int r, int u) const;
-    // The units round stone `s` (above, below, left and right of it), each once.
-    std::vector<std::pair<int, int>> beside(const Stone& s) const;
+    // Calls f(r, u) on the units round stone `s` (above, below, left and right of it), each once.
+    template <class F>
+    void each_beside(const Stone& s, F f) const {
+        for (int u = s.unit; u < s.unit + s.w; ++u) f(s.row - 1, u), f(s.row + s.h, u);
+        for (int r = s.row; r < s.row + s.h; ++r) f(r, s.unit - 1), f(r, s.unit + s.w);
+    }
     bool on_end(const Stone& s) const;
     // Measured as the face holds it (a unit cut by a jamb counts as what is left of it): no
     // taller than wide, or one unit wide against a jamb.
     bool upright(const Stone& s) const;
+    // The order every repair lowers, compared in turn: the face over 1% of four-way joints
+    // (counted over its stones, those laid before too), stones on end, four-way joints, unit
+    // squares side by side. A repair taken only where it lowers it cannot undo another's.
+    using Key = std::tuple<int, long, long, long>;
+    // The layout's stones still laid and the rectangular ones laid before.
+    long live(const std::vector<char>& gone) const;
     // The stones `ks` of the layout laid again over the same units, every way the rules allow
-    // (bounded), the one with the fewest four-way joints, then stones on end (`ends_first`:
-    // the other way round), then unit squares side by side kept where it has fewer than now;
-    // true when it was.
-    bool relay(std::vector<int> ks, std::vector<char>& gone, bool ends_first = false);
-    // relay() with stones on end first, kept only where the face stays within 1% of four-way
-    // joints.
-    bool relay_within(const std::vector<int>& ks, std::vector<char>& gone);
+    // (largest stones first, up to `max_nodes` steps), the tiling with the lowest key kept where
+    // it is lower than now; true when it was.
+    bool relay(std::vector<int> ks, std::vector<char>& gone, long max_nodes = 20000);
     // Each four-way joint, stone on end and unit square beside another of the layout laid again
     // with the stones round it; true when any was.
     bool relay_faults(std::vector<char>& gone);
@@ -100,6 +113,12 @@ class AshlarRules {
     std::vector<Stone> stones_;
     int four_way_ = 0;  // four-way joints of the face, counted once laid
     int held_ = 0;      // rectangular stones laid before, counted once laid
+    int rounds_ = 0;
+    std::unordered_set<std::uint64_t> failed_;  // relays that found nothing (see relay())
 };
+
+// The most rounds of repairs a face of the texture being laid on this thread took (see
+// TextureStats::ashlar_rounds).
+int& ashlar_rounds();
 
 }  // namespace acanthus::cells::detail

@@ -516,6 +516,38 @@ TEST(CellsUnseen, AshlarWallsCoarseGrid) {
     EXPECT_GT(stone_walls(files, 24, 15), 20);
 }
 
+// The repair rounds end: each repair is taken only where it lowers one order of faults (over 1%
+// of four-way joints, stones on end, four-way joints, unit squares side by side), so none undoes
+// another's. Walls where, at the 15 cm unit, a four-way joint was relaid into a stone on end and
+// back, round after round, until the bound of 16 rounds stopped it (the best round then kept),
+// and two where that was seen before (insets seed 2, the wide opening seed 15); both units.
+TEST(CellsUnseen, AshlarRepairRoundsEnd) {
+    const std::string examples = std::string(ACANTHUS_SOURCE_DIR) + "/examples/facades/";
+    const std::string shop = std::string(ACANTHUS_SOURCE_DIR) + "/tests/stdlib/cells/facades/";
+    const std::pair<std::string, int> walls[] = {
+        {unseen("gable-pointed-end"), 4}, {unseen("gable-pointed-end"), 9},
+        {examples + "gable.svg", 4},      {examples + "insets.svg", 23},
+        {shop + "shopfront.svg", 3},      {examples + "insets.svg", 2},
+        {unseen("wide-opening"), 15}};
+    Options o = centimetres();
+    o.bond = Bond::ashlar;
+    MasonSpec spec = kCm;
+    spec.stone = true;
+    for (double unit : {15.0, 0.0})
+        for (const auto& [file, seed] : walls) {
+            o.ashlar_unit = spec.stone_unit = unit;
+            const Facade f = Facade::from_svg_file(file);
+            const Texture t = texture(f, ashlar_tree(), o, static_cast<std::uint64_t>(seed));
+            SCOPED_TRACE(file + " seed " + std::to_string(seed) + " unit " + std::to_string(unit));
+            EXPECT_GT(t.stats.ashlar_rounds, 0);
+            EXPECT_LE(t.stats.ashlar_rounds, 16);
+            const MasonReport m = mason_check(f, t.cells, spec);
+            EXPECT_EQ(m.stones_on_end, 0);
+            EXPECT_LE(m.four_way * 100, m.stones);
+            EXPECT_EQ(m.unit_square_runs, 0);
+        }
+}
+
 // A level top 2.2 cm past whole courses over a window head: one cut course under it, not two,
 // the whole courses below closing their joints (within the tolerance) so it is half a course.
 TEST(CellsUnseen, OneCutCourseUnderTheTop) {

@@ -329,6 +329,10 @@ Node tree_for(const Options& options);
 struct TextureStats {
     long corners = 0, edges = 0, faces = 0;
     double seconds = 0;  // wall time, reported only
+    // Ashlar (cells_ashlar=rules): the most rounds of repairs any face's layout ran, the last
+    // one, which changed nothing, included; the bound is 16, and a 17 says they were stopped
+    // there while still changing the layout.
+    int ashlar_rounds = 0;
 };
 
 struct Texture {
