@@ -46,6 +46,15 @@ std::vector<std::pair<int, double>> ids(
     return out;
 }
 
+// Cells of 10 x 10 over [0, 200]^2 and two round it; those with x < 60 make the zone.
+void set_zone_left_of_60(Ornament& ornament) {
+    const int columns = 24, rows = 24;  // 20 cells and 2 on each side
+    std::vector<bool> cells(static_cast<std::size_t>(columns * rows), false);
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < 8; ++i) cells[static_cast<std::size_t>(j * columns + i)] = true;
+    ornament.set_near_zone({-20, -20}, 10, columns, cells);
+}
+
 }  // namespace
 
 // The zone: cells of 10 x 10 over [0, 200]^2 (a margin of two cells round it), the cells with
@@ -55,11 +64,7 @@ std::vector<std::pair<int, double>> ids(
 TEST(OrnamentNearZone, AnswersEveryQueryAsAnOrnamentIndexingEverything) {
     const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
     Ornament zoned(region, 1e-9), plain(region, 1e-9);
-    const int columns = 24, rows = 24;  // 20 cells and 2 on each side
-    std::vector<bool> cells(static_cast<std::size_t>(columns * rows), false);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < 8; ++i) cells[static_cast<std::size_t>(j * columns + i)] = true;
-    zoned.set_near_zone({-20, -20}, 10, columns, cells);
+    set_zone_left_of_60(zoned);
     acanthus::Random rng(31);
     int inside_queries = 0, beyond_queries = 0;
     for (int batch = 0; batch < 60; ++batch) {
@@ -135,11 +140,7 @@ TEST(OrnamentNearZone, FindsElementsBeyondTheCellsAndAroundTheZone) {
 TEST(OrnamentNearZone, ForEachMeetingVisitsEveryElementWhoseBoundsMeetTheBox) {
     const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
     Ornament zoned(region, 1e-9), plain(region, 1e-9);
-    const int columns = 24, rows = 24;
-    std::vector<bool> cells(static_cast<std::size_t>(columns * rows), false);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < 8; ++i) cells[static_cast<std::size_t>(j * columns + i)] = true;
-    zoned.set_near_zone({-20, -20}, 10, columns, cells);
+    set_zone_left_of_60(zoned);
     acanthus::Random rng(7);
     std::vector<std::unique_ptr<acanthus::Element>> a, b;
     for (int k = 0; k < 300; ++k) {
