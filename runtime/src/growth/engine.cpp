@@ -237,6 +237,9 @@ struct GrowthEngine::Impl {
     // placed images, in placement order.
     std::vector<std::vector<const Element*>> families;
     bool families_whole = true;  // every fundamental element lies inside the window
+    // The proxies' bounds of the elements found near one so far: from family_bounds_at[id] on.
+    mutable std::vector<Rect> family_bounds;
+    mutable std::vector<long> family_bounds_at;  // by id, -1 until measured
     bool per_orbit(const Element& e) const;
     struct NearProxy {
         const Element* element;
@@ -592,9 +595,19 @@ std::vector<GrowthEngine::Impl::NearProxy> GrowthEngine::Impl::family_near(const
             const int f = original_of(z).id;
             if (std::find(seen.begin(), seen.end(), f) != seen.end()) return;
             seen.push_back(f);
-            for (const Element* y : families[static_cast<std::size_t>(f)])
+            for (const Element* y : families[static_cast<std::size_t>(f)]) {
+                // A curve's bounds cost a solve: each element's measured once, when first near.
+                const auto id = static_cast<std::size_t>(y->id);
+                if (family_bounds_at.size() <= id) family_bounds_at.resize(id + 1, -1);
+                if (family_bounds_at[id] < 0) {
+                    family_bounds_at[id] = static_cast<long>(family_bounds.size());
+                    for (std::size_t p = 0; p < y->proxy_count(); ++p)
+                        family_bounds.push_back(y->proxy(p).bounds());
+                }
+                const auto at = static_cast<std::size_t>(family_bounds_at[id]);
                 for (std::size_t p = 0; p < y->proxy_count(); ++p)
-                    out.push_back({y, p, y->proxy(p).bounds()});
+                    out.push_back({y, p, family_bounds[at + p]});
+            }
         });
     }
     std::sort(out.begin(), out.end(),
