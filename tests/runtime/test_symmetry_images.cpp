@@ -55,6 +55,20 @@ void set_zone_left_of_60(Ornament& ornament) {
     ornament.set_near_zone({-20, -20}, 10, columns, cells);
 }
 
+// `count` random dots in [2, 198]^2 of radius 0.3 to `largest`, the same in both ornaments: in
+// `zoned` the first fundamental (never deferred), the others images.
+void add_dots(Ornament& zoned, Ornament& plain, acanthus::Random& rng, int count, double largest) {
+    std::vector<std::unique_ptr<acanthus::Element>> a, b;
+    for (int k = 0; k < count; ++k) {
+        const Point c{rng.uniform(2, 198), rng.uniform(2, 198)};
+        const double r = rng.uniform(0.3, largest);
+        a.push_back(dot(c, r));
+        b.push_back(dot(c, r));
+    }
+    zoned.add_all(std::move(a), 1);
+    plain.add_all(std::move(b));
+}
+
 }  // namespace
 
 // The zone: cells of 10 x 10 over [0, 200]^2 (a margin of two cells round it), the cells with
@@ -68,15 +82,7 @@ TEST(OrnamentNearZone, AnswersEveryQueryAsAnOrnamentIndexingEverything) {
     acanthus::Random rng(31);
     int inside_queries = 0, beyond_queries = 0;
     for (int batch = 0; batch < 60; ++batch) {
-        std::vector<std::unique_ptr<acanthus::Element>> a, b;
-        for (int k = 0; k < 8; ++k) {
-            const Point c{rng.uniform(2, 198), rng.uniform(2, 198)};
-            const double r = rng.uniform(0.3, 2);
-            a.push_back(dot(c, r));
-            b.push_back(dot(c, r));
-        }
-        zoned.add_all(std::move(a), 1);
-        plain.add_all(std::move(b));
+        add_dots(zoned, plain, rng, 8, 2);
         ASSERT_EQ(zoned.size(), plain.size());
         for (int q = 0; q < 6; ++q) {
             // Mostly within the zone (x < 40 and a radius under 10), now and then beyond it.
@@ -142,15 +148,7 @@ TEST(OrnamentNearZone, ForEachMeetingVisitsEveryElementWhoseBoundsMeetTheBox) {
     Ornament zoned(region, 1e-9), plain(region, 1e-9);
     set_zone_left_of_60(zoned);
     acanthus::Random rng(7);
-    std::vector<std::unique_ptr<acanthus::Element>> a, b;
-    for (int k = 0; k < 300; ++k) {
-        const Point c{rng.uniform(2, 198), rng.uniform(2, 198)};
-        const double r = rng.uniform(0.3, 3);
-        a.push_back(dot(c, r));
-        b.push_back(dot(c, r));
-    }
-    zoned.add_all(std::move(a), 1);
-    plain.add_all(std::move(b));
+    add_dots(zoned, plain, rng, 300, 3);
     for (int q = 0; q < 40; ++q) {
         const double x = rng.uniform(0, q % 4 == 0 ? 200 : 35), y = rng.uniform(0, 200);
         const double w = rng.uniform(0.5, 12);
