@@ -7,6 +7,7 @@
 #include <acanthus/random.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/symmetry.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -45,6 +46,29 @@ std::vector<std::pair<int, double>> ids(
     return out;
 }
 
+// Cells of 10 x 10 over [0, 200]^2 and two round it; those with x < 60 make the zone.
+void set_zone_left_of_60(Ornament& ornament) {
+    const int columns = 24, rows = 24;  // 20 cells and 2 on each side
+    std::vector<bool> cells(static_cast<std::size_t>(columns * rows), false);
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < 8; ++i) cells[static_cast<std::size_t>(j * columns + i)] = true;
+    ornament.set_near_zone({-20, -20}, 10, columns, cells);
+}
+
+// `count` random dots in [2, 198]^2 of radius 0.3 to `largest`, the same in both ornaments: in
+// `zoned` the first fundamental (never deferred), the others images.
+void add_dots(Ornament& zoned, Ornament& plain, acanthus::Random& rng, int count, double largest) {
+    std::vector<std::unique_ptr<acanthus::Element>> a, b;
+    for (int k = 0; k < count; ++k) {
+        const Point c{rng.uniform(2, 198), rng.uniform(2, 198)};
+        const double r = rng.uniform(0.3, largest);
+        a.push_back(dot(c, r));
+        b.push_back(dot(c, r));
+    }
+    zoned.add_all(std::move(a), 1);
+    plain.add_all(std::move(b));
+}
+
 }  // namespace
 
 // The zone: cells of 10 x 10 over [0, 200]^2 (a margin of two cells round it), the cells with
@@ -54,23 +78,11 @@ std::vector<std::pair<int, double>> ids(
 TEST(OrnamentNearZone, AnswersEveryQueryAsAnOrnamentIndexingEverything) {
     const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
     Ornament zoned(region, 1e-9), plain(region, 1e-9);
-    const int columns = 24, rows = 24;  // 20 cells and 2 on each side
-    std::vector<bool> cells(static_cast<std::size_t>(columns * rows), false);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < 8; ++i) cells[static_cast<std::size_t>(j * columns + i)] = true;
-    zoned.set_near_zone({-20, -20}, 10, columns, cells);
+    set_zone_left_of_60(zoned);
     acanthus::Random rng(31);
     int inside_queries = 0, beyond_queries = 0;
     for (int batch = 0; batch < 60; ++batch) {
-        std::vector<std::unique_ptr<acanthus::Element>> a, b;
-        for (int k = 0; k < 8; ++k) {
-            const Point c{rng.uniform(2, 198), rng.uniform(2, 198)};
-            const double r = rng.uniform(0.3, 2);
-            a.push_back(dot(c, r));
-            b.push_back(dot(c, r));
-        }
-        zoned.add_all(std::move(a), 1);
-        plain.add_all(std::move(b));
+        add_dots(zoned, plain, rng, 8, 2);
         ASSERT_EQ(zoned.size(), plain.size());
         for (int q = 0; q < 6; ++q) {
             // Mostly within the zone (x < 40 and a radius under 10), now and then beyond it.
@@ -127,6 +139,31 @@ TEST(OrnamentNearZone, FindsElementsBeyondTheCellsAndAroundTheZone) {
     EXPECT_EQ(far.front().first->id, 1);
     EXPECT_EQ(ornament.within({150, 150}, 1.5).size(), 2u);  // the dot and the large one
     EXPECT_EQ(ornament.nearest({-600, 90}).first->id, 1);
+}
+
+// for_each_meeting() (the families near an element under a tile) visits every element with a
+// proxy whose bounds meet the box, deferred ones beyond the zone too, and no other.
+TEST(OrnamentNearZone, ForEachMeetingVisitsEveryElementWhoseBoundsMeetTheBox) {
+    const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
+    Ornament zoned(region, 1e-9), plain(region, 1e-9);
+    set_zone_left_of_60(zoned);
+    acanthus::Random rng(7);
+    add_dots(zoned, plain, rng, 300, 3);
+    for (int q = 0; q < 40; ++q) {
+        const double x = rng.uniform(0, q % 4 == 0 ? 200 : 35), y = rng.uniform(0, 200);
+        const double w = rng.uniform(0.5, 12);
+        const acanthus::Rect box{x, y, x + w, y + w};
+        std::vector<int> seen;
+        zoned.for_each_meeting(box, [&](const acanthus::Element& e) { seen.push_back(e.id); });
+        std::sort(seen.begin(), seen.end());
+        std::vector<int> expected;
+        for (std::size_t id = 0; id < plain.size(); ++id) {
+            const acanthus::Rect p = plain.at(static_cast<int>(id)).proxy(0).bounds();
+            if (p.x0 <= box.x1 && box.x0 <= p.x1 && p.y0 <= box.y1 && box.y0 <= p.y1)
+                expected.push_back(static_cast<int>(id));
+        }
+        EXPECT_EQ(seen, expected) << "query " << q;
+    }
 }
 
 // An image carried over by another transformation in place is the image built anew under it,

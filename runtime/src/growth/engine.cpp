@@ -29,6 +29,7 @@
 #include "growth/exclude_list.hpp"
 #include "growth/ornament.hpp"
 #include "pattern/running_body.hpp"
+#include "proxy/overlap.hpp"
 #include "symmetry/image_element.hpp"
 #include "symmetry/orbit.hpp"
 #include "symmetry/symmetric_core.hpp"
@@ -186,9 +187,12 @@ struct GrowthEngine::Impl {
     std::unique_ptr<CircleSource> make_source() {
         CircleSourceOptions o{options.distance, min_radius, options.lazy_field_pixels, {}};
         if (group) o.centres = domain_pixels(raster.grid(), *group);
-        // With translations every kept image is checked against the placed elements
-        // (placeable_orbits()): queries reach all over the box, and nothing would be deferred.
-        if (group && group->rosette()) near_cells = near_zone(raster.grid(), o.centres);
+        // Without a window (a frieze's open band) every kept image is checked against the
+        // placed elements by a query where it lies (placeable_orbits()): queries reach all
+        // over the band, and nothing would be deferred. A periodic group checks them through
+        // the families near the element (per_orbit()).
+        if (group && (group->rosette() || (translations && translations->group.window)))
+            near_cells = near_zone(raster.grid(), o.centres);
         return options.reference_engine ? reference_circle_source(raster, o)
                                         : incremental_circle_source(raster, o);
     }
@@ -229,6 +233,22 @@ struct GrowthEngine::Impl {
     EmptyCircle goal_found;  // the circle find_goal() refined last
     // C's centre and its distinct images (C's centre alone without symmetry).
     std::vector<Point> orbit_of_point(Point p) const;
+    // Under a periodic group (a tile, a closed band), each fundamental element (by id) and its
+    // placed images, in placement order.
+    std::vector<std::vector<const Element*>> families;
+    bool families_whole = true;  // every fundamental element lies inside the window
+    // The proxies' bounds of the elements found near one so far: from family_bounds_at[id] on.
+    mutable std::vector<Rect> family_bounds;
+    mutable std::vector<long> family_bounds_at;  // by id, -1 until measured
+    bool per_orbit(const Element& e) const;
+    struct NearProxy {
+        const Element* element;
+        std::size_t proxy;
+        Rect bounds;
+    };
+    // The proxies of the families near e, by their bounds' left edge.
+    std::vector<NearProxy> family_near(const Element& e) const;
+    double near_margin() const;
     PixelBox pixel_box(const Element& e) const;
     std::optional<Point> roomiest_in_domain() const;
     void sync_exclude_clears();
@@ -545,6 +565,56 @@ std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
     return out;
 }
 
+// An image g(e) overlaps a placed y = t(f) just when e overlaps h(f), h = g^-1 t: an element
+// (or image) of f's family near e, when e lies inside the window and every fundamental element
+// does (then h is among the group's transformations and h(f) meets the window, so it is
+// placed). The images' checks then need only the families of the elements placed near e: the
+// same pairs tested as by a query over the whole box, so the same answer to the bit, and the
+// images far from the domain need not be indexed.
+bool GrowthEngine::Impl::per_orbit(const Element& e) const {
+    return translations && translations->group.window && families_whole && e.proxy_count() > 0 &&
+           group->keeps_within(bounds_of(e), near_margin()) == 1;
+}
+
+// How far apart two proxies may seem by their bounds and still meet after carrying both by an
+// isometry (rounding, and the curve solvers' resolution), with room to spare.
+double GrowthEngine::Impl::near_margin() const {
+    const Rect& w = *translations->group.window;
+    const double scale =
+        1 + std::max({std::abs(w.x0), std::abs(w.x1), std::abs(w.y0), std::abs(w.y1)});
+    return 1e-4 * scale + 10 * ornament.tolerance();
+}
+
+std::vector<GrowthEngine::Impl::NearProxy> GrowthEngine::Impl::family_near(const Element& e) const {
+    const double m = near_margin();
+    std::vector<NearProxy> out;
+    std::vector<int> seen;
+    for (std::size_t k = 0; k < e.proxy_count(); ++k) {
+        const Rect b = e.proxy(k).bounds();
+        ornament.for_each_meeting({b.x0 - m, b.y0 - m, b.x1 + m, b.y1 + m}, [&](const Element& z) {
+            const int f = original_of(z).id;
+            if (std::find(seen.begin(), seen.end(), f) != seen.end()) return;
+            seen.push_back(f);
+            for (const Element* y : families[static_cast<std::size_t>(f)]) {
+                // A curve's bounds cost a solve: each element's measured once, when first near.
+                const auto id = static_cast<std::size_t>(y->id);
+                if (family_bounds_at.size() <= id) family_bounds_at.resize(id + 1, -1);
+                if (family_bounds_at[id] < 0) {
+                    family_bounds_at[id] = static_cast<long>(family_bounds.size());
+                    for (std::size_t p = 0; p < y->proxy_count(); ++p)
+                        family_bounds.push_back(y->proxy(p).bounds());
+                }
+                const auto at = static_cast<std::size_t>(family_bounds_at[id]);
+                for (std::size_t p = 0; p < y->proxy_count(); ++p)
+                    out.push_back({y, p, family_bounds[at + p]});
+            }
+        });
+    }
+    std::sort(out.begin(), out.end(),
+              [](const NearProxy& a, const NearProxy& b) { return a.bounds.x0 < b.bounds.x0; });
+    return out;
+}
+
 // Commits the children of one success. Under symmetry each comes with its images, after them
 // in id order; a child whose images clash (orbit.hpp) is dropped, and when none is left nothing
 // is committed (false).
@@ -555,13 +625,40 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
         std::vector<const Element*> batch;
         for (const auto& child : children) batch.push_back(child.get());
         const double tol = ornament.tolerance();
-        std::function<bool(const Proxy&, const Isometry&)> hits_placed;
+        std::function<bool(const Element&, const Proxy&, const Isometry&)> hits_placed;
+        const Element* near_of = nullptr;
+        std::vector<NearProxy> near;  // the families of the elements placed near it
+        double near_width = 0;        // the widest of their bounds
+        bool by_family = false;       // per_orbit() of that element
         if (!group->rosette())
-            hits_placed = [&](const Proxy& p, const Isometry& g) {
-                return ornament.overlaps_any(p, [&](const Element& e) {
-                    const ImageElement* image = as_image(e);
+            hits_placed = [&](const Element& e, const Proxy& p, const Isometry& g) {
+                auto other = [&](const Element& y) {
+                    const ImageElement* image = as_image(y);
                     return !same_isometry(image ? image->transform() : Isometry{}, g, tol);
-                });
+                };
+                if (near_of != &e) {
+                    near_of = &e;
+                    by_family = per_orbit(e);
+                    near = by_family ? family_near(e) : std::vector<NearProxy>();
+                    near_width = 0;
+                    for (const NearProxy& n : near)
+                        near_width = std::max(near_width, n.bounds.x1 - n.bounds.x0);
+                }
+                if (!by_family) return ornament.overlaps_any(p, other);
+                const Rect box = p.bounds();
+                // By their left edges: those meeting the box start within the widest one's
+                // width left of it, and not beyond its right edge.
+                const auto begin =
+                    std::lower_bound(near.begin(), near.end(), box.x0 - near_width,
+                                     [](const NearProxy& n, double x) { return n.bounds.x0 < x; });
+                const auto end =
+                    std::upper_bound(begin, near.end(), box.x1,
+                                     [](double x, const NearProxy& n) { return x < n.bounds.x0; });
+                for (auto it = begin; it != end; ++it)
+                    if (boxes_meet(box, it->bounds) && other(*it->element) &&
+                        overlaps(p, it->element->proxy(it->proxy), tol))
+                        return true;
+                return false;
             };
         auto placeable = placeable_orbits(
             batch, *group, core_region, tol,
@@ -590,6 +687,12 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
             children.push_back(std::move(image));
         }
     const std::size_t placed = children.size();
+    if (translations && translations->group.window)
+        for (const auto& child : children) {
+            const Element& f = original_of(*child);
+            if (&f == child.get() && group->keeps_within(bounds_of(f), 0) != 1)
+                families_whole = false;  // beyond the window: per_orbit() no longer holds
+        }
     // A few elements and their images lie all over the grid: the field takes them one at a
     // time, each a local update, not as one placement spanning the grid (a bulk placement of a
     // library still goes in one).
@@ -599,6 +702,12 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
         // An image too far from the fundamental domain to change a distance read there stays
         // out of the buffer (it is in the ornament, for the queries and the output); a debug
         // frame shows the buffer, so with one every image goes in.
+        if (translations && translations->group.window) {
+            const Element& f = original_of(*e);
+            if (families.size() <= static_cast<std::size_t>(f.id))
+                families.resize(static_cast<std::size_t>(f.id) + 1);
+            families[static_cast<std::size_t>(f.id)].push_back(e);
+        }
         if (n++ >= count && !debug_callback && !circles->may_change(pixel_box(*e))) continue;
         raster.add_element(*e, fresh);
         if (can_parent(*e)) ++parents_left;

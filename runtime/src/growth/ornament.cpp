@@ -231,6 +231,12 @@ bool Ornament::overlaps_any(const Proxy& p,
     return false;
 }
 
+void Ornament::for_each_meeting(const Rect& box,
+                                const std::function<void(const Element&)>& visit) const {
+    cover(box);
+    for (const auto& en : index_.query(box)) visit(at(en.element));
+}
+
 bool Ornament::intersects(const Element& e) const {
     for (std::size_t k = 0; k < e.proxy_count(); ++k)
         if (intersects(e.proxy(k))) return true;

@@ -65,6 +65,9 @@ class Ornament {
     bool intersects(const Element& e) const;
     // True when the proxy overlaps a placed proxy of an element `which` accepts.
     bool overlaps_any(const Proxy& p, const std::function<bool(const Element&)>& which) const;
+    // Calls `visit` for each placed element with a proxy whose bounds meet `box` (once per such
+    // proxy).
+    void for_each_meeting(const Rect& box, const std::function<void(const Element&)>& visit) const;
 
   private:
     // The near zone as a summed-area table of its cells: (columns + 1) x (rows + 1).

@@ -47,21 +47,6 @@ struct AnyProxy {
     }
 };
 
-// The bounds of every proxy of `e` (an empty rectangle at the origin without one).
-Rect bounds_of(const Element& e) {
-    Rect bounds = e.proxy_count() > 0 ? e.proxy(0).bounds() : Rect{};
-    for (std::size_t p = 1; p < e.proxy_count(); ++p) {
-        const Rect b = e.proxy(p).bounds();
-        bounds = {std::min(bounds.x0, b.x0), std::min(bounds.y0, b.y0), std::max(bounds.x1, b.x1),
-                  std::max(bounds.y1, b.y1)};
-    }
-    return bounds;
-}
-
-bool boxes_meet(const Rect& a, const Rect& b) {
-    return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
-}
-
 bool overlaps_any(const Element& a, const Element& b, double tolerance) {
     for (std::size_t i = 0; i < a.proxy_count(); ++i)
         for (std::size_t j = 0; j < b.proxy_count(); ++j)
@@ -124,6 +109,20 @@ bool crosses_mirror(const Proxy& p, const Isometry& g, double tolerance) {
 }
 
 }  // namespace
+
+Rect bounds_of(const Element& e) {
+    Rect bounds = e.proxy_count() > 0 ? e.proxy(0).bounds() : Rect{};
+    for (std::size_t p = 1; p < e.proxy_count(); ++p) {
+        const Rect b = e.proxy(p).bounds();
+        bounds = {std::min(bounds.x0, b.x0), std::min(bounds.y0, b.y0), std::max(bounds.x1, b.x1),
+                  std::max(bounds.y1, b.y1)};
+    }
+    return bounds;
+}
+
+bool boxes_meet(const Rect& a, const Rect& b) {
+    return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
+}
 
 bool same_place(const Proxy& a, const Proxy& b, double t) {
     if (a.kind() != b.kind()) return false;
@@ -297,7 +296,7 @@ bool same_isometry(const Isometry& a, const Isometry& b, double tolerance) {
 std::vector<std::optional<Orbit>> placeable_orbits(
     const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region* region,
     double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image,
-    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed) {
+    const std::function<bool(const Element&, const Proxy&, const Isometry&)>& hits_placed) {
     std::vector<std::optional<Orbit>> out;
     out.reserve(batch.size());
     const bool every_image = static_cast<bool>(hits_placed);
@@ -339,7 +338,7 @@ std::vector<std::optional<Orbit>> placeable_orbits(
             ImageElement& image = *orbit.elements[i];
             for (std::size_t k = 0; ok && k < image.proxy_count(); ++k) {
                 const Proxy& p = image.proxy(k);
-                ok = !hits_placed(p, orbit.images[i]) && !hits_batch(p, orbit.images[i], false);
+                ok = !hits_placed(*e, p, orbit.images[i]) && !hits_batch(p, orbit.images[i], false);
             }
         }
         if (!ok) {

@@ -16,6 +16,11 @@
 
 namespace acanthus::detail {
 
+// The bounds of every proxy of `e` (an empty rectangle at the origin without one).
+Rect bounds_of(const Element& e);
+// True when the two closed rectangles meet.
+bool boxes_meet(const Rect& a, const Rect& b);
+
 // True when the two proxies are the same shape in the same place, within `tolerance` (a
 // segment or a curve may run the other way, a polygon start at another corner).
 bool same_place(const Proxy& a, const Proxy& b, double tolerance);
@@ -50,12 +55,14 @@ bool orbit_intersects(const Proxy& p, const SymmetryGroup& group, const Region* 
 // With translations an image may be left out (beyond a frieze's ends, outside a tile's box):
 // then an image of the element may overlap an element whose matching image is missing, so
 // every kept image is checked too, against placed elements and the batch's earlier elements
-// and images under another transformation (`hits_placed(proxy, transform)`: a placed element
-// that is not the image of a fundamental one under that transformation overlaps the proxy).
+// and images under another transformation (`hits_placed(element, proxy, transform)`: a placed
+// element that is not the image of a fundamental one under that transformation overlaps the
+// proxy, of the element's image under it).
 std::vector<std::optional<Orbit>> placeable_orbits(
     const std::vector<const Element*>& batch, const SymmetryGroup& group, const Region* region,
     double tolerance, const std::function<bool(const Proxy&)>& hits_placed_image,
-    const std::function<bool(const Proxy&, const Isometry&)>& hits_placed = nullptr);
+    const std::function<bool(const Element&, const Proxy&, const Isometry&)>& hits_placed =
+        nullptr);
 
 // True when the two isometries are the same within `tolerance` (on the translation; the
 // matrix within 1e-9).
