@@ -226,9 +226,9 @@ Known known(const std::string& name, bool stone) {
         {"oculus-top", 1},         {"door-past-end", 8},   {"ashlar-arches", 21},
         {"off-gauge-heads", 18}};
     static const std::map<std::string, long> odd{{"gable-pointed-end", 65}, {"segmental-ends", 71},
-                                                 {"wide-opening", 142},     {"oculus-top", 17},
+                                                 {"wide-opening", 142},     {"oculus-top", 15},
                                                  {"door-past-end", 32},     {"ashlar-arches", 101},
-                                                 {"off-gauge-heads", 50}};
+                                                 {"off-gauge-heads", 47}};
     if (auto it = shaved.find(name); it != shaved.end()) k.shaved_bricks = it->second;
     if (auto it = odd.find(name); it != odd.end()) k.odd_pieces = it->second;
     return k;
