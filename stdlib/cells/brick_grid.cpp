@@ -60,9 +60,9 @@ std::vector<std::pair<double, double>> jambs(const Facade& facade, const Face& f
 }
 
 // Unit lines set out from the jambs, as a mason sets out perpends: through as many jambs as can
-// be reached (by their weight) with every stretcher's head joint opened or closed by no more
-// than `tol` between two of them, evenly; past the last one reached, nominal units to the wall's
-// right end, cut there. A jamb no line reaches cuts the bricks beside it.
+// be reached (by their weight) with every head joint between two of them opened or closed by no
+// more than `tol`, the units stretched evenly; past the last one reached, nominal units to the
+// wall's right end, cut there. A jamb no line reaches cuts the bricks beside it.
 std::vector<double> set_out_lines(double x0, double x1, double q, double tol,
                                   const std::vector<std::pair<double, double>>& marks) {
     std::vector<double> at{x0}, weight{0};
@@ -70,9 +70,14 @@ std::vector<double> set_out_lines(double x0, double x1, double q, double tol,
         if (x > x0 + q / 2 && x <= x1) at.push_back(x), weight.push_back(w);
     if (at.back() < x1) at.push_back(x1), weight.push_back(0);
     weight.back() += 1e-9;  // a wall's end within reach is reached, as unit_lines does
+    // The bricks at both jambs stand flush with them (brick_layout.cpp, set_joints): the head
+    // joints between take up the difference, and a course of n units has at least
+    // ceil(n / 4) - 1 of them.
     auto units = [&](double w) {
         const int n = static_cast<int>(std::lround(w / q));
-        return n >= 1 && 4 * std::abs(w - n * q) / n <= tol * (1 + 1e-9) ? n : 0;
+        const double off = std::abs(w - n * q), slack = 1e-9 * std::max(1.0, w);
+        if (n < 1) return 0;
+        return off <= slack || off <= tol * ((n + 3) / 4 - 1) + slack ? n : 0;
     };
     const std::size_t m = at.size();
     std::vector<double> best(m, -1);

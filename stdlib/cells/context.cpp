@@ -150,8 +150,9 @@ void keep_beds(std::vector<Point>& d, Rect claimed, Rect drawn, double h) {
 }
 
 // A rectangle (its outline may hold points along its sides) of whole units whose joints
-// opened, up to the tolerance, is drawn at the brick's nominal length, centred.
-void nominal_length(std::vector<Point>& d, const Options& o) {
+// opened, up to the tolerance, is drawn at the brick's nominal length: an end that is its
+// claim's where the layout lays it (`drawn`: flush at a jamb, its joints shared), else centred.
+void nominal_length(std::vector<Point>& d, const Options& o, Rect claimed, Rect drawn) {
     if (d.empty()) return;
     Rect b{d[0].x, d[0].y, d[0].x, d[0].y};
     for (Point p : d)
@@ -165,8 +166,13 @@ void nominal_length(std::vector<Point>& d, const Options& o) {
     const double q = (o.brick_length + o.mortar) / 4, m = std::round((b.width() + o.mortar) / q);
     const double over = b.width() + o.mortar - m * q;
     if (m < 1 || over <= eps || over > m * o.joint_tolerance / 4 + eps) return;
-    const double w = m * q - o.mortar, c = (b.x0 + b.x1) / 2;
-    d = {{c - w / 2, b.y0}, {c + w / 2, b.y0}, {c + w / 2, b.y1}, {c - w / 2, b.y1}};
+    const double w = m * q - o.mortar, h = o.mortar / 2;
+    double x0 = (b.x0 + b.x1 - w) / 2;
+    const double at = std::abs(b.x0 - (claimed.x0 + h)) <= eps   ? drawn.x0
+                      : std::abs(b.x1 - (claimed.x1 - h)) <= eps ? drawn.x1 - w
+                                                                 : x0;
+    if (at >= b.x0 - h && at + w <= b.x1 + h) x0 = at;
+    d = {{x0, b.y0}, {x0 + w, b.y0}, {x0 + w, b.y1}, {x0, b.y1}};
 }
 
 }  // namespace
@@ -260,9 +266,14 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
                 } else if (m >= 1 && r.width() - m * q > ends &&
                            r.width() - m * q <= m * data_->options.joint_tolerance / 4 + ends) {
                     // Whole units the joints opened (the rest of the claim taken before): the
-                    // brick at its nominal length, centred, as a whole one is.
+                    // brick at its nominal length, its end that is the claim's where the layout
+                    // lays it (flush at a jamb), else centred.
                     const double w = m * q - data_->options.mortar, c = (r.x0 + r.x1) / 2;
                     d.x0 = c - w / 2, d.x1 = c + w / 2;
+                    const double at = std::abs(r.x0 - claimed.x0) <= ends   ? drawn->x0
+                                      : std::abs(r.x1 - claimed.x1) <= ends ? drawn->x1 - w
+                                                                            : d.x0;
+                    if (at >= r.x0 && at + w <= r.x1) d.x0 = at, d.x1 = at + w;
                 }
             }
             if (d.width() > 0 && d.height() > 0) drawn_cells.push_back(detail::polygon_of(d));
@@ -273,7 +284,7 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
             if (Rect claimed; drawn && axis_rect(claim, claimed))
                 for (std::vector<Point>& d : drawn_cells) {
                     keep_beds(d, claimed, *drawn, h);
-                    nominal_length(d, data_->options);
+                    nominal_length(d, data_->options, claimed, *drawn);
                 }
         }
         for (std::vector<Point>& d : drawn_cells) {
