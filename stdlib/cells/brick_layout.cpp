@@ -125,8 +125,7 @@ std::vector<double> fill(const std::vector<double>& extra, double amount) {
 // stretch of whole pieces drawn at nominal length, between a run's ends (a jamb, a reveal, the
 // wall's end) or pieces cut to their claim: centred in their claims each joint lies on its unit
 // line; the half joints the end bricks leave at a run's end go to the stretch's narrowest
-// joints (the joints beside a cut piece among them), as long as each stays within the
-// tolerance; else the pieces stay centred.
+// joints, as long as each stays within the tolerance; else the pieces stay centred.
 void set_joints(BrickLayout& layout) {
     const CourseGrid& g = layout.grid;
     layout.shift.assign(layout.rows.size(), {});
@@ -205,8 +204,8 @@ void set_joints(BrickLayout& layout) {
         }
     }
     // A joint moved to within a quarter brick of one in the next course (a straight joint the
-    // layout did not have), or nearer it and within what place() may still move a piece cut at
-    // a jamb by (half a quarter joint): its stretches stay centred.
+    // layout did not have), or, beside a piece cut at a jamb, nearer it and within what place()
+    // may still move that piece by (half a quarter joint): its stretches stay centred.
     const double quarter = layout.unit - layout.mortar / 4;
     const double margin = std::min(layout.mortar / 4, layout.tolerance) / 2;
     auto joints = [&](std::size_t r, std::vector<std::pair<double, std::size_t>>& out,
@@ -226,6 +225,10 @@ void set_joints(BrickLayout& layout) {
             out.push_back({(a.x1 + b.x0) / 2, k});
         }
     };
+    auto cut = [&](std::size_t row, std::size_t k) {  // a joint beside a piece cut at a jamb
+        const auto& ps = layout.rows[row];
+        return !ps[k].full || !ps[k + 1].full;
+    };
     for (int pass = 0; pass < 8; ++pass) {
         std::set<std::pair<std::size_t, std::size_t>> undo;  // (row, piece) beside such a joint
         std::vector<std::pair<double, std::size_t>> lo, hi, lo0, hi0;
@@ -242,7 +245,9 @@ void set_joints(BrickLayout& layout) {
                     if (lo[j].first >= hi[i].first + 2 * quarter) break;
                     const double now = std::abs(hi[i].first - lo[j].first),
                                  was = std::abs(hi0[i].first - lo0[j].first);
-                    if (now < quarter + margin && now < was - 1e-9 && was >= quarter - 1e-9) {
+                    const double room =
+                        cut(r, hi[i].second) || cut(r + 1, lo[j].second) ? margin : 0;
+                    if (now < quarter + room && now < was - 1e-9 && was >= quarter - 1e-9) {
                         for (std::size_t d : {0, 1}) {
                             undo.insert({r, hi[i].second + d});
                             undo.insert({r + 1, lo[j].second + d});
@@ -259,10 +264,6 @@ void set_joints(BrickLayout& layout) {
         }
     }
 }
-
-}  // namespace
-
-namespace {
 
 // A convex corner (a gable's apex) in a run of units none of them whole and no longer than a
 // brick: one brick cut to it, not pieces either side of a joint through the corner, each too
