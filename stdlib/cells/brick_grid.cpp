@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "quoin_rows.hpp"
 
@@ -21,6 +23,87 @@ std::vector<double> unit_lines(double x0, double x1, double q, double tol) {
     }
     const int whole = static_cast<int>(std::ceil(w / q - 1e-9));
     for (int k = 0; k <= whole; ++k) xs.push_back(x0 + k * q);  // the last one past x1: cut
+    return xs;
+}
+
+// Plumb edges of the face (jambs, reveals, the wall's ends) by x, each weighted by its height:
+// about the number of pieces a course line missing it would cut. Those within `merge` of each
+// other are one, at the heavier's x.
+std::vector<std::pair<double, double>> jambs(const Facade& facade, const Face& f, double merge) {
+    std::vector<std::pair<double, double>> out;
+    for (int e : f.edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        if (edge.arc || edge.closed || edge.bounds.height() <= 0) continue;
+        if (edge.bounds.width() > 1e-9 * std::max(1.0, std::abs(edge.bounds.x1))) continue;
+        // A segmental arch's springing: its skewback steps with the bond round it as laid.
+        bool springs = false;
+        for (int k : {edge.corner_start, edge.corner_end}) {
+            if (k < 0) continue;
+            const Corner& c = facade.corners()[static_cast<std::size_t>(k)];
+            for (int o : {c.edge_in, c.edge_out})
+                springs |= o >= 0 && facade.edges()[static_cast<std::size_t>(o)].arc;
+        }
+        if (springs) continue;
+        out.emplace_back(edge.bounds.x0, edge.bounds.height());
+    }
+    std::sort(out.begin(), out.end());
+    std::vector<std::pair<double, double>> merged;
+    for (auto [x, w] : out) {
+        if (!merged.empty() && x - merged.back().first <= merge) {
+            if (w > merged.back().second) merged.back().first = x;
+            merged.back().second += w;
+        } else {
+            merged.emplace_back(x, w);
+        }
+    }
+    return merged;
+}
+
+// Unit lines set out from the jambs, as a mason sets out perpends: through as many jambs as can
+// be reached (by their weight) with every head joint between two of them opened or closed by no
+// more than `tol`, the units stretched evenly; past the last one reached, nominal units to the
+// wall's right end, cut there. A jamb no line reaches cuts the bricks beside it.
+std::vector<double> set_out_lines(double x0, double x1, double q, double tol,
+                                  const std::vector<std::pair<double, double>>& marks) {
+    std::vector<double> at{x0}, weight{0};
+    for (auto [x, w] : marks)
+        if (x > x0 + q / 2 && x <= x1) at.push_back(x), weight.push_back(w);
+    if (at.back() < x1) at.push_back(x1), weight.push_back(0);
+    weight.back() += 1e-9;  // a wall's end within reach is reached, as unit_lines does
+    // The bricks at both jambs stand flush with them (brick_layout.cpp, set_joints): the head
+    // joints between take up the difference, and a course of n units has at least
+    // ceil(n / 4) - 1 of them.
+    auto units = [&](double w) {
+        const int n = static_cast<int>(std::lround(w / q));
+        const double off = std::abs(w - n * q), slack = 1e-9 * std::max(1.0, w);
+        if (n < 1) return 0;
+        return off <= slack || off <= tol * ((n + 3) / 4 - 1) + slack ? n : 0;
+    };
+    const std::size_t m = at.size();
+    std::vector<double> best(m, -1);
+    std::vector<std::size_t> from(m, 0);
+    best[0] = 0;
+    for (std::size_t i = 1; i < m; ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (best[j] >= 0 && best[j] + weight[i] > best[i] && units(at[i] - at[j]) > 0)
+                best[i] = best[j] + weight[i], from[i] = j;
+    std::size_t last = 0;
+    for (std::size_t i = 1; i < m; ++i)
+        if (best[i] > best[last]) last = i;
+    std::vector<std::size_t> chain{last};
+    while (chain.back() != 0) chain.push_back(from[chain.back()]);
+    std::vector<double> xs{x0};
+    for (std::size_t k = chain.size() - 1; k-- > 0;) {
+        const double a = at[chain[k + 1]], b = at[chain[k]];
+        const int n = units(b - a);
+        for (int t = 1; t < n; ++t) xs.push_back(a + (b - a) * t / n);
+        xs.push_back(b);
+    }
+    if (xs.back() < x1) {
+        const double a = xs.back();
+        const int whole = static_cast<int>(std::ceil((x1 - a) / q - 1e-9));
+        for (int k = 1; k <= whole; ++k) xs.push_back(a + k * q);  // the last one past x1: cut
+    }
     return xs;
 }
 
@@ -61,14 +144,17 @@ void top_courses(double anchor, double w, double g, double tol, std::vector<doub
 
 }  // namespace
 
-CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o) {
+CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o, bool set_out) {
     const Face& f = facade.faces()[static_cast<std::size_t>(face)];
     const double q = (o.brick_length + o.mortar) / 4, g = o.brick_height + o.mortar;
     const double tol = o.joint_tolerance;
     const double eps = 1e-9 * std::max({1.0, std::abs(f.bounds.x0), std::abs(f.bounds.x1),
                                         std::abs(f.bounds.y0), std::abs(f.bounds.y1)});
     CourseGrid grid;
-    grid.xs = unit_lines(f.bounds.x0, f.bounds.x1, q, tol);
+    // A face that turns a building corner keeps the bond set from the corner (quoin_rows.hpp).
+    if (has_building_corner(facade, face)) set_out = false;
+    grid.xs = set_out ? set_out_lines(f.bounds.x0, f.bounds.x1, q, tol, jambs(facade, f, tol / 3))
+                      : unit_lines(f.bounds.x0, f.bounds.x1, q, tol);
 
     // Level edges, bottom first (SVG: larger y lower), closer than half a course merged.
     std::vector<double> level;

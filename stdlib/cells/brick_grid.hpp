@@ -16,6 +16,9 @@ namespace acanthus::cells::detail {
 // top) is a course line where the bed joints since the last reach it within the tolerance, else
 // it falls within a course; a level top out of reach gets one cut course under it (two, each at
 // least half a course, when one would be thinner).
-CourseGrid make_brick_grid(const Facade& facade, int face, const Options& options);
+// With `set_out`, the unit lines are set out from the jambs instead: through as many as the
+// tolerance lets them reach, so that those jambs fall on joints.
+CourseGrid make_brick_grid(const Facade& facade, int face, const Options& options,
+                           bool set_out = false);
 
 }  // namespace acanthus::cells::detail

@@ -78,18 +78,232 @@ Rect BrickLayout::drawn(int row, int u0, int u1) const {
     return {c.x - w / 2, c.y - h / 2, c.x + w / 2, c.y + h / 2};
 }
 
+bool BrickLayout::nominal(int row, int u0, int u1) const {
+    const Rect claim = grid.cell(row, u0, u1);
+    const double slack = 1e-9 * std::max(1.0, std::abs(claim.x1) + std::abs(claim.y1));
+    const int n = u1 - u0;
+    return std::abs(claim.width() - n * unit) <= tolerance * n / 4 + slack;
+}
+
 Rect BrickLayout::drawn(int row, int piece) const {
     const Piece& p = rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
-    return drawn(row, p.start, p.start + p.length);
+    Rect d = drawn(row, p.start, p.start + p.length);
+    if (static_cast<std::size_t>(row) < shift.size()) {
+        const double dx = shift[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
+        d.x0 += dx, d.x1 += dx;
+    }
+    return d;
 }
 
 namespace {
 
+// What `amount` adds to joints whose extra width is `extra` now: the narrowest opened first
+// (the widest closed first when it is negative), to one level, so the widest ends narrowest.
+std::vector<double> fill(const std::vector<double>& extra, double amount) {
+    const double sign = amount < 0 ? -1 : 1;
+    std::vector<double> v;
+    for (double e : extra) v.push_back(sign * e);
+    std::vector<double> sorted = v;
+    std::sort(sorted.begin(), sorted.end());
+    double left = sign * amount, level = sorted.empty() ? 0 : sorted[0];
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+        const double next = i + 1 < sorted.size() ? sorted[i + 1] : 1e300;
+        const double room = (next - sorted[i]) * static_cast<double>(i + 1);
+        if (left <= room) {
+            level = sorted[i] + left / static_cast<double>(i + 1);
+            break;
+        }
+        left -= room;
+    }
+    std::vector<double> out;
+    for (double e : v) out.push_back(sign * std::max(0.0, level - e));
+    return out;
+}
+
+// A mason lays the brick at a jamb or the wall's end flush with it and takes up what the
+// opened (or closed) units leave in the head joints of the stretch, shared. Per row, each
+// stretch of whole pieces drawn at nominal length, between a run's ends (a jamb, a reveal, the
+// wall's end) or pieces cut to their claim: centred in their claims each joint lies on its unit
+// line; the half joints the end bricks leave at a run's end go to the stretch's narrowest
+// joints, as long as each stays within the tolerance; else the pieces stay centred.
+void set_joints(BrickLayout& layout) {
+    const CourseGrid& g = layout.grid;
+    layout.shift.assign(layout.rows.size(), {});
+    struct Stretch {
+        std::size_t row, a, b;
+    };
+    std::vector<Stretch> stretches;
+    for (std::size_t r = 0; r < layout.rows.size(); ++r) {
+        const auto& pieces = layout.rows[r];
+        auto& shift = layout.shift[r];
+        shift.assign(pieces.size(), 0.0);
+        const int row = static_cast<int>(r);
+        auto movable = [&](std::size_t k) {
+            const Piece& p = pieces[k];
+            return p.full && !p.head && layout.nominal(row, p.start, p.start + p.length);
+        };
+        auto abuts = [&](std::size_t k) {  // piece k - 1 ends where piece k starts
+            return k > 0 && pieces[k - 1].start + pieces[k - 1].length == pieces[k].start;
+        };
+        // What piece k's claim leaves round its drawn brick (its two half joints' extra).
+        auto spare = [&](std::size_t k) {
+            const Piece& p = pieces[k];
+            return g.cell(row, p.start, p.start + p.length).width() - layout.mortar -
+                   layout.drawn(row, p.start, p.start + p.length).width();
+        };
+        for (std::size_t a = 0; a < pieces.size();) {
+            if (!movable(a)) {
+                ++a;
+                continue;
+            }
+            std::size_t b = a + 1;
+            while (b < pieces.size() && abuts(b) && movable(b)) ++b;
+            const bool left_end = !abuts(a), right_end = !(b < pieces.size() && abuts(b));
+            // The stretch's joints: after[i] - 1 is the piece before joint i (a - 1 is the cut
+            // piece on the left). What the ends leave goes to the joints between whole bricks;
+            // beside a cut piece (which place() may draw longer or shorter) only when there is
+            // no other joint.
+            std::vector<std::size_t> after;
+            for (std::size_t k = a + 1; k < b; ++k) after.push_back(k);
+            if (after.empty()) {
+                if (!left_end) after.push_back(a);
+                if (!right_end) after.push_back(b);
+            }
+            auto spare_at = [&](std::size_t k) { return k >= a && k < b ? spare(k) : 0.0; };
+            std::vector<double> extra;  // with the pieces centred
+            for (std::size_t k : after) extra.push_back((spare_at(k - 1) + spare_at(k)) / 2);
+            const double ends = (left_end ? spare(a) / 2 : 0) + (right_end ? spare(b - 1) / 2 : 0);
+            const double eps = 1e-9 * std::max(1.0, std::abs(g.xs.back()));
+            if (extra.empty() || std::abs(ends) <= eps) {
+                a = b;
+                continue;
+            }
+            const std::vector<double> more = fill(extra, ends);
+            // Beside a cut piece the joint keeps room for the quarter joint place() may open it
+            // by (a brick laid whole against a reveal, context.cpp).
+            const double beside_cut = std::min(layout.mortar / 4, layout.tolerance);
+            bool within = true;
+            for (std::size_t j = 0; j < extra.size(); ++j) {
+                const bool cut = after[j] == a || after[j] == b;
+                within &=
+                    std::abs(extra[j] + more[j]) <= layout.tolerance - (cut ? beside_cut : 0) + eps;
+            }
+            if (within) {
+                // Left to right: the first brick flush at a run's end, each joint opened by its
+                // share.
+                std::vector<double> opens(b - a + 1, 0.0);  // by joint before piece k: k - a
+                for (std::size_t j = 0; j < after.size(); ++j) opens[after[j] - a] = more[j];
+                double dx = left_end ? -spare(a) / 2 : 0;
+                for (std::size_t k = a; k < b; ++k) {
+                    dx += opens[k - a];
+                    shift[k] = dx;
+                }
+                stretches.push_back({r, a, b});
+            }
+            a = b;
+        }
+    }
+    // A joint moved to within a quarter brick of one in the next course (a straight joint the
+    // layout did not have), or, beside a piece cut at a jamb, nearer it and within what place()
+    // may still move that piece by (half a quarter joint): its stretches stay centred.
+    const double quarter = layout.unit - layout.mortar / 4;
+    const double margin = std::min(layout.mortar / 4, layout.tolerance) / 2;
+    auto joints = [&](std::size_t r, std::vector<std::pair<double, std::size_t>>& out,
+                      bool centred) {
+        out.clear();
+        const auto& pieces = layout.rows[r];
+        for (std::size_t k = 0; k + 1 < pieces.size(); ++k) {
+            if (pieces[k].start + pieces[k].length != pieces[k + 1].start) continue;
+            const int row = static_cast<int>(r);
+            Rect a = layout.drawn(row, static_cast<int>(k)),
+                 b = layout.drawn(row, static_cast<int>(k + 1));
+            if (centred) {
+                a = layout.drawn(row, pieces[k].start, pieces[k].start + pieces[k].length);
+                b = layout.drawn(row, pieces[k + 1].start,
+                                 pieces[k + 1].start + pieces[k + 1].length);
+            }
+            out.push_back({(a.x1 + b.x0) / 2, k});
+        }
+    };
+    auto cut = [&](std::size_t row, std::size_t k) {  // a joint beside a piece cut at a jamb
+        const auto& ps = layout.rows[row];
+        return !ps[k].full || !ps[k + 1].full;
+    };
+    for (int pass = 0; pass < 8; ++pass) {
+        std::set<std::pair<std::size_t, std::size_t>> undo;  // (row, piece) beside such a joint
+        std::vector<std::pair<double, std::size_t>> lo, hi, lo0, hi0;
+        for (std::size_t r = 0; r + 1 < layout.rows.size(); ++r) {
+            joints(r, hi, false), joints(r + 1, lo, false);
+            joints(r, hi0, true), joints(r + 1, lo0, true);
+            std::size_t from = 0;
+            for (std::size_t i = 0; i < hi.size(); ++i)
+                for (std::size_t j = from; j < lo.size(); ++j) {
+                    if (lo[j].first <= hi[i].first - 2 * quarter) {
+                        from = j + 1;
+                        continue;
+                    }
+                    if (lo[j].first >= hi[i].first + 2 * quarter) break;
+                    const double now = std::abs(hi[i].first - lo[j].first),
+                                 was = std::abs(hi0[i].first - lo0[j].first);
+                    const double room =
+                        cut(r, hi[i].second) || cut(r + 1, lo[j].second) ? margin : 0;
+                    if (now < quarter + room && now < was - 1e-9 && was >= quarter - 1e-9) {
+                        for (std::size_t d : {0, 1}) {
+                            undo.insert({r, hi[i].second + d});
+                            undo.insert({r + 1, lo[j].second + d});
+                        }
+                    }
+                }
+        }
+        if (undo.empty()) break;
+        for (const Stretch& st : stretches) {
+            bool hit = false;
+            for (std::size_t k = st.a; k < st.b; ++k) hit |= undo.count({st.row, k}) > 0;
+            if (!hit) continue;
+            for (std::size_t k = st.a; k < st.b; ++k) layout.shift[st.row][k] = 0;
+        }
+    }
+}
+
+// A convex corner (a gable's apex) in a run of units none of them whole and no longer than a
+// brick: one brick cut to it, not pieces either side of a joint through the corner, each too
+// small to lay, that leave the corner without a brick.
+void cut_at_apexes(const Facade& facade, int face, const Options& o, BrickLayout& layout) {
+    const CourseGrid& g = layout.grid;
+    const double inset = 0.25 * std::min(o.brick_height, o.brick_length / 4);
+    for (int k : facade.faces()[static_cast<std::size_t>(face)].corners) {
+        const Corner& c = facade.corners()[static_cast<std::size_t>(k)];
+        if (!c.convex) continue;
+        const Point in = inside_corner(c, inset);
+        const int row = g.row_at(in.y), u = g.unit_at(in.x);
+        if (row < 0 || u < 0) continue;
+        auto& pieces = layout.rows[static_cast<std::size_t>(row)];
+        std::size_t a = 0;
+        while (a < pieces.size() && pieces[a].start + pieces[a].length <= u) ++a;
+        if (a == pieces.size() || pieces[a].start > u) continue;
+        std::size_t b = a + 1;
+        while (a > 0 && pieces[a - 1].start + pieces[a - 1].length == pieces[a].start) --a;
+        while (b < pieces.size() && pieces[b - 1].start + pieces[b - 1].length == pieces[b].start)
+            ++b;
+        const int u0 = pieces[a].start, u1 = pieces[b - 1].start + pieces[b - 1].length;
+        if (b - a < 2 || u1 - u0 > 4) continue;
+        bool whole = false, fixed = false;
+        for (int v = u0; v < u1; ++v) whole |= g.at(row, v) == kFull;
+        for (std::size_t i = a; i < b; ++i) fixed |= pieces[i].fixed() || pieces[i].sill;
+        if (whole || fixed) continue;
+        Piece one;
+        one.start = u0, one.length = u1 - u0, one.cut = true;
+        pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(a + 1),
+                     pieces.begin() + static_cast<std::ptrdiff_t>(b));
+        pieces[a] = one;
+    }
+}
+
 BrickLayout lay(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
-                const FramedMoves& moves) {
+                const FramedMoves& moves, bool set_out) {
     BrickLayout layout;
     layout.moves = moves;
-    layout.grid = make_brick_grid(facade, face, o);
+    layout.grid = make_brick_grid(facade, face, o, set_out);
     layout.unit = (o.brick_length + o.mortar) / 4;
     layout.gauge = o.brick_height + o.mortar;
     layout.tolerance = o.joint_tolerance;
@@ -129,6 +343,7 @@ BrickLayout lay(const Facade& facade, int face, const Options& o, bool quoins, b
     if (quoins) set_piers(o, layout);
     repair_straight_joints(layout);
     set_king_closers(layout);
+    cut_at_apexes(facade, face, o, layout);
     for (int r = 0; r < rows; ++r) {
         auto& pieces = layout.rows[static_cast<std::size_t>(r)];
         for (Piece& p : pieces) {  // closers moved some ends
@@ -265,12 +480,15 @@ std::vector<FramedMoves> moves_near(const Facade& facade, int face, const Option
 
 }  // namespace
 
-BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins,
-                              bool lintels) {
-    BrickLayout layout = lay(facade, face, o, quoins, lintels, {});
+namespace {
+
+// The layout on the unit lines `set_out` picks (brick_grid.hpp). The framed tree: where fixed
+// ends still meet over each other, move the ones round each such joint a quarter brick, the move
+// that leaves the wall best first, while one helps.
+BrickLayout settled(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
+                    bool set_out) {
+    BrickLayout layout = lay(facade, face, o, quoins, lintels, {}, set_out);
     if (!quoins || !lintels) return layout;
-    // The framed tree: where fixed ends still meet over each other, move the ones round each
-    // such joint a quarter brick, the move that leaves the wall best first, while one helps.
     long worst = badness(layout);
     for (int step = 0; step < 6 && worst >= 100; ++step) {
         long at_heads = 0;
@@ -281,7 +499,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
         for (auto [row, unit] : straight)
             for (FramedMoves& m : moves_near(facade, face, o, layout, layout.moves, row, unit)) {
                 if (!tried.insert(m).second) continue;
-                BrickLayout next = lay(facade, face, o, quoins, lintels, m);
+                BrickLayout next = lay(facade, face, o, quoins, lintels, m, set_out);
                 const long b = badness(next);
                 if (b < best_badness) best_badness = b, best = std::move(next);
             }
@@ -289,6 +507,22 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
         worst = best_badness;
         layout = std::move(best);
     }
+    return layout;
+}
+
+}  // namespace
+
+BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins,
+                              bool lintels) {
+    // Perpends set out from the jambs, kept unless the bond comes out worse for them.
+    // Worse is a straight joint more; a queen closer more at a run's end is a standard closer.
+    BrickLayout layout = settled(facade, face, o, quoins, lintels, true);
+    if (badness(layout) >= 100) {
+        BrickLayout plain = settled(facade, face, o, quoins, lintels, false);
+        if (plain.grid.xs != layout.grid.xs && badness(plain) / 100 < badness(layout) / 100)
+            layout = std::move(plain);
+    }
+    set_joints(layout);
     return layout;
 }
 

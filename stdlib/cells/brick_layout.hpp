@@ -28,6 +28,9 @@ struct BrickLayout {
     std::map<int, std::pair<int, int>> lintel_units;
 
     double unit = 0, gauge = 0, tolerance = 0, mortar = 0;  // nominal, from the options
+    // Per row and piece: how far the drawn piece stands right of the centre of its claim
+    // (set_joints: bricks flush at jambs, the difference in the head joints between).
+    std::vector<std::vector<double>> shift;
 
     // The piece under point p: row and index, or false.
     bool find(Point p, int& row, int& piece) const;
@@ -35,7 +38,11 @@ struct BrickLayout {
     // What a mason lays in units [u0, u1) of `row`: the nominal brick (or bat) centred in its
     // claim where the joints took up the difference, the claim less half a joint elsewhere.
     Rect drawn(int row, int u0, int u1) const;
+    // The piece as laid: as above, moved by its shift.
     Rect drawn(int row, int piece) const;
+    // Whether units [u0, u1) of `row` are drawn at the nominal length (the joints took up the
+    // difference), not cut to their claim.
+    bool nominal(int row, int u0, int u1) const;
 };
 
 // With `quoins`, jambs and the wall's vertical ends get quoins in the layout (quoin_rows.hpp);

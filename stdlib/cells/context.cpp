@@ -110,7 +110,11 @@ Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o) {
         std::max(1.0, std::round(claim.width() / ((o.brick_length + o.mortar) / 4)));
     const double margin = claim.width() / units - o.brick_length / 4;
     const double reach = std::min({h, 2 * most, 2 * margin - 0.1 * o.mortar});
-    const bool fits = short_by > 0 ? short_by <= reach + eps : -short_by <= most + eps;
+    // On units the joints opened to bring jambs onto joints, the next brick's joint is open
+    // already, by up to half a stretcher's four units' stretch.
+    const double opened =
+        std::max(0.0, 4 * (claim.width() / units - (o.brick_length + o.mortar) / 4));
+    const bool fits = short_by > 0 ? short_by <= reach + eps : -short_by <= most - opened + eps;
     if (w <= 0 || std::abs(short_by) <= eps || !fits || left == right || r.y0 > drawn.y0 + eps ||
         r.y1 < drawn.y1 - eps ||
         std::abs(r.height() - (drawn.height() + o.mortar)) > o.joint_tolerance + eps)
@@ -143,6 +147,32 @@ void keep_beds(std::vector<Point>& d, Rect claimed, Rect drawn, double h) {
         for (Point& p : d)
             if (std::abs(p.y - from) <= eps) p.y = to;
     }
+}
+
+// A rectangle (its outline may hold points along its sides) of whole units whose joints
+// opened, up to the tolerance, is drawn at the brick's nominal length: an end that is its
+// claim's where the layout lays it (`drawn`: flush at a jamb, its joints shared), else centred.
+void nominal_length(std::vector<Point>& d, const Options& o, Rect claimed, Rect drawn) {
+    if (d.empty()) return;
+    Rect b{d[0].x, d[0].y, d[0].x, d[0].y};
+    for (Point p : d)
+        b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
+    const double eps = 1e-3 * o.mortar;
+    for (Point p : d)
+        if (std::abs(p.x - b.x0) > eps && std::abs(p.x - b.x1) > eps &&
+            std::abs(p.y - b.y0) > eps && std::abs(p.y - b.y1) > eps)
+            return;
+    if (std::abs(std::abs(detail::area_of(d)) - b.width() * b.height()) > eps * b.height()) return;
+    const double q = (o.brick_length + o.mortar) / 4, m = std::round((b.width() + o.mortar) / q);
+    const double over = b.width() + o.mortar - m * q;
+    if (m < 1 || over <= eps || over > m * o.joint_tolerance / 4 + eps) return;
+    const double w = m * q - o.mortar, h = o.mortar / 2;
+    double x0 = (b.x0 + b.x1 - w) / 2;
+    const double at = std::abs(b.x0 - (claimed.x0 + h)) <= eps   ? drawn.x0
+                      : std::abs(b.x1 - (claimed.x1 - h)) <= eps ? drawn.x1 - w
+                                                                 : x0;
+    if (at >= b.x0 - h && at + w <= b.x1 + h) x0 = at;
+    d = {{x0, b.y0}, {x0 + w, b.y0}, {x0 + w, b.y1}, {x0, b.y1}};
 }
 
 }  // namespace
@@ -226,8 +256,25 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
                 const double eps = 1e-9 * std::max(1.0, std::abs(r.x1) + std::abs(r.y1));
                 if (std::abs(r.y0 - claimed.y0) <= eps) d.y0 = drawn->y0;
                 if (std::abs(r.y1 - claimed.y1) <= eps) d.y1 = drawn->y1;
-                if (std::abs(r.x0 - claimed.x0) <= eps && std::abs(r.x1 - claimed.x1) <= eps)
+                // Ends within a thousandth of a joint of the claim's: the booleans' grid, not a
+                // cut (unit lines set out between jambs fall between its points).
+                const double ends = std::max(eps, 1e-3 * data_->options.mortar);
+                const double q = (data_->options.brick_length + data_->options.mortar) / 4;
+                const double m = std::round(r.width() / q);
+                if (std::abs(r.x0 - claimed.x0) <= ends && std::abs(r.x1 - claimed.x1) <= ends) {
                     d.x0 = drawn->x0, d.x1 = drawn->x1;
+                } else if (m >= 1 && r.width() - m * q > ends &&
+                           r.width() - m * q <= m * data_->options.joint_tolerance / 4 + ends) {
+                    // Whole units the joints opened (the rest of the claim taken before): the
+                    // brick at its nominal length, its end that is the claim's where the layout
+                    // lays it (flush at a jamb), else centred.
+                    const double w = m * q - data_->options.mortar, c = (r.x0 + r.x1) / 2;
+                    d.x0 = c - w / 2, d.x1 = c + w / 2;
+                    const double at = std::abs(r.x0 - claimed.x0) <= ends   ? drawn->x0
+                                      : std::abs(r.x1 - claimed.x1) <= ends ? drawn->x1 - w
+                                                                            : d.x0;
+                    if (at >= r.x0 && at + w <= r.x1) d.x0 = at, d.x1 = at + w;
+                }
             }
             if (d.width() > 0 && d.height() > 0) drawn_cells.push_back(detail::polygon_of(d));
         } else {
@@ -235,7 +282,10 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
             // Cut at a corner only (an extrados through its end), a piece keeps its course's
             // beds as well: its level sides that lie on the claim's beds move to the drawn ones.
             if (Rect claimed; drawn && axis_rect(claim, claimed))
-                for (std::vector<Point>& d : drawn_cells) keep_beds(d, claimed, *drawn, h);
+                for (std::vector<Point>& d : drawn_cells) {
+                    keep_beds(d, claimed, *drawn, h);
+                    nominal_length(d, data_->options, claimed, *drawn);
+                }
         }
         for (std::vector<Point>& d : drawn_cells) {
             // A piece under a tenth of a brick's face is no cell a mason lays: mortar fills it.

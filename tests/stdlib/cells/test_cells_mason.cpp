@@ -344,6 +344,12 @@ TEST(CellsMason, ExampleFacades) {
                 // between bricks their width within the tolerance.
                 EXPECT_LE(r.height_deviation, kCm.tolerance / 3);
                 EXPECT_EQ(r.joints_off, 0) << "up to " << r.joint_deviation;
+                // Pieces neither a brick nor a standard bat, cut where a jamb the perpends do not
+                // reach falls between head joints: at seed 1 the most of any bond and tree (were
+                // 274, 104, 80 and 60 before the perpends were set out from the jambs).
+                const std::map<std::string, long> odd{
+                    {"row-house", 137}, {"gable", 48}, {"oculus", 41}, {"insets", 50}};
+                EXPECT_LE(r.odd_pieces, odd.at(name));
                 EXPECT_EQ(r.slivers, 0);  // pieces under 10% of a face are left to the mortar
                 EXPECT_EQ(r.voussoirs_clipped, 0);
                 EXPECT_EQ(r.crowns_open, 0);
