@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "growth/filling_hole.hpp"
 #include "methods.hpp"
 #include "shape_list.hpp"
 
@@ -100,6 +101,9 @@ double ShapeSet::radius(std::size_t i) const { return shapes_->shapes.at(i).radi
 
 namespace {
 
+// How often a fill in a hole of a symmetric ornament halves its shapes when none fits.
+constexpr int kHoleHalvings = 2;
+
 void check_options(const ShapeSet& shapes, const Options& o) {
     auto bad = [](const std::string& why) { throw InputError("dartfill: " + why); };
     if (shapes.empty()) bad("no shapes to place");
@@ -158,17 +162,32 @@ FillResult fill(const ShapeSet& shapes, const Region& region, const Options& opt
     return run(shapes, *container, options, random);
 }
 
-FillResult fill(const ShapeSet& shapes, const Options& options) {
-    Environment* env = Environment::current();
-    if (!env) throw std::logic_error("dartfill::fill(shapes, options) needs a running rule body");
-    Circle goal = env->goal();
+FillResult fill_room(const ShapeSet& shapes, const Options& options, Environment& env,
+                     bool in_hole) {
+    Circle goal = env.goal();
     double cell = goal.radius > 0 ? goal.radius / 2 : 1.0;
-    EnvironmentContainer container(*env, goal.center, cell);
+    EnvironmentContainer container(env, goal.center, cell);
     if (container.area() == 0) {
         // area() is measured by the first raster; the naive method never makes one.
         container.rasterize(make_grid(container.bounds(), 256));
     }
-    return run(shapes, container, options, env->random());
+    FillResult result = run(shapes, container, options, env.random());
+    // In a hole the engine offers at a rotation centre or on a mirror, a shape of the options'
+    // size may not clear its own images anywhere (by a 6-fold centre with mirrors it must lie in
+    // a 30 degree wedge): smaller ones, down to a quarter of the size, may.
+    Options smaller = options;
+    for (int k = 0; k < kHoleHalvings && in_hole && result.placements.empty(); ++k) {
+        smaller.scale_min /= 2;
+        smaller.scale_max /= 2;
+        result = run(shapes, container, smaller, env.random());
+    }
+    return result;
+}
+
+FillResult fill(const ShapeSet& shapes, const Options& options) {
+    Environment* env = Environment::current();
+    if (!env) throw std::logic_error("dartfill::fill(shapes, options) needs a running rule body");
+    return fill_room(shapes, options, *env, acanthus::detail::filling_hole(*env));
 }
 
 }  // namespace acanthus::dartfill

@@ -2,6 +2,7 @@
 // the space and the shapes placed so far, keep it or cancel it.
 #pragma once
 
+#include <acanthus/environment.hpp>
 #include <acanthus/random.hpp>
 #include <acanthus/stdlib/dartfill.hpp>
 #include <vector>
@@ -10,6 +11,12 @@
 #include "layout.hpp"
 
 namespace acanthus::dartfill {
+
+// fill(shapes, options) in the room the running body's environment leaves; `in_hole`: the
+// environment offers a hole of a symmetric ornament (detail::filling_hole()), where the shapes
+// are halved, at most twice, while none fits.
+FillResult fill_room(const ShapeSet& shapes, const Options& options, Environment& env,
+                     bool in_hole);
 
 class FillContext {
   public:

@@ -27,6 +27,7 @@
 #include "field/raster_buffer.hpp"
 #include "growth/engine_environment.hpp"
 #include "growth/exclude_list.hpp"
+#include "growth/filling_hole.hpp"
 #include "growth/ornament.hpp"
 #include "pattern/running_body.hpp"
 #include "proxy/overlap.hpp"
@@ -37,6 +38,11 @@
 #include "symmetry/translation_groups.hpp"
 
 namespace acanthus {
+
+bool detail::filling_hole(const Environment& env) {
+    const auto* growth = dynamic_cast<const GrowthEnvironment*>(&env);
+    return growth && growth->filling_hole();
+}
 
 // This file builds public types from private (detail) parts.
 using namespace detail;

@@ -14,6 +14,7 @@
 
 #include "container.hpp"
 #include "dartfill_oracle.hpp"
+#include "methods.hpp"
 #include "proxy/overlap.hpp"
 
 using namespace acanthus;
@@ -37,8 +38,10 @@ struct Disc : Element {
 // The queries of the growth engine over a region and a few discs, counting engine tests.
 class FakeEnvironment : public Environment {
   public:
-    FakeEnvironment(const Region& region, bool expose_region)
+    // `discs`: false for a panel with nothing placed in it.
+    FakeEnvironment(const Region& region, bool expose_region, bool discs = true)
         : region_(region), expose_(expose_region) {
+        if (!discs) return;
         Rect b = region.bounds();
         Point c = b.center();
         for (auto [dx, dy, r] :
@@ -117,15 +120,19 @@ void expect_clear(const FillResult& r, const Region& region, const FakeEnvironme
     }
 }
 
-FillResult fill_in(FakeEnvironment& env, Method method, int resolution = 96) {
-    Environment::Scope scope(&env);
+Options options_for(Method method, int resolution) {
     Options o;
     o.method = method;
     o.resolution = resolution;
     o.naive_cancellations = 300;
     o.scale_min = 0.6;
     o.scale_max = 1.0;
-    return fill(leaves(), o);
+    return o;
+}
+
+FillResult fill_in(FakeEnvironment& env, Method method, int resolution = 96) {
+    Environment::Scope scope(&env);
+    return fill(leaves(), options_for(method, resolution));
 }
 
 }  // namespace
@@ -170,6 +177,23 @@ TEST(DartfillEnvironmentPaths, WithoutTheRegionEveryTestGoesToTheEngine) {
         << "fast " << fast.engine_tests() << ", slow " << slow.engine_tests();
     // Both see about the same room.
     EXPECT_NEAR(a.stats.space_area, b.stats.space_area, 0.1 * b.stats.space_area);
+}
+
+// In a hole of a symmetric ornament too small for the shapes at the options' scale (0.6 to 1:
+// the leaf 12 long, the square's diagonal 10.2, in a disc of radius 5), the fill halves them
+// until some fit; elsewhere it places none.
+TEST(DartfillEnvironmentPaths, InAHoleOfASymmetricOrnamentSmallerShapesFill) {
+    Region region = Region::from_spec("circle:5");
+    FakeEnvironment panel(region, true, false), hole(region, true, false);
+    EXPECT_TRUE(fill_in(panel, Method::fill_gap).placements.empty());
+    Environment::Scope scope(&hole);
+    const FillResult r = fill_room(leaves(), options_for(Method::fill_gap, 96), hole, true);
+    ASSERT_FALSE(r.placements.empty());
+    for (const Placement& p : r.placements) {
+        EXPECT_GE(p.scale, 0.15 - 1e-9);
+        EXPECT_LE(p.scale, 0.5 + 1e-9);
+    }
+    expect_clear(r, region, hole);
 }
 
 // A fill reports the shapes it placed so far (report_partial) for the program's partial
