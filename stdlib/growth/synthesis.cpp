@@ -78,6 +78,15 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         lattice_ = lattice_of(reference);
         if (lattice_) stats_.lattice_sites = static_cast<int>(lattice_->sites.size());
     }
+    if (!lattice_) {
+        const RingRegularity regularity = ring_regularity(reference);
+        stats_.ring_order = regularity.order;
+        stats_.near_regular = regularity.near_regular;
+        stats_.honeycomb = regularity.honeycomb;
+        // A honeycomb's first shell is its three edges: fitted, it grows no wider (measured in
+        // docs/stdlib/growth.md), so the fit is kept to lattices of one site.
+        near_regular_ = options.fit_to_ring && regularity.near_regular && !regularity.honeycomb;
+    }
     const std::size_t symbols = reference.symbols.size();
     gap_.assign(symbols * symbols, INFINITY);
     std::vector<long> edges(symbols * symbols, 0);
@@ -592,6 +601,7 @@ void Synthesis::grow(int id) {
                       ? random_.uniform(-options_.color_variation, options_.color_variation)
                       : 0.0;
     double radius = reference_.radius[choice.element] * scale;
+    if (near_regular_) fit_to_ring(id, choice, target_nodes, radius);
     if (!motif_fits(id, pattern_[id].position, radius) && id == restart_seed_) {
         // A restart's hole holds the smallest motif, maybe not the best match: the best of
         // those that fit there (else the hole stays, its middle closed).
@@ -649,6 +659,34 @@ void Synthesis::grow(int id) {
     }
     spawn(id, choice, target_nodes);
     if (options_.relax) relax_around(id);
+}
+
+void Synthesis::fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
+                            double radius) {
+    const auto& ring = reference_.rings[choice.element];
+    const Point at = pattern_[id].position;
+    Vector sum;
+    int placed = 0;
+    for (std::size_t i = 0; i < target_nodes.size(); ++i) {
+        const int slot = choice.slot(i, ring.size());
+        const Node& o = pattern_[target_nodes[i]];
+        if (slot < 0 || !o.placed()) continue;
+        sum += (o.position -
+                ring[static_cast<std::size_t>(slot)].offset.rotated(choice.match.rotation)) -
+               at;
+        ++placed;
+    }
+    if (placed == 0) return;
+    const Point fitted = at + sum / placed;
+    if (!panel_.contains(fitted) || !panel_.reaches(at, fitted)) return;
+    const int symbol = reference_.symbol[choice.element];
+    pattern_.move(id, fitted);
+    if (motif_fits(id, fitted, radius) && too_close(id, fitted, symbol, true) < 0 &&
+        !crowded(id, fitted)) {
+        ++stats_.fitted;
+        return;
+    }
+    pattern_.move(id, at);
 }
 
 bool Synthesis::still_valid(int id) const {

@@ -18,6 +18,7 @@
 #include "flow_field.hpp"
 #include "hole_finder.hpp"
 #include "lattice.hpp"
+#include "near_regular.hpp"
 #include "neighbourhood_match.hpp"
 #include "panel.hpp"
 #include "reference.hpp"
@@ -115,6 +116,14 @@ class Synthesis {
     void drop(int seed);
     void relax_around(int centre);
     bool still_valid(int id) const;
+    // A near-regular reference (near_regular.hpp): moves seed `id`, about to become a motif of
+    // `radius`, to where its chosen ring puts it against its placed neighbours (the mean of
+    // their positions less their slots' offsets: least squares), when it is valid there. A seed
+    // stands where its parent's ring put it, while the element it copies has other offsets: left
+    // there, every step adds the difference of two elements' jitter, and the grown edges
+    // scatter wider than the reference's.
+    void fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
+                     double radius);
     int priority(int symbol) const;
     // Options::w4: how far `symbol` is over its reference share among the placed motifs and the
     // waiting seeds (as count_coming() last counted them).
@@ -195,6 +204,7 @@ class Synthesis {
     double restart_radius_ = 1.1;  // in spacings (restart_radius)
     std::optional<HoleFinder> holes_;
     const Lattice* lattice_ = nullptr;  // the reference's (lattice_of), when used
+    bool near_regular_ = false;         // off a lattice, ring_regularity() says so
     bool phase_ = false;                // the lattice's origin is set (by the first motif)
     Point origin_;
     std::set<Lattice::Spot> planted_spots_;  // completion seeds, each point once
