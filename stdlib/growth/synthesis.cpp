@@ -85,7 +85,9 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         stats_.honeycomb = regularity.honeycomb;
         // A honeycomb's first shell is its three edges: fitted, it grows no wider (measured in
         // docs/stdlib/growth.md), so the fit is kept to lattices of one site.
-        near_regular_ = options.fit_to_ring && regularity.near_regular && !regularity.honeycomb;
+        // Like a lattice, only where motifs keep the reference's orientation (mode none).
+        near_regular_ = options.fit_to_ring && options.mode == Mode::none &&
+                        regularity.near_regular && !regularity.honeycomb;
     }
     const std::size_t symbols = reference.symbols.size();
     gap_.assign(symbols * symbols, INFINITY);

@@ -136,9 +136,9 @@ struct Options {
     // further off is pulled back to this distance, so relaxation removes accumulated misfits but
     // keeps the reference's own variation (its jitter). 0: every link pulled to its offset.
     double relax_slack = 1.0;
-    // A near-regular reference (a jittered triangular or square lattice: its interior first
-    // shells point along four or six directions) moves each motif, as it is placed, to where its
-    // chosen ring puts it against its placed neighbours (docs/stdlib/growth.md).
+    // In mode none, a near-regular reference (a jittered triangular or square lattice: its interior
+    // first shells point along four or six directions) moves each motif, as it is placed, to where
+    // its chosen ring puts it against its placed neighbours (docs/stdlib/growth.md).
     bool fit_to_ring = true;
     // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
     // only the 1-ring: more context at the growth front, for near-regular references.
