@@ -1,9 +1,13 @@
 // Near-regular references (the paper's second class, between a lattice and a scatter): a
 // jittered lattice that no exact translation maps onto itself (lattice.hpp finds none), whose
 // interior elements' shortest ring offsets still point along a few lattice directions. Synthesis
-// fits each motif of such a reference to its own chosen ring (synthesis.hpp); irregular
-// references are spared that.
+// puts each motif of such a reference on its lattice site plus its element's own jitter
+// (synthesis.hpp); irregular references and honeycombs are spared that.
 #pragma once
+
+#include <acanthus/point.hpp>
+#include <optional>
+#include <vector>
 
 namespace acanthus::growth::detail {
 
@@ -24,6 +28,23 @@ struct RingRegularity {
     // the 4th shortest offset over the 3rd is above kShellGap): a honeycomb, whose next
     // neighbours are sqrt(3) edges away, where a triangular or square lattice's are not.
     bool honeycomb = false;
+    double direction = 0;  // one lattice direction (radians): the mean first-shell phase
+    double shell = 0;      // the median first-shell offset length
+};
+
+// A near-regular reference fitted to the lattice it jitters: each element's ideal site (on one
+// lattice of translations: a honeycomb's sites are a triangular lattice of its edge, a third of
+// it empty) and its own offset from it. Synthesis grows sites at the lattice's exact spacing and
+// gives each motif its copied element's offset, so the grown arrangement keeps the reference's
+// jitter without adding up the errors of the offsets it copies.
+struct JitteredLattice {
+    std::vector<Point> site;     // per element
+    std::vector<Vector> jitter;  // per element: position - site
+    Vector basis[2];             // the lattice's translations
+    double rms = 0;              // RMS jitter in units of the basis length
+    // A honeycomb: the sublattice (of the three at sqrt(3) spacing, by lattice coordinates'
+    // difference modulo 3) no element holds, its hexagons' centres; -1: none.
+    int vacant = -1;
 };
 
 // The shortest ring offsets per element measured: a honeycomb's three edges, a square grid's
@@ -40,5 +61,14 @@ inline constexpr double kNoiseMargin = 4;
 inline constexpr double kShellGap = 1.35;
 
 RingRegularity ring_regularity(const ReferenceData& reference);
+
+// Fits a near-regular reference to the triangular (fold 6) or square (fold 4) lattice its rings
+// show; none when no lattice explains it (two elements on one site, or a jitter above
+// kMostJitter of the spacing RMS).
+std::optional<JitteredLattice> fit_jittered_lattice(const ReferenceData& reference,
+                                                    const RingRegularity& regularity);
+// A lattice jittered by 0.2 of its spacing each way measures 0.16 RMS; above this the sites
+// explain little.
+inline constexpr double kMostJitter = 0.3;
 
 }  // namespace acanthus::growth::detail

@@ -15,6 +15,8 @@
 
 #include "growth_fixtures.hpp"
 #include "growth_lattices.hpp"
+#include "near_regular.hpp"
+#include "reference.hpp"
 
 using namespace acanthus;
 using namespace acanthus::growth;
@@ -513,5 +515,72 @@ TEST(GrowthSynthesis, JitteredLatticesAreNearRegularDartThrownSetsAreNot) {
             SynthesisStats s = first_motif(darts(gap, seed));
             EXPECT_FALSE(s.near_regular) << "darts " << gap << ": order " << s.ring_order;
             EXPECT_EQ(s.fitted, 0);
+        }
+}
+
+TEST(GrowthSynthesis, JitteredLatticeFitRecoversEachElementsJitter) {
+    // The same reference drawn without jitter gives each element's true site (the random
+    // numbers are drawn either way); the fit finds the sites up to one shift of them all.
+    for (const char* kind : {"triangular", "square", "honeycomb"})
+        for (double jitter : {0.05, 0.12, 0.2}) {
+            const bool honeycomb = std::string(kind) == "honeycomb";
+            if (honeycomb && jitter > 0.15) continue;  // a honeycomb's gaps blur
+            const auto elements = jittered(kind, 10, jitter, 11);
+            const auto sites = jittered(kind, 10, 0, 11);
+            Reference ref = Reference::from_elements(elements);
+            const auto& data = ref.data();
+            auto fit =
+                growth::detail::fit_jittered_lattice(data, growth::detail::ring_regularity(data));
+            ASSERT_TRUE(fit) << kind << " " << jitter;
+            EXPECT_EQ(fit->vacant >= 0, honeycomb) << kind << " " << jitter;
+            EXPECT_NEAR(fit->basis[0].length(), 10, 0.1) << kind << " " << jitter;
+            EXPECT_NEAR(fit->basis[1].length(), 10, 0.1) << kind << " " << jitter;
+            // The true jitter's RMS: uniform in [-j, j] each way, j sqrt(2/3).
+            EXPECT_NEAR(fit->rms, jitter * std::sqrt(2.0 / 3), 0.02) << kind << " " << jitter;
+            Vector shift;
+            for (std::size_t i = 0; i < elements.size(); ++i)
+                shift += (elements[i].position - sites[i].position) /
+                         static_cast<double>(elements.size());
+            double worst = 0, squares = 0;
+            for (std::size_t i = 0; i < elements.size(); ++i) {
+                const double miss =
+                    (fit->jitter[i] - (elements[i].position - sites[i].position - shift)).length();
+                worst = std::max(worst, miss);
+                squares += miss * miss;
+            }
+            // Off by the basis' own fitting noise only: a few hundredths of the spacing at the
+            // far corners, a fifth of the jitter RMS at most.
+            EXPECT_LT(worst, 0.5) << kind << " " << jitter;
+            EXPECT_LT(std::sqrt(squares / static_cast<double>(elements.size())),
+                      0.2 * 10 * fit->rms)
+                << kind << " " << jitter;
+        }
+    // A dart-thrown set is no lattice, whatever its order says.
+    Reference darts_ref = Reference::from_elements(darts(10, 1));
+    growth::detail::RingRegularity forced = growth::detail::ring_regularity(darts_ref.data());
+    ASSERT_GT(forced.shell, 0);
+    forced.fold = 6;
+    EXPECT_FALSE(growth::detail::fit_jittered_lattice(darts_ref.data(), forced));
+}
+
+TEST(GrowthSynthesis, JitteredLatticesGrowAtTheReferencesSpacing) {
+    // Each motif on its lattice site plus its element's own jitter: the inner NN median (which
+    // the jitter puts below the spacing) as the reference's (unfitted, one run is 0.969). A
+    // honeycomb is not fitted.
+    for (const char* kind : {"triangular", "square", "honeycomb"})
+        for (double jitter : {0.1, 0.2}) {
+            const bool honeycomb = std::string(kind) == "honeycomb";
+            if (honeycomb && jitter > 0.15) continue;
+            Reference ref = Reference::from_elements(jittered(kind, 10, jitter, 5));
+            for (std::uint64_t seed : {1, 2}) {
+                SynthesisResult r =
+                    synthesize(ref, Region::from_spec("rect:160,130"), Options{}, {}, seed);
+                EXPECT_EQ(r.stats.fitted > 0, !honeycomb) << kind << " " << jitter;
+                EXPECT_EQ(r.stats.honeycomb, honeycomb) << kind << " " << jitter;
+                if (honeycomb) continue;
+                const Fidelity& f = r.fidelity;
+                EXPECT_NEAR(f.nn_median_inner / f.reference_nn_median_inner, 1, 0.03)
+                    << kind << " " << jitter << " seed " << seed;
+            }
         }
 }

@@ -136,9 +136,10 @@ struct Options {
     // further off is pulled back to this distance, so relaxation removes accumulated misfits but
     // keeps the reference's own variation (its jitter). 0: every link pulled to its offset.
     double relax_slack = 1.0;
-    // In mode none, a near-regular reference (a jittered triangular or square lattice: its interior
-    // first shells point along four or six directions) moves each motif, as it is placed, to where
-    // its chosen ring puts it against its placed neighbours (docs/stdlib/growth.md).
+    // In mode none, a near-regular reference (a jittered triangular, square or honeycomb lattice:
+    // its interior first shells point along four or six directions) puts each motif, as it is
+    // placed, on the lattice site its placed neighbours give it plus the copied element's own
+    // jitter (docs/stdlib/growth.md).
     bool fit_to_ring = true;
     // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
     // only the 1-ring: more context at the growth front, for near-regular references.
@@ -209,12 +210,13 @@ struct SynthesisStats {
     long exchanges = 0;      // pairs of motifs that exchanged elements (Options::neighbour_share)
     // Off a lattice: the bond-orientational order of the reference's interior first shells (1:
     // every shortest ring offset on one of four or six lattice directions; a scatter: near 0).
-    // From 0.4 the reference is near-regular, and each motif is fitted to its chosen ring as it
-    // is placed (`fitted` of them moved), except on a honeycomb (its first shell of three
-    // edges stands apart from the next neighbours).
+    // From 0.4 the reference is near-regular: fitted to the lattice it jitters (`jitter`: its
+    // RMS offset from its sites, in spacings; 0 when no lattice fits), each motif is put on its
+    // lattice site plus its copied element's offset as it is placed (`fitted` of them moved).
     double ring_order = 0;
     bool near_regular = false;
-    bool honeycomb = false;
+    bool honeycomb = false;  // its first shell of three edges stands apart from the next ones
+    double jitter = 0;
     long fitted = 0;
     double seconds = 0;  // wall time (reported only, never used)
     double relax_seconds = 0;
