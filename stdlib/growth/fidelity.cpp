@@ -332,6 +332,11 @@ std::string fidelity_json(const SynthesisResult& result) {
     out["lattice"] = Json{{"sites", result.stats.lattice_sites},
                           {"completed", result.stats.completed},
                           {"repaired", result.stats.repaired}};
+    out["near_regular"] = Json{{"ring_order", result.stats.ring_order},
+                               {"near_regular", result.stats.near_regular},
+                               {"honeycomb", result.stats.honeycomb},
+                               {"jitter", result.stats.jitter},
+                               {"fitted", result.stats.fitted}};
     return out.dump();
 }
 

@@ -78,6 +78,22 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         lattice_ = lattice_of(reference);
         if (lattice_) stats_.lattice_sites = static_cast<int>(lattice_->sites.size());
     }
+    if (!lattice_) {
+        const RingRegularity regularity = ring_regularity(reference);
+        stats_.ring_order = regularity.order;
+        stats_.near_regular = regularity.near_regular;
+        stats_.honeycomb = regularity.honeycomb;
+        // Like a lattice, only where motifs keep the reference's orientation (mode none).
+        if (options.fit_to_ring && options.mode == Mode::none && regularity.near_regular)
+            jittered_ = fit_jittered_lattice(reference, regularity);
+        if (jittered_) stats_.jitter = jittered_->rms;
+        // A honeycomb grows as an irregular reference: put on its sites, its motifs came out
+        // closer and left wider holes (docs/stdlib/growth.md).
+        if (jittered_ && jittered_->vacant >= 0) {
+            stats_.honeycomb = true;
+            jittered_.reset();
+        }
+    }
     const std::size_t symbols = reference.symbols.size();
     gap_.assign(symbols * symbols, INFINITY);
     std::vector<long> edges(symbols * symbols, 0);
@@ -592,6 +608,7 @@ void Synthesis::grow(int id) {
                       ? random_.uniform(-options_.color_variation, options_.color_variation)
                       : 0.0;
     double radius = reference_.radius[choice.element] * scale;
+    if (jittered_) fit_to_ring(id, choice, target_nodes, radius);
     if (!motif_fits(id, pattern_[id].position, radius) && id == restart_seed_) {
         // A restart's hole holds the smallest motif, maybe not the best match: the best of
         // those that fit there (else the hole stays, its middle closed).
@@ -649,6 +666,43 @@ void Synthesis::grow(int id) {
     }
     spawn(id, choice, target_nodes);
     if (options_.relax) relax_around(id);
+}
+
+void Synthesis::fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
+                            double radius) {
+    const int c = choice.element;
+    const auto& ring = reference_.rings[static_cast<std::size_t>(c)];
+    const auto& site = jittered_->site;
+    const auto& jitter = jittered_->jitter;
+    const double rotation = choice.match.rotation;
+    const Point at = pattern_[id].position;
+    Vector sum;
+    int placed = 0;
+    for (std::size_t i = 0; i < target_nodes.size(); ++i) {
+        const int slot = choice.slot(i, ring.size());
+        const Node& o = pattern_[target_nodes[i]];
+        if (slot < 0 || !o.placed()) continue;
+        // The neighbour's site (its position less its own element's jitter), less the
+        // lattice step from this element's site to its slot's.
+        const int e = ring[static_cast<std::size_t>(slot)].element;
+        const Vector step = site[static_cast<std::size_t>(e)] - site[static_cast<std::size_t>(c)];
+        sum += (o.position - jitter[static_cast<std::size_t>(o.source)].rotated(o.rotation) -
+                step.rotated(rotation)) -
+               at;
+        ++placed;
+    }
+    if (placed == 0) return;
+    const Point fitted_site = at + sum / placed;
+    const Point fitted = fitted_site + jitter[static_cast<std::size_t>(c)].rotated(rotation);
+    if (!panel_.contains(fitted) || !panel_.reaches(at, fitted)) return;
+    const int symbol = reference_.symbol[choice.element];
+    pattern_.move(id, fitted);
+    if (motif_fits(id, fitted, radius) && too_close(id, fitted, symbol, true) < 0 &&
+        !crowded(id, fitted)) {
+        ++stats_.fitted;
+        return;
+    }
+    pattern_.move(id, at);
 }
 
 bool Synthesis::still_valid(int id) const {

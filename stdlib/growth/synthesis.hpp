@@ -18,6 +18,7 @@
 #include "flow_field.hpp"
 #include "hole_finder.hpp"
 #include "lattice.hpp"
+#include "near_regular.hpp"
 #include "neighbourhood_match.hpp"
 #include "panel.hpp"
 #include "reference.hpp"
@@ -115,6 +116,13 @@ class Synthesis {
     void drop(int seed);
     void relax_around(int centre);
     bool still_valid(int id) const;
+    // A near-regular reference (jittered_): moves seed `id`, about to become a motif of `radius`,
+    // to its lattice site (the mean of where its placed neighbours' sites and its chosen ring's
+    // lattice steps put it) plus its element's own jitter, when it is valid there. Left where
+    // its parent's ring put it, every step would add the difference of two elements' jitter;
+    // fitted to the jittered offsets alone, the jitter would even out and the spacing widen.
+    void fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
+                     double radius);
     int priority(int symbol) const;
     // Options::w4: how far `symbol` is over its reference share among the placed motifs and the
     // waiting seeds (as count_coming() last counted them).
@@ -195,7 +203,9 @@ class Synthesis {
     double restart_radius_ = 1.1;  // in spacings (restart_radius)
     std::optional<HoleFinder> holes_;
     const Lattice* lattice_ = nullptr;  // the reference's (lattice_of), when used
-    bool phase_ = false;                // the lattice's origin is set (by the first motif)
+    // Off a lattice, a near-regular reference's sites and jitter (fit_jittered_lattice).
+    std::optional<JitteredLattice> jittered_;
+    bool phase_ = false;  // the lattice's origin is set (by the first motif)
     Point origin_;
     std::set<Lattice::Spot> planted_spots_;  // completion seeds, each point once
     std::set<Lattice::Spot> reopened_;       // emptied by the repair

@@ -136,6 +136,11 @@ struct Options {
     // further off is pulled back to this distance, so relaxation removes accumulated misfits but
     // keeps the reference's own variation (its jitter). 0: every link pulled to its offset.
     double relax_slack = 1.0;
+    // In mode none, a near-regular reference (a jittered triangular, square or honeycomb lattice:
+    // its interior first shells point along four or six directions) puts each motif, as it is
+    // placed, on the lattice site its placed neighbours give it plus the copied element's own
+    // jitter (docs/stdlib/growth.md).
+    bool fit_to_ring = true;
     // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
     // only the 1-ring: more context at the growth front, for near-regular references.
     bool two_ring = false;
@@ -203,7 +208,17 @@ struct SynthesisStats {
     long completed = 0;      // seeds planted on empty lattice points next to motifs
     long repaired = 0;       // motifs removed by the lattice repair (and grown again)
     long exchanges = 0;      // pairs of motifs that exchanged elements (Options::neighbour_share)
-    double seconds = 0;      // wall time (reported only, never used)
+    // Off a lattice: the bond-orientational order of the reference's interior first shells (1:
+    // every shortest ring offset on one of four or six lattice directions; a scatter: near 0).
+    // From 0.4 the reference is near-regular: fitted to the lattice it jitters (`jitter`: its
+    // RMS offset from its sites, in spacings; 0 when no lattice fits), each motif is put on its
+    // lattice site plus its copied element's offset as it is placed (`fitted` of them moved).
+    double ring_order = 0;
+    bool near_regular = false;
+    bool honeycomb = false;  // its first shell of three edges stands apart from the next ones
+    double jitter = 0;
+    long fitted = 0;
+    double seconds = 0;  // wall time (reported only, never used)
     double relax_seconds = 0;
     // How far the result is from the reference's offsets: RMS over the links between motifs of
     // |actual offset - wanted offset|, in mean reference edge lengths (what eq. 5 minimizes).
