@@ -62,12 +62,13 @@ std::string stored_png(cairo_surface_t* image) {
     const int height = cairo_image_surface_get_height(image);
     const int stride = cairo_image_surface_get_stride(image);
     const unsigned char* pixels = cairo_image_surface_get_data(image);
-    std::string rows;
-    rows.reserve(static_cast<std::size_t>(height) * (1 + 4 * static_cast<std::size_t>(width)));
+    std::string rows(static_cast<std::size_t>(height) * (1 + 4 * static_cast<std::size_t>(width)),
+                     '\0');
+    auto* out = reinterpret_cast<unsigned char*>(rows.data());
     for (int y = 0; y < height; ++y) {
-        rows.push_back(0);  // filter: none
+        *out++ = 0;  // filter: none
         const auto* row = reinterpret_cast<const std::uint32_t*>(pixels + y * stride);
-        for (int x = 0; x < width; ++x) {
+        for (int x = 0; x < width; ++x, out += 4) {
             const std::uint32_t p = row[x];
             const unsigned a = p >> 24;
             unsigned r = (p >> 16) & 0xff, g = (p >> 8) & 0xff, b = p & 0xff;
@@ -76,9 +77,10 @@ std::string stored_png(cairo_surface_t* image) {
                 g = (g * 255 + a / 2) / a;
                 b = (b * 255 + a / 2) / a;
             }
-            const char rgba[4] = {static_cast<char>(r), static_cast<char>(g), static_cast<char>(b),
-                                  static_cast<char>(a)};
-            rows.append(rgba, 4);
+            out[0] = static_cast<unsigned char>(r);
+            out[1] = static_cast<unsigned char>(g);
+            out[2] = static_cast<unsigned char>(b);
+            out[3] = static_cast<unsigned char>(a);
         }
     }
     std::string z = {'\x78', '\x01'};
@@ -90,9 +92,15 @@ std::string stored_png(cairo_surface_t* image) {
                                  static_cast<char>(~n & 0xff), static_cast<char>((~n >> 8) & 0xff)};
         z.append(lengths, 4);
         z.append(rows, at, n);
-        for (std::size_t i = at; i < at + n; ++i) {
-            s1 = (s1 + static_cast<unsigned char>(rows[i])) % 65521;
-            s2 = (s2 + s1) % 65521;
+        // The sums reduced every 5552 bytes, the most that cannot overflow 32 bits.
+        for (std::size_t i = at; i < at + n;) {
+            const std::size_t end = std::min(at + n, i + 5552);
+            for (; i < end; ++i) {
+                s1 += static_cast<unsigned char>(rows[i]);
+                s2 += s1;
+            }
+            s1 %= 65521;
+            s2 %= 65521;
         }
     }
     put32(z, s2 << 16 | s1);
