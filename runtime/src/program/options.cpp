@@ -184,20 +184,9 @@ std::optional<Point> parse_seed(const std::string& text) {
 }
 
 std::pair<int, int> parse_view_size(const std::string& text) {
-    const std::string usage =
-        "--view-size expects WxH, pixels from 16 to 8192 (e.g. 1200x800), not '" + text + "'";
-    const std::size_t x = text.find_first_of("xX");
-    if (x == std::string::npos) throw UsageError(usage);
-    auto number = [&](std::size_t begin, std::size_t end) {
-        int v = 0;
-        const char* first = text.data() + begin;
-        const char* last = text.data() + end;
-        auto [ptr, ec] = std::from_chars(first, last, v);
-        if (first == last || ec != std::errc() || ptr != last || v < 16 || v > 8192)
-            throw UsageError(usage);
-        return v;
-    };
-    return {number(0, x), number(x + 1, text.size())};
+    return parse_int_pair(
+        text, 16, 8192,
+        "--view-size expects WxH, pixels from 16 to 8192 (e.g. 1200x800), not '" + text + "'");
 }
 
 std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
