@@ -140,7 +140,7 @@ function showStrokeTools(tool) {
   drawOverlay();
 }
 
-// A picture of the growth so far (/partial.svg, number n): one fetch at a time, the latest wins.
+// A picture of the growth so far (/partial.png, number n): one fetch at a time, the latest wins.
 function loadPartial(n) {
   if (n <= page.partialAsked) return;
   if (page.partialBusy) { page.partialWanted = n; return; }
@@ -153,32 +153,51 @@ function loadPartial(n) {
   });
 }
 
-// The render of `revision`, or with `partial` the growth so far. A render asked for later wins
-// over one still loading; a partial picture never replaces a render asked for after it, and
-// shows only while the render grows.
-async function loadPicture(revision, partial) {
-  const ticket = partial ? page.pictureTicket : ++page.pictureTicket;
-  const stale = () => ticket !== page.pictureTicket || (partial && page.status.state !== "running");
-  const r = await fetch(partial ? `/partial.svg?n=${partial}` : `/render.svg?revision=${revision}`);
-  if (!r.ok || stale()) return;
-  // The bytes go to the <img> as they came: decoding them to text and back cost a third of the
-  // time from the fetch to the image's address (spiral's 5 MB render).
-  const bytes = await r.blob();
-  const head = await bytes.slice(0, 4096).text();
-  if (stale()) return;
-  page.showingPartial = Boolean(partial);
-  // The viewBox from the root element's tag alone: parsing the whole document here cost as
-  // much again as the <img> decoding it (a fifth of a second for a 5 MB render).
-  const open = /<svg\b[^>]*>/.exec(head);
+// The page shows PNGs drawn at its own size (/view.png, /partial.png): Chromium took 0.1 to
+// 1.4 s to parse a render's SVG (1 to 5 MB) in the <img>. The SVG comes only when the picture
+// is zoomed in past the PNG's pixels (loadSharp), and for the SVG download.
+async function pngSize(bytes) {
+  const head = new DataView(await bytes.slice(0, 24).arrayBuffer());
+  return head.byteLength === 24 ? { width: head.getUint32(16), height: head.getUint32(20) } : null;
+}
+// The SVG's page size (its viewBox), from the root element's tag alone: parsing the whole
+// document here cost as much again as the <img> decoding it.
+async function svgSize(bytes) {
+  const open = /<svg\b[^>]*>/.exec(await bytes.slice(0, 4096).text());
   const box = open && /\bviewBox\s*=\s*["']([^"']*)["']/.exec(open[0]);
   const vb = box ? box[1].trim().split(/[\s,]+/).map(Number) : [];
+  return vb.length === 4 && vb[2] > 0 ? { width: vb[2], height: vb[3] } : null;
+}
+
+// The render of `revision`, or with `partial` the growth so far; `sharp`: the render's SVG. A
+// render asked for later wins over one still loading; a partial picture never replaces a render
+// asked for after it, and shows only while the render grows.
+async function loadPicture(revision, partial, sharp) {
+  const ticket = partial || sharp ? page.pictureTicket : ++page.pictureTicket;
+  const stale = () => ticket !== page.pictureTicket || (partial && page.status.state !== "running");
+  let svg = Boolean(sharp);
+  let r = await fetch(partial ? `/partial.png?n=${partial}`
+                      : svg ? `/render.svg?revision=${revision}` : `/view.png?revision=${revision}`);
+  if (!r.ok && !partial && !svg) { svg = true; r = await fetch(`/render.svg?revision=${revision}`); }
+  if (!r.ok || stale()) return;
+  // The bytes go to the <img> as they came (decoding them to text and back cost a third of the
+  // time from the fetch to the image's address).
+  const bytes = await r.blob();
+  const size = svg ? await svgSize(bytes) : await pngSize(bytes);
+  if (stale()) return;
+  page.showingPartial = Boolean(partial);
   const first = page.pictureUrl === null;
-  if (vb.length === 4 && vb[2] > 0) page.size = { width: vb[2], height: vb[3] };
-  const url = URL.createObjectURL(new Blob([bytes], { type: "image/svg+xml" }));
+  // A PNG is shown at the SVG's page size (strokes and seeds are drawn in its units).
+  const picture = page.status && page.status.picture;
+  if (svg && size) page.size = size;
+  else if (size && picture && picture.width > 0) page.size = { width: picture.width, height: picture.height };
+  else if (size) page.size = { width: page.size.width, height: page.size.width * size.height / size.width };
+  page.shown = { revision, svg, pixels: svg ? Infinity : (size ? size.width : 0) };
+  const url = URL.createObjectURL(new Blob([bytes], { type: svg ? "image/svg+xml" : "image/png" }));
   const img = $("picture");
   img.onload = () => { if (page.pictureUrl) URL.revokeObjectURL(page.pictureUrl); page.pictureUrl = url;
                        page.pictureBytes = bytes;
-                       document.body.dataset.picture = partial ? "partial" : "render";
+                       document.body.dataset.picture = partial ? "partial" : svg ? "svg" : "render";
                        if (partial) document.body.dataset.partial = String(partial);
                        else document.body.dataset.shown = String(revision); };
   img.src = url;
@@ -188,6 +207,28 @@ async function loadPicture(revision, partial) {
   $("overlay").setAttribute("viewBox", `0 0 ${page.size.width} ${page.size.height}`);
   if (first) fit();
   drawOverlay();
+  loadSharp();
+}
+
+// Zoomed in past the PNG's pixels: the render's SVG takes its place (once per revision).
+function loadSharp() {
+  const s = page.shown;
+  if (!s || s.svg || page.showingPartial || s.revision === null || s.revision !== page.revision) return;
+  if (page.view.scale * page.size.width * (window.devicePixelRatio || 1) <= s.pixels * 1.05) return;
+  if (page.sharpAsked === s.revision) return;
+  page.sharpAsked = s.revision;
+  loadPicture(s.revision, null, true);
+}
+
+// The picture's room on the page, in device pixels: the server draws the PNG to fit it.
+let viewTimer = null;
+function reportView(delay = 200) {
+  clearTimeout(viewTimer);
+  viewTimer = setTimeout(() => {
+    const v = $("view").getBoundingClientRect(), d = window.devicePixelRatio || 1;
+    const clamp = (x) => Math.max(16, Math.min(8192, Math.round(x * d)));
+    fetch(`/status.json?view=${clamp(v.width)}x${clamp(v.height)}`).catch(() => {});
+  }, delay);
 }
 
 function paramRange(q) {
@@ -349,7 +390,7 @@ function fillRevisions(status) {
     const figure = document.createElement("figure"), img = document.createElement("img");
     const caption = document.createElement("figcaption");
     figure.dataset.revision = String(n);
-    img.alt = `revision ${n}`; img.src = `/revision.svg?n=${n}`;
+    img.alt = `revision ${n}`; img.src = `/revision.png?n=${n}`;
     caption.textContent = `rev. ${n}`;
     figure.append(img, caption);
     figure.addEventListener("click", () => showBeside(n));
@@ -357,7 +398,7 @@ function fillRevisions(status) {
   }
 }
 function showBeside(n) {
-  $("besideimg").src = `/revision.svg?n=${n}`;
+  $("besideimg").src = `/revision.png?n=${n}`;
   $("besidelabel").textContent = `revision ${n}`;
   $("beside").hidden = false;
   $("beside").dataset.revision = String(n);
@@ -462,6 +503,7 @@ function fillFidelity(g) {
 // --- zoom and pan ---------------------------------------------------------------------------
 function applyView() {
   $("canvas").style.transform = `translate(${page.view.x}px, ${page.view.y}px) scale(${page.view.scale})`;
+  loadSharp();
 }
 function fit() {
   const v = $("view").getBoundingClientRect();
@@ -685,5 +727,6 @@ function followEvents() {
     own();  // held until the tab closes
   }));
 }
+reportView(0);
 followEvents();
-window.addEventListener("resize", () => applyView());
+window.addEventListener("resize", () => { applyView(); reportView(); });

@@ -145,6 +145,12 @@ void RenderJob::set_settings(PreviewSettings settings) {
     request();
 }
 
+void RenderJob::set_view_size(int width, int height) {
+    std::lock_guard lock(mutex_);
+    view_width_ = width;
+    view_height_ = height;
+}
+
 void RenderJob::loop() {
     for (;;) {
         long generation = 0;
@@ -236,6 +242,11 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp,
 void RenderJob::render(long generation) {
     const auto start = Clock::now();
     const PreviewSettings settings = this->settings();
+    std::string view_size;
+    {
+        std::lock_guard lock(mutex_);
+        view_size = std::to_string(view_width_) + "x" + std::to_string(view_height_);
+    }
     if (!prepare_host()) return;
     status_.begin("compiling");
     status_.set_command(command_line(settings));
@@ -284,12 +295,16 @@ void RenderJob::render(long generation) {
     const std::string svg = (dir / ("render-" + tag + ".svg")).string();
     const std::string out = (dir / ("metrics-" + tag + ".json")).string();
     const std::string err = (dir / ("messages-" + tag + ".txt")).string();
-    const std::string partial = (dir / ("partial-" + tag + ".svg")).string();
+    // The page shows PNGs at its size (the SVG, 1 to 5 MB, took Chromium 0.1 to 1.4 s to
+    // parse); the SVG is fetched only to zoom in past them or to download.
+    const std::string png = (dir / ("view-" + tag + ".png")).string();
+    const std::string partial = (dir / ("partial-" + tag + ".png")).string();
     ChildRun run;
     run.argv = program;
     std::vector<std::string> arguments = settings.arguments();
     run.argv.insert(run.argv.end(), arguments.begin(), arguments.end());
-    run.argv.insert(run.argv.end(), {"-o", svg, "--metrics", "--progress", "--partial", partial});
+    run.argv.insert(run.argv.end(), {"-o", svg, "--view", png, "--view-size", view_size,
+                                     "--metrics", "--progress", "--partial", partial});
     run.stdout_path = out;
     run.stderr_path = err;
     run.cancel = &cancel_;
@@ -319,7 +334,7 @@ void RenderJob::render(long generation) {
     if (renamed >= 0) ::close(renamed);
     std::error_code ec;
     if (end.how == ChildEnd::How::cancelled) {
-        for (const std::string& f : {svg, out, err, partial}) fs::remove(f, ec);
+        for (const std::string& f : {svg, png, out, err, partial}) fs::remove(f, ec);
         return;
     }
     std::string messages = read_text(err, 1u << 20);
@@ -337,7 +352,7 @@ void RenderJob::render(long generation) {
         }
         status_.set_timing("grow", seconds_since(grow_start));
         status_.set_timing("grow_cpu", end.cpu_seconds);
-        status_.succeed(read_text(svg), metrics, seconds_since(start),
+        status_.succeed(read_text(svg), read_text(png), metrics, seconds_since(start),
                         cut_by_time_limit(metrics, settings.time_limit));
     } else {
         // Only the program's error lines: the progress lines are noise here.
@@ -359,7 +374,7 @@ void RenderJob::render(long generation) {
             shown = "acanthus: error: the program ended with " + describe(end, 0) + "\n";
         status_.fail("run", shown, diagnose(shown), seconds_since(start));
     }
-    for (const std::string& f : {svg, out, err, partial}) fs::remove(f, ec);
+    for (const std::string& f : {svg, png, out, err, partial}) fs::remove(f, ec);
 }
 
 std::vector<std::string> RenderJob::source_files() const {

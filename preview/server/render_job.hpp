@@ -49,6 +49,10 @@ class RenderJob {
     PreviewSettings settings() const;
     void set_settings(PreviewSettings settings);  // and render again
 
+    // The picture's room on the page in device pixels (the page's /status.json?view=WxH): the
+    // PNG the page shows is drawn to fit it, from the next render on.
+    void set_view_size(int width, int height);
+
     // The rule file and the files it imports, as the latest compile read them.
     std::vector<std::string> source_files() const;
 
@@ -75,6 +79,7 @@ class RenderJob {
     std::condition_variable cv_;
     PreviewSettings settings_;
     long wanted_ = 1, done_ = 0;
+    int view_width_ = 1200, view_height_ = 900;
     bool stopping_ = false;
     std::atomic<bool> cancel_{false};
     std::atomic<bool> stop_extras_{false};

@@ -93,6 +93,28 @@ bool parse_json(const httplib::Request& req, httplib::Response& res, json& out) 
     }
 }
 
+// "WxH", each 16 to 8192.
+bool view_size(const std::string& text, int& width, int& height) {
+    const std::size_t x = text.find('x');
+    if (x == std::string::npos || x == 0 || x > 4 || text.size() - x - 1 > 4 ||
+        text.find_first_not_of("0123456789x") != std::string::npos ||
+        text.find('x', x + 1) != std::string::npos || x + 1 == text.size())
+        return false;
+    width = std::stoi(text.substr(0, x));
+    height = std::stoi(text.substr(x + 1));
+    return width >= 16 && width <= 8192 && height >= 16 && height <= 8192;
+}
+
+void send_picture(httplib::Response& res, std::string png, const char* missing) {
+    if (png.empty()) {
+        res.status = 404;
+        res.set_content(missing, "text/plain");
+        return;
+    }
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(std::move(png), "image/png");
+}
+
 // A file the server wrote last, read and replaced by the request threads.
 class LatestFile {
   public:
@@ -290,7 +312,8 @@ void in_run_slot(httplib::Response& res, Run&& run) {
 // an <img> of another site's page included, whether it comes from the same origin
 // (Sec-Fetch-Site; "none" is an address typed or a bookmark). Scripts send neither.
 bool changes_or_runs(const httplib::Request& req) {
-    return req.method == "POST" || req.path == "/render.png" || req.path == "/render.pdf" ||
+    return req.method == "POST" || (req.path == "/status.json" && req.has_param("view")) ||
+           req.path == "/render.png" || req.path == "/render.pdf" ||
            req.path == "/debug-frame.png" || req.path == "/variation.png";
 }
 
@@ -347,7 +370,16 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         });
     }
 
-    get("/status.json", [&site](const httplib::Request&, httplib::Response& res) {
+    // ?view=WxH: the picture's room on the page in device pixels (from the page only).
+    get("/status.json", [&site](const httplib::Request& req, httplib::Response& res) {
+        if (req.has_param("view")) {
+            int width = 0, height = 0;
+            if (!view_size(req.get_param_value("view"), width, height)) {
+                bad_request(res, "view must be WxH, 16 to 8192 pixels each");
+                return;
+            }
+            site.job.set_view_size(width, height);
+        }
         json status = site.status.to_json();
         settings_json(site.job.settings(), site, status["settings"]);
         status["file"] = site.file;
@@ -367,31 +399,35 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
         res.set_content(svg, "image/svg+xml");
     });
 
-    // An earlier good render, for the page to show beside the current one.
-    get("/revision.svg", [&site](const httplib::Request& req, httplib::Response& res) {
-        const std::string n = req.get_param_value("n");
-        std::string svg;
-        if (!n.empty() && n.size() < 10 && n.find_first_not_of("0123456789") == std::string::npos)
-            svg = site.status.revision_svg(std::stol(n));
-        if (svg.empty()) {
-            res.status = 404;
-            res.set_content("no such revision kept\n", "text/plain");
-            return;
-        }
-        res.set_header("Cache-Control", "no-store");
-        res.set_content(svg, "image/svg+xml");
+    // An earlier good render, for the page to show beside the current one (the page shows
+    // its PNG: parsing each revision's SVG took the browser as long as the live picture's).
+    for (const bool png : {false, true}) {
+        get(png ? "/revision.png" : "/revision.svg",
+            [&site, png](const httplib::Request& req, httplib::Response& res) {
+                const std::string n = req.get_param_value("n");
+                std::string picture;
+                if (!n.empty() && n.size() < 10 &&
+                    n.find_first_not_of("0123456789") == std::string::npos)
+                    picture = png ? site.status.revision_png(std::stol(n))
+                                  : site.status.revision_svg(std::stol(n));
+                if (picture.empty()) {
+                    res.status = 404;
+                    res.set_content("no such revision kept\n", "text/plain");
+                    return;
+                }
+                res.set_header("Cache-Control", "no-store");
+                res.set_content(picture, png ? "image/png" : "image/svg+xml");
+            });
+    }
+
+    // The latest good render at the page's size: what the page shows.
+    get("/view.png", [&site](const httplib::Request&, httplib::Response& res) {
+        send_picture(res, site.status.view_png(), "no good render yet\n");
     });
 
     // The growth so far, while a render grows (the program's --partial); 404 otherwise.
-    get("/partial.svg", [&site](const httplib::Request&, httplib::Response& res) {
-        std::string svg = site.status.partial_svg();
-        if (svg.empty()) {
-            res.status = 404;
-            res.set_content("no partial picture now\n", "text/plain");
-            return;
-        }
-        res.set_header("Cache-Control", "no-store");
-        res.set_content(svg, "image/svg+xml");
+    get("/partial.png", [&site](const httplib::Request&, httplib::Response& res) {
+        send_picture(res, site.status.partial_png(), "no partial picture now\n");
     });
 
     for (const char* ext : {"pdf", "png"}) {

@@ -47,8 +47,9 @@ bool PreviewSettings::take(const std::vector<std::string>& args, std::string& er
             return true;
         };
         if (opt == "-o" || opt == "--output" || opt == "--metrics" || opt == "--frames" ||
-            opt == "--every" || opt == "--debug-frame" || opt == "--json" ||
-            opt == "--list-params" || opt == "--help" || opt == "--version") {
+            opt == "--every" || opt == "--debug-frame" || opt == "--json" || opt == "--partial" ||
+            opt == "--view" || opt == "--view-size" || opt == "--list-params" || opt == "--help" ||
+            opt == "--version") {
             error = "'" + opt + "' is set by the preview itself; leave it out";
             return false;
         }

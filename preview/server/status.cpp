@@ -1,8 +1,40 @@
 #include "server/status.hpp"
 
 #include <chrono>
+#include <regex>
 
 namespace acanthus {
+
+namespace {
+
+// The width and height of an SVG's root element (the page, in points), from its first bytes.
+bool svg_size(const std::string& svg, double& width, double& height) {
+    static const std::regex root(
+        R"(<svg\b[^>]*?\bwidth="([0-9.]+)(?:pt|px)?"[^>]*?\bheight="([0-9.]+)(?:pt|px)?")");
+    std::smatch m;
+    const std::string head = svg.substr(0, 4096);
+    if (!std::regex_search(head, m, root)) return false;
+    width = std::stod(m[1]);
+    height = std::stod(m[2]);
+    return width > 0 && height > 0;
+}
+
+// A PNG's pixels, from its header (IHDR).
+bool png_size(const std::string& png, long& width, long& height) {
+    if (png.size() < 24 || png.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0 ||
+        png.compare(12, 4, "IHDR") != 0)
+        return false;
+    const auto word = [&](std::size_t at) {
+        long v = 0;
+        for (std::size_t i = 0; i < 4; ++i) v = v << 8 | static_cast<unsigned char>(png[at + i]);
+        return v;
+    };
+    width = word(16);
+    height = word(20);
+    return width > 0 && height > 0;
+}
+
+}  // namespace
 
 void PreviewStatus::changed() {
     ++version_;
@@ -14,7 +46,7 @@ void PreviewStatus::begin(const std::string& phase) {
     state_ = "running";
     phase_ = phase;
     if (phase == "compiling") progress_iterations_ = progress_elements_ = 0, progress_seconds_ = 0;
-    partial_svg_.clear();
+    partial_png_.clear();
     changed();
 }
 
@@ -27,9 +59,9 @@ void PreviewStatus::progress(long iterations, long elements, double seconds) {
     changed();
 }
 
-void PreviewStatus::set_partial(std::string svg) {
+void PreviewStatus::set_partial(std::string png) {
     std::lock_guard lock(mutex_);
-    partial_svg_ = std::move(svg);
+    partial_png_ = std::move(png);
     ++partial_;
     changed();
 }
@@ -60,7 +92,7 @@ void PreviewStatus::set_command(std::string command) {
     command_ = std::move(command);
 }
 
-void PreviewStatus::succeed(std::string svg, const json& metrics, double seconds,
+void PreviewStatus::succeed(std::string svg, std::string png, const json& metrics, double seconds,
                             const std::string& note) {
     std::lock_guard lock(mutex_);
     ++revision_;
@@ -70,10 +102,17 @@ void PreviewStatus::succeed(std::string svg, const json& metrics, double seconds
     output_ = note.empty() ? "" : note + "\n";
     diagnostics_.clear();
     svg_ = std::move(svg);
+    view_png_ = std::move(png);
+    // The page shows the PNG at the SVG's page size (its strokes and seeds are in its units).
+    double width = 0, height = 0;
+    long png_width = 0, png_height = 0;
+    picture_ = json::object();
+    if (svg_size(svg_, width, height)) picture_ = {{"width", width}, {"height", height}};
+    if (png_size(view_png_, png_width, png_height)) picture_["png"] = {png_width, png_height};
     // Kept beside: a render that draws the same as the one before is not kept twice.
-    if (kept_.empty() || kept_.back().second != svg_) kept_.emplace_back(revision_, svg_);
+    if (kept_.empty() || kept_.back().svg != svg_) kept_.push_back({revision_, svg_, view_png_});
     while (kept_.size() > kKeptRevisions) kept_.pop_front();
-    partial_svg_.clear();
+    partial_png_.clear();
     metrics_ = metrics;
     elements_ = metrics.value("elements", 0L);
     seconds_ = seconds;
@@ -89,7 +128,7 @@ void PreviewStatus::fail(const std::string& kind, const std::string& output,
     error_kind_ = kind;
     output_ = output;
     diagnostics_ = std::move(diagnostics);
-    partial_svg_.clear();
+    partial_png_.clear();
     seconds_ = seconds;
     changed();
 }
@@ -113,7 +152,7 @@ PreviewStatus::json PreviewStatus::to_json() const {
     json tools = json::array();
     for (const StrokeTool& t : stroke_tools_) tools.push_back(t.to_json());
     json kept = json::array();
-    for (const auto& entry : kept_) kept.push_back(entry.first);
+    for (const Kept& entry : kept_) kept.push_back(entry.revision);
     return {{"revision", revision_},
             {"state", state_},
             {"phase", phase_},
@@ -132,8 +171,9 @@ PreviewStatus::json PreviewStatus::to_json() const {
               {"elements", progress_elements_},
               {"seconds", progress_seconds_}}},
             {"revisions", kept},
-            // The number of the partial picture /partial.svg has now; 0 when it has none.
-            {"partial", partial_svg_.empty() ? 0 : partial_},
+            // The number of the partial picture /partial.png has now; 0 when it has none.
+            {"partial", partial_png_.empty() ? 0 : partial_},
+            {"picture", picture_},
             {"version", version_}};
 }
 
@@ -144,14 +184,26 @@ std::string PreviewStatus::svg() const {
 
 std::string PreviewStatus::revision_svg(long revision) const {
     std::lock_guard lock(mutex_);
-    for (const auto& [n, svg] : kept_)
-        if (n == revision) return svg;
+    for (const Kept& entry : kept_)
+        if (entry.revision == revision) return entry.svg;
     return {};
 }
 
-std::string PreviewStatus::partial_svg() const {
+std::string PreviewStatus::revision_png(long revision) const {
     std::lock_guard lock(mutex_);
-    return partial_svg_;
+    for (const Kept& entry : kept_)
+        if (entry.revision == revision) return entry.png;
+    return {};
+}
+
+std::string PreviewStatus::view_png() const {
+    std::lock_guard lock(mutex_);
+    return view_png_;
+}
+
+std::string PreviewStatus::partial_png() const {
+    std::lock_guard lock(mutex_);
+    return partial_png_;
 }
 
 long PreviewStatus::revision() const {

@@ -1,5 +1,6 @@
 // What the preview page and scripts see: the state of the latest render, its diagnostics,
-// metrics and parameters, the latest good SVG. Every change bumps a version that /events waits on.
+// metrics and parameters, the latest good SVG and its PNG at the page's size. Every change bumps a
+// version that /events waits on.
 #pragma once
 
 #include <condition_variable>
@@ -22,8 +23,8 @@ class PreviewStatus {
     // A render began: compiling, then building, then growing.
     void begin(const std::string& phase);
     void progress(long iterations, long elements, double seconds);
-    // A picture of the growth so far (the program's --partial), while it grows.
-    void set_partial(std::string svg);
+    // A picture of the growth so far (the program's --partial, PNG), while it grows.
+    void set_partial(std::string png);
     void set_params(std::vector<ParamSummary> params);
     // The stroke tools of the libraries the program imports (the page offers them).
     void set_stroke_tools(std::vector<StrokeTool> tools);
@@ -31,8 +32,9 @@ class PreviewStatus {
     void set_command(std::string command);
     // Seconds one phase of the current render took (compile, build, grow): where time goes.
     void set_timing(const std::string& phase, double seconds);
-    // A render finished well: the picture and the program's --metrics.
-    void succeed(std::string svg, const json& metrics, double seconds,
+    // A render finished well: the picture, as SVG and as the PNG the page shows (the program's
+    // --view), and the program's --metrics.
+    void succeed(std::string svg, std::string png, const json& metrics, double seconds,
                  const std::string& note = {});
     // A render failed: compiler output (with diagnostics) or the program's error.
     void fail(const std::string& kind, const std::string& output,
@@ -40,9 +42,11 @@ class PreviewStatus {
 
     json to_json() const;
     std::string svg() const;
-    std::string partial_svg() const;  // empty when the render in progress has drawn none
+    std::string view_png() const;     // the latest good render at the page's size (PNG)
+    std::string partial_png() const;  // empty when the render in progress has drawn none
     // An earlier good render still kept (the latest kKeptRevisions), or empty.
     std::string revision_svg(long revision) const;
+    std::string revision_png(long revision) const;  // its PNG at the page's size
     static constexpr std::size_t kKeptRevisions = 8;
     long revision() const;
     // Waits until the version passes `seen` or `timeout_ms` ran out; returns the version.
@@ -66,9 +70,16 @@ class PreviewStatus {
     std::vector<StrokeTool> stroke_tools_;
     json metrics_ = json::object();
     std::string svg_;
-    std::string partial_svg_;
-    std::deque<std::pair<long, std::string>> kept_;  // good renders, oldest first
-    long partial_ = 0;  // how many partial pictures the server has had, ever
+    std::string view_png_;
+    json picture_ =
+        json::object();  // the SVG's page and the PNG's pixels: {"width", "height", "png"}
+    std::string partial_png_;
+    struct Kept {
+        long revision;
+        std::string svg, png;
+    };
+    std::deque<Kept> kept_;  // good renders, oldest first
+    long partial_ = 0;       // how many partial pictures the server has had, ever
     std::string command_;
     json timings_ = json::object();
     long elements_ = 0;

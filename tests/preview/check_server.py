@@ -7,6 +7,7 @@ import os
 import re
 import shutil
 import socket
+import struct
 import subprocess
 import sys
 import tempfile
@@ -143,8 +144,13 @@ def main():
             code, first_svg, ctype = server.get("/render.svg")
             check(code == 200 and ctype.startswith("image/svg+xml") and b"<svg" in first_svg,
                   "/render.svg serves the render")
+            code, view, ctype = server.get("/view.png")
+            check(code == 200 and ctype == "image/png" and view[:4] == b"\x89PNG" and
+                  list(struct.unpack(">II", view[16:24])) == s["picture"]["png"] and
+                  s["picture"]["width"] > 0,
+                  "/view.png serves the render as the PNG the page shows (%s)" % s["picture"])
             # The growth so far is served only while a render grows.
-            check(s["partial"] == 0 and server.get("/partial.svg")[0] == 404,
+            check(s["partial"] == 0 and server.get("/partial.png")[0] == 404,
                   "no partial picture once the render is done (partial %s)" % s["partial"])
             # --port 0 took a free port and printed it; a second preview on that port is refused.
             port = int(server.url.rstrip("/").rsplit(":", 1)[1])

@@ -278,7 +278,8 @@ TEST(PreviewSettings, ProgramOptionsSplitIntoControls) {
 }
 
 TEST(PreviewSettings, OptionsThePreviewOwnsRefused) {
-    for (const char* opt : {"-o", "--metrics", "--frames", "--json", "--debug-frame"}) {
+    for (const char* opt : {"-o", "--metrics", "--frames", "--json", "--debug-frame", "--partial",
+                            "--view", "--view-size"}) {
         PreviewSettings s;
         std::string error;
         EXPECT_FALSE(s.take({opt, "x"}, error)) << opt;

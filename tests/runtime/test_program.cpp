@@ -1,5 +1,6 @@
 // run_program: the generated program's command line, exit codes, and "no partial output".
 // The pattern is written by hand the way the compiler generates one (dots of Appendix A).
+#include <cairo.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -9,6 +10,7 @@
 #include <acanthus/program.hpp>
 #include <acanthus/rule_call.hpp>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -215,7 +217,11 @@ TEST_F(Program, MalformedValuesAreUsageErrors) {
                                           {"--debug-frame", "3", "a.svg"},
                                           {"--every", "3"},
                                           {"--partial-every", "0.5"},
-                                          {"--partial", path("partial.png")},
+                                          {"--partial", path("partial.pdf")},
+                                          {"--view", path("view.svg")},
+                                          {"--view", path("v.png"), "--view-size", "800"},
+                                          {"--view", path("v.png"), "--view-size", "8x800"},
+                                          {"--view", path("v.png"), "--view-size", "800x9000"},
                                           {"--partial", path("p.svg"), "--partial-every", "0"},
                                           {"--progress", "--quiet"},
                                           {"--metrics", "-o", "-"},
@@ -402,6 +408,54 @@ TEST_F(Program, PartialPicturesWhileGrowing) {
     EXPECT_LE(circles(partial), circles(done));
     for (const std::string& f : files())  // no temporary left beside them
         EXPECT_TRUE(f == "partial.svg" || f == "out.svg") << f;
+}
+
+// --view: the finished picture as PNG too, the SVG's page fitted into --view-size pixels (a
+// region twice as wide as high in 600 x 600: 600 wide); a PNG --partial the same way.
+TEST_F(Program, ViewPictureFitsTheViewSize) {
+    Outcome o = run({"--region", "rect:400,200", "--param", "limit=300", "--partial",
+                     path("partial.png"), "--partial-every", "0.01", "--view", path("view.png"),
+                     "--view-size", "600x600", "-o", path("out.svg")});
+    ASSERT_EQ(o.code, 0) << o.err;
+    const auto size = [](const std::string& png) {
+        const auto word = [&](std::size_t at) {
+            long v = 0;
+            for (std::size_t i = 0; i < 4; ++i)
+                v = v << 8 | static_cast<unsigned char>(png.at(at + i));
+            return v;
+        };
+        return std::make_pair(word(16), word(20));
+    };
+    const std::string view = read(path("view.png"));
+    ASSERT_EQ(view.substr(0, 4), "\x89PNG");
+    const auto [width, height] = size(view);
+    EXPECT_EQ(width, 600);
+    EXPECT_NEAR(height, 600.0 * (200 + 16) / (400 + 16), 1.0);  // the page's 2% margins
+    if (fs::exists(path("partial.png"))) {
+        EXPECT_EQ(size(read(path("partial.png"))).first, 600);
+    }
+    // A tall page fits by its height.
+    o = run({"--region", "rect:100,400", "--param", "limit=50", "--view", path("tall.png"),
+             "--view-size", "600x300", "-o", path("tall.svg")});
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(size(read(path("tall.png"))).second, 300);
+    // Its pixels stored (not deflated): the same picture as an ordinary PNG of that width.
+    o = run({"--region", "rect:400,200", "--param", "limit=300", "--background", "#80ff8040",
+             "--view", path("same.png"), "--view-size", "800x2000", "-o", path("plain.png")});
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_GT(read(path("same.png")).size(), read(path("plain.png")).size());
+    cairo_surface_t* a = cairo_image_surface_create_from_png(path("same.png").c_str());
+    cairo_surface_t* b = cairo_image_surface_create_from_png(path("plain.png").c_str());
+    ASSERT_EQ(cairo_surface_status(a), CAIRO_STATUS_SUCCESS);
+    ASSERT_EQ(cairo_surface_status(b), CAIRO_STATUS_SUCCESS);
+    const int stride = cairo_image_surface_get_stride(a), rows = cairo_image_surface_get_height(a);
+    ASSERT_EQ(cairo_image_surface_get_width(a), 800);
+    ASSERT_EQ(rows, cairo_image_surface_get_height(b));
+    EXPECT_EQ(std::memcmp(cairo_image_surface_get_data(a), cairo_image_surface_get_data(b),
+                          static_cast<std::size_t>(stride) * rows),
+              0);
+    cairo_surface_destroy(a);
+    cairo_surface_destroy(b);
 }
 
 // Each partial picture is drawn by a copy of the program while the growth goes on: a copy

@@ -45,6 +45,11 @@ struct RenderOptions {
     std::optional<RepeatTile> tile;  // none: the region's bounding box
     // --band: the region is the straight band, drawn bent onto the band's centre line.
     std::shared_ptr<const detail::Band> band;
+    // PNG for a viewer: the page of `width` drawn scaled to fit fit_width x fit_height pixels,
+    // as the viewer shows the SVG at that size (0: `width` pixels wide); its pixels stored, not
+    // deflated (a viewer on the same machine: deflating took a quarter of flowers' run).
+    int fit_width = 0, fit_height = 0;
+    bool stored_png = false;
 };
 
 // Draws the elements (their %draw, or the default for the style). Writes `path` through a

@@ -31,6 +31,8 @@ class OutputDocument {
     OutputDocument& operator=(const OutputDocument&) = delete;
 
     cairo_t* context() { return cr_; }
+    // PNG: written with its pixels stored, not deflated.
+    void store_png_uncompressed() { stored_png_ = true; }
     // Ends drawing. Throws InputError if Cairo or the output reports an error.
     std::string finish();
 
@@ -44,6 +46,7 @@ class OutputDocument {
     std::unique_ptr<DscRewriter> dsc_;  // PS and EPS: the header's dates and boxes
     std::string bytes_;
     std::string write_error_;
+    bool stored_png_ = false;
     cairo_surface_t* surface_ = nullptr;
     cairo_t* cr_ = nullptr;
 

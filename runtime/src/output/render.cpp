@@ -481,15 +481,26 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
         return;
     }
 
+    // The SVG's page, scaled: line widths and margins as the SVG shown at that size.
+    double zoom = 1;
+    int pixels_x = page.width, pixels_y = page.height;
+    if (format == OutputFormat::png && options.fit_width > 0 && options.fit_height > 0) {
+        zoom = std::min(static_cast<double>(options.fit_width) / page.width,
+                        static_cast<double>(options.fit_height) / page.height);
+        pixels_x = std::max(1, static_cast<int>(std::lround(page.width * zoom)));
+        pixels_y = std::max(1, static_cast<int>(std::lround(page.height * zoom)));
+    }
     // Streamed to the temporary file: Cairo's own record of the page is memory enough.
     detail::OutputStream out(path);
-    detail::OutputDocument document(format, page.width, page.height, pattern.name, out);
+    detail::OutputDocument document(format, pixels_x, pixels_y, pattern.name, out);
+    if (options.stored_png) document.store_png_uncompressed();
     cairo_t* cr = document.context();
     if (options.background) {
         const Color& c = *options.background;
         cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
         cairo_paint(cr);
     }
+    cairo_scale(cr, zoom, zoom);
     page.apply(cr);
     const Outline outline = outline_of(region, options, page);
     // A PNG is painted as it goes; only the vector surfaces record every operation, so there

@@ -41,9 +41,8 @@ std::vector<Point> RepeatLayout::offsets() const {
     return out;
 }
 
-std::pair<int, int> parse_repeat(const std::string& text) {
-    const std::string usage = "--repeat expects NxM, N and M whole numbers from 1 to " +
-                              std::to_string(max_copies) + " (e.g. 3x3), not '" + text + "'";
+std::pair<int, int> parse_int_pair(const std::string& text, int low, int high,
+                                   const std::string& usage) {
     const std::size_t x = text.find_first_of("xX");
     if (x == std::string::npos) throw UsageError(usage);
     auto number = [&](std::size_t begin, std::size_t end) {
@@ -51,11 +50,17 @@ std::pair<int, int> parse_repeat(const std::string& text) {
         const char* first = text.data() + begin;
         const char* last = text.data() + end;
         auto [ptr, ec] = std::from_chars(first, last, v);
-        if (first == last || ec != std::errc() || ptr != last || v < 1 || v > max_copies)
+        if (first == last || ec != std::errc() || ptr != last || v < low || v > high)
             throw UsageError(usage);
         return v;
     };
     return {number(0, x), number(x + 1, text.size())};
+}
+
+std::pair<int, int> parse_repeat(const std::string& text) {
+    return parse_int_pair(text, 1, max_copies,
+                          "--repeat expects NxM, N and M whole numbers from 1 to " +
+                              std::to_string(max_copies) + " (e.g. 3x3), not '" + text + "'");
 }
 
 bool repeats(const RenderOptions& o) { return o.svg_pattern || o.repeat_x > 1 || o.repeat_y > 1; }

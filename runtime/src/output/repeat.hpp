@@ -24,6 +24,10 @@ struct RepeatLayout {
 // "NxM" with 1 <= N, M <= 100. Throws UsageError otherwise.
 std::pair<int, int> parse_repeat(const std::string& text);
 
+// "NxM" (or "NXM") with low <= N, M <= high; throws UsageError(usage) otherwise.
+std::pair<int, int> parse_int_pair(const std::string& text, int low, int high,
+                                   const std::string& usage);
+
 // True when `options` ask for a repeat or a pattern.
 bool repeats(const RenderOptions& options);
 

@@ -183,6 +183,12 @@ std::optional<Point> parse_seed(const std::string& text) {
     return Point{*x, *y};
 }
 
+std::pair<int, int> parse_view_size(const std::string& text) {
+    return parse_int_pair(
+        text, 16, 8192,
+        "--view-size expects WxH, pixels from 16 to 8192 (e.g. 1200x800), not '" + text + "'");
+}
+
 std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
                                                     const std::string& program, int argc,
                                                     char** argv) {
@@ -428,9 +434,21 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
         ->group(watch_group);
     auto* partial =
         app.add_option("--partial", o.partial,
-                       "The growth so far as SVG, replaced while it grows (a live view)")
-            ->type_name("FILE.svg")
+                       "The growth so far as SVG or PNG, replaced while it grows (a live view)")
+            ->type_name("FILE.svg|.png")
             ->group(watch_group);
+    app.add_option("--view", o.view,
+                   "The finished picture as PNG too, fitted into --view-size (for a viewer)")
+        ->type_name("FILE.png")
+        ->group(watch_group);
+    app.add_option_function<std::string>(
+           "--view-size",
+           [&o](const std::string& s) {
+               std::tie(o.view_width, o.view_height) = parse_view_size(s);
+           },
+           "Pixels --view and a PNG --partial fit into (default: --width wide)")
+        ->type_name("WxH")
+        ->group(watch_group);
     app.add_option("--partial-every", o.partial_every,
                    "With --partial: seconds between two pictures (longer when drawing one is slow)")
         ->type_name("S")

@@ -30,8 +30,10 @@ struct ProgramOptions {
     std::string debug_path;
     std::string frames_dir;  // --frames; empty: none
     long frames_every = 1;
-    std::string partial;         // --partial: the growth so far as SVG; empty: none
+    std::string partial;         // --partial: the growth so far as SVG or PNG; empty: none
     double partial_every = 0.1;  // --partial-every: seconds between two pictures
+    std::string view;            // --view: the picture as PNG for a viewer too; empty: none
+    int view_width = 0, view_height = 0;  // --view-size: what --view and a PNG --partial fit
 };
 
 // Parses argv. Prints --help / --version to stdout and returns nullopt (exit 0). Every malformed
@@ -44,6 +46,9 @@ std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
 // A decimal unsigned 64-bit integer, digits only; nullopt otherwise (no sign, no exponent, no
 // clamping).
 std::optional<std::uint64_t> parse_rng_seed(const std::string& text);
+
+// --view-size "WxH", each 16 to 8192 pixels; UsageError otherwise.
+std::pair<int, int> parse_view_size(const std::string& text);
 
 // "X,Y" with two finite numbers; nullopt otherwise.
 std::optional<Point> parse_seed(const std::string& text);

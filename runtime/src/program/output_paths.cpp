@@ -38,6 +38,7 @@ void check_output_paths(const ProgramOptions& o) {
     if (!o.debug_path.empty()) outputs.push_back({"--debug-frame", o.debug_path});
     if (!o.frames_dir.empty()) outputs.push_back({"--frames", o.frames_dir});
     if (!o.partial.empty()) outputs.push_back({"--partial", o.partial});
+    if (!o.view.empty()) outputs.push_back({"--view", o.view});
 
     std::vector<NamedPath> inputs;
     if (!o.region.empty() && !is_shape_argument(o.region)) inputs.push_back({"--region", o.region});

@@ -161,9 +161,15 @@ void validate(const detail::ProgramOptions& o, const Region& region,
     if (!o.json.empty()) check_writable_location(o.json, "the element tree");
     if (!o.debug_path.empty()) check_writable_location(o.debug_path, "the debug frame");
     if (!o.partial.empty()) {
-        if (format_for_path(o.partial) != OutputFormat::svg)
-            throw UsageError("--partial '" + o.partial + "' must name an .svg file");
+        const OutputFormat format = format_for_path(o.partial);
+        if (format != OutputFormat::svg && format != OutputFormat::png)
+            throw UsageError("--partial '" + o.partial + "' must name an .svg or .png file");
         check_writable_location(o.partial, "the partial picture");
+    }
+    if (!o.view.empty()) {
+        if (format_for_path(o.view) != OutputFormat::png)
+            throw UsageError("--view '" + o.view + "' must name a .png file");
+        check_writable_location(o.view, "the view picture");
     }
     if (!o.render.stroke.empty()) check_stroke(o.render.stroke);
     detail::page_layout(region.bounds(), o.render.width);  // UsageError on an impossible page
@@ -389,6 +395,11 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         });
     }
     RenderOptions frame_options = o.render;
+    // --view and a PNG --partial: the SVG's page drawn at the size a viewer shows it.
+    RenderOptions view_options = o.render;
+    view_options.fit_width = o.view_width;
+    view_options.fit_height = o.view_height;
+    view_options.stored_png = true;
     long frames_written = 0, last_frame_iteration = -1;
     PartialPictures partials(o.partial, o.partial_every, o.body_time_limit);
     if (!o.frames_dir.empty() || !o.partial.empty()) {
@@ -406,7 +417,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
             for (const RuleStats& r : engine.stats().rules) placed += r.successes;
             if (partials.due(placed))
                 partials.write(placed, [&](const std::string& path) {
-                    render_to_file(path, pattern, region, elements, o.render);
+                    render_to_file(path, pattern, region, elements, view_options);
                 });
         });
     }
@@ -419,7 +430,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         const std::function<void(const std::string&, const std::vector<const Element*>&)> draw;
     } body_partials{partials, engine,
                     [&](const std::string& path, const std::vector<const Element*>& elements) {
-                        render_to_file(path, pattern, region, elements, o.render);
+                        render_to_file(path, pattern, region, elements, view_options);
                     }};
     const auto body_partial = [](void* context, long placed, const PartialElements& extra) {
         BodyPartials& b = *static_cast<BodyPartials*>(context);
@@ -459,6 +470,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
                        frame_options);
 
     const Clock::time_point render_start = Clock::now();
+    if (!o.view.empty()) render_to_file(o.view, pattern, region, elements, view_options);
     render_to_file(o.output, pattern, region, elements, o.render);
     const double render_seconds = seconds_since(render_start);
     partials.settle();
