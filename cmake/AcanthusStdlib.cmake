@@ -40,6 +40,7 @@ endmacro()
 # The runtime's own dependencies (RUNTIME; the only list of them: found by the top-level
 # CMakeLists.txt, which includes this file before runtime/), and what only the stdlib uses.
 acanthus_stdlib_dependency(NAME Cairo TARGET PkgConfig::CAIRO PKG_CONFIG cairo RUNTIME)
+acanthus_stdlib_dependency(NAME libpng TARGET PkgConfig::LIBPNG PKG_CONFIG libpng RUNTIME)
 # lib2geom's headers call GLib, GSL and double-conversion, which 2geom.pc does not require.
 acanthus_stdlib_dependency(NAME 2Geom TARGET 2Geom::2geom PACKAGE 2Geom
   PKG_CONFIG 2geom glib-2.0 gsl double-conversion RUNTIME)

@@ -7,10 +7,7 @@
 #include <cairo.h>
 
 #include <acanthus/error.hpp>
-#include <algorithm>
-#include <array>
 #include <cctype>
-#include <cstdint>
 #include <map>
 #include <new>
 #include <string_view>
@@ -18,6 +15,7 @@
 #include <vector>
 
 #include "output/output_stream.hpp"
+#include "output/uncompressed_png.hpp"
 
 namespace acanthus::detail {
 
@@ -26,94 +24,6 @@ namespace {
 // Every output claims the same creation date so that a re-render is byte-identical.
 constexpr const char* fixed_pdf_date = "2000-01-01T00:00:00Z";
 constexpr const char* fixed_ps_date = "Sat Jan  1 00:00:00 2000";
-
-std::uint32_t crc32(std::uint32_t crc, const unsigned char* data, std::size_t size) {
-    static const auto table = [] {
-        std::array<std::uint32_t, 256> t{};
-        for (std::uint32_t n = 0; n < 256; ++n) {
-            std::uint32_t c = n;
-            for (int k = 0; k < 8; ++k) c = c & 1 ? 0xedb88320u ^ (c >> 1) : c >> 1;
-            t[n] = c;
-        }
-        return t;
-    }();
-    crc = ~crc;
-    for (std::size_t i = 0; i < size; ++i) crc = table[(crc ^ data[i]) & 0xff] ^ (crc >> 8);
-    return ~crc;
-}
-
-void put32(std::string& out, std::uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<char>(v >> shift));
-}
-
-void chunk(std::string& out, const char* type, const std::string& data) {
-    put32(out, static_cast<std::uint32_t>(data.size()));
-    const std::size_t start = out.size();
-    out.append(type, 4);
-    out.append(data);
-    put32(out,
-          crc32(0, reinterpret_cast<const unsigned char*>(out.data() + start), out.size() - start));
-}
-
-// An RGBA PNG of a Cairo ARGB32 image (premultiplied) whose zlib stream stores the rows as
-// they are: deflate's blocks of at most 65535 bytes, no compression.
-std::string stored_png(cairo_surface_t* image) {
-    const int width = cairo_image_surface_get_width(image);
-    const int height = cairo_image_surface_get_height(image);
-    const int stride = cairo_image_surface_get_stride(image);
-    const unsigned char* pixels = cairo_image_surface_get_data(image);
-    std::string rows(static_cast<std::size_t>(height) * (1 + 4 * static_cast<std::size_t>(width)),
-                     '\0');
-    auto* out = reinterpret_cast<unsigned char*>(rows.data());
-    for (int y = 0; y < height; ++y) {
-        *out++ = 0;  // filter: none
-        const auto* row = reinterpret_cast<const std::uint32_t*>(pixels + y * stride);
-        for (int x = 0; x < width; ++x, out += 4) {
-            const std::uint32_t p = row[x];
-            const unsigned a = p >> 24;
-            unsigned r = (p >> 16) & 0xff, g = (p >> 8) & 0xff, b = p & 0xff;
-            if (a != 0 && a != 255) {
-                r = (r * 255 + a / 2) / a;
-                g = (g * 255 + a / 2) / a;
-                b = (b * 255 + a / 2) / a;
-            }
-            out[0] = static_cast<unsigned char>(r);
-            out[1] = static_cast<unsigned char>(g);
-            out[2] = static_cast<unsigned char>(b);
-            out[3] = static_cast<unsigned char>(a);
-        }
-    }
-    std::string z = {'\x78', '\x01'};
-    std::uint32_t s1 = 1, s2 = 0;  // Adler-32
-    for (std::size_t at = 0; at < rows.size(); at += 65535) {
-        const std::size_t n = std::min<std::size_t>(65535, rows.size() - at);
-        z.push_back(at + n == rows.size() ? 1 : 0);
-        const char lengths[4] = {static_cast<char>(n & 0xff), static_cast<char>(n >> 8),
-                                 static_cast<char>(~n & 0xff), static_cast<char>((~n >> 8) & 0xff)};
-        z.append(lengths, 4);
-        z.append(rows, at, n);
-        // The sums reduced every 5552 bytes, the most that cannot overflow 32 bits.
-        for (std::size_t i = at; i < at + n;) {
-            const std::size_t end = std::min(at + n, i + 5552);
-            for (; i < end; ++i) {
-                s1 += static_cast<unsigned char>(rows[i]);
-                s2 += s1;
-            }
-            s1 %= 65521;
-            s2 %= 65521;
-        }
-    }
-    put32(z, s2 << 16 | s1);
-    std::string header;
-    put32(header, static_cast<std::uint32_t>(width));
-    put32(header, static_cast<std::uint32_t>(height));
-    header += {8, 6, 0, 0, 0};  // 8 bits, RGBA, deflate, adaptive filters, no interlace
-    std::string png = "\x89PNG\r\n\x1a\n";
-    chunk(png, "IHDR", header);
-    chunk(png, "IDAT", z);
-    chunk(png, "IEND", {});
-    return png;
-}
 
 }  // namespace
 
@@ -213,7 +123,7 @@ std::string OutputDocument::finish() {
         if (format_ == OutputFormat::png) {
             cairo_surface_flush(surface_);
             if (stored_png_)
-                emit(stored_png(surface_));
+                emit(uncompressed_png(surface_));
             else
                 status =
                     cairo_surface_write_to_png_stream(surface_, &OutputDocumentStream::write, this);
