@@ -248,6 +248,43 @@ void place_keystone(const Corner& k, Context& c, double depth, double width) {
         if (i > 0) in.push_back(p);
         out.push_back(p + away_at(b, b.segments.front(), p, s) * depth);
     }
+    // Its top, level between the two arcs' radials at the apex, is coursed in: moved to the
+    // nearest bed joint of the walling, so the brick over it is laid whole (it had been cut a
+    // few millimetres in height over a lancet's key). Lowered only while it stays over the
+    // ends of its radial sides (a key no shorter than the voussoirs beside it), raised with
+    // plumb sides only by up to half a course and within the wall.
+    const double top = std::min(out[n].y, out[n + 1].y);
+    if (c.options().bond != Bond::ashlar) {
+        const std::vector<double>& ys = brick_layout(c, k.face).grid.ys;
+        const double course = c.options().brick_height + c.options().mortar;
+        const double lowest = std::min(out.front().y, out.back().y);
+        const Face& face = facade.faces()[static_cast<std::size_t>(k.face)];
+        double line = top, best = 1e300;
+        for (double y : ys) {
+            const double d = std::abs(y - top);
+            if (d >= best) continue;
+            const bool ok = y > top ? y < lowest - 1e-6 * course
+                                    : top - y <= course / 2 && in_face(face, {out[n].x, y}) &&
+                                          in_face(face, {out[n + 1].x, y});
+            if (ok) line = y, best = d;
+        }
+        if (line < top) {  // raised: plumb sides up to the bed joint over it
+            const Point a_up{out[n].x, line}, b_up{out[n + 1].x, line};
+            out.insert(out.begin() + n + 1, {a_up, b_up});
+        } else if (line > top) {  // lowered: cut level at the bed joint
+            std::vector<Point> poly = in;
+            poly.insert(poly.end(), out.rbegin(), out.rend());
+            std::vector<Point> cut;
+            for (std::size_t i = 0; i < poly.size(); ++i) {
+                const Point p = poly[i], q = poly[(i + 1) % poly.size()];
+                if (p.y >= line) cut.push_back(p);
+                if ((p.y >= line) != (q.y >= line))
+                    cut.push_back({p.x + (q.x - p.x) * (line - p.y) / (q.y - p.y), line});
+            }
+            c.place(cut);
+            return;
+        }
+    }
     std::vector<Point> poly = in;
     poly.insert(poly.end(), out.rbegin(), out.rend());
     c.place(poly);

@@ -16,6 +16,7 @@
 #include "ashlar_merge.hpp"
 #include "ashlar_rules.hpp"
 #include "clip.hpp"
+#include "context_data.hpp"
 #include "feature_walk.hpp"
 
 namespace acanthus::cells {
@@ -204,6 +205,7 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
         });
     }
     rules.lay(c.random());
+    c.data().ashlar_rounds = std::max(c.data().ashlar_rounds, rules.rounds());
     for (const Rect& r : piers)
         c.place(detail::polygon_of(r), grid.course(grid.row_at(r.y1 - 1e-6)));
     for (const detail::Stone& s : rules.stones()) {

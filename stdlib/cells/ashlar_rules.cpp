@@ -8,11 +8,6 @@
 
 namespace acanthus::cells::detail {
 
-int& ashlar_rounds() {
-    thread_local int rounds = 0;
-    return rounds;
-}
-
 AshlarRules::AshlarRules(const CourseGrid& g, int max_w, int max_h, int max_seam, int first_id,
                          double square)
     : g_(g),
@@ -59,7 +54,6 @@ void AshlarRules::lay(Random& random) {
         gone.resize(stones_.size(), 0);
         if (!joined && !broken && !relaid) break;
     }
-    ashlar_rounds() = std::max(ashlar_rounds(), rounds_);
     std::size_t n = 0;
     for (std::size_t k = 0; k < stones_.size(); ++k)
         if (!gone[k]) stones_[n++] = stones_[k];

@@ -117,8 +117,4 @@ class AshlarRules {
     std::unordered_set<std::uint64_t> failed_;  // relays that found nothing (see relay())
 };
 
-// The most rounds of repairs a face of the texture being laid on this thread took (see
-// TextureStats::ashlar_rounds).
-int& ashlar_rounds();
-
 }  // namespace acanthus::cells::detail

@@ -29,6 +29,7 @@ struct ContextData {
     bool quoined = false;         // brick layouts made from now on bond jamb quoins in
     bool stone = false;           // a stone wall: lintels on the ashlar grid
     bool lintels = false;         // brick layouts keep every straight head's lintel (framed tree)
+    int ashlar_rounds = 0;        // the most rounds of repairs an ashlar face took (TextureStats)
 
     // A new cell of the running generator and feature, built in place; the caller sets polygon.
     // Reported as progress: a whole facade is one rule body, and the watchdog takes a body that

@@ -6,6 +6,7 @@
 #include <acanthus/stdlib/cells.hpp>
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "ashlar_grid.hpp"
 #include "brick_layout.hpp"
@@ -32,6 +33,10 @@ bool lintel_span(const Edge& e, const CourseGrid& grid, double unit, int bearing
 }
 
 void set_lintel_rows(const Facade& facade, int face, const Options& o, BrickLayout& layout) {
+    struct Laid {
+        int head, top, bottom;
+    };
+    std::vector<Laid> laid;
     for (int h : facade.faces()[static_cast<std::size_t>(face)].edges) {
         const Edge& e = facade.edges()[static_cast<std::size_t>(h)];
         if (e.arc || e.part != Part::top || !e.opening) continue;
@@ -48,6 +53,18 @@ void set_lintel_rows(const Facade& facade, int face, const Options& o, BrickLayo
         if (r <= layout.grid.units() &&
             layout.grid.xs[static_cast<std::size_t>(r)] - e.bounds.x1 >= least)
             u1 = r;
+        // Two lintels whose bearings meet over a pier (in the same courses) are one stone over
+        // both openings: butted there, their joint stood under a head joint of the course above.
+        for (const Laid& prev : laid) {
+            const auto [a, b] = layout.lintel_units[prev.head];
+            if (prev.top != top || prev.bottom != bottom || a > u1 || b < u0) continue;
+            u0 = std::min(u0, a), u1 = std::max(u1, b);
+        }
+        for (const Laid& prev : laid) {
+            auto& [a, b] = layout.lintel_units[prev.head];
+            if (prev.top == top && prev.bottom == bottom && a >= u0 && b <= u1) a = u0, b = u1;
+        }
+        laid.push_back({h, top, bottom});
         layout.lintel_units[h] = {u0, u1};
         for (int row = top; row <= bottom; ++row) {
             auto& pieces = layout.rows[static_cast<std::size_t>(row)];

@@ -20,10 +20,15 @@ int unit_at_edge(const BrickLayout& layout, const Edge& e) {
 
 // Puts a quoin over units [a, b) of the row's pieces; a one-unit remnant beside it joins its
 // neighbour (as bond.cpp does at a run's end), so no quarter bat is left against the quoin.
-void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right, bool merge = true) {
+// `grid` and `row`, where given, tell a unit the jamb cuts (see below).
+void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right, bool merge = true,
+               const CourseGrid* grid = nullptr, int row = -1) {
     // A pier too narrow for two quoins: this one takes what the other leaves (at least two
     // quarters; the other gives one up when only one is left), so the pier is two quoins whose
-    // joint moves with the other's length, course by course.
+    // joint moves with the other's length, course by course. Where the other is too short to
+    // give one up and the one left is cut by the jamb, it takes that one itself: the course
+    // across the pier is one quoin, not a quoin and a sliver (a 13.7 cm pier had 2.5 cm pieces
+    // in every other course).
     for (Piece& p : pieces) {
         if (!p.quoin || p.start + p.length <= a || p.start >= b) continue;
         // Growing right from its jamb, this quoin meets the other's left end; else its right end.
@@ -33,6 +38,16 @@ void put_quoin(std::vector<Piece>& pieces, int a, int b, bool grows_right, bool 
             --p.length;
             if (grows_right) ++p.start;
         } else if (free == 1) {
+            const int left = grows_right ? a : b - 1;
+            if (!grid || grid->at(row, left) == kFull) return;
+            Piece q = p;
+            q.length += 1;
+            if (grows_right) --q.start;
+            std::vector<Piece> out = cut_out(pieces, q.start, q.start + q.length);
+            out.push_back(q);
+            std::sort(out.begin(), out.end(),
+                      [](const Piece& x, const Piece& y) { return x.start < y.start; });
+            pieces = std::move(out);
             return;
         }
         if (grows_right)
@@ -254,7 +269,7 @@ void set_quoin_rows(const Facade& facade, int face, const Options& o, BrickLayou
             while (hi < b && hi < g.units() && g.at(row, hi) != kOutside) ++hi;
             a = lo, b = hi;
             if (b - a < 1) continue;
-            put_quoin(layout.rows[static_cast<std::size_t>(row)], a, b, right);
+            put_quoin(layout.rows[static_cast<std::size_t>(row)], a, b, right, true, &g, row);
         }
     }
     set_piers(o, layout);

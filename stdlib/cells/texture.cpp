@@ -113,7 +113,6 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options,
     check(facade, options);
     auto start = std::chrono::steady_clock::now();
     Context context(facade, options, seed);
-    detail::ashlar_rounds() = 0;
     // Room for a brick bond and its cut bricks at once: growing by doubling copies every cell
     // and touches twice the memory. Only reserved pages cost nothing; capped all the same.
     double bricks = facade.wall_area() / ((options.brick_length + options.mortar) *
@@ -154,7 +153,7 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options,
         tree({FeatureKind::face, static_cast<int>(i)}, context);
     out.cells = std::move(context.cells());
     out.stats.faces = static_cast<long>(out.cells.size()) - out.stats.corners - out.stats.edges;
-    out.stats.ashlar_rounds = detail::ashlar_rounds();
+    out.stats.ashlar_rounds = context.data().ashlar_rounds;
     out.stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;

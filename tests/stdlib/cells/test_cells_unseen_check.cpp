@@ -223,14 +223,16 @@ Known known(const std::string& name, bool stone) {
     // 56, 7, 10, 39, 22; odd 94, 71, 182, 58, 35, 121, 85). The segmental ends' jambs all spring
     // arches: unchanged. The oculus under the top and the off-gauge heads have piers whose head
     // joints cannot take up their jambs' difference with the bricks flush at both.
+    // The lancet over an arcade and the narrow pier: made up later, at the most of any bond
+    // and tree (their jambs fall anywhere between quarter bricks).
     static const std::map<std::string, long> shaved{
         {"gable-pointed-end", 31}, {"segmental-ends", 33}, {"wide-opening", 20},
         {"oculus-top", 17},        {"door-past-end", 8},   {"ashlar-arches", 21},
-        {"off-gauge-heads", 18}};
-    static const std::map<std::string, long> odd{{"gable-pointed-end", 65}, {"segmental-ends", 71},
-                                                 {"wide-opening", 142},     {"oculus-top", 44},
-                                                 {"door-past-end", 32},     {"ashlar-arches", 101},
-                                                 {"off-gauge-heads", 57}};
+        {"off-gauge-heads", 18},   {"lancet-arcade", 61},  {"narrow-pier", 22}};
+    static const std::map<std::string, long> odd{
+        {"gable-pointed-end", 65}, {"segmental-ends", 71}, {"wide-opening", 142},
+        {"oculus-top", 44},        {"door-past-end", 32},  {"ashlar-arches", 101},
+        {"off-gauge-heads", 57},   {"lancet-arcade", 171}, {"narrow-pier", 107}};
     if (auto it = shaved.find(name); it != shaved.end()) k.shaved_bricks = it->second;
     if (auto it = odd.find(name); it != odd.end()) k.odd_pieces = it->second;
     return k;
@@ -294,26 +296,34 @@ const char* const kBrickFacades[] = {"gable-pointed-end", "segmental-ends", "wid
                                      "oculus-top",        "door-past-end",  "ashlar-arches",
                                      "off-gauge-heads"};
 
+// Lays unseen facade `name` in every brick bond and tree at seed 1 and calls
+// `check(bond, tree_name, report, faults)` on each wall.
+template <class Check>
+void each_brick_wall(const std::string& name, Check&& check) {
+    const Facade f = Facade::from_svg_file(unseen(name));
+    Options o = centimetres();
+    for (Bond bond : kBrickBonds)
+        for (const auto& [tree_name, tree] : mason_trees()) {
+            o.bond = bond;
+            const Texture t = texture(f, tree, o, 1);
+            MasonReport m;
+            const std::vector<std::string> v = faults(f, t.cells, kCm, &m, known(name, false));
+            check(bond, tree_name, m, v);
+        }
+}
+
 }  // namespace
 
 // Brick walls: every unseen facade x every bond x every tree.
 TEST(CellsUnseen, BrickWalls) {
-    Options o = centimetres();
     long straight = 0, compared = 0;
     for (const char* name : kBrickFacades) {
-        const Facade f = Facade::from_svg_file(unseen(name));
-        for (Bond bond : kBrickBonds)
-            for (const auto& [tree_name, tree] : mason_trees()) {
-                o.bond = bond;
-                const Texture t = texture(f, tree, o, 1);
-                MasonReport m;
-                const std::vector<std::string> v = faults(f, t.cells, kCm, &m, known(name, false));
-                std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << m
-                          << "\n";
-                EXPECT_TRUE(v.empty())
-                    << name << " " << to_string(bond) << " " << tree_name << list(v);
-                if (bond != Bond::stack) straight += m.straight_joints, compared += m.head_joints;
-            }
+        each_brick_wall(name, [&](Bond bond, const std::string& tree_name, const MasonReport& m,
+                                  const std::vector<std::string>& v) {
+            std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << m << "\n";
+            EXPECT_TRUE(v.empty()) << name << " " << to_string(bond) << " " << tree_name << list(v);
+            if (bond != Bond::stack) straight += m.straight_joints, compared += m.head_joints;
+        });
     }
     // Not counted here (bonds and closers are checked in test_cells_mason): the straight joints.
     std::cout << "straight joints, all unseen facades, bonds but stack, all trees: " << straight
@@ -424,6 +434,38 @@ TEST(CellsUnseen, ArchesClose) {
         const Texture t = texture(f, ashlar_tree(), o, static_cast<std::uint64_t>(seed));
         const std::vector<std::string> v = ring_faults(t, spec);
         EXPECT_TRUE(v.empty()) << "ashlar seed " << seed << list(v);
+    }
+}
+
+// Two facades made up later and not tuned on, every rule of the check in every bond and tree
+// and in ashlar (seeds 1-3): a lancet whose keystone's level top fell 2.8 mm over a bed joint
+// (the header over it was cut to 6.22 cm, read as a brick off its height and a course 2.8 mm
+// off gauge, in Flemish and header bond), and a 13.7 cm pier whose quoins left a 2.5 cm sliver
+// in every other course (framed tree); and no straight joint: the two lintels whose bearings
+// meet over that pier had butted there, their joint under a head joint of the course above
+// (framed tree, running bond), and are one lintel over both windows.
+TEST(CellsUnseen, KeyCoursedInAndNarrowPier) {
+    Options o = centimetres();
+    for (const char* name : {"lancet-arcade", "narrow-pier"}) {
+        each_brick_wall(name, [&](Bond bond, const std::string& tree_name, const MasonReport& m,
+                                  const std::vector<std::string>& v) {
+            SCOPED_TRACE(std::string(name) + " " + std::string(to_string(bond)) + " " + tree_name);
+            EXPECT_TRUE(v.empty()) << list(v);
+            EXPECT_EQ(m.narrow_pieces, 0);
+            EXPECT_EQ(m.courses_off_gauge, 0);
+            if (bond != Bond::stack) {
+                EXPECT_EQ(m.straight_joints, 0);
+            }
+        });
+        const Facade f = Facade::from_svg_file(unseen(name));
+        MasonSpec spec = kCm;
+        spec.stone = true;
+        o.bond = Bond::ashlar;
+        for (int seed = 1; seed <= 3; ++seed) {
+            const Texture t = texture(f, ashlar_tree(), o, static_cast<std::uint64_t>(seed));
+            const std::vector<std::string> v = faults(f, t.cells, spec);
+            EXPECT_TRUE(v.empty()) << name << " ashlar seed " << seed << list(v);
+        }
     }
 }
 
