@@ -615,6 +615,52 @@ TEST(CellsUnseen, JambsFallOnJoints) {
         }
 }
 
+// A pier laid from its own jambs: a 120 cm window (21 1/3 quarter bricks, more than its head
+// joints can take up) between two piers of 90 cm (16 quarters). Plumb unit lines reach the left
+// pier's jambs and the wall's right end, not the window's right jamb, so the right pier was cut
+// at that jamb in all 10 of its courses (an odd piece where whole bricks fit). Laid from its
+// jambs: in stack bond one is left (the course the head falls within), in running bond six (the
+// courses whose joints would come within a quarter brick of those over and under the window
+// keep their units); the bricks at the jamb stand a half joint off it.
+TEST(CellsUnseen, PierLaidFromItsJambs) {
+    const Facade f = Facade::from_svg_string(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 300 150\">"
+        "<rect id=\"w\" class=\"wall\" width=\"300\" height=\"150\"/>"
+        "<rect id=\"win\" class=\"window\" x=\"90\" y=\"40\" width=\"120\" "
+        "height=\"75\"/></svg>",
+        "pier.svg");
+    Options o = centimetres();
+    for (Bond bond : {Bond::running, Bond::stack}) {
+        o.bond = bond;
+        const Texture t = texture(f, brick_tree(), o, 1);
+        const MasonReport m = mason_check(f, t.cells, kCm);
+        SCOPED_TRACE(to_string(bond));
+        const long left = bond == Bond::stack ? 1 : 6;
+        EXPECT_LE(m.unforced_odd, left) << list(m.unforced);
+        EXPECT_EQ(m.joints_off, 0) << "up to " << m.joint_deviation;
+        EXPECT_EQ(m.narrow_pieces, 0);
+        if (bond != Bond::stack) {
+            EXPECT_EQ(m.straight_joints, 0);
+        }
+        long beside = 0, odd = 0;
+        for (const Cell& c : t.cells) {
+            Rect b;
+            if (!mason_detail::coursed(c) || !mason_detail::is_rect(c.polygon, b) || b.y0 < 40 ||
+                b.y1 > 115 || b.x1 < 210 || b.x0 > 300)
+                continue;
+            const double q = (kCm.length + kCm.mortar) / 4;
+            const double k = std::round((b.width() + kCm.mortar) / q);
+            odd += std::abs(b.width() - (k * q - kCm.mortar)) > kCm.tolerance / 3;
+            if (std::abs(b.x0 - 210) < 2 * kCm.mortar) {
+                EXPECT_NEAR(b.x0, 210 + kCm.mortar / 2, 1e-6);
+                ++beside;
+            }
+        }
+        EXPECT_LE(odd, left);
+        EXPECT_GE(beside, 8);
+    }
+}
+
 // A level top 2.2 cm past whole courses over a window head: one cut course under it, not two,
 // the whole courses below closing their joints (within the tolerance) so it is half a course.
 TEST(CellsUnseen, OneCutCourseUnderTheTop) {
