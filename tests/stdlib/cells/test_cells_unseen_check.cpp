@@ -615,6 +615,17 @@ TEST(CellsUnseen, JambsFallOnJoints) {
         }
 }
 
+// A wall w x h with one window (x0, y0, x1, y1), drawn as an author draws it.
+Facade one_window(double w, double h, Rect win, const std::string& name) {
+    auto n = [](double v) { return std::to_string(v); };
+    return Facade::from_svg_string(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + n(w) + " " + n(h) +
+            "\"><rect id=\"w\" class=\"wall\" width=\"" + n(w) + "\" height=\"" + n(h) +
+            "\"/><rect id=\"win\" class=\"window\" x=\"" + n(win.x0) + "\" y=\"" + n(win.y0) +
+            "\" width=\"" + n(win.width()) + "\" height=\"" + n(win.height()) + "\"/></svg>",
+        name);
+}
+
 // A pier laid from its own jambs: a 120 cm window (21 1/3 quarter bricks, more than its head
 // joints can take up) between two piers of 90 cm (16 quarters). Plumb unit lines reach the left
 // pier's jambs and the wall's right end, not the window's right jamb, so the right pier was cut
@@ -623,18 +634,13 @@ TEST(CellsUnseen, JambsFallOnJoints) {
 // courses whose joints would come within a quarter brick of those over and under the window
 // keep their units); the bricks at the jamb stand a half joint off it.
 TEST(CellsUnseen, PierLaidFromItsJambs) {
-    const Facade f = Facade::from_svg_string(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 300 150\">"
-        "<rect id=\"w\" class=\"wall\" width=\"300\" height=\"150\"/>"
-        "<rect id=\"win\" class=\"window\" x=\"90\" y=\"40\" width=\"120\" "
-        "height=\"75\"/></svg>",
-        "pier.svg");
-    Options o = centimetres();
+    const Facade f = one_window(300, 150, {90, 40, 210, 115}, "pier.svg");
     for (Bond bond : {Bond::running, Bond::stack}) {
-        o.bond = bond;
-        const Texture t = texture(f, brick_tree(), o, 1);
-        const MasonReport m = mason_check(f, t.cells, kCm);
         SCOPED_TRACE(to_string(bond));
+        Options o = centimetres();
+        o.bond = bond;
+        const std::vector<Cell> cells = texture(f, brick_tree(), o, 1).cells;
+        const MasonReport m = mason_check(f, cells, kCm);
         const long left = bond == Bond::stack ? 1 : 6;
         EXPECT_LE(m.unforced_odd, left) << list(m.unforced);
         EXPECT_EQ(m.joints_off, 0) << "up to " << m.joint_deviation;
@@ -643,7 +649,7 @@ TEST(CellsUnseen, PierLaidFromItsJambs) {
             EXPECT_EQ(m.straight_joints, 0);
         }
         long beside = 0, odd = 0;
-        for (const Cell& c : t.cells) {
+        for (const Cell& c : cells) {
             Rect b;
             if (!mason_detail::coursed(c) || !mason_detail::is_rect(c.polygon, b) || b.y0 < 40 ||
                 b.y1 > 115 || b.x1 < 210 || b.x0 > 300)
@@ -664,12 +670,7 @@ TEST(CellsUnseen, PierLaidFromItsJambs) {
 // A level top 2.2 cm past whole courses over a window head: one cut course under it, not two,
 // the whole courses below closing their joints (within the tolerance) so it is half a course.
 TEST(CellsUnseen, OneCutCourseUnderTheTop) {
-    const Facade f = Facade::from_svg_string(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 300 200\">"
-        "<rect id=\"w\" class=\"wall\" width=\"300\" height=\"200\"/>"
-        "<rect id=\"win\" class=\"window\" x=\"100\" y=\"47.2\" width=\"60\" "
-        "height=\"60\"/></svg>",
-        "top.svg");
+    const Facade f = one_window(300, 200, {100, 47.2, 160, 107.2}, "top.svg");
     Options o = centimetres();
     for (Bond bond : {Bond::running, Bond::flemish}) {
         o.bond = bond;
