@@ -85,7 +85,25 @@ bool BrickLayout::nominal(int row, int u0, int u1) const {
     return std::abs(claim.width() - n * unit) <= tolerance * n / 4 + slack;
 }
 
+namespace {
+
+// The piece as set out again from its jambs (relay_runs): (drawn, claim), or none.
+const std::pair<Rect, Rect>* relaid_at(const BrickLayout& l, int row, int piece) {
+    if (static_cast<std::size_t>(row) >= l.relaid.size()) return nullptr;
+    const auto& r = l.relaid[static_cast<std::size_t>(row)];
+    const std::size_t k = static_cast<std::size_t>(piece);
+    return k < r.size() && r[k].second.width() > 0 ? &r[k] : nullptr;
+}
+
+}  // namespace
+
+Rect BrickLayout::claim(int row, int piece) const {
+    const auto* r = relaid_at(*this, row, piece);
+    return r ? r->second : rect(row, piece);
+}
+
 Rect BrickLayout::drawn(int row, int piece) const {
+    if (const auto* r = relaid_at(*this, row, piece)) return r->first;
     const Piece& p = rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
     Rect d = drawn(row, p.start, p.start + p.length);
     if (static_cast<std::size_t>(row) < shift.size()) {
@@ -261,6 +279,140 @@ void set_joints(BrickLayout& layout) {
             for (std::size_t k = st.a; k < st.b; ++k) hit |= undo.count({st.row, k}) > 0;
             if (!hit) continue;
             for (std::size_t k = st.a; k < st.b; ++k) layout.shift[st.row][k] = 0;
+        }
+    }
+}
+
+// A run of bricks between two jambs (plumb sides of the face over the whole course) whose width
+// is whole quarter bricks within what its head joints can take up, but which the plumb unit
+// lines miss at one jamb or both: as the mason sets out a pier, laid again from its own jambs,
+// the bond's pieces kept, the end pieces made whole quarters (the one at the left jamb to the
+// nearer, the same way in every course beside that jamb, so the courses keep their stagger) and
+// the difference shared by the joints. A run whose joints would come within a quarter brick of
+// a joint in the course below or above is left as it was.
+bool plumb_edge(const Edge& e);
+
+void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
+    const CourseGrid& g = layout.grid;
+    const double q = layout.unit, m = layout.mortar, h = m / 2, tol = layout.tolerance;
+    const double eps = 1e-9 * std::max(1.0, std::abs(g.xs.back()));
+    layout.relaid.assign(layout.rows.size(), {});
+    for (std::size_t r = 0; r < layout.rows.size(); ++r)
+        layout.relaid[r].assign(layout.rows[r].size(), {Rect{}, Rect{}});
+    struct Jamb {
+        double x, y0, y1;
+        bool left;  // the face to its right: a run's left end
+    };
+    std::vector<Jamb> jambs;
+    // Round heads and arcs other generators claim before the bricks (soldiers, lintels and
+    // their bearings, rings, walling cut to an extrados): courses there keep their units.
+    std::vector<Rect> heads;
+    const double reach = 2 * (4 * q);
+    for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        if (edge.opening && !plumb_edge(edge) && (edge.arc || edge.part != Part::bottom)) {
+            // A straight head's soldiers or lintel stand over it; a ring goes round its arc.
+            const Rect b = edge.bounds;
+            heads.push_back(
+                {b.x0 - reach, b.y0 - reach, b.x1 + reach, edge.arc ? b.y1 + reach : b.y1 + m});
+        }
+        if (!plumb_edge(edge)) continue;
+        jambs.push_back(
+            {edge.bounds.x0, edge.bounds.y0, edge.bounds.y1, edge.inward(edge.length / 2).x > 0});
+    }
+    // The jamb bounding unit u's side over the whole of row r: in the unit, or on its line.
+    auto jamb_at = [&](int r, int u, bool left, double& x) {
+        const double lo = g.xs[static_cast<std::size_t>(u)], hi = g.xs[u + 1];
+        for (const Jamb& j : jambs) {
+            if (j.left != left || j.y0 > g.ys[static_cast<std::size_t>(r)] + eps ||
+                j.y1 < g.ys[r + 1] - eps)
+                continue;
+            if (j.x >= lo - 1e-6 * q && j.x <= hi + 1e-6 * q) {
+                x = j.x;
+                return true;
+            }
+        }
+        return false;
+    };
+    const double quarter = q - m / 4;
+    // Head joints of a row (centres), as laid now.
+    auto joints = [&](std::size_t r) {
+        std::vector<double> out;
+        const auto& ps = layout.rows[r];
+        for (std::size_t k = 0; k + 1 < ps.size(); ++k)
+            if (ps[k].start + ps[k].length == ps[k + 1].start)
+                out.push_back((layout.drawn(static_cast<int>(r), static_cast<int>(k)).x1 +
+                               layout.drawn(static_cast<int>(r), static_cast<int>(k + 1)).x0) /
+                              2);
+        return out;
+    };
+    for (std::size_t rr = layout.rows.size(); rr-- > 0;) {  // bottom course first
+        const int row = static_cast<int>(rr);
+        const auto& ps = layout.rows[rr];
+        for (std::size_t a = 0; a < ps.size();) {
+            std::size_t b = a + 1;
+            while (b < ps.size() && ps[b - 1].start + ps[b - 1].length == ps[b].start) ++b;
+            const std::size_t n = b - a;
+            bool bricks = n >= 2;
+            for (std::size_t k = a; k < b; ++k)
+                bricks &=
+                    !ps[k].fixed() && !ps[k].sill && ((k > a && k + 1 < b) ? ps[k].full : true);
+            double xl = 0, xr = 0;
+            const int u0 = ps[a].start, u1 = ps[b - 1].start + ps[b - 1].length - 1;
+            const std::size_t a0 = a;
+            a = b;
+            if (!bricks || !jamb_at(row, u0, true, xl) || !jamb_at(row, u1, false, xr)) continue;
+            bool near_head = false;
+            for (const Rect& hb : heads)
+                near_head |= hb.x0 < xr && hb.x1 > xl && hb.y0 < g.ys[rr + 1] && hb.y1 > g.ys[rr];
+            if (near_head) continue;
+            const double w = xr - xl;
+            const int total = static_cast<int>(std::lround(w / q));
+            // Whole: a pier already flush at both jambs is left as it is.
+            const bool on_lines = std::abs(xl - g.xs[static_cast<std::size_t>(u0)]) <= eps &&
+                                  std::abs(xr - g.xs[static_cast<std::size_t>(u1 + 1)]) <= eps;
+            if (on_lines || total < 2 ||
+                std::abs(w - total * q) > static_cast<double>(n - 1) * tol + eps)
+                continue;
+            // The left piece to the nearer whole quarter: what of its first unit lies in the face.
+            const double inside = (g.xs[static_cast<std::size_t>(u0) + 1] - xl) /
+                                  (g.xs[static_cast<std::size_t>(u0) + 1] - g.xs[u0]);
+            std::vector<int> len;
+            int inner = 0;
+            for (std::size_t k = a0; k < b; ++k) len.push_back(ps[k].length);
+            for (std::size_t k = 1; k + 1 < n; ++k) inner += len[k];
+            len[0] = len[0] - 1 + (inside >= 0.5 - 1e-9 ? 1 : 0);
+            len[n - 1] = total - inner - len[0];
+            if (len[0] < 1 || len[n - 1] < 1 || len[0] > 4 || len[n - 1] > 4) continue;
+            const double extra = (w - total * q) / static_cast<double>(n - 1);
+            std::vector<Rect> laid;
+            std::vector<double> mine;
+            double x = xl + h;
+            const double y0 = layout.drawn(row, static_cast<int>(a0 + 1)).y0,
+                         y1 = layout.drawn(row, static_cast<int>(a0 + 1)).y1;
+            for (std::size_t k = 0; k < n; ++k) {
+                const double wk = len[k] * q - m;
+                laid.push_back({x, y0, x + wk, y1});
+                x += wk + m + extra;
+                if (k + 1 < n) mine.push_back(x - h - extra / 2);
+            }
+            // No joint brought within a quarter brick of one in the course below or above.
+            bool clear = true;
+            for (std::size_t nb : {rr + 1, rr - 1}) {
+                if (layout.bond.bond == Bond::stack) break;
+                if (nb >= layout.rows.size()) continue;
+                for (double j : joints(nb))
+                    for (double i : mine) clear &= std::abs(i - j) >= quarter - eps;
+            }
+            if (!clear) continue;
+            for (std::size_t k = 0; k < n; ++k) {
+                // Its claim: to the middle of its joints, so that what another generator
+                // took first cuts it and not its neighbour.
+                Rect c = layout.rect(row, static_cast<int>(a0 + k));
+                c.x0 = k == 0 ? xl : laid[k].x0 - h - extra / 2;
+                c.x1 = k + 1 == n ? xr : laid[k].x1 + h + extra / 2;
+                layout.relaid[rr][a0 + k] = {laid[k], c};
+            }
         }
     }
 }
@@ -523,6 +675,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
             layout = std::move(plain);
     }
     set_joints(layout);
+    relay_runs(facade, face, layout);
     return layout;
 }
 

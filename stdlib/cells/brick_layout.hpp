@@ -31,6 +31,9 @@ struct BrickLayout {
     // Per row and piece: how far the drawn piece stands right of the centre of its claim
     // (set_joints: bricks flush at jambs, the difference in the head joints between).
     std::vector<std::vector<double>> shift;
+    // Per row and piece: set out again from its run's jambs (relay_runs), the piece as laid and
+    // its claim; empty where the piece lies on its units.
+    std::vector<std::vector<std::pair<Rect, Rect>>> relaid;
 
     // The piece under point p: row and index, or false.
     bool find(Point p, int& row, int& piece) const;
@@ -38,8 +41,10 @@ struct BrickLayout {
     // What a mason lays in units [u0, u1) of `row`: the nominal brick (or bat) centred in its
     // claim where the joints took up the difference, the claim less half a joint elsewhere.
     Rect drawn(int row, int u0, int u1) const;
-    // The piece as laid: as above, moved by its shift.
+    // The piece as laid: as above, moved by its shift, or as set out again from its jambs.
     Rect drawn(int row, int piece) const;
+    // What the piece claims: its units, or where it was set out again, its part between them.
+    Rect claim(int row, int piece) const;
     // Whether units [u0, u1) of `row` are drawn at the nominal length (the joints took up the
     // difference), not cut to their claim.
     bool nominal(int row, int u0, int u1) const;

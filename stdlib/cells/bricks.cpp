@@ -48,8 +48,8 @@ void lay(Context& c, BrickLayout& layout, int row, int piece) {
         layout.rows[static_cast<std::size_t>(row)][static_cast<std::size_t>(piece)];
     if (p.head) return;  // the lintel's, laid by its generator
     const Rect drawn = layout.drawn(row, piece);
-    const int added =
-        c.place(detail::polygon_of(layout.rect(row, piece)), layout.grid.course(row), true, &drawn);
+    const int added = c.place(detail::polygon_of(layout.claim(row, piece)), layout.grid.course(row),
+                              true, &drawn);
     name(c, p, added);
 }
 
@@ -88,7 +88,7 @@ Generator bricks() {
                 if (taken[k]) continue;
                 taken[k] = 1;
                 if (pieces[k].head) continue;
-                Rect rect = layout.rect(r, static_cast<int>(k));
+                Rect rect = layout.claim(r, static_cast<int>(k));
                 const Rect drawn = layout.drawn(r, static_cast<int>(k));
                 const int added =
                     pieces[k].full && occupancy.rect_is_free(rect)

@@ -58,6 +58,15 @@ struct MasonReport {
     // what was left. Head joints between such pieces within the tolerance of the joint.
     long odd_pieces = 0;
     std::vector<std::string> odd;  // each: its generator, size and place
+    // When the geometry forces an odd piece: a run of pieces in a course between two ends that
+    // are not walling (a jamb, the wall's end, a head, a ring, a lintel, a piece cut to a curve)
+    // whose width, reveal to reveal, is no whole number of quarter bricks within what its head
+    // joints can take up (each by the tolerance), or which is narrower than a queen closer and
+    // its joints: one piece in that course cut to what is left. Any other odd piece is not
+    // forced: the run could have been laid in whole bricks and standard closers.
+    long forced_runs = 0;  // runs where one odd piece is forced
+    long unforced_odd = 0;
+    std::vector<std::string> unforced;  // each: the run's width, pieces and place
     long joints_off = 0;  // head joints wider or narrower than the joint by more than the tolerance
     std::vector<Point> joints_off_at;
     double joint_deviation = 0;
@@ -184,14 +193,16 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
     if (!s.stone) {
         const double quarter = (s.length + s.mortar) / 4;
         std::vector<Rect> pieces;
+        std::vector<char> odd;  // per piece, before sorting
         for (const Cell& c : cells) {
             Rect b;
             if (!coursed(c) || c.generator == "lintel" || !is_rect(c.polygon, b)) continue;
             if (b.height() > 1.2 * s.height) continue;  // on end or a soldier: not a coursed unit
             pieces.push_back(b);
             const double k = std::round((b.width() + s.mortar) / quarter);
-            if (k < 1 || k > 12 ||
-                std::abs(b.width() - (k * quarter - s.mortar)) > s.tolerance / 3 + 1e-9) {
+            odd.push_back(k < 1 || k > 12 ||
+                          std::abs(b.width() - (k * quarter - s.mortar)) > s.tolerance / 3 + 1e-9);
+            if (odd.back()) {
                 ++r.odd_pieces;
                 r.odd.push_back(c.generator + " " + std::to_string(b.width()) + " x " +
                                 std::to_string(b.height()) + " at (" + std::to_string(b.x0) + ", " +
@@ -200,9 +211,40 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         }
         const double same = 0.05 * s.mortar + 1e-9;
         auto row = [&](const Rect& b) { return std::llround(b.y1 / same); };
-        std::sort(pieces.begin(), pieces.end(), [&](const Rect& a, const Rect& b) {
+        std::vector<std::size_t> order(pieces.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+            const Rect &a = pieces[i], &b = pieces[j];
             return row(a) != row(b) ? row(a) < row(b) : a.x0 < b.x0;
         });
+        // Runs: pieces of one course a joint apart (up to two), whatever their height.
+        for (std::size_t i = 0; i < order.size();) {
+            std::size_t j = i + 1;
+            while (j < order.size() && row(pieces[order[j]]) == row(pieces[order[i]]) &&
+                   pieces[order[j]].x0 - pieces[order[j - 1]].x1 > 0 &&
+                   pieces[order[j]].x0 - pieces[order[j - 1]].x1 <= 2 * s.mortar)
+                ++j;
+            long n_odd = 0;
+            for (std::size_t k = i; k < j; ++k) n_odd += odd[order[k]];
+            const Rect &a = pieces[order[i]], &b = pieces[order[j - 1]];
+            const double width = b.x1 - a.x0 + s.mortar;  // reveal to reveal
+            const double k = std::round(width / quarter);
+            const double joints = static_cast<double>(j - i - 1);
+            const bool forced =
+                k < 1 || std::abs(width - k * quarter) > joints * s.tolerance + 1e-9;
+            r.forced_runs += forced && n_odd > 0;
+            const long over = n_odd - (forced ? 1 : 0);
+            if (over > 0) {
+                r.unforced_odd += over;
+                r.unforced.push_back(std::to_string(over) + " in a run " + std::to_string(width) +
+                                     " wide of " + std::to_string(j - i) + " pieces at (" +
+                                     std::to_string(a.x0) + ", " + std::to_string(a.y0) + ")");
+            }
+            i = j;
+        }
+        std::vector<Rect> sorted;
+        for (std::size_t i : order) sorted.push_back(pieces[i]);
+        pieces = std::move(sorted);
         for (std::size_t i = 0; i + 1 < pieces.size(); ++i) {
             const Rect &a = pieces[i], &b = pieces[i + 1];
             const double gap = b.x0 - a.x1;
@@ -505,6 +547,7 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << " piers " << r.pier_stones << " unit-square pairs " << r.unit_square_pairs
                << " runs " << r.unit_square_runs << ", king closers " << r.king_closers
                << " misplaced " << r.king_closers_misplaced << ", odd pieces " << r.odd_pieces
+               << " (not forced " << r.unforced_odd << ", forced runs " << r.forced_runs << ")"
                << ", head joints off " << r.joints_off << " (max " << r.joint_deviation << ")";
 }
 

@@ -255,6 +255,20 @@ const Bond kBrickBonds[] = {Bond::running, Bond::english, Bond::flemish, Bond::h
 // window and close windows, a chapel end with pointed, segmental and round heads near the wall's
 // ends, a terrace with jambs between quarter bricks, a gable with a pointed door at a wall end,
 // a warehouse with a 4.2 m segmental arch, a stone front), every bond and tree.
+// Odd pieces not forced by the geometry (mason_check.hpp), the most of any bond and tree at
+// seed 1, per facade.
+const std::map<std::string, long> kUnforced{
+    {"row-house", 136}, {"gable", 48},         {"oculus", 1},   {"insets", 39},
+    {"shopfront", 38},  {"chapel", 35},        {"terrace", 47}, {"gable-lancet", 50},
+    {"warehouse", 114}, {"ashlar-front", 104}, {"mill", 62}};
+
+std::string list(const std::vector<std::string>& v) {
+    std::string s;
+    for (std::size_t i = 0; i < v.size() && i < 12; ++i) s += "\n  " + v[i];
+    if (v.size() > 12) s += "\n  ... " + std::to_string(v.size() - 12) + " more";
+    return s;
+}
+
 TEST(CellsMason, UnseenFacades) {
     const std::string dir = std::string(ACANTHUS_SOURCE_DIR) + "/tests/stdlib/cells/facades/";
     Options o = centimetres();
@@ -271,6 +285,9 @@ TEST(CellsMason, UnseenFacades) {
                           << "\n";
                 SCOPED_TRACE(std::string(name) + " " + std::string(to_string(bond)) + " " +
                              tree_name);
+                // Odd pieces the geometry does not force (mason_check.hpp), at seed 1 the most
+                // of any bond and tree: jambs the plumb unit lines miss (docs, Limitations).
+                EXPECT_LE(r.unforced_odd, kUnforced.at(name)) << list(r.unforced);
                 // The mill (made up after the rest, not tuned on): its loading door's ring, 9 cm
                 // from the wall's end, is one half-brick ring (a brick-deep one would reach past
                 // the end). A brick over the wide window's extrados, its corner cut by it,
@@ -350,6 +367,7 @@ TEST(CellsMason, ExampleFacades) {
                 const std::map<std::string, long> odd{
                     {"row-house", 137}, {"gable", 48}, {"oculus", 41}, {"insets", 50}};
                 EXPECT_LE(r.odd_pieces, odd.at(name));
+                EXPECT_LE(r.unforced_odd, kUnforced.at(name)) << list(r.unforced);
                 EXPECT_EQ(r.slivers, 0);  // pieces under 10% of a face are left to the mortar
                 EXPECT_EQ(r.voussoirs_clipped, 0);
                 EXPECT_EQ(r.crowns_open, 0);

@@ -215,6 +215,7 @@ struct Known {
     long four_way_per_1000 = 10, stones_on_end = 0, unit_square_runs = 0;
     long shaved_bricks = 0;
     long odd_pieces = 0, joints_off = 0;
+    long unforced_odd = 0;  // odd pieces the geometry does not force (mason_check.hpp)
 };
 Known known(const std::string& name, bool stone) {
     Known k;
@@ -235,6 +236,13 @@ Known known(const std::string& name, bool stone) {
         {"off-gauge-heads", 57},   {"lancet-arcade", 171}, {"narrow-pier", 107}};
     if (auto it = shaved.find(name); it != shaved.end()) k.shaved_bricks = it->second;
     if (auto it = odd.find(name); it != odd.end()) k.odd_pieces = it->second;
+    // Of those, not forced by the geometry: runs of whole quarters between jambs the plumb unit
+    // lines miss (docs/stdlib/cells.md, Limitations).
+    static const std::map<std::string, long> unforced{
+        {"gable-pointed-end", 17}, {"segmental-ends", 51}, {"wide-opening", 19},
+        {"oculus-top", 35},        {"door-past-end", 17},  {"ashlar-arches", 47},
+        {"off-gauge-heads", 29}};
+    if (auto it = unforced.find(name); it != unforced.end()) k.unforced_odd = it->second;
     return k;
 }
 
@@ -266,6 +274,10 @@ std::vector<std::string> faults(const Facade& f, const std::vector<Cell>& cells,
               std::to_string(m.odd_pieces) + " pieces neither a brick nor a standard bat");
         if (m.odd_pieces > k.odd_pieces)
             for (const std::string& p : m.odd) v.push_back("  " + p);
+        fault(m.unforced_odd > k.unforced_odd,
+              std::to_string(m.unforced_odd) + " odd pieces the geometry does not force");
+        if (m.unforced_odd > k.unforced_odd)
+            for (const std::string& p : m.unforced) v.push_back("  " + p);
         fault(m.joints_off > k.joints_off, std::to_string(m.joints_off) +
                                                " head joints off by up to " +
                                                std::to_string(m.joint_deviation));
@@ -340,13 +352,13 @@ TEST(CellsUnseen, BrickWalls) {
 // on end within the rules over seeds 1-12.
 TEST(CellsUnseen, NewFacadesForTheJambCheck) {
     struct Caps {
-        long odd, shaved, joints_off, cut_courses, clipped;
+        long odd, shaved, joints_off, cut_courses, clipped, unforced;
     };
     // Odd pieces were 266 and 144 before perpends were set out from the jambs; shaved bricks 87
     // and 32 (of the odd pieces, more now fall within 12% of a brick's length). The terrace's
     // narrow piers: few of their jambs are reached with the bricks flush at both.
-    const std::map<std::string, Caps> caps{{"terrace-piers", {247, 114, 0, 2, 0}},
-                                           {"shop-corner", {131, 54, 0, 3, 0}}};
+    const std::map<std::string, Caps> caps{{"terrace-piers", {247, 114, 0, 2, 0, 96}},
+                                           {"shop-corner", {131, 54, 0, 3, 0, 32}}};
     Options o = centimetres();
     for (const auto& [name, cap] : caps) {
         const Facade f = Facade::from_svg_file(unseen(name));
@@ -355,6 +367,8 @@ TEST(CellsUnseen, NewFacadesForTheJambCheck) {
                 o.bond = bond;
                 const Texture t = texture(f, tree, o, 1);
                 const MasonReport m = mason_check(f, t.cells, kCm);
+                std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << m
+                          << "\n";
                 SCOPED_TRACE(name + " " + std::string(to_string(bond)) + " " + tree_name);
                 if (bond != Bond::stack) {
                     EXPECT_EQ(m.straight_joints, 0);
@@ -367,6 +381,7 @@ TEST(CellsUnseen, NewFacadesForTheJambCheck) {
                 EXPECT_EQ(m.king_closers_misplaced, 0);
                 EXPECT_LE(m.height_deviation, kCm.tolerance / 3);
                 EXPECT_LE(m.odd_pieces, cap.odd);
+                EXPECT_LE(m.unforced_odd, cap.unforced);
                 EXPECT_LE(m.shaved_bricks, cap.shaved);
                 EXPECT_LE(m.joints_off, cap.joints_off);
                 EXPECT_LE(m.cut_courses, cap.cut_courses);
@@ -642,15 +657,62 @@ TEST(CellsUnseen, JambsFallOnJoints) {
         }
 }
 
+// A wall w x h with one window (x0, y0, x1, y1), drawn as an author draws it.
+Facade one_window(double w, double h, Rect win, const std::string& name) {
+    auto n = [](double v) { return std::to_string(v); };
+    return Facade::from_svg_string(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + n(w) + " " + n(h) +
+            "\"><rect id=\"w\" class=\"wall\" width=\"" + n(w) + "\" height=\"" + n(h) +
+            "\"/><rect id=\"win\" class=\"window\" x=\"" + n(win.x0) + "\" y=\"" + n(win.y0) +
+            "\" width=\"" + n(win.width()) + "\" height=\"" + n(win.height()) + "\"/></svg>",
+        name);
+}
+
+// A pier laid from its own jambs: a 120 cm window (21 1/3 quarter bricks, more than its head
+// joints can take up) between two piers of 90 cm (16 quarters). Plumb unit lines reach the left
+// pier's jambs and the wall's right end, not the window's right jamb, so the right pier was cut
+// at that jamb in all 10 of its courses (an odd piece where whole bricks fit). Laid from its
+// jambs: in stack bond one is left (the course the head falls within), in running bond six (the
+// courses whose joints would come within a quarter brick of those over and under the window
+// keep their units); the bricks at the jamb stand a half joint off it.
+TEST(CellsUnseen, PierLaidFromItsJambs) {
+    const Facade f = one_window(300, 150, {90, 40, 210, 115}, "pier.svg");
+    for (Bond bond : {Bond::running, Bond::stack}) {
+        SCOPED_TRACE(to_string(bond));
+        Options o = centimetres();
+        o.bond = bond;
+        const std::vector<Cell> cells = texture(f, brick_tree(), o, 1).cells;
+        const MasonReport m = mason_check(f, cells, kCm);
+        const long left = bond == Bond::stack ? 1 : 6;
+        EXPECT_LE(m.unforced_odd, left) << list(m.unforced);
+        EXPECT_EQ(m.joints_off, 0) << "up to " << m.joint_deviation;
+        EXPECT_EQ(m.narrow_pieces, 0);
+        if (bond != Bond::stack) {
+            EXPECT_EQ(m.straight_joints, 0);
+        }
+        long beside = 0, odd = 0;
+        for (const Cell& c : cells) {
+            Rect b;
+            if (!mason_detail::coursed(c) || !mason_detail::is_rect(c.polygon, b) || b.y0 < 40 ||
+                b.y1 > 115 || b.x1 < 210 || b.x0 > 300)
+                continue;
+            const double q = (kCm.length + kCm.mortar) / 4;
+            const double k = std::round((b.width() + kCm.mortar) / q);
+            odd += std::abs(b.width() - (k * q - kCm.mortar)) > kCm.tolerance / 3;
+            if (std::abs(b.x0 - 210) < 2 * kCm.mortar) {
+                EXPECT_NEAR(b.x0, 210 + kCm.mortar / 2, 1e-6);
+                ++beside;
+            }
+        }
+        EXPECT_LE(odd, left);
+        EXPECT_GE(beside, 8);
+    }
+}
+
 // A level top 2.2 cm past whole courses over a window head: one cut course under it, not two,
 // the whole courses below closing their joints (within the tolerance) so it is half a course.
 TEST(CellsUnseen, OneCutCourseUnderTheTop) {
-    const Facade f = Facade::from_svg_string(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 300 200\">"
-        "<rect id=\"w\" class=\"wall\" width=\"300\" height=\"200\"/>"
-        "<rect id=\"win\" class=\"window\" x=\"100\" y=\"47.2\" width=\"60\" "
-        "height=\"60\"/></svg>",
-        "top.svg");
+    const Facade f = one_window(300, 200, {100, 47.2, 160, 107.2}, "top.svg");
     Options o = centimetres();
     for (Bond bond : {Bond::running, Bond::flemish}) {
         o.bond = bond;
@@ -752,6 +814,33 @@ TEST(CellsUnseen, FailsOnBrokenLayouts) {
         EXPECT_FALSE(faults(f, cut, kCm, nullptr, tight).empty());
         EXPECT_GE(mason_check(f, moved, kCm).joints_off, 1);
         EXPECT_FALSE(faults(f, moved, kCm, nullptr, tight).empty());
+    }
+    // Odd pieces the geometry does not force: a whole stretcher split into pieces of 12 and 8.5
+    // cm with a joint between, in a course whose run fits whole bricks as before.
+    {
+        const MasonReport before = mason_check(f, t.cells, kCm);
+        Known tight = k;
+        tight.odd_pieces = before.odd_pieces + 2;
+        tight.unforced_odd = before.unforced_odd;
+        ASSERT_TRUE(faults(f, t.cells, kCm, nullptr, tight).empty());
+        std::vector<Cell> split = t.cells;
+        for (std::size_t i = 0; i < split.size(); ++i) {
+            Rect b;
+            if (split[i].generator != "bricks" || !mason_detail::is_rect(split[i].polygon, b) ||
+                std::abs(b.width() - 21.5) > 1e-6 || b.x0 < 100)
+                continue;
+            Cell rest = split[i];
+            for (Point& p : split[i].polygon)
+                if (p.x > b.center().x) p.x = b.x0 + 12;
+            for (Point& p : rest.polygon)
+                if (p.x < b.center().x) p.x = b.x0 + 13;
+            split.push_back(rest);
+            break;
+        }
+        const MasonReport after = mason_check(f, split, kCm);
+        EXPECT_EQ(after.odd_pieces, before.odd_pieces + 2);
+        EXPECT_GE(after.unforced_odd, before.unforced_odd + 1);
+        EXPECT_FALSE(faults(f, split, kCm, nullptr, tight).empty());
     }
     // A stretched brick: a stretcher drawn 2 mm long.
     {
