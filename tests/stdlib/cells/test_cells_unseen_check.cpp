@@ -241,7 +241,7 @@ Known known(const std::string& name, bool stone) {
     static const std::map<std::string, long> unforced{
         {"gable-pointed-end", 17}, {"segmental-ends", 51}, {"wide-opening", 19},
         {"oculus-top", 35},        {"door-past-end", 17},  {"ashlar-arches", 47},
-        {"off-gauge-heads", 29}};
+        {"off-gauge-heads", 29},   {"lancet-arcade", 119}, {"narrow-pier", 27}};
     if (auto it = unforced.find(name); it != unforced.end()) k.unforced_odd = it->second;
     return k;
 }
