@@ -8,6 +8,7 @@
 
 #include "brick_layout.hpp"
 #include "context_data.hpp"
+#include "lintel.hpp"
 #include "ring_check.hpp"
 #include "voussoirs.hpp"
 
@@ -39,7 +40,8 @@ bool apex(const Facade& f, const Corner& k) {
     return ua.dot(ub) <= std::cos(1.0 * M_PI / 180);
 }
 
-// Even-odd: inside the face's flattened boundary (its outline and the openings in it).
+}  // namespace
+
 bool in_face(const Face& face, Point p) {
     bool in = false;
     for (const std::vector<Point>& loop : face.loops)
@@ -50,8 +52,6 @@ bool in_face(const Face& face, Point p) {
                 in = !in;
     return in;
 }
-
-}  // namespace
 
 const Edge* plumb_jamb(const Facade& f, const Edge& arc, int corner) {
     if (corner < 0) return nullptr;
@@ -119,6 +119,34 @@ bool ring_fits(const Facade& f, const Edge& edge, double depth) {
         if (!in_face(face, {p.x + (x - p.x) * 0.99, p.y - 1e-6 * depth})) return false;
     }
     return true;
+}
+
+const Edge* nearest_edge(const Facade& f, int face, Point p) {
+    const Edge* nearest = nullptr;
+    double best = 1e300;
+    for (int j : f.faces()[static_cast<std::size_t>(face)].edges) {
+        const Edge& o = f.edges()[static_cast<std::size_t>(j)];
+        const double d = distance(o.at(o.project(p)), p);
+        if (d < best) best = d, nearest = &o;
+    }
+    return nearest;
+}
+
+const Edge* opening_in_ring(const Facade& f, const Edge& edge, double depth) {
+    if (!edge.arc) return nullptr;
+    const Face& face = f.faces()[static_cast<std::size_t>(edge.face)];
+    const int n = std::clamp(static_cast<int>(std::ceil(edge.length / (0.1 * depth))), 8, 512);
+    for (int i = 0; i <= n; ++i) {
+        const double s = edge.length * i / n;
+        for (double k : {0.5, 1 - 1e-6}) {
+            const Point p = edge.at(s) + edge.inward(s) * (depth * k);
+            if (in_face(face, p)) continue;
+            // Out of the wall: through the wall's end or another opening.
+            const Edge* nearest = nearest_edge(f, edge.face, p);
+            if (nearest && nearest->opening && nearest->labels != edge.labels) return nearest;
+        }
+    }
+    return nullptr;
 }
 
 std::vector<const Edge*> arch_arcs(const Facade& f, const Edge& e) {
@@ -357,9 +385,15 @@ namespace {
 // The depth the ring of arc `e` is laid at: by the wall, and half a brick where it would meet
 // another ring or a lintel (plan_rings, made once per depth).
 double planned_depth(Context& c, const Edge& e, double depth) {
-    const detail::RingPlan& plan = c.data().layout<detail::RingPlan>(
-        "arch:rings:" + std::to_string(depth),
-        [&] { return detail::plan_rings(c.facade(), c.options(), depth); });
+    const detail::RingPlan& plan =
+        c.data().layout<detail::RingPlan>("arch:rings:" + std::to_string(depth), [&] {
+            if (c.options().bond == Bond::ashlar)
+                return detail::plan_rings(c.facade(), c.options(), depth);
+            // Brick lintels as the courses lay them: their real bearings and courses.
+            return detail::plan_rings(
+                c.facade(), c.options(), depth,
+                [&c](const Edge& head, Rect& r) { return detail::laid_lintel(c, head, r); });
+        });
     auto it = plan.depth.find(detail::arch_key(c.facade(), e));
     return it != plan.depth.end() ? it->second
                                   : detail::ring_depth(c.facade(), e, c.options(), depth);

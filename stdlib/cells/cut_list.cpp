@@ -79,6 +79,29 @@ bool taper(const Facade& facade, const std::vector<Point>& polygon, double& intr
     return depth > 0;
 }
 
+// The same for a voussoir of a relieving arch, whose circle is no edge of the facade: its two
+// longest sides are its joints, their near ends the intrados.
+bool joint_taper(const std::vector<Point>& polygon, double& intrados, double& extrados,
+                 double& depth) {
+    const std::size_t n = polygon.size();
+    if (n < 4) return false;
+    std::size_t a = n, b = n;
+    auto side = [&](std::size_t i) { return distance(polygon[i], polygon[(i + 1) % n]); };
+    for (std::size_t i = 0; i < n; ++i)
+        if (a == n || side(i) > side(a))
+            b = a, a = i;
+        else if (b == n || side(i) > side(b))
+            b = i;
+    const Point p0 = polygon[a], p1 = polygon[(a + 1) % n];
+    const Point q0 = polygon[b], q1 = polygon[(b + 1) % n];
+    // Ends paired across the voussoir (not its diagonals): the pairing with the shorter sum.
+    double u = distance(p0, q0), v = distance(p1, q1);
+    if (distance(p0, q1) + distance(p1, q0) < u + v) u = distance(p0, q1), v = distance(p1, q0);
+    intrados = std::min(u, v), extrados = std::max(u, v);
+    depth = (side(a) + side(b)) / 2;
+    return depth > 0;
+}
+
 }  // namespace
 
 std::vector<CutListItem> cut_list(const Facade& facade, const std::vector<Cell>& cells,
@@ -109,6 +132,13 @@ std::vector<CutListItem> cut_list(const Facade& facade, const std::vector<Cell>&
             } else {
                 kind = "shaped cut";
             }
+        } else if (g == "relieving_arch") {
+            double in = 0, out = 0, depth = 0;
+            if (c.piece == "voussoir" && joint_taper(c.polygon, in, out, depth)) {
+                counts[{g, "voussoir", mm(std::max(in, out)), mm(depth), mm(in), mm(out)}] += 1;
+                continue;
+            }
+            kind = "skewback";
         } else if (!rect) {
             kind = "shaped cut";
         } else if (g == "bricks") {

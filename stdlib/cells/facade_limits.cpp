@@ -10,7 +10,9 @@
 #include <string>
 
 #include "facade_data.hpp"
+#include "relieving_arch.hpp"
 #include "ring_check.hpp"
+#include "voussoirs.hpp"
 
 namespace acanthus::cells::detail {
 
@@ -80,9 +82,7 @@ void check_limits(const Facade& facade, const Options& o) {
     std::map<std::string, Rect> boxes;
     for (const Edge& e : facade.edges()) {
         if (!e.opening) continue;
-        std::string names;
-        for (const std::string& l : e.labels) names += (names.empty() ? "" : " ") + l;
-        auto [it, fresh] = boxes.try_emplace(names, e.bounds);
+        auto [it, fresh] = boxes.try_emplace(names_of(e), e.bounds);
         Rect& b = it->second;
         if (!fresh)
             b = {std::min(b.x0, e.bounds.x0), std::min(b.y0, e.bounds.y0),
@@ -96,6 +96,30 @@ void check_limits(const Facade& facade, const Options& o) {
                 number(b.height()) +
                 ") is smaller than a tenth of a brick's face or narrower than a "
                 "joint: no brickwork can be cut round it; remove it or draw it to size");
+    // A relieving arch stands over a lintel: an opening labelled so needs a straight level head,
+    // wide enough that the arch rises a course over it.
+    std::map<std::string, std::pair<const Edge*, bool>> relief;  // a straight head, an arc
+    for (const Edge& e : facade.edges()) {
+        if (!e.opening || !relieving(e)) continue;
+        auto& [head, arc] = relief[names_of(e)];
+        if (e.arc) arc = true;
+        if (!e.arc && e.part == Part::top) head = &e;
+    }
+    for (const auto& [names, shape] : relief) {
+        const auto [head, arc] = shape;
+        if (!head || arc)
+            throw InputError(facade.name() + ": the opening \"" + names +
+                             "\" is labelled relieving but has " +
+                             (head ? "an arched head too" : "no straight head") +
+                             ": a relieving arch is turned over the lintel of a flat head; leave "
+                             "out the label relieving");
+        if (head->bounds.width() < relieving_least_span(o))
+            throw InputError(facade.name() + ": the opening \"" + names +
+                             "\" is labelled relieving but is " + number(head->bounds.width()) +
+                             " wide, under the " + number(relieving_least_span(o)) +
+                             " (six courses) a relieving arch needs to rise a course over its "
+                             "lintel; leave out the label relieving");
+    }
     // An arch needs wall beside its springing for its ring to bear on: where not even a
     // half-brick ring fits (an arched opening at the wall's very end), the opening is refused.
     const double ring =
@@ -105,8 +129,20 @@ void check_limits(const Facade& facade, const Options& o) {
         if (!e.arc || !e.opening) continue;
         auto it = rings.depth.find(arch_key(facade, e));
         if (it == rings.depth.end() || it->second > 0) continue;
-        std::string names;
-        for (const std::string& l : e.labels) names += (names.empty() ? "" : " ") + l;
+        const std::string names = names_of(e);
+        // Into another opening (two arches a few centimetres apart): both are named.
+        const double half = (o.brick_length + o.mortar) / 2;
+        const Edge* other = nullptr;
+        for (const Edge* a : arch_arcs(facade, e))
+            if (!other) other = opening_in_ring(facade, *a, half);
+        if (other)
+            throw InputError(facade.name() + ": the openings \"" + names + "\" and \"" +
+                             names_of(*other) +
+                             "\" are too close: the ring of the first's arch, even one half-brick "
+                             "ring (" +
+                             number(half) +
+                             " deep), would reach into the second; move them apart or give one a "
+                             "flat head");
         throw InputError(facade.name() + ": the opening \"" + names +
                          "\": the ring of its arch would reach past the wall, even one half-brick "
                          "ring (" +

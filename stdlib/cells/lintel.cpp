@@ -101,35 +101,41 @@ void set_lintel_rows(const Facade& facade, int face, const Options& o, BrickLayo
     }
 }
 
+bool laid_lintel(Context& c, const Edge& e, Rect& r, int* course) {
+    // On the grid the wall is laid on: the bricks' courses, or the ashlar's units in stone.
+    const Options& o = c.options();
+    const CourseGrid& grid = c.data().stone ? ashlar_grid(c, e.face) : brick_layout(c, e.face).grid;
+    const double unit = c.data().stone ? ashlar_unit(o) : o.brick_height;
+    // Bearing in quarter bricks; in stone, as many units as cover it.
+    int b = o.lintel_bearing;
+    if (c.data().stone)
+        b = std::max(1, static_cast<int>(std::ceil(
+                            b * (o.brick_length + o.mortar) / 4 / ashlar_unit(o) - 1e-9)));
+    int top = 0, row = 0, u0 = 0, u1 = 0;
+    if (!lintel_span(e, grid, unit, b, o.lintel_courses, top, row, u0, u1)) return false;
+    // Bonded into the courses (the framed tree): as long as the layout laid it.
+    if (!c.data().stone && c.data().lintels) {
+        const auto& spans = brick_layout(c, e.face).lintel_units;
+        if (auto it = spans.find(static_cast<int>(&e - c.facade().edges().data()));
+            it != spans.end())
+            u0 = it->second.first, u1 = it->second.second;
+    }
+    r = grid.cell(row, u0, u1);
+    r.y0 = grid.ys[static_cast<std::size_t>(top)];
+    if (course) *course = grid.course(row);
+    return true;
+}
+
 }  // namespace detail
 
 Generator lintel() {
     return [](const FeatureRef& f, Context& c) {
         const int head = detail::head_edge(c.facade(), f);
         if (head < 0) return;
-        const Edge& e = c.facade().edges()[static_cast<std::size_t>(head)];
-        // On the grid the wall is laid on: the bricks' courses, or the ashlar's units in stone.
-        const Options& o = c.options();
-        const detail::CourseGrid& grid =
-            c.data().stone ? detail::ashlar_grid(c, e.face) : detail::brick_layout(c, e.face).grid;
-        const double unit = c.data().stone ? detail::ashlar_unit(o) : o.brick_height;
-        // Bearing in quarter bricks; in stone, as many units as cover it.
-        int b = o.lintel_bearing;
-        if (c.data().stone)
-            b = std::max(1,
-                         static_cast<int>(std::ceil(
-                             b * (o.brick_length + o.mortar) / 4 / detail::ashlar_unit(o) - 1e-9)));
-        int top = 0, row = 0, u0 = 0, u1 = 0;
-        if (!detail::lintel_span(e, grid, unit, b, o.lintel_courses, top, row, u0, u1)) return;
-        // Bonded into the courses (the framed tree): as long as the layout laid it.
-        if (!c.data().stone && c.data().lintels) {
-            const auto& spans = detail::brick_layout(c, e.face).lintel_units;
-            if (auto it = spans.find(head); it != spans.end())
-                u0 = it->second.first, u1 = it->second.second;
-        }
-        Rect r = grid.cell(row, u0, u1);
-        r.y0 = grid.ys[static_cast<std::size_t>(top)];
-        c.place(detail::polygon_of(r), grid.course(row));
+        Rect r;
+        int course = 0;
+        if (detail::laid_lintel(c, c.facade().edges()[static_cast<std::size_t>(head)], r, &course))
+            c.place(detail::polygon_of(r), course);
     };
 }
 

@@ -18,4 +18,9 @@ struct BrickLayout;
 // Puts a fixed piece (Piece::head) over every straight head's lintel in each row of `face`.
 void set_lintel_rows(const Facade& facade, int face, const Options& options, BrickLayout& layout);
 
+// The rectangle the lintel over straight head `e` is laid as (and its course), as the lintel
+// generator lays it: on the brick layout's courses with its bearings (the framed tree's moves
+// too), or on the ashlar grid in stone; false where none fits.
+bool laid_lintel(Context& c, const Edge& e, Rect& r, int* course = nullptr);
+
 }  // namespace acanthus::cells::detail

@@ -49,13 +49,13 @@ bool inside(const std::vector<Point>& poly, Point p, double tol) {
     return in;
 }
 
+}  // namespace
+
 std::string names_of(const Edge& e) {
     std::string names;
     for (const std::string& l : e.labels) names += (names.empty() ? "" : " ") + l;
     return names;
 }
-
-}  // namespace
 
 bool polygons_meet(const std::vector<Point>& a, const std::vector<Point>& b) {
     if (a.size() < 3 || b.size() < 3) return false;
@@ -164,7 +164,7 @@ int arch_key(const Facade& f, const Edge& e) {
     return key;
 }
 
-RingPlan plan_rings(const Facade& f, const Options& o, double depth) {
+RingPlan plan_rings(const Facade& f, const Options& o, double depth, const LintelRect& laid) {
     struct Item {
         int key = -1;  // an arch's key, or -1: a lintel
         const Edge* edge = nullptr;
@@ -192,7 +192,15 @@ RingPlan plan_rings(const Facade& f, const Options& o, double depth) {
                              .first;
                 grid = &it->second;
             }
-            items.push_back({-1, &e, {}, 0, lintel_shape(e, o, grid), false});
+            RingShape shape;
+            Rect r;
+            if (!grid && laid) {
+                if (laid(e, r))
+                    shape.parts.push_back({{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}});
+                shape.box = r;
+            } else
+                shape = lintel_shape(e, o, grid);
+            items.push_back({-1, &e, {}, 0, std::move(shape), false});
         }
     }
     RingPlan plan;

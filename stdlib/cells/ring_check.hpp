@@ -5,6 +5,7 @@
 #pragma once
 
 #include <acanthus/stdlib/cells.hpp>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -42,9 +43,17 @@ struct RingPlan {
     std::string clash_a, clash_b;
 };
 
+// Where the lintel over a straight head is laid, once the courses are known (false: none).
+using LintelRect = std::function<bool(const Edge& head, Rect& out)>;
+
 // The rings of every arched opening of `facade`, `depth` deep where they fit: an arch whose
-// ring would meet another's, or a lintel's, is turned as one half-brick ring.
-RingPlan plan_rings(const Facade& facade, const Options& options, double depth);
+// ring would meet another's, or a lintel's, is turned as one half-brick ring. A brick lintel
+// takes the rectangle `laid` gives where given (the one laid), else the most it may take.
+RingPlan plan_rings(const Facade& facade, const Options& options, double depth,
+                    const LintelRect& laid = {});
+
+// An opening's labels as messages name it ("window arch w1").
+std::string names_of(const Edge& e);
 
 // The key plan_rings() files the arch of arc edge `e` under.
 int arch_key(const Facade& facade, const Edge& e);

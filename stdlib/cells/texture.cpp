@@ -12,6 +12,8 @@
 #include "ashlar_rules.hpp"
 #include "context_data.hpp"
 #include "facade_limits.hpp"
+#include "head_edge.hpp"
+#include "relieving_arch.hpp"
 
 namespace acanthus::cells {
 
@@ -144,6 +146,11 @@ Texture texture(const Facade& facade, const Node& tree, const Options& options,
     corners(true);
     const long arc_corners = laid();
     edges(true);
+    // Relieving arches over their lintels next, before any walling or other head near them.
+    for (std::size_t i = 0; i < facade.edges().size(); ++i)
+        if (detail::head_edge(facade, {FeatureKind::edge, static_cast<int>(i)}) >= 0 &&
+            detail::relieving(facade.edges()[i]))
+            tree({FeatureKind::edge, static_cast<int>(i)}, context);
     const long arc_edges = laid() - arc_corners;
     corners(false);
     out.stats.corners = laid() - arc_edges;

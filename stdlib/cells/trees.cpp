@@ -38,7 +38,9 @@ Node brick_tree() {
         else
             lin(f, c);
     });
-    Node openings = by_part(head, by_kind(wb, wb, b), b);
+    // Labelled `relieving`: a lintel at any span, a relieving arch over it.
+    Node relief = by_label("relieving", generator("relieving_arch", relieving_arch(), lin), head);
+    Node openings = by_part(relief, by_kind(wb, wb, b), b);
     Node features = Node([=](const FeatureRef& f, Context& c) {
         if (on_opening(f, c))
             openings(f, c);
@@ -52,7 +54,8 @@ Node framed_tree() {
     Node b = generator("bricks", bricks());
     Node lin = generator("lintel", lintel());
     Node q = generator("quoins", quoins());
-    Node openings = by_part(by_curve(b, lin), generator("window_bottom", window_bottom()), q);
+    Node relief = by_label("relieving", generator("relieving_arch", relieving_arch(), lin), lin);
+    Node openings = by_part(by_curve(b, relief), generator("window_bottom", window_bottom()), q);
     Node features = Node([=](const FeatureRef& f, Context& c) {
         if (on_opening(f, c))
             openings(f, c);
@@ -78,7 +81,8 @@ Node ashlar_tree() {
     Node wb = generator("window_bottom", sill_stones());
     Node lin = generator("lintel", lintel());
     // Openings: a lintel over a straight head (its corners lay it first), sill stones under.
-    Node openings = by_part(lin, by_kind(wb, wb, a), a);
+    Node relief = by_label("relieving", generator("relieving_arch", relieving_arch(), lin), lin);
+    Node openings = by_part(relief, by_kind(wb, wb, a), a);
     Node features = Node([=](const FeatureRef& f, Context& c) {
         if (on_opening(f, c))
             openings(f, c);

@@ -22,6 +22,13 @@ const Edge* plumb_jamb(const Facade& facade, const Edge& arc, int corner);
 std::vector<const Edge*> arch_arcs(const Facade& facade, const Edge& e);
 // Whether a ring `depth` deep round arc `edge`, with its skewbacks, lies in the wall.
 bool ring_fits(const Facade& facade, const Edge& edge, double depth);
+// Even-odd: inside the face's flattened boundary (its outline and the openings in it).
+bool in_face(const Face& face, Point p);
+// The edge of face `face`'s outline (the wall's or an opening's) nearest to `p`.
+const Edge* nearest_edge(const Facade& facade, int face, Point p);
+// Another opening a ring `depth` deep round arc `edge` reaches into, if any (else the ring fits
+// or reaches past the wall's outline).
+const Edge* opening_in_ring(const Facade& facade, const Edge& edge, double depth);
 // The depth the ring of the arch `edge` belongs to (with a pointed arch's other half) is turned
 // in, by the wall alone: `depth` where it fits, else a half brick (one half-brick ring) where
 // that fits, else 0. Other rings and lintels near it: plan_rings() (ring_check.hpp).

@@ -96,6 +96,15 @@ struct MasonReport {
     long lintels = 0;
     long short_bearings = 0;
     double shortest_bearing = 1e9;
+    // Relieving arches (generator "relieving_arch"), per opening: voussoirs whole (every vertex
+    // on the intrados or the extrados, found from the voussoirs alone, half a brick apart), an
+    // odd count with a key over the crown, a skewback at each springing.
+    long relieving_arches = 0;
+    long relieving_voussoirs = 0;
+    long relieving_clipped = 0;
+    long relieving_even = 0;       // arches with an even count of voussoirs
+    long relieving_open = 0;       // arches with no voussoir over the crown
+    long relieving_skewbacks = 0;  // arches without two skewbacks
     long openings = 0;
     long openings_without_head = 0;
     std::vector<std::string> headless;
@@ -137,9 +146,37 @@ inline bool rectilinear(const std::vector<Point>& poly) {
 }
 
 inline bool is_head(const std::string& generator) {
-    static const std::set<std::string> heads{"lintel", "arch_stones", "arch_bricks",
-                                             "soldier_course", "flat_arch"};
+    static const std::set<std::string> heads{"lintel",         "arch_stones", "arch_bricks",
+                                             "soldier_course", "flat_arch",   "relieving_arch"};
     return heads.count(generator) > 0;
+}
+
+// The circle nearest to `pts` in the algebraic sense (Kasa's fit): exact for points on one
+// circle.
+inline bool fit_circle(const std::vector<Point>& pts, Point& center, double& radius) {
+    // Least squares of x^2 + y^2 + D x + E y + F = 0: the normal equations, by Cramer's rule.
+    double m[3][4] = {};
+    for (Point p : pts) {
+        const double row[3] = {p.x, p.y, 1}, rhs = -(p.x * p.x + p.y * p.y);
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) m[i][j] += row[i] * row[j];
+            m[i][3] += row[i] * rhs;
+        }
+    }
+    auto det = [&](int col) {
+        double a[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) a[i][j] = m[i][j == col ? 3 : j];
+        return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+               a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    };
+    const double d = det(-1);
+    if (pts.size() < 3 || std::abs(d) < 1e-300) return false;
+    const double D = det(0) / d, E = det(1) / d, F = det(2) / d;
+    center = {-D / 2, -E / 2};
+    radius = std::sqrt(std::max(0.0, center.x * center.x + center.y * center.y - F));
+    return true;
 }
 
 }  // namespace mason_detail
@@ -432,15 +469,23 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             return false;
         };
         reveal[0] = plumb(b.x0, b.y0, b.y1), reveal[1] = plumb(b.x1, b.y0, b.y1);
-        // The head of an opening or an arch's voussoir at x (walling is cut to it).
+        // The head of an opening, an arch's voussoir or a skewback at x (walling is cut to it):
+        // by its extent, or by a plumb side over the rows (a skewback stepped with the bond has
+        // steps inside its extent).
         auto head_at = [&](double x, double y0, double y1) {
+            const double by = near + s.mortar;
             for (const Cell& d : cells) {
                 if (!mason_detail::is_head(d.generator)) continue;
                 Rect n;
-                if (!is_rect(d.polygon, n)) n = extent(d.polygon);  // a voussoir
+                if (!is_rect(d.polygon, n)) n = extent(d.polygon);  // a voussoir or skewback
                 if (n.y0 > y1 || n.y1 < y0) continue;
-                if (std::abs(n.x1 - x) < near + s.mortar || std::abs(n.x0 - x) < near + s.mortar)
-                    return true;
+                if (std::abs(n.x1 - x) < by || std::abs(n.x0 - x) < by) return true;
+                for (std::size_t i = 0, j = d.polygon.size() - 1; i < d.polygon.size(); j = i++) {
+                    const Point p = d.polygon[j], q = d.polygon[i];
+                    if (std::abs(p.x - q.x) < 1e-6 && std::abs(p.x - x) < by &&
+                        std::min(p.y, q.y) < y1 && std::max(p.y, q.y) > y0)
+                        return true;
+                }
             }
             return false;
         };
@@ -498,6 +543,59 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             r.short_bearings += bearing < 100.0 / 215.0 * s.length - 1e-6;
         }
     }
+    // Relieving arches: the intrados fitted to the inner vertices of all voussoirs of one arch
+    // (split from the outer by a first fit to all of them).
+    std::map<std::string, std::vector<const Cell*>> relief_voussoirs;
+    std::map<std::string, int> relief_skewbacks;
+    for (const Cell& c : cells) {
+        if (c.generator != "relieving_arch") continue;
+        if (c.piece == "skewback")
+            ++relief_skewbacks[c.label];
+        else
+            relief_voussoirs[c.label].push_back(&c);
+    }
+    for (const auto& [label, vs] : relief_voussoirs) {
+        ++r.relieving_arches;
+        r.relieving_voussoirs += static_cast<long>(vs.size());
+        r.relieving_even += vs.size() % 2 == 0;
+        r.relieving_skewbacks += relief_skewbacks[label] != 2;
+        std::vector<Point> all;
+        for (const Cell* c : vs) all.insert(all.end(), c->polygon.begin(), c->polygon.end());
+        Point o;
+        double rad = 0;
+        if (!fit_circle(all, o, rad)) {
+            r.relieving_clipped += static_cast<long>(vs.size());
+            continue;
+        }
+        // Fitted again to the inner vertices near it, so that a notched voussoir's vertices do
+        // not pull the circle off the others.
+        const double tol = 0.25 * s.mortar + 1e-6, depth = (s.length - s.mortar) / 2;
+        bool fitted = true;
+        for (int pass = 0; pass < 3 && fitted; ++pass) {
+            std::vector<Point> inner;
+            for (Point p : all) {
+                const double d = std::hypot(p.x - o.x, p.y - o.y);
+                if (pass == 0 ? d < rad : std::abs(d - rad) < tol) inner.push_back(p);
+            }
+            fitted = fit_circle(inner, o, rad);
+        }
+        if (!fitted) {
+            r.relieving_clipped += static_cast<long>(vs.size());
+            continue;
+        }
+        for (const Cell* c : vs) {
+            bool whole = true;
+            for (Point p : c->polygon) {
+                const double d = std::hypot(p.x - o.x, p.y - o.y);
+                whole &= std::abs(d - rad) < tol || std::abs(d - rad - depth) < tol;
+            }
+            r.relieving_clipped += !whole;
+        }
+        const Point probe{o.x, o.y - rad - 0.25 * s.height};
+        bool key = false;
+        for (const Cell* c : vs) key |= contains(c->polygon, probe);
+        r.relieving_open += !key;
+    }
     // Heads: above the middle of every top edge of an opening, a lintel, arch or soldier cell.
     std::set<std::string> seen, headless;
     for (const auto& e : facade.edges()) {
@@ -528,7 +626,10 @@ inline std::map<std::string, acanthus::cells::Node> mason_trees() {
     using namespace acanthus::cells;
     Node b = generator("bricks", bricks());
     Node wb = generator("window_bottom", window_bottom());
-    Node sills = by_part(generator("soldier_course", soldier_course()), wb, b);
+    Node heads = by_label(
+        "relieving", generator("relieving_arch", relieving_arch(), generator("lintel", lintel())),
+        generator("soldier_course", soldier_course()));
+    Node sills = by_part(heads, wb, b);
     Node rowlock = by_kind(by_curve(generator("arch_bricks", arch_bricks()), sills),
                            by_curve(generator("arch_bricks", arch_bricks()), sills), b);
     return {{"bricks", brick_tree()}, {"framed", framed_tree()}, {"rowlock", rowlock}};
@@ -548,7 +649,11 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << " runs " << r.unit_square_runs << ", king closers " << r.king_closers
                << " misplaced " << r.king_closers_misplaced << ", odd pieces " << r.odd_pieces
                << " (not forced " << r.unforced_odd << ", forced runs " << r.forced_runs << ")"
-               << ", head joints off " << r.joints_off << " (max " << r.joint_deviation << ")";
+               << ", head joints off " << r.joints_off << " (max " << r.joint_deviation << ")"
+               << ", relieving arches " << r.relieving_arches << " (voussoirs "
+               << r.relieving_voussoirs << ", clipped " << r.relieving_clipped << ", even "
+               << r.relieving_even << ", open " << r.relieving_open << ", skewbacks wrong "
+               << r.relieving_skewbacks << ")";
 }
 
 }  // namespace cells_test

@@ -313,6 +313,9 @@ Generator ashlar();       // random ashlar on the grid tool, seeded
 Generator lintel();       // one stone over an opening, past each jamb
 // Bricks on end over an opening's straight head, a brick's length high, from jamb to jamb.
 Generator soldier_course();
+// Over the lintel of an opening labelled `relieving`: a segmental rowlock ring springing beyond
+// the lintel's ends from skewbacks, an odd count with a key at the crown (docs/stdlib/cells.md).
+Generator relieving_arch();
 Generator quoins();       // long and short stones alternating up the sides
 Generator sill_stones();  // window bottom of a stone wall: the ashlar row under each sill
 
