@@ -1,8 +1,8 @@
 // Relieving (discharging) arches: over the lintel of an opening labelled `relieving`, a segmental
-// rowlock ring (half a brick deep) springing a quarter brick beyond the lintel's ends from
-// skewbacks on the course line of its top, set out from the crown with an odd count and a key.
-// Laid before the walling (texture() lays relieving heads right after the arches), so the
-// tympanum between lintel and ring and the walling over it are cut to the ring.
+// rowlock ring (half a brick deep; in stone walls, of arch stones) springing a quarter brick beyond
+// the lintel's ends from skewbacks on the course line of its top, set out from the crown with an
+// odd count and a key. Laid before the walling (texture() lays relieving heads right after the
+// arches), so the tympanum between lintel and ring and the walling over it are cut to the ring.
 #include "relieving_arch.hpp"
 
 #include <acanthus/error.hpp>
@@ -38,17 +38,23 @@ struct ReliefPieces {
     std::vector<std::vector<Point>> voussoirs, skewbacks;
 };
 
-ReliefPieces set_out(const Rect& lintel, const Options& o, const CourseGrid& grid) {
+// `stone`: in a stone wall the ring is of arch stones (Options::arch_depth deep,
+// Options::voussoir_width at the intrados), in brick a rowlock.
+ReliefPieces set_out(const Rect& lintel, const Options& o, const CourseGrid& grid, bool stone) {
     const double quarter = (o.brick_length + o.mortar) / 4;
     const double xl = lintel.x0 - quarter, xr = lintel.x1 + quarter, y = lintel.y0;
     // A segmental ring rising a sixth of its span: the intrados through both springings.
     const double span = xr - xl, rise = span / 6;
     const double radius = (span * span / 4 + rise * rise) / (2 * rise);
     const Point center{(xl + xr) / 2, y + radius - rise};
-    const double depth = (o.brick_length + o.mortar) / 2;  // a rowlock: a header on edge
+    const double depth = !stone             ? (o.brick_length + o.mortar) / 2  // a header on edge
+                         : o.arch_depth > 0 ? o.arch_depth
+                                            : o.brick_length + o.mortar;
     const double half = std::asin(std::min(1.0, span / 2 / radius));
     // An odd count of voussoirs a course wide at the intrados: the middle one the key.
-    const double pitch = o.brick_height + o.mortar;
+    const double pitch = !stone                 ? o.brick_height + o.mortar
+                         : o.voussoir_width > 0 ? o.voussoir_width
+                                                : 2 * (o.brick_height + o.mortar);
     const double fit = 2 * half * radius / pitch;
     int n = std::max(3, static_cast<int>(std::lround(fit)));
     if (n % 2 == 0) n += fit > n ? 1 : -1;
@@ -148,7 +154,8 @@ Generator relieving_arch() {
         if (!detail::laid_lintel(c, e, lintel)) return;
         const detail::CourseGrid& grid =
             c.data().stone ? detail::ashlar_grid(c, e.face) : detail::brick_layout(c, e.face).grid;
-        const detail::ReliefPieces pieces = detail::set_out(lintel, c.options(), grid);
+        const detail::ReliefPieces pieces =
+            detail::set_out(lintel, c.options(), grid, c.data().stone);
         detail::check_room(c, e, pieces);
         auto lay = [&](const std::vector<Point>& poly, const char* piece) {
             const int n = c.place(poly);

@@ -543,8 +543,8 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             r.short_bearings += bearing < 100.0 / 215.0 * s.length - 1e-6;
         }
     }
-    // Relieving arches: the intrados fitted to the inner vertices of all voussoirs of one arch
-    // (split from the outer by a first fit to all of them).
+    // Relieving arches: the intrados fitted to the inner vertices of all voussoirs of one arch,
+    // found from the voussoirs alone.
     std::map<std::string, std::vector<const Cell*>> relief_voussoirs;
     std::map<std::string, int> relief_skewbacks;
     for (const Cell& c : cells) {
@@ -561,15 +561,50 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         r.relieving_skewbacks += relief_skewbacks[label] != 2;
         std::vector<Point> all;
         for (const Cell* c : vs) all.insert(all.end(), c->polygon.begin(), c->polygon.end());
-        Point o;
-        double rad = 0;
-        if (!fit_circle(all, o, rad)) {
+        // A first centre where the springing joints meet: the outer of the two longest sides of
+        // the leftmost and of the rightmost voussoir (each a half joint off its radial line, so
+        // the centre is off by under a joint; a shallow arch's band fits no circle well).
+        auto springing_joint = [&](bool right, Point& a, Point& b) {
+            const Cell* end = vs.front();
+            for (const Cell* c : vs)
+                if ((extent(c->polygon).center().x > extent(end->polygon).center().x) == right)
+                    end = c;
+            const auto& poly = end->polygon;
+            const std::size_t n = poly.size();
+            auto side = [&](std::size_t i) {
+                return std::hypot(poly[(i + 1) % n].x - poly[i].x, poly[(i + 1) % n].y - poly[i].y);
+            };
+            std::size_t s1 = 0, s2 = 1 % n;
+            if (side(s2) > side(s1)) std::swap(s1, s2);
+            for (std::size_t i = 2; i < n; ++i)
+                if (side(i) > side(s1))
+                    s2 = s1, s1 = i;
+                else if (side(i) > side(s2))
+                    s2 = i;
+            auto mid_x = [&](std::size_t i) { return (poly[i].x + poly[(i + 1) % n].x) / 2; };
+            const std::size_t k = (mid_x(s1) > mid_x(s2)) == right ? s1 : s2;
+            a = poly[k], b = poly[(k + 1) % n];
+        };
+        Point a1, b1, a2, b2, o;
+        springing_joint(false, a1, b1);
+        springing_joint(true, a2, b2);
+        const double den = (b1.x - a1.x) * (b2.y - a2.y) - (b1.y - a1.y) * (b2.x - a2.x);
+        if (vs.size() < 2 || std::abs(den) < 1e-12) {
             r.relieving_clipped += static_cast<long>(vs.size());
             continue;
         }
-        // Fitted again to the inner vertices near it, so that a notched voussoir's vertices do
-        // not pull the circle off the others.
-        const double tol = 0.25 * s.mortar + 1e-6, depth = (s.length - s.mortar) / 2;
+        const double t = ((a2.x - a1.x) * (b2.y - a2.y) - (a2.y - a1.y) * (b2.x - a2.x)) / den;
+        o = {a1.x + t * (b1.x - a1.x), a1.y + t * (b1.y - a1.y)};
+        double lo = 1e300, hi = 0;
+        for (Point p : all) {
+            const double d = std::hypot(p.x - o.x, p.y - o.y);
+            lo = std::min(lo, d), hi = std::max(hi, d);
+        }
+        // Then the circle through the inner vertices, fitted again to those near it so that a
+        // notched voussoir's vertices do not pull it off the others.
+        const double tol = 0.25 * s.mortar + 1e-6,
+                     depth = s.stone ? s.length : (s.length - s.mortar) / 2;
+        double rad = (lo + hi) / 2;
         bool fitted = true;
         for (int pass = 0; pass < 3 && fitted; ++pass) {
             std::vector<Point> inner;
