@@ -102,21 +102,28 @@ TEST(CellsArchRings, RingsThatWouldMeetAreHalfBrickRings) {
     }
 }
 
+namespace {
+
+// texture() refuses `f` with an InputError whose message holds `words`.
+void expect_refused(const Facade& f, const std::string& words) {
+    try {
+        texture(f, brick_tree(), centimetres(), 1);
+        ADD_FAILURE() << "laid, not refused: " << words;
+    } catch (const acanthus::InputError& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find(words), std::string::npos) << m;
+    }
+}
+
+}  // namespace
+
 TEST(CellsArchRings, RingsThatMeetEvenHalvedAreRefused) {
     const Facade f = two_arches(15);
     const detail::RingPlan p = detail::plan_rings(f, centimetres(), 22.5);
     EXPECT_EQ(p.clash_a, "window arch a");
     EXPECT_EQ(p.clash_b, "window arch b");
-    try {
-        texture(f, brick_tree(), centimetres(), 1);
-        FAIL() << "two rings 15 cm apart laid";
-    } catch (const acanthus::InputError& e) {
-        const std::string m = e.what();
-        EXPECT_NE(m.find("two.svg: the openings \"window arch a\" and \"window arch b\" are too "
-                         "close"),
-                  std::string::npos)
-            << m;
-    }
+    expect_refused(f,
+                   "two.svg: the openings \"window arch a\" and \"window arch b\" are too close");
 }
 
 // A segmental window springing 20 cm from a small flat-headed one (the corner shop's): the
@@ -143,16 +150,8 @@ TEST(CellsArchRings, ALintelsBearingIsClearOfTheRing) {
 // Two round heads 3 cm apart: not even half-brick rings fit between them, and the message names
 // both openings (it named only the first).
 TEST(CellsArchRings, ArchesAFewCentimetresApartAreBothNamed) {
-    try {
-        texture(two_arches(3), brick_tree(), centimetres(), 1);
-        FAIL() << "two rings 3 cm apart laid";
-    } catch (const acanthus::InputError& e) {
-        const std::string m = e.what();
-        EXPECT_NE(m.find("two.svg: the openings \"window arch a\" and \"window arch b\" are too "
-                         "close"),
-                  std::string::npos)
-            << m;
-    }
+    expect_refused(two_arches(3),
+                   "two.svg: the openings \"window arch a\" and \"window arch b\" are too close");
 }
 
 // A round head 20.5 cm from a wide flat head: the most a lintel there may take (its bearing
@@ -270,18 +269,12 @@ TEST(CellsArchRings, FindsABrokenRelievingArch) {
 // wall's top.
 TEST(CellsArchRings, RelievingLabelsRefused) {
     auto refused = [](const std::string& shapes, const std::string& words) {
-        const Facade f = Facade::from_svg_string(
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 320 260\">"
-            "<rect id=\"w\" class=\"wall\" width=\"320\" height=\"260\"/>" +
-                shapes + "</svg>",
-            "bad.svg");
-        try {
-            texture(f, brick_tree(), centimetres(), 1);
-            ADD_FAILURE() << "laid: " << shapes;
-        } catch (const acanthus::InputError& e) {
-            const std::string m = e.what();
-            EXPECT_NE(m.find(words), std::string::npos) << m;
-        }
+        expect_refused(Facade::from_svg_string(
+                           "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 320 260\">"
+                           "<rect id=\"w\" class=\"wall\" width=\"320\" height=\"260\"/>" +
+                               shapes + "</svg>",
+                           "bad.svg"),
+                       words);
     };
     refused("<circle id=\"eye\" class=\"window relieving\" cx=\"160\" cy=\"100\" r=\"30\"/>",
             "bad.svg: the opening \"window relieving eye\" is labelled relieving but has no "
