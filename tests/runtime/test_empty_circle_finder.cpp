@@ -328,3 +328,23 @@ TEST(EmptyCircleFinder, LazyFieldLeavingOutTilesFarFromTheCentresMatchesScan) {
         }
     }
 }
+
+// nonzero_tiles(): a tile is marked just when a byte of it is non-zero, for widths and heights
+// that are not multiples of 8 and bytes other than 1.
+TEST(EmptyCircleFinder, NonzeroTilesMarkTheTilesHoldingANonzeroByte) {
+    acanthus::Random rng(5);
+    for (const int w : {1, 7, 8, 9, 70})
+        for (const int h : {1, 8, 13}) {
+            std::vector<std::uint8_t> bytes(static_cast<std::size_t>(w) * h, 0);
+            for (int k = 0; k < 3; ++k)
+                bytes[static_cast<std::size_t>(rng.uniform_int(0, w * h - 1))] =
+                    static_cast<std::uint8_t>(rng.uniform_int(1, 255));
+            const int tw = (w + 7) / 8, th = (h + 7) / 8;
+            std::vector<std::uint8_t> want(static_cast<std::size_t>(tw) * th, 0);
+            for (int j = 0; j < h; ++j)
+                for (int i = 0; i < w; ++i)
+                    if (bytes[static_cast<std::size_t>(j) * w + i])
+                        want[static_cast<std::size_t>(j / 8) * tw + i / 8] = 1;
+            EXPECT_EQ(acanthus::detail::nonzero_tiles(bytes, w, h), want) << w << " x " << h;
+        }
+}

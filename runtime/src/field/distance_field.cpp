@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <thread>
 #include <unordered_set>
@@ -26,40 +27,74 @@ using Spans = const int*;
 
 bool row_kept(Spans spans, int j) { return !spans || spans[2 * j] < spans[2 * j + 1]; }
 
+// The sites of a grid of bytes: those equal to `kind`, or with kind < 0 every non-zero byte.
+// Eight bytes of a row are tested at once (a row is mostly free, or outside the region
+// mostly boundary).
+struct ByteSites {
+    const std::uint8_t* bytes;
+    int w;
+    int kind;
+    bool operator()(int i, int j) const {
+        const std::uint8_t b = bytes[static_cast<std::size_t>(j) * w + i];
+        return kind < 0 ? b != 0 : b == kind;
+    }
+    // 0: none of columns [i, i + 8) of row j is a site, 1: all are, -1: some.
+    int eight(int i, int j) const {
+        constexpr std::uint64_t kOnes = 0x0101010101010101ull, kHighs = 0x8080808080808080ull;
+        std::uint64_t word;
+        std::memcpy(&word, bytes + static_cast<std::size_t>(j) * w + i, sizeof word);
+        // A byte of x is zero just where the test fails (non-sites).
+        const std::uint64_t x = kind < 0 ? word : word ^ (kOnes * static_cast<std::uint8_t>(kind));
+        const bool some_zero = ((x - kOnes) & ~x & kHighs) != 0;
+        if (kind < 0) return !some_zero ? 1 : x == 0 ? 0 : -1;
+        return x == 0 ? 1 : !some_zero ? 0 : -1;
+    }
+};
+
 // Phase 1 for the rows kept by `spans` alone (no feature transform): every row is read for its
 // sites, only the kept rows are written.
-template <class IsSite>
-void edt_columns_kept(int w, int h, int c0, int c1, IsSite is_site, std::int32_t* g, Spans spans,
-                      DistanceField::Scratch& s) {
-    s.last.assign(w, -1);
-    for (int j = 0; j < h; ++j) {
-        std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
-        const bool kept = row_kept(spans, j);
-        for (int i = c0; i < c1; ++i) {
-            if (is_site(i, j)) s.last[i] = j;
-            if (kept) gj[i] = s.last[i] >= 0 ? j - s.last[i] : kInfinite;
+void edt_columns_kept(int w, int h, int c0, int c1, const ByteSites& is_site, std::int32_t* g,
+                      Spans spans, DistanceField::Scratch& s) {
+    int* last = nullptr;
+    // last[i] = j for the sites of row j.
+    const auto note_sites = [&](int j) {
+        int i = c0;
+        for (; i + 8 <= c1; i += 8) {
+            const int all = is_site.eight(i, j);
+            if (all == 0) continue;
+            for (int k = i; k < i + 8; ++k)
+                if (all > 0 || is_site(k, j)) last[k] = j;
         }
+        for (; i < c1; ++i)
+            if (is_site(i, j)) last[i] = j;
+    };
+    s.last.assign(w, -1);
+    last = s.last.data();
+    for (int j = 0; j < h; ++j) {
+        note_sites(j);
+        if (!row_kept(spans, j)) continue;
+        std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
+        for (int i = c0; i < c1; ++i) gj[i] = last[i] >= 0 ? j - last[i] : kInfinite;
     }
     s.last.assign(w, -1);
+    last = s.last.data();
     for (int j = h - 1; j >= 0; --j) {
         std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
         if (!row_kept(spans, j)) {
-            for (int i = c0; i < c1; ++i)
-                if (is_site(i, j)) s.last[i] = j;
+            note_sites(j);
             continue;
         }
         for (int i = c0; i < c1; ++i) {
             if (gj[i] == 0)
-                s.last[i] = j;
-            else if (s.last[i] >= 0 && s.last[i] - j < gj[i])
-                gj[i] = s.last[i] - j;
+                last[i] = j;
+            else if (last[i] >= 0 && last[i] - j < gj[i])
+                gj[i] = last[i] - j;
         }
     }
 }
 
-template <class IsSite>
-void edt_columns(int w, int h, int c0, int c1, IsSite is_site, std::int32_t* g, std::int32_t* row,
-                 DistanceField::Scratch& s) {
+void edt_columns(int w, int h, int c0, int c1, const ByteSites& is_site, std::int32_t* g,
+                 std::int32_t* row, DistanceField::Scratch& s) {
     s.last.assign(w, -1);
     for (int j = 0; j < h; ++j) {
         std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
@@ -117,8 +152,18 @@ void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site, Spans
         if (row) std::copy(row + base, row + base + w, s.column_site_row.begin());
         const std::int32_t* gj = s.column_distance.data();
         const std::int32_t* rj = s.column_site_row.data();
+        // With kept columns, a column farther from them than the largest of their own column
+        // distances is nearest to none of them: the envelope leaves it out.
+        int q0 = 0, q1 = w;
+        if (spans) {
+            const std::int32_t most = *std::max_element(gj + xa, gj + xb);
+            if (most != kInfinite) {
+                q0 = std::max(0, xa - most);
+                q1 = std::min(w, xb + most);
+            }
+        }
         int k = -1;
-        for (int q = 0; q < w; ++q) {
+        for (int q = q0; q < q1; ++q) {
             if (gj[q] == kInfinite) continue;
             const std::int64_t fq =
                 static_cast<std::int64_t>(gj[q]) * gj[q] + static_cast<std::int64_t>(q) * q;
@@ -165,9 +210,8 @@ constexpr long long kTwoThreadPixels = 1LL << 20;
 
 // `spans` (null: all) limits the exact values to each row's kept columns; only without a
 // feature transform.
-template <class IsSite>
-void separable_edt(int w, int h, IsSite is_site, std::int32_t* d2, std::int32_t* site, Spans spans,
-                   DistanceField::Scratch& s, DistanceField::Scratch& other) {
+void separable_edt(int w, int h, const ByteSites& is_site, std::int32_t* d2, std::int32_t* site,
+                   Spans spans, DistanceField::Scratch& s, DistanceField::Scratch& other) {
     const auto columns = [&](int c0, int c1, DistanceField::Scratch& scratch) {
         if (spans)
             edt_columns_kept(w, h, c0, c1, is_site, d2, spans, scratch);
@@ -257,20 +301,20 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
         if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
         return;
     }
-    separable_edt(
-        w, height_,
-        [&](int i, int j) {
-            return occ[static_cast<std::size_t>(j) * w + i] ==
-                   static_cast<std::uint8_t>(ObstacleKind::boundary);
-        },
-        boundary2_.data(), nullptr, kept_spans(), scratch_, other_scratch_);
+    separable_edt(w, height_, ByteSites{occ, w, static_cast<int>(ObstacleKind::boundary)},
+                  boundary2_.data(), nullptr, kept_spans(), scratch_, other_scratch_);
     // At the start of growth the element sites are a seed's few pixels: the nearer of the
     // boundary and of each of them costs less than a second transform.
     constexpr std::size_t kFewSites = 16;
     std::vector<int> elements;
-    for (std::size_t p = 0; p < occupancy.size() && elements.size() <= kFewSites && !site; ++p)
-        if (occ[p] == static_cast<std::uint8_t>(ObstacleKind::element))
-            elements.push_back(static_cast<int>(p));
+    for (const std::uint8_t* at = occ; !site && elements.size() <= kFewSites;) {
+        const void* found = std::memchr(at, static_cast<int>(ObstacleKind::element),
+                                        static_cast<std::size_t>(occ + occupancy.size() - at));
+        if (!found) break;
+        at = static_cast<const std::uint8_t*>(found);
+        elements.push_back(static_cast<int>(at - occ));
+        ++at;
+    }
     if (!site && elements.size() <= kFewSites) {
         std::copy(boundary2_.begin(), boundary2_.end(), dist2_.begin());
         // Under a group the sites are a seed's images, spread over the grid: each lowers only
@@ -286,9 +330,8 @@ void DistanceField::compute(const std::vector<std::uint8_t>& occupancy) {
             }
         for (const int e : elements) nearer_site(e % w, e / w, chunk_max);
     } else {
-        separable_edt(
-            w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
-            dist2_.data(), site, kept_spans(), scratch_, other_scratch_);
+        separable_edt(w, height_, ByteSites{occ, w, -1}, dist2_.data(), site, kept_spans(),
+                      scratch_, other_scratch_);
     }
     if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
 }
@@ -334,9 +377,8 @@ void DistanceField::recompute_elements(const std::vector<std::uint8_t>& occupanc
         manhattan_transform(w, height_, occ, false,
                             static_cast<std::uint8_t>(ObstacleKind::boundary), dist2_.data(), site);
     } else {
-        separable_edt(
-            w, height_, [&](int i, int j) { return occ[static_cast<std::size_t>(j) * w + i] != 0; },
-            dist2_.data(), site, kept_spans(), scratch_, other_scratch_);
+        separable_edt(w, height_, ByteSites{occ, w, -1}, dist2_.data(), site, kept_spans(),
+                      scratch_, other_scratch_);
     }
     if (lazy_) far_.reset(w, height_, dist2_.data(), metric_);
 }
@@ -575,9 +617,8 @@ void DistanceField::propagate(const std::vector<int>& sites, std::vector<std::in
         window_d2_.resize(wn);
         window_site_.resize(wn);
         const std::uint8_t* mask = window_sites_.data();
-        separable_edt(
-            ww, wh, [&](int i, int j) { return mask[static_cast<std::size_t>(j) * ww + i] != 0; },
-            window_d2_.data(), window_site_.data(), nullptr, window_scratch_, other_scratch_);
+        separable_edt(ww, wh, ByteSites{mask, ww, -1}, window_d2_.data(), window_site_.data(),
+                      nullptr, window_scratch_, other_scratch_);
         WindowMeasure measure{window_d2_.data(), window_site_.data(), w, ww, wx0, wy0};
         auto measurable = [&](int i, int j) {
             return i >= wx0 && i <= wx1 && j >= wy0 && j <= wy1;

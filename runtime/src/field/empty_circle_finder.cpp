@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "field/tile_masks.hpp"
@@ -12,6 +13,26 @@ namespace acanthus::detail {
 using namespace tile_masks;
 
 static_assert(PendingBlocks::kTileShift == 3, "the lazy field trusts the finder's tiles");
+
+std::vector<std::uint8_t> nonzero_tiles(const std::vector<std::uint8_t>& bytes, int width,
+                                        int height) {
+    constexpr int kTile = 8;
+    const int tw = (width + kTile - 1) / kTile, th = (height + kTile - 1) / kTile;
+    std::vector<std::uint8_t> out(static_cast<std::size_t>(tw) * th, 0);
+    const int whole = width / kTile;  // tiles whose eight columns lie in the row
+    for (int j = 0; j < height; ++j) {
+        const std::uint8_t* row = bytes.data() + static_cast<std::size_t>(j) * width;
+        std::uint8_t* tiles = out.data() + static_cast<std::size_t>(j / kTile) * tw;
+        for (int t = 0; t < whole; ++t) {
+            std::uint64_t word;
+            std::memcpy(&word, row + t * kTile, sizeof word);
+            if (word) tiles[t] = 1;
+        }
+        for (int i = whole * kTile; i < width; ++i)
+            if (row[i]) tiles[whole] = 1;
+    }
+    return out;
+}
 
 EmptyCircleFinder::EmptyCircleFinder(DistanceField& field, const GridFrame& grid, double min_radius)
     : field_(field),
@@ -48,25 +69,18 @@ EmptyCircleFinder::EmptyCircleFinder(DistanceField& field, const GridFrame& grid
 void EmptyCircleFinder::set_centres(std::vector<std::uint8_t> allowed) {
     centres_ = std::move(allowed);
     block_centres_.clear();
+    tile_centres_.clear();
     if (centres_.empty()) return;
+    tile_centres_ = nonzero_tiles(centres_, grid_.width, grid_.height);
     // Blocks of 8 x 8 tiles, numbered as PendingBlocks numbers them.
     block_centres_.assign(deferred_.size(), 0);
-    for (std::size_t p = 0; p < centres_.size(); ++p) {
-        if (!centres_[p]) continue;
-        const int t = tile_of(static_cast<int>(p));
-        const int ti = t % tiles_w_, tj = t / tiles_w_;
-        block_centres_[static_cast<std::size_t>((tj >> 3) * blocks_w_ + (ti >> 3))] = 1;
-    }
+    for (int tj = 0; tj < tiles_h_; ++tj)
+        for (int ti = 0; ti < tiles_w_; ++ti)
+            if (tile_centres_[static_cast<std::size_t>(tj) * tiles_w_ + ti])
+                block_centres_[static_cast<std::size_t>((tj >> 3) * blocks_w_ + (ti >> 3))] = 1;
 }
 
-std::vector<std::uint8_t> EmptyCircleFinder::tile_centres() const {
-    std::vector<std::uint8_t> out;
-    if (centres_.empty()) return out;
-    out.assign(static_cast<std::size_t>(tiles_w_) * tiles_h_, 0);
-    for (std::size_t p = 0; p < centres_.size(); ++p)
-        if (centres_[p]) out[static_cast<std::size_t>(tile_of(static_cast<int>(p)))] = 1;
-    return out;
-}
+std::vector<std::uint8_t> EmptyCircleFinder::tile_centres() const { return tile_centres_; }
 
 double EmptyCircleFinder::radius_pixels(std::int64_t d2) const {
     const double d = std::sqrt(static_cast<double>(d2));

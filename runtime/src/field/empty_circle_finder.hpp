@@ -16,6 +16,11 @@
 
 namespace acanthus::detail {
 
+// Per 8 x 8 tile of a width x height grid of bytes (tiles numbered row by row), 1 where a byte
+// of the tile is non-zero. Reads the bytes eight at a time: a domain is mostly zeros.
+std::vector<std::uint8_t> nonzero_tiles(const std::vector<std::uint8_t>& bytes, int width,
+                                        int height);
+
 struct EmptyCircle {
     int pixel = -1;
     std::int64_t d2 = 0;  // squared distance of the centre pixel to its nearest obstacle pixel
@@ -155,8 +160,9 @@ class EmptyCircleFinder {
     double min_radius_;
     double inv_width_;
     bool manhattan_;
-    std::int64_t min_d2_ = 1;            // smallest d2 whose radius is at least min_radius_
-    std::vector<std::uint8_t> centres_;  // set_centres()
+    std::int64_t min_d2_ = 1;                 // smallest d2 whose radius is at least min_radius_
+    std::vector<std::uint8_t> centres_;       // set_centres()
+    std::vector<std::uint8_t> tile_centres_;  // tile_centres(), found by set_centres()
     // Per lazy-field block, whether a pixel of it may centre a circle (all, without centres_):
     // a block that may not is never tightened for a candidate.
     std::vector<std::uint8_t> block_centres_;

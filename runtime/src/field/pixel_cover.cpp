@@ -92,6 +92,14 @@ void PixelCover::disc(Point center, double radius, std::vector<int>& out) const 
 
 void PixelCover::centers_inside(const std::vector<std::vector<Point>>& rings, bool evenodd,
                                 std::vector<int>& out) const {
+    std::vector<Run> runs;
+    center_runs_inside(rings, evenodd, runs);
+    for (const Run& r : runs)
+        for (int i = r.first; i <= r.last; ++i) out.push_back(r.row * grid_.width + i);
+}
+
+void PixelCover::center_runs_inside(const std::vector<std::vector<Point>>& rings, bool evenodd,
+                                    std::vector<Run>& out) const {
     struct Crossing {
         int row;
         double u;
@@ -130,7 +138,7 @@ void PixelCover::centers_inside(const std::vector<std::vector<Point>>& rings, bo
             const int i0 = clamp_index(std::ceil(crossings[k].u - 0.5), 0, grid_.width);
             const int i1 =
                 clamp_index(std::ceil(crossings[k + 1].u - 0.5) - 1, -1, grid_.width - 1);
-            for (int i = i0; i <= i1; ++i) out.push_back(row * grid_.width + i);
+            if (i0 <= i1) out.push_back({row, i0, i1});
         }
     }
 }

@@ -27,6 +27,12 @@ class PixelCover {
     // Pixels whose centre lies inside closed rings under the given fill rule.
     void centers_inside(const std::vector<std::vector<Point>>& rings, bool evenodd,
                         std::vector<int>& out) const;
+    // The same pixels as runs of a row: columns [first, last] of `row`, disjoint.
+    struct Run {
+        int row, first, last;
+    };
+    void center_runs_inside(const std::vector<std::vector<Point>>& rings, bool evenodd,
+                            std::vector<Run>& out) const;
 
     // Flattening of curves into polylines (user units) within kFlatten pixels.
     std::vector<Point> flatten_arc(const ArcProxy& a) const;

@@ -34,10 +34,13 @@ RasterBuffer::RasterBuffer(const Region& region, int resolution)
     occ_.assign(n, static_cast<std::uint8_t>(ObstacleKind::boundary));
     // Flattened within a fraction of a pixel (the same margin as proxies' curves).
     const auto rings = region.rings(PixelCover::kFlatten * grid_.pixel);
+    std::vector<PixelCover::Run> inside;
+    cover_.center_runs_inside(rings, region.evenodd(), inside);
+    for (const PixelCover::Run& r : inside) {
+        std::uint8_t* row = occ_.data() + static_cast<std::size_t>(r.row) * grid_.width;
+        std::fill(row + r.first, row + r.last + 1, static_cast<std::uint8_t>(ObstacleKind::none));
+    }
     std::vector<int> pixels;
-    cover_.centers_inside(rings, region.evenodd(), pixels);
-    for (int p : pixels) occ_[p] = static_cast<std::uint8_t>(ObstacleKind::none);
-    pixels.clear();
     for (const auto& ring : rings)
         for (std::size_t k = 0; k < ring.size(); ++k)
             cover_.segment(ring[k], ring[(k + 1) % ring.size()], pixels);

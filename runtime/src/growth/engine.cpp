@@ -23,6 +23,7 @@
 
 #include "field/circle_source.hpp"
 #include "field/distinct_circles.hpp"
+#include "field/empty_circle_finder.hpp"
 #include "field/memory_budget.hpp"
 #include "field/raster_buffer.hpp"
 #include "growth/engine_environment.hpp"
@@ -108,12 +109,14 @@ std::vector<bool> near_zone(const GridFrame& g, const std::vector<std::uint8_t>&
     const int pad = kNearCells;
     const int cw = ((g.width - 1) >> kNearCellShift) + 1 + 2 * pad;
     const int ch = ((g.height - 1) >> kNearCellShift) + 1 + 2 * pad;
+    static_assert(kNearCellShift == 3, "the near zone's cells are the field's tiles");
+    const std::vector<std::uint8_t> tiles = nonzero_tiles(domain, g.width, g.height);
+    const int tw = cw - 2 * pad, th = ch - 2 * pad;
     std::vector<bool> in(static_cast<std::size_t>(cw) * ch, false);
-    for (int j = 0; j < g.height; ++j)
-        for (int i = 0; i < g.width; ++i)
-            if (domain[static_cast<std::size_t>(j) * g.width + i])
-                in[static_cast<std::size_t>((j >> kNearCellShift) + pad) * cw +
-                   (i >> kNearCellShift) + pad] = true;
+    for (int tj = 0; tj < th; ++tj)
+        for (int ti = 0; ti < tw; ++ti)
+            if (tiles[static_cast<std::size_t>(tj) * tw + ti])
+                in[static_cast<std::size_t>(tj + pad) * cw + ti + pad] = true;
     std::vector<bool> out(in.size(), false);
     for (int j = 0; j < ch; ++j)
         for (int i = 0; i < cw; ++i) {

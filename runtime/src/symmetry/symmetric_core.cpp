@@ -205,13 +205,31 @@ bool maps_onto_itself(const Region& region, const SymmetryGroup& group, double t
         const double t = len2 > 0 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
         return distance(q, a + ab * t);
     };
+    // The segment each transformation's last image was nearest to: the next point's image
+    // usually lies by it or by a neighbour, which settles it without a query (a segment that
+    // near makes the nearest at least as near).
+    std::vector<SpatialIndex::Entry> hint(group.size());
+    auto near_hint = [&](Point q, SpatialIndex::Entry e) {
+        if (e.element < 0) return false;
+        const int n = static_cast<int>(rings[static_cast<std::size_t>(e.element)].size());
+        for (int step = -1; step <= 1; ++step)
+            if (to_segment(q, {e.element, (e.proxy + step + n) % n}) <= tolerance - slack)
+                return true;
+        return false;
+    };
     for (const auto& ring : rings)
         for (Point p : ring)
             for (std::size_t k = 1; k < group.size(); ++k) {
                 const Point q = group.transforms()[k].apply(p);
+                if (near_hint(q, hint[k])) continue;
                 double d = std::numeric_limits<double>::infinity();
-                for (const SpatialIndex::Entry& e : segments.within(q, tolerance + slack))
-                    d = std::min(d, to_segment(q, e));
+                for (const SpatialIndex::Entry& e : segments.within(q, tolerance + slack)) {
+                    const double de = to_segment(q, e);
+                    if (de < d) {
+                        d = de;
+                        hint[k] = e;
+                    }
+                }
                 if (d <= tolerance - slack) continue;
                 if (d > tolerance + slack || region.distance_to_boundary(q) > tolerance)
                     return false;
