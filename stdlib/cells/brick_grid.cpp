@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "bond.hpp"
 #include "quoin_rows.hpp"
 
 namespace acanthus::cells::detail {
@@ -28,9 +29,15 @@ std::vector<double> unit_lines(double x0, double x1, double q, double tol) {
 
 // Plumb edges of the face (jambs, reveals, the wall's ends) by x, each weighted by its height:
 // about the number of pieces a course line missing it would cut. Those within `merge` of each
-// other are one, at the heavier's x.
-std::vector<std::pair<double, double>> jambs(const Facade& facade, const Face& f, double merge) {
-    std::vector<std::pair<double, double>> out;
+// other are one, at the heavier's x. `sides`: kOpensRight for an opening's left jamb (the wall
+// to its left), kOpensLeft for its right one.
+constexpr int kOpensRight = 1, kOpensLeft = 2;
+struct Mark {
+    double x = 0, weight = 0;
+    int sides = 0;
+};
+std::vector<Mark> jambs(const Facade& facade, const Face& f, double merge) {
+    std::vector<Mark> out;
     for (int e : f.edges) {
         const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
         if (edge.arc || edge.closed || edge.bounds.height() <= 0) continue;
@@ -44,16 +51,20 @@ std::vector<std::pair<double, double>> jambs(const Facade& facade, const Face& f
                 springs |= o >= 0 && facade.edges()[static_cast<std::size_t>(o)].arc;
         }
         if (springs) continue;
-        out.emplace_back(edge.bounds.x0, edge.bounds.height());
+        const int sides = !edge.opening                        ? 0
+                          : edge.inward(edge.length / 2).x > 0 ? kOpensLeft
+                                                               : kOpensRight;
+        out.push_back({edge.bounds.x0, edge.bounds.height(), sides});
     }
-    std::sort(out.begin(), out.end());
-    std::vector<std::pair<double, double>> merged;
-    for (auto [x, w] : out) {
-        if (!merged.empty() && x - merged.back().first <= merge) {
-            if (w > merged.back().second) merged.back().first = x;
-            merged.back().second += w;
+    std::sort(out.begin(), out.end(), [](const Mark& a, const Mark& b) { return a.x < b.x; });
+    std::vector<Mark> merged;
+    for (const Mark& k : out) {
+        if (!merged.empty() && k.x - merged.back().x <= merge) {
+            if (k.weight > merged.back().weight) merged.back().x = k.x;
+            merged.back().weight += k.weight;
+            merged.back().sides |= k.sides;
         } else {
-            merged.emplace_back(x, w);
+            merged.push_back(k);
         }
     }
     return merged;
@@ -62,13 +73,20 @@ std::vector<std::pair<double, double>> jambs(const Facade& facade, const Face& f
 // Unit lines set out from the jambs, as a mason sets out perpends: through as many jambs as can
 // be reached (by their weight) with every head joint between two of them opened or closed by no
 // more than `tol`, the units stretched evenly; past the last one reached, nominal units to the
-// wall's right end, cut there. A jamb no line reaches cuts the bricks beside it.
+// wall's right end, cut there. A jamb no line reaches cuts the bricks beside it. Across an
+// opening whose width is no whole number of quarters (`breaks`), the jamb beyond is reached with
+// nominal units and one odd one within the opening (a bond break, `wide`: a quarter more than
+// the rest) where that reaches more; the layout keeps the breaks only where they leave fewer odd
+// pieces the geometry does not force (brick_layout.cpp).
 std::vector<double> set_out_lines(double x0, double x1, double q, double tol,
-                                  const std::vector<std::pair<double, double>>& marks) {
+                                  const std::vector<Mark>& marks, bool breaks, bool wide,
+                                  std::vector<CourseGrid::Break>& out_breaks) {
     std::vector<double> at{x0}, weight{0};
-    for (auto [x, w] : marks)
-        if (x > x0 + q / 2 && x <= x1) at.push_back(x), weight.push_back(w);
-    if (at.back() < x1) at.push_back(x1), weight.push_back(0);
+    std::vector<int> sides{0};
+    for (const Mark& k : marks)
+        if (k.x > x0 + q / 2 && k.x <= x1)
+            at.push_back(k.x), weight.push_back(k.weight), sides.push_back(k.sides);
+    if (at.back() < x1) at.push_back(x1), weight.push_back(0), sides.push_back(0);
     weight.back() += 1e-9;  // a wall's end within reach is reached, as unit_lines does
     // The bricks at both jambs stand flush with them (brick_layout.cpp, set_joints): the head
     // joints between take up the difference, and a course of n units has at least
@@ -79,14 +97,30 @@ std::vector<double> set_out_lines(double x0, double x1, double q, double tol,
         if (n < 1) return 0;
         return off <= slack || off <= tol * ((n + 3) / 4 - 1) + slack ? n : 0;
     };
+    // An opening's left jamb and a right jamb with no opening's left jamb between (the odd
+    // unit, in the middle, stands within an opening), wide enough for it and its neighbours.
+    auto can_break = [&](std::size_t j, std::size_t i) {
+        if (!breaks || !(sides[j] & kOpensRight) || !(sides[i] & kOpensLeft) ||
+            at[i] - at[j] < 3 * q || units(at[i] - at[j]) > 0)
+            return false;
+        for (std::size_t k = j + 1; k < i; ++k)
+            if (sides[k] & kOpensRight) return false;
+        return true;
+    };
     const std::size_t m = at.size();
     std::vector<double> best(m, -1);
     std::vector<std::size_t> from(m, 0);
+    std::vector<char> broken(m, 0);
     best[0] = 0;
     for (std::size_t i = 1; i < m; ++i)
-        for (std::size_t j = 0; j < i; ++j)
-            if (best[j] >= 0 && best[j] + weight[i] > best[i] && units(at[i] - at[j]) > 0)
-                best[i] = best[j] + weight[i], from[i] = j;
+        for (std::size_t j = 0; j < i; ++j) {
+            if (best[j] < 0) continue;
+            if (units(at[i] - at[j]) > 0 && best[j] + weight[i] > best[i])
+                best[i] = best[j] + weight[i], from[i] = j, broken[i] = 0;
+            if (!can_break(j, i)) continue;
+            if (best[j] + weight[i] > best[i])
+                best[i] = best[j] + weight[i], from[i] = j, broken[i] = 1;
+        }
     std::size_t last = 0;
     for (std::size_t i = 1; i < m; ++i)
         if (best[i] > best[last]) last = i;
@@ -95,6 +129,17 @@ std::vector<double> set_out_lines(double x0, double x1, double q, double tol,
     std::vector<double> xs{x0};
     for (std::size_t k = chain.size() - 1; k-- > 0;) {
         const double a = at[chain[k + 1]], b = at[chain[k]];
+        if (broken[chain[k]]) {
+            // Nominal units but one, the odd one in the middle (set_breaks moves it).
+            int n = static_cast<int>(std::floor((b - a) / q));
+            double odd = b - a - n * q;
+            if (wide) odd += q, n -= 1;
+            const int count = n + 1, mid = count / 2;
+            out_breaks.push_back({static_cast<int>(xs.size()) - 1, count, odd});
+            for (int t = 1; t < count; ++t) xs.push_back(a + t * q + (t > mid ? odd - q : 0));
+            xs.push_back(b);
+            continue;
+        }
         const int n = units(b - a);
         for (int t = 1; t < n; ++t) xs.push_back(a + (b - a) * t / n);
         xs.push_back(b);
@@ -144,7 +189,8 @@ void top_courses(double anchor, double w, double g, double tol, std::vector<doub
 
 }  // namespace
 
-CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o, bool set_out) {
+CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o, bool set_out,
+                           bool breaks) {
     const Face& f = facade.faces()[static_cast<std::size_t>(face)];
     const double q = (o.brick_length + o.mortar) / 4, g = o.brick_height + o.mortar;
     const double tol = o.joint_tolerance;
@@ -153,7 +199,8 @@ CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o, boo
     CourseGrid grid;
     // A face that turns a building corner keeps the bond set from the corner (quoin_rows.hpp).
     if (has_building_corner(facade, face)) set_out = false;
-    grid.xs = set_out ? set_out_lines(f.bounds.x0, f.bounds.x1, q, tol, jambs(facade, f, tol / 3))
+    grid.xs = set_out ? set_out_lines(f.bounds.x0, f.bounds.x1, q, tol, jambs(facade, f, tol / 3),
+                                      breaks, o.bond == Bond::header, grid.breaks)
                       : unit_lines(f.bounds.x0, f.bounds.x1, q, tol);
 
     // Level edges, bottom first (SVG: larger y lower), closer than half a course merged.
@@ -217,6 +264,47 @@ CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o, boo
     grid.ys.assign(down.rbegin(), down.rend());
     classify_units(facade, face, grid);
     return grid;
+}
+
+bool set_breaks(const Facade& facade, int face, const BondPattern& bond, int phase, CourseGrid& g) {
+    if (g.breaks.empty()) return false;
+    // Head joints on line i (mod the period) in `course`.
+    const int period = bond.period();
+    auto joint = [&](int course, int i) {
+        const auto lengths = bond.lengths(course);
+        int at = bond.offset(course) + phase;
+        for (int k = 0; k < 2 * period; ++k) {
+            if (((i - at) % period + period) % period == 0) return true;
+            at += lengths[static_cast<std::size_t>(k) % lengths.size()];
+        }
+        return false;
+    };
+    // An odd unit narrower than a quarter brick keeps off lines i and i + 1 both holding a joint
+    // in consecutive courses: a straight joint up its width.
+    for (const CourseGrid::Break& b : g.breaks) {
+        const double a = g.xs[static_cast<std::size_t>(b.first)];
+        const double step = (g.xs[static_cast<std::size_t>(b.first + b.count)] - a - b.odd) /
+                            std::max(1, b.count - 1);
+        auto safe = [&](int u) {
+            if (bond.bond == Bond::stack || b.odd >= step) return true;
+            for (int c = 0; c < 4; ++c)
+                if ((joint(c, u) && joint(c + 1, u + 1)) || (joint(c, u + 1) && joint(c + 1, u)))
+                    return false;
+            return true;
+        };
+        // The middle unit, or the nearest safe one.
+        const int mid = b.count / 2;
+        int at = -1;
+        for (int d = 0; d < b.count && at < 0; ++d)
+            for (int u : {mid - d, mid + d})
+                if (at < 0 && u >= 0 && u < b.count && safe(b.first + u)) at = u;
+        if (at < 0) at = mid;
+        for (int t = 1; t < b.count; ++t)
+            g.xs[static_cast<std::size_t>(b.first + t)] =
+                a + t * step + (t > at ? b.odd - step : 0);
+    }
+    classify_units(facade, face, g);
+    return true;
 }
 
 }  // namespace acanthus::cells::detail

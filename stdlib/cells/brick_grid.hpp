@@ -17,8 +17,18 @@ namespace acanthus::cells::detail {
 // it falls within a course; a level top out of reach gets one cut course under it (two, each at
 // least half a course, when one would be thinner).
 // With `set_out`, the unit lines are set out from the jambs instead: through as many as the
-// tolerance lets them reach, so that those jambs fall on joints.
+// tolerance lets them reach, so that those jambs fall on joints. With `breaks` too, the jamb
+// across an opening whose width is no whole number of quarters is reached with one odd unit
+// within the opening (CourseGrid::breaks): the courses over and under it take the bond's break
+// there, a cut piece under the opening, and the piers beside it are set out from their jambs.
 CourseGrid make_brick_grid(const Facade& facade, int face, const Options& options,
-                           bool set_out = false);
+                           bool set_out = false, bool breaks = false);
+
+struct BondPattern;
+// Moves each break's odd unit to the unit nearest the opening's middle where, narrower than a
+// quarter brick, it has no joint on either side of it in consecutive courses of `bond` laid at
+// `phase` (none in header bond: its odd unit is a quarter wider). False when there is none.
+bool set_breaks(const Facade& facade, int face, const BondPattern& bond, int phase,
+                CourseGrid& grid);
 
 }  // namespace acanthus::cells::detail

@@ -452,10 +452,10 @@ void cut_at_apexes(const Facade& facade, int face, const Options& o, BrickLayout
 }
 
 BrickLayout lay(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
-                const FramedMoves& moves, bool set_out) {
+                const FramedMoves& moves, bool set_out, bool breaks) {
     BrickLayout layout;
     layout.moves = moves;
-    layout.grid = make_brick_grid(facade, face, o, set_out);
+    layout.grid = make_brick_grid(facade, face, o, set_out, breaks);
     layout.unit = (o.brick_length + o.mortar) / 4;
     layout.gauge = o.brick_height + o.mortar;
     layout.tolerance = o.joint_tolerance;
@@ -480,6 +480,7 @@ BrickLayout lay(const Facade& facade, int face, const Options& o, bool quoins, b
         if (best < 0 || cut < best) best = cut, layout.phase = phase;
     }
     layout.cut_pieces = best;
+    set_breaks(facade, face, layout.bond, layout.phase, layout.grid);
     const int rows = layout.grid.rows();
     layout.rows.resize(static_cast<std::size_t>(rows));
     layout.piece_of_unit.resize(static_cast<std::size_t>(rows));
@@ -536,7 +537,14 @@ std::vector<std::pair<int, int>> straight_in(const BrickLayout& layout, long* at
         std::set<int> heads;
         const std::set<int> here = joints_in(layout.rows[static_cast<std::size_t>(r)], &heads);
         for (int j : here) {
-            if (!below.count(j)) continue;
+            // On the same line, or across a break's odd unit narrower than a quarter brick.
+            auto near = [&](int k) {
+                return k >= 0 && k <= layout.grid.units() && below.count(k) &&
+                       std::abs(layout.grid.xs[static_cast<std::size_t>(k)] -
+                                layout.grid.xs[static_cast<std::size_t>(j)]) <
+                           layout.unit - layout.mortar / 4;
+            };
+            if (!below.count(j) && !near(j - 1) && !near(j + 1)) continue;
             if (at_heads && (heads.count(j) || below_heads.count(j)))
                 ++*at_heads;
             else
@@ -638,8 +646,8 @@ namespace {
 // ends still meet over each other, move the ones round each such joint a quarter brick, the move
 // that leaves the wall best first, while one helps.
 BrickLayout settled(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
-                    bool set_out) {
-    BrickLayout layout = lay(facade, face, o, quoins, lintels, {}, set_out);
+                    bool set_out, bool breaks = false) {
+    BrickLayout layout = lay(facade, face, o, quoins, lintels, {}, set_out, breaks);
     if (!quoins || !lintels) return layout;
     long worst = badness(layout);
     for (int step = 0; step < 6 && worst >= 100; ++step) {
@@ -651,7 +659,7 @@ BrickLayout settled(const Facade& facade, int face, const Options& o, bool quoin
         for (auto [row, unit] : straight)
             for (FramedMoves& m : moves_near(facade, face, o, layout, layout.moves, row, unit)) {
                 if (!tried.insert(m).second) continue;
-                BrickLayout next = lay(facade, face, o, quoins, lintels, m, set_out);
+                BrickLayout next = lay(facade, face, o, quoins, lintels, m, set_out, breaks);
                 const long b = badness(next);
                 if (b < best_badness) best_badness = b, best = std::move(next);
             }
@@ -660,6 +668,63 @@ BrickLayout settled(const Facade& facade, int face, const Options& o, bool quoin
         layout = std::move(best);
     }
     return layout;
+}
+
+// Odd pieces (no whole number of quarter bricks less a joint) in runs whose width, jamb to
+// jamb, is whole quarters within what their joints take up: those whole bricks and standard
+// closers could have filled (the mason's rule in the tests). In a run that ends other than at a
+// plumb jamb or the wall's end (an arc, a slope), the cut end pieces count and none is forced.
+long unforced_odd(const Facade& facade, int face, const BrickLayout& l) {
+    const CourseGrid& g = l.grid;
+    std::vector<Rect> plumb;
+    for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        if (plumb_edge(edge)) plumb.push_back(edge.bounds);
+    }
+    const double q = l.unit, m = l.mortar, eps = 1e-9 * std::max(1.0, std::abs(g.xs.back()));
+    // Where the face ends within unit u of row r: a plumb edge over the whole course.
+    auto end_in = [&](int r, int u, double& x) {
+        for (const Rect& b : plumb)
+            if (b.x0 >= g.xs[static_cast<std::size_t>(u)] - eps && b.x0 <= g.xs[u + 1] + eps &&
+                b.y0 <= g.ys[static_cast<std::size_t>(r)] + eps && b.y1 >= g.ys[r + 1] - eps) {
+                x = b.x0;
+                return true;
+            }
+        return false;
+    };
+    long out = 0;
+    for (std::size_t r = 0; r < l.rows.size(); ++r) {
+        const auto& ps = l.rows[r];
+        const int row = static_cast<int>(r);
+        for (std::size_t a = 0; a < ps.size();) {
+            std::size_t b = a + 1;
+            while (b < ps.size() && ps[b - 1].start + ps[b - 1].length == ps[b].start) ++b;
+            const std::size_t a0 = a;
+            a = b;
+            double xl = l.claim(row, static_cast<int>(a0)).x0,
+                   xr = l.claim(row, static_cast<int>(b - 1)).x1;
+            const int u0 = ps[a0].start, u1 = ps[b - 1].start + ps[b - 1].length - 1;
+            // An end at an arc or a slope: its pieces counted as they are claimed, none forced.
+            const bool known = (g.at(row, u0) == kFull || end_in(row, u0, xl)) &&
+                               (g.at(row, u1) == kFull || end_in(row, u1, xr));
+            long odd = 0;
+            for (std::size_t k = a0; k < b; ++k) {
+                Rect d = l.drawn(row, static_cast<int>(k));
+                if (k == a0) d.x0 = std::max(d.x0, xl + m / 2);
+                if (k + 1 == b) d.x1 = std::min(d.x1, xr - m / 2);
+                const double w = d.width(), n = std::round((w + m) / q);
+                const bool cut = !ps[k].full && (k == a0 || k + 1 == b);
+                odd +=
+                    (!known && cut) || n < 1 || std::abs(w - (n * q - m)) > l.tolerance / 3 + 1e-9;
+            }
+            const double width = xr - xl, n = std::round(width / q);
+            const bool forced =
+                known && (n < 1 || std::abs(width - n * q) >
+                                       static_cast<double>(b - a0 - 1) * l.tolerance + 1e-9);
+            out += std::max(0L, odd - (forced ? 1 : 0));
+        }
+    }
+    return out;
 }
 
 }  // namespace
@@ -676,6 +741,18 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
     }
     set_joints(layout);
     relay_runs(facade, face, layout);
+    // Bond breaks over and under the openings whose width is no whole number of quarters, the
+    // piers beside them set out from their jambs: kept when they leave fewer odd pieces the
+    // geometry does not force and no straight joint more.
+    if (!make_brick_grid(facade, face, o, true, true).breaks.empty()) {
+        BrickLayout broken = settled(facade, face, o, quoins, lintels, true, true);
+        if (badness(broken) / 100 <= badness(layout) / 100) {
+            set_joints(broken);
+            relay_runs(facade, face, broken);
+            if (unforced_odd(facade, face, broken) < unforced_odd(facade, face, layout))
+                layout = std::move(broken);
+        }
+    }
     return layout;
 }
 

@@ -15,6 +15,13 @@ struct CourseGrid {
     std::vector<double> xs;  // unit i spans [xs[i], xs[i+1]]
     std::vector<double> ys;  // row k spans [ys[k], ys[k+1]]; ys ascend (SVG: top row first)
     std::vector<std::uint8_t> status;  // row-major
+    // Bond breaks (brick_grid.hpp): units [first, first + count) span an opening jamb to jamb,
+    // nominal but for one of width `odd`, where the courses over and under take the break.
+    struct Break {
+        int first = 0, count = 0;
+        double odd = 0;
+    };
+    std::vector<Break> breaks;
 
     int units() const { return static_cast<int>(xs.size()) - 1; }
     int rows() const { return static_cast<int>(ys.size()) - 1; }
