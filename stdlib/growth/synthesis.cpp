@@ -608,8 +608,9 @@ void Synthesis::grow(int id) {
                       ? random_.uniform(-options_.color_variation, options_.color_variation)
                       : 0.0;
     double radius = reference_.radius[choice.element] * scale;
-    if (jittered_) fit_to_ring(id, choice, target_nodes, radius);
-    if (!motif_fits(id, pattern_[id].position, radius) && id == restart_seed_) {
+    // A fitted motif was checked where it now stands.
+    const bool fitted = jittered_ && fit_to_ring(id, choice, target_nodes, radius);
+    if (!fitted && !motif_fits(id, pattern_[id].position, radius) && id == restart_seed_) {
         // A restart's hole holds the smallest motif, maybe not the best match: the best of
         // those that fit there (else the hole stays, its middle closed).
         std::vector<int> fitting;
@@ -622,12 +623,14 @@ void Synthesis::grow(int id) {
             radius = reference_.radius[choice.element] * scale;
         }
     }
-    if (!motif_fits(id, pattern_[id].position, radius)) return drop(id);
-    // Fronts meeting (and relaxation) can bring a seed closer to a motif than the reference
-    // ever has those symbols: the reference's own closest spacing holds.
-    if (too_close(id, pattern_[id].position, reference_.symbol[choice.element], true) >= 0 ||
-        crowded(id, pattern_[id].position))
-        return drop(id);
+    if (!fitted) {
+        if (!motif_fits(id, pattern_[id].position, radius)) return drop(id);
+        // Fronts meeting (and relaxation) can bring a seed closer to a motif than the reference
+        // ever has those symbols: the reference's own closest spacing holds.
+        if (too_close(id, pattern_[id].position, reference_.symbol[choice.element], true) >= 0 ||
+            crowded(id, pattern_[id].position))
+            return drop(id);
+    }
 
     Node& n = pattern_[id];
     const int c = choice.element;
@@ -668,7 +671,7 @@ void Synthesis::grow(int id) {
     if (options_.relax) relax_around(id);
 }
 
-void Synthesis::fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
+bool Synthesis::fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
                             double radius) {
     const int c = choice.element;
     const auto& ring = reference_.rings[static_cast<std::size_t>(c)];
@@ -691,18 +694,19 @@ void Synthesis::fit_to_ring(int id, const Choice& choice, const std::vector<int>
                at;
         ++placed;
     }
-    if (placed == 0) return;
+    if (placed == 0) return false;
     const Point fitted_site = at + sum / placed;
     const Point fitted = fitted_site + jitter[static_cast<std::size_t>(c)].rotated(rotation);
-    if (!panel_.contains(fitted) || !panel_.reaches(at, fitted)) return;
+    if (!panel_.contains(fitted) || !panel_.reaches(at, fitted)) return false;
     const int symbol = reference_.symbol[choice.element];
     pattern_.move(id, fitted);
     if (motif_fits(id, fitted, radius) && too_close(id, fitted, symbol, true) < 0 &&
         !crowded(id, fitted)) {
         ++stats_.fitted;
-        return;
+        return true;
     }
     pattern_.move(id, at);
+    return false;
 }
 
 bool Synthesis::still_valid(int id) const {

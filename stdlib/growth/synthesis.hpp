@@ -121,7 +121,8 @@ class Synthesis {
     // lattice steps put it) plus its element's own jitter, when it is valid there. Left where
     // its parent's ring put it, every step would add the difference of two elements' jitter;
     // fitted to the jittered offsets alone, the jitter would even out and the spacing widen.
-    void fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
+    // True when moved: the motif is then valid there (checked once, here).
+    bool fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
                      double radius);
     int priority(int symbol) const;
     // Options::w4: how far `symbol` is over its reference share among the placed motifs and the
