@@ -2,7 +2,7 @@
 // jittered lattice that no exact translation maps onto itself (lattice.hpp finds none), whose
 // interior elements' shortest ring offsets still point along a few lattice directions. Synthesis
 // puts each motif of such a reference on its lattice site plus its element's own jitter
-// (synthesis.hpp); irregular references and honeycombs are spared that.
+// (synthesis.hpp); irregular references are spared that.
 #pragma once
 
 #include <acanthus/point.hpp>
