@@ -455,7 +455,7 @@ def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015, 
     if nn_inner is not None:
         check(all(abs(v - 1) <= nn_inner for v in inner_every),
               f"mix: inner NN median {min(inner_every):.3f} to {max(inner_every):.3f} of the "
-              f"inner reference's per run ({100 * nn_inner:.0f}% allowed)")
+              f"inner reference's per run ({100 * nn_inner:.1f}% allowed)")
     bias = sum(every) / len(every)
     check(abs(bias - 1) <= nn_bias, f"mix: NN median {bias:.4f} of the reference's on average "
           f"over all {len(every)} runs ({100 * nn_bias:.1f}% allowed)")
