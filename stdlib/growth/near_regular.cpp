@@ -139,6 +139,7 @@ std::optional<JitteredLattice> fit_jittered_lattice(const ReferenceData& referen
     JitteredLattice out;
     out.basis[0] = u;
     out.basis[1] = w;
+    out.origin = origin;
     std::vector<std::pair<double, double>> taken = index;
     std::sort(taken.begin(), taken.end());
     if (std::adjacent_find(taken.begin(), taken.end()) != taken.end()) return std::nullopt;
@@ -152,7 +153,8 @@ std::optional<JitteredLattice> fit_jittered_lattice(const ReferenceData& referen
     if (!(out.rms <= kMostJitter)) return std::nullopt;
     if (regularity.fold == 6) {
         std::size_t count[3] = {0, 0, 0};
-        for (const auto& [a, b] : index) ++count[((static_cast<long>(a - b) % 3) + 3) % 3];
+        for (const auto& [a, b] : index)
+            ++count[JitteredLattice::sublattice({static_cast<long>(a), static_cast<long>(b)})];
         // A honeycomb: one class (almost) empty, the other two about even.
         const auto least = std::min_element(count, count + 3) - count;
         if (count[least] <= n / kVacantShare &&
@@ -160,6 +162,20 @@ std::optional<JitteredLattice> fit_jittered_lattice(const ReferenceData& referen
             out.vacant = static_cast<int>(least);
     }
     return out;
+}
+
+std::pair<long, long> JitteredLattice::index(Point p) const {
+    const auto [i, j] = rounded(p - origin, basis[0], basis[1]);
+    return {static_cast<long>(i), static_cast<long>(j)};
+}
+
+Point JitteredLattice::site_at(std::pair<long, long> index) const {
+    return origin + basis[0] * static_cast<double>(index.first) +
+           basis[1] * static_cast<double>(index.second);
+}
+
+int JitteredLattice::sublattice(std::pair<long, long> index) {
+    return static_cast<int>(((index.first - index.second) % 3 + 3) % 3);
 }
 
 }  // namespace acanthus::growth::detail

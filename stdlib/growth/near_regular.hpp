@@ -2,11 +2,12 @@
 // jittered lattice that no exact translation maps onto itself (lattice.hpp finds none), whose
 // interior elements' shortest ring offsets still point along a few lattice directions. Synthesis
 // puts each motif of such a reference on its lattice site plus its element's own jitter
-// (synthesis.hpp); irregular references and honeycombs are spared that.
+// (synthesis.hpp); irregular references are spared that.
 #pragma once
 
 #include <acanthus/point.hpp>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace acanthus::growth::detail {
@@ -41,10 +42,17 @@ struct JitteredLattice {
     std::vector<Point> site;     // per element
     std::vector<Vector> jitter;  // per element: position - site
     Vector basis[2];             // the lattice's translations
+    Point origin;                // a lattice point: every site is origin + i basis[0] + j basis[1]
     double rms = 0;              // RMS jitter in units of the basis length
     // A honeycomb: the sublattice (of the three at sqrt(3) spacing, by lattice coordinates'
     // difference modulo 3) no element holds, its hexagons' centres; -1: none.
     int vacant = -1;
+
+    // The lattice coordinates (i, j) of the site nearest `p`.
+    std::pair<long, long> index(Point p) const;
+    Point site_at(std::pair<long, long> index) const;
+    // A honeycomb's sublattice of (i, j): (i - j) modulo 3, as `vacant` counts it.
+    static int sublattice(std::pair<long, long> index);
 };
 
 // The shortest ring offsets per element measured: a honeycomb's three edges, a square grid's

@@ -87,11 +87,14 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         if (options.fit_to_ring && options.mode == Mode::none && regularity.near_regular)
             jittered_ = fit_jittered_lattice(reference, regularity);
         if (jittered_) stats_.jitter = jittered_->rms;
-        // A honeycomb grows as an irregular reference: put on its sites, its motifs came out
-        // closer and left wider holes (docs/stdlib/growth.md).
+        // A honeycomb's sites come from its lattice, not from the neighbours' ring slots
+        // (fit_to_site).
         if (jittered_ && jittered_->vacant >= 0) {
             stats_.honeycomb = true;
-            jittered_.reset();
+            for (int c : candidates_)
+                sublattice_candidates_[JitteredLattice::sublattice(jittered_->index(
+                                           jittered_->site[static_cast<std::size_t>(c)]))]
+                    .push_back(c);
         }
     }
     const std::size_t symbols = reference.symbols.size();
@@ -580,6 +583,22 @@ void Synthesis::grow(int id) {
         pattern_.move(id, spot.at);
         candidates = &lattice_->sites[static_cast<std::size_t>(spot.site)].candidates;
     }
+    // A honeycomb, once its lattice is down: the seed's site is the one nearest it; a taken
+    // site or a hexagon centre holds no motif, and an element of the site's own sublattice is
+    // copied there.
+    std::pair<long, long> site{0, 0};
+    bool honeycomb_site = jittered_ && jittered_->vacant >= 0 && shift_;
+    if (honeycomb_site) {
+        site = jittered_->index(pattern_[id].position - *shift_);
+        const int sublattice = JitteredLattice::sublattice(site);
+        if (sublattice == jittered_->vacant || taken_sites_.count(site) > 0) {
+            // A restart fills a hole the lattice leaves (at the panel's edge): off its sites.
+            if (id != restart_seed_) return drop(id);
+            honeycomb_site = false;
+        } else if (!sublattice_candidates_[sublattice].empty()) {
+            candidates = &sublattice_candidates_[sublattice];
+        }
+    }
     // The target neighbourhood w(e_tar): linked elements and seeds, CCW from the open side.
     std::vector<Vector> offsets;
     std::vector<int> neighbours;
@@ -608,8 +627,17 @@ void Synthesis::grow(int id) {
                       ? random_.uniform(-options_.color_variation, options_.color_variation)
                       : 0.0;
     double radius = reference_.radius[choice.element] * scale;
-    if (jittered_) fit_to_ring(id, choice, target_nodes, radius);
-    if (!motif_fits(id, pattern_[id].position, radius) && id == restart_seed_) {
+    // A fitted motif was checked where it now stands.
+    bool fitted = false;
+    if (jittered_) {
+        if (jittered_->vacant >= 0) {
+            fitted = (!shift_ || honeycomb_site) &&
+                     fit_to_site(id, choice.element, radius, honeycomb_site ? &site : nullptr);
+        } else {
+            fitted = fit_to_ring(id, choice, target_nodes, radius);
+        }
+    }
+    if (!fitted && !motif_fits(id, pattern_[id].position, radius) && id == restart_seed_) {
         // A restart's hole holds the smallest motif, maybe not the best match: the best of
         // those that fit there (else the hole stays, its middle closed).
         std::vector<int> fitting;
@@ -622,12 +650,14 @@ void Synthesis::grow(int id) {
             radius = reference_.radius[choice.element] * scale;
         }
     }
-    if (!motif_fits(id, pattern_[id].position, radius)) return drop(id);
-    // Fronts meeting (and relaxation) can bring a seed closer to a motif than the reference
-    // ever has those symbols: the reference's own closest spacing holds.
-    if (too_close(id, pattern_[id].position, reference_.symbol[choice.element], true) >= 0 ||
-        crowded(id, pattern_[id].position))
-        return drop(id);
+    if (!fitted) {
+        if (!motif_fits(id, pattern_[id].position, radius)) return drop(id);
+        // Fronts meeting (and relaxation) can bring a seed closer to a motif than the reference
+        // ever has those symbols: the reference's own closest spacing holds.
+        if (too_close(id, pattern_[id].position, reference_.symbol[choice.element], true) >= 0 ||
+            crowded(id, pattern_[id].position))
+            return drop(id);
+    }
 
     Node& n = pattern_[id];
     const int c = choice.element;
@@ -668,7 +698,7 @@ void Synthesis::grow(int id) {
     if (options_.relax) relax_around(id);
 }
 
-void Synthesis::fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
+bool Synthesis::fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
                             double radius) {
     const int c = choice.element;
     const auto& ring = reference_.rings[static_cast<std::size_t>(c)];
@@ -691,18 +721,44 @@ void Synthesis::fit_to_ring(int id, const Choice& choice, const std::vector<int>
                at;
         ++placed;
     }
-    if (placed == 0) return;
+    if (placed == 0) return false;
     const Point fitted_site = at + sum / placed;
     const Point fitted = fitted_site + jitter[static_cast<std::size_t>(c)].rotated(rotation);
-    if (!panel_.contains(fitted) || !panel_.reaches(at, fitted)) return;
+    if (!panel_.contains(fitted) || !panel_.reaches(at, fitted)) return false;
     const int symbol = reference_.symbol[choice.element];
     pattern_.move(id, fitted);
     if (motif_fits(id, fitted, radius) && too_close(id, fitted, symbol, true) < 0 &&
         !crowded(id, fitted)) {
         ++stats_.fitted;
-        return;
+        return true;
     }
     pattern_.move(id, at);
+    return false;
+}
+
+bool Synthesis::fit_to_site(int id, int element, double radius, const std::pair<long, long>* site) {
+    const JitteredLattice& lattice = *jittered_;
+    const Point at = pattern_[id].position;
+    const Vector own = lattice.jitter[static_cast<std::size_t>(element)];
+    // The first fitted motif puts the lattice down: its element's site where it stands.
+    const Vector shift =
+        shift_ ? *shift_ : (at - own) - lattice.site[static_cast<std::size_t>(element)];
+    const std::pair<long, long> index = site ? *site : lattice.index(at - own - shift);
+    const Point fitted = lattice.site_at(index) + shift + own;
+    if (!panel_.contains(fitted) || !panel_.reaches(at, fitted)) return false;
+    pattern_.move(id, fitted);
+    if (motif_fits(id, fitted, radius) &&
+        too_close(id, fitted, reference_.symbol[static_cast<std::size_t>(element)], true) < 0 &&
+        !crowded(id, fitted)) {
+        shift_ = shift;
+        taken_sites_.insert(index);
+        // On its site: relaxation (whose links a honeycomb's uneven rings misalign) holds it.
+        pattern_[id].fixed = true;
+        ++stats_.fitted;
+        return true;
+    }
+    pattern_.move(id, at);
+    return false;
 }
 
 bool Synthesis::still_valid(int id) const {

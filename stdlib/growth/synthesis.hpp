@@ -121,8 +121,14 @@ class Synthesis {
     // lattice steps put it) plus its element's own jitter, when it is valid there. Left where
     // its parent's ring put it, every step would add the difference of two elements' jitter;
     // fitted to the jittered offsets alone, the jitter would even out and the spacing widen.
-    void fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
+    // True when moved: the motif is then valid there (checked once, here).
+    bool fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
                      double radius);
+    // A jittered honeycomb: moves seed `id` to lattice site `site` (null: the first motif,
+    // which puts the lattice down at its element's site) plus the element's jitter, when valid
+    // there, and holds it there. Its rings are uneven (three bonds, some hexagon diagonals), so
+    // the neighbours' ring slots, which fit_to_ring pairs, often name the wrong site.
+    bool fit_to_site(int id, int element, double radius, const std::pair<long, long>* site);
     int priority(int symbol) const;
     // Options::w4: how far `symbol` is over its reference share among the placed motifs and the
     // waiting seeds (as count_coming() last counted them).
@@ -205,6 +211,13 @@ class Synthesis {
     const Lattice* lattice_ = nullptr;  // the reference's (lattice_of), when used
     // Off a lattice, a near-regular reference's sites and jitter (fit_jittered_lattice).
     std::optional<JitteredLattice> jittered_;
+    // Where the first fitted motif put the jittered lattice (grown site = reference site +
+    // shift_), and the sites taken (lattice coordinates).
+    std::optional<Vector> shift_;
+    std::set<std::pair<long, long>> taken_sites_;
+    // A honeycomb's candidates per sublattice: a site's bonds point one of two ways, and an
+    // element copied onto a site of the other way would put its ring seeds in hexagon centres.
+    std::vector<int> sublattice_candidates_[3];
     bool phase_ = false;  // the lattice's origin is set (by the first motif)
     Point origin_;
     std::set<Lattice::Spot> planted_spots_;  // completion seeds, each point once

@@ -402,9 +402,9 @@ def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015, 
     (its interior elements', like for like) on average and `nn_each` on every run, and its mean
     over all the runs within `nn_bias` (no bias of the growth as a whole). With `nn_inner`, also
     the inner motifs' NN median within it of the inner reference elements' on every run. The
-    jittered triangular lattices (near-regular, each motif put on its lattice site plus its
-    element's jitter: --metrics' near_regular.fitted) within `nn_fitted` on every run, all against
-    all and inner against inner."""
+    jittered lattices (near-regular, each motif put on its lattice site plus its element's
+    jitter: --metrics' near_regular.fitted; triangular and honeycomb here) within `nn_fitted` on
+    every run, all against all and inner against inner."""
     every, inner_every, fitted = [], [], []
     for ref, ref_panels in refs:
         for panel in ref_panels:
@@ -455,7 +455,7 @@ def grow_unseen(refs, seeds, nn_mean, nn_each, mix_allowed=0.03, nn_bias=0.015, 
     if nn_inner is not None:
         check(all(abs(v - 1) <= nn_inner for v in inner_every),
               f"mix: inner NN median {min(inner_every):.3f} to {max(inner_every):.3f} of the "
-              f"inner reference's per run ({100 * nn_inner:.0f}% allowed)")
+              f"inner reference's per run ({100 * nn_inner:.1f}% allowed)")
     bias = sum(every) / len(every)
     check(abs(bias - 1) <= nn_bias, f"mix: NN median {bias:.4f} of the reference's on average "
           f"over all {len(every)} runs ({100 * nn_bias:.1f}% allowed)")
@@ -497,7 +497,9 @@ def case_unseen_new():
     lattice jittered by 0.05, in the rectangle, the heart and the narrow neck, 4 seeds. The
     same checks as unseen_mix, but the NN median within 5% on average and 7.5% on every run (3 of
     the 120 runs are 5.1 to 7.1% off, the two sparsest sets with 40 to 60 motifs in the heart and
-    the neck: the noise of a median over few motifs, docs/stdlib/growth.md), and the mix within 5
+    the neck: the noise of a median over few motifs, docs/stdlib/growth.md), the inner motifs'
+    within 5% of the inner reference's on every run (4.3% at worst since the jittered honeycomb
+    grows on its lattice; before, 9 of its 12 runs were 5 to 8% close), and the mix within 5
     points (the sparsest set puts 40 motifs in the heart: one motif is 2.5 points)."""
     refs = []
     for seed, share, w, h, gap, sa, sb, jitter in ((71, 0.45, 70, 60, 6, 2.0, 2.5, None),
@@ -520,7 +522,7 @@ def case_unseen_new():
         path = WORK / f"unseen-{seed}.json"
         dart_reference(path, seed, share, w, h, gap, sa, sb, jitter, shares)
         refs.append((path, panels))
-    grow_unseen(refs, 4, 0.05, 0.075, mix_allowed=0.05)
+    grow_unseen(refs, 4, 0.05, 0.075, mix_allowed=0.05, nn_inner=0.05)
 
 
 def case_unseen_more():
@@ -530,7 +532,8 @@ def case_unseen_more():
     of its edge, each in the rectangle, the heart, the arch with a window and the narrow neck, 3
     seeds: grow_unseen's checks, the NN median within 5% on average and 6.5% on every run (2 of
     the 72 runs are 6.1% off, both in the heart, of the 13-spacing set with 52 motifs; the jittered
-    honeycomb's 0.939 there is 0.986 since the crowding rule, docs/stdlib/growth.md)."""
+    honeycomb's 0.939 there is 0.986 since the crowding rule, docs/stdlib/growth.md), the inner
+    motifs' within 6% of the inner reference's (5.5% at worst, the same two runs)."""
     refs = []
     for seed, share, w, h, gap, sa, sb, jitter, shares in (
             (201, 0.4, 95, 85, 8.5, 3.0, 2.5, None, None),
@@ -544,7 +547,7 @@ def case_unseen_more():
         refs.append(path)
     panels = ["rect:200,150", str(PANELS / "heart.svg"), str(PANELS / "arch-window.svg"),
               str(PANELS / "narrow-neck.svg")]
-    grow_unseen([(ref, panels) for ref in refs], 3, 0.05, 0.065)
+    grow_unseen([(ref, panels) for ref in refs], 3, 0.05, 0.065, nn_inner=0.06)
 
 
 def case_unseen_fresh():
@@ -578,8 +581,10 @@ def case_unseen_later():
     0.18 of their spacing, a honeycomb jittered by 0.1 of its edge, Poisson-disc sets of spacing
     11 and 16 and a three-symbol one of spacing 7, each in the L, the star, the frame and a
     rectangle, 3 seeds: grow_unseen's checks with the bounds measured (docs/stdlib/growth.md,
-    Limitations): the NN median within 7% per run, all against all and inner against inner (70
-    and 64 of the 72 runs within 5%, 6.4% off at worst), 5% on average per reference and panel;
+    Limitations): the NN median within 7% per run all against all, 6.5% inner against inner (69
+    and 70 of the 72 runs within 5%, 6.4% and 6.0% off at worst, the spacing-16 set's 30 motifs;
+    before the jittered honeycomb grew on its lattice 64 inner runs, 6 of its own 12 under 0.95),
+    5% on average per reference and panel;
     the same-symbol share within 3.5 points (the spacing-16 set puts 30 motifs in the star: 3.3
     points off once); the fitted triangular lattices within 6.5% per run, all and inner (the one
     jittered by 0.12 in the frame, seed 3: 1.063 all against all, the others within 4.3%)."""
@@ -596,7 +601,7 @@ def case_unseen_later():
         refs.append(path)
     panels = [str(PANELS / p) for p in ("l-shape.svg", "star.svg", "frame.svg")] + \
         ["rect:170,120"]
-    grow_unseen([(ref, panels) for ref in refs], 3, 0.05, 0.07, mix_allowed=0.05, nn_inner=0.07,
+    grow_unseen([(ref, panels) for ref in refs], 3, 0.05, 0.07, mix_allowed=0.05, nn_inner=0.065,
                 same_allowed=0.035, nn_fitted=0.065)
 
 
