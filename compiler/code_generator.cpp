@@ -1,7 +1,10 @@
 #include "code_generator.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "body_rewriter.hpp"
 #include "cpp_writer.hpp"
@@ -20,6 +23,47 @@ class Generator {
           out_(options.output_name, options.line_directives) {}
 
     std::string run() {
+        prologue();
+        for (const DrawModel& d : model_.draws) draw(d);
+        for (const RuleModel& r : model_.rules) rule(r);
+        if (model_.exhausted) exhausted();
+        for (const ParamModel& p : model_.params) param_access(p);
+        element_types();
+        pattern();
+        return out_.take();
+    }
+
+    // The tables, the code beside the rules (draws, %exhausted, parameters' access, element
+    // creation), then one unit per rule: each compiles on its own and changes on its own.
+    GeneratedUnits run_units() {
+        split_ = true;
+        GeneratedUnits units;
+        prologue();
+        const std::string header = out_.take();
+        out_ = CppWriter(options_.output_name, options_.line_directives);
+        tables();
+        units.tables = out_.take();
+        out_ = CppWriter(options_.output_name, options_.line_directives);
+        out_ << header;
+        for (const DrawModel& d : model_.draws) draw(d);
+        if (model_.exhausted) exhausted();
+        for (const ParamModel& p : model_.params) param_access(p);
+        out_ << "\n";
+        for (const auto& e : model_.elements)
+            out_ << "acanthus::Element* acr_create_" << e->name << "() { return new " << e->name
+                 << "; }\n";
+        units.code = out_.take();
+        for (const RuleModel& r : model_.rules) {
+            out_ = CppWriter(options_.output_name, options_.line_directives);
+            out_ << header;
+            rule(r);
+            units.rules.push_back(out_.take());
+        }
+        return units;
+    }
+
+  private:
+    void prologue() {
         for (const ParamModel& p : model_.params) params_.emplace(p.decl, &p);
         for (const auto& e : model_.elements) elements_.emplace(e->decl, e.get());
         const SourceFile& main = files_[model_.program.main_file];
@@ -37,16 +81,12 @@ class Generator {
             if (const auto* s = std::get_if<ast::SourceDecl>(ref.section)) source(*s, ref.file);
             if (const auto* e = std::get_if<ast::ElementDecl>(ref.section)) element_class(*e);
         }
-        for (const DrawModel& d : model_.draws) draw(d);
-        for (const RuleModel& r : model_.rules) rule(r);
-        if (model_.exhausted) exhausted();
-        for (const ParamModel& p : model_.params) param_access(p);
-        element_types();
-        pattern();
-        return out_.take();
     }
 
-  private:
+    // Split units: what every unit defines is `inline` (one object, whichever unit the linker
+    // keeps); what one unit defines is reached from the others by name.
+    const char* local() const { return split_ ? "" : "static "; }
+
     const ParamModel* find_param(const ast::ParamDecl& decl) const {
         auto it = params_.find(&decl);
         return it == params_.end() ? nullptr : it->second;
@@ -74,12 +114,15 @@ class Generator {
         const ParamModel* p = find_param(decl);
         if (!p) return;
         out_ << "\n"
-             << p->type.cpp << " " << decl.name.text << " = " << decl.default_value.text << ";\n";
+             << (split_ ? "inline " : "") << p->type.cpp << " " << decl.name.text << " = "
+             << decl.default_value.text << ";\n";
     }
 
     void source(const ast::SourceDecl& decl, std::uint32_t file) {
         out_ << "\n";
-        user_text(file, decl.code.begin, body_text(file, decl.code));
+        std::string text = body_text(file, decl.code);
+        if (split_) text = inline_namespace_definitions(text);
+        user_text(file, decl.code.begin, text);
     }
 
     void element_class(const ast::ElementDecl& decl) {
@@ -120,7 +163,8 @@ class Generator {
 
     void draw(const DrawModel& d) {
         const std::string& n = d.element->name;
-        out_ << "\nstatic void acr_draw_" << n
+        out_ << "\n"
+             << local() << "void acr_draw_" << n
              << "(acanthus::Canvas& canvas, const acanthus::Element& e_) {\n"
              << "    const " << n << "* const self_ = static_cast<const " << n << "*>(&e_);\n"
              << "    (void)self_;\n"
@@ -133,7 +177,7 @@ class Generator {
 
     void rule(const RuleModel& r) {
         out_ << "\n// " << r.name << "\n"
-             << "static acanthus::Result acr_rule_" << static_cast<long>(r.index)
+             << local() << "acanthus::Result acr_rule_" << static_cast<long>(r.index)
              << "(acanthus::RuleCall& call_) {\n"
              << "    " << r.parent->name << "* const self_ = &call_.parent<" << r.parent->name
              << ">();\n";
@@ -153,7 +197,8 @@ class Generator {
 
     void exhausted() {
         const ast::ExhaustedDecl& x = *model_.exhausted;
-        out_ << "\nstatic acanthus::Flow acr_exhausted() {\n"
+        out_ << "\n"
+             << local() << "acanthus::Flow acr_exhausted() {\n"
              << "    {\n";
         user_text(model_.exhausted_file, x.body.begin, body_text(model_.exhausted_file, x.body));
         out_ << "    }\n"
@@ -163,16 +208,18 @@ class Generator {
 
     void param_access(const ParamModel& p) {
         const std::string& n = p.decl->name.text;
-        out_ << "\nstatic bool acr_param_set_" << n
+        out_ << "\n"
+             << local() << "bool acr_param_set_" << n
              << "(std::string_view t_, std::string& e_) { return acanthus::parse_param(t_, " << n
              << ", e_); }\n"
-             << "static std::string acr_param_get_" << n << "() { return acanthus::format_param("
-             << n << "); }\n";
+             << local() << "std::string acr_param_get_" << n
+             << "() { return acanthus::format_param(" << n << "); }\n";
     }
 
     void element_types() {
         out_ << "\n";
         for (const auto& e : model_.elements) {
+            if (split_) break;  // (in the code unit, where the classes are)
             out_ << "static acanthus::Element* acr_create_" << e->name << "() { return new "
                  << e->name << "; }\n";
         }
@@ -254,19 +301,239 @@ class Generator {
         }
     }
 
+    // The split units' tables: declarations of what the other units define, no user code.
+    void tables() {
+        out_ << "// Generated by acanthus. Do not edit.\n"
+             << "#include <acanthus/rules.hpp>\n"
+             << "\n"
+             << "#include <cstddef>\n"
+             << "#include <stdexcept>\n"
+             << "#include <string>\n"
+             << "#include <string_view>\n"
+             << "\n";
+        for (const auto& e : model_.elements) {
+            out_ << "extern const acanthus::ElementType acr_type_" << e->name << ";\n"
+                 << "acanthus::Element* acr_create_" << e->name << "();\n";
+        }
+        for (const DrawModel& d : model_.draws)
+            out_ << "void acr_draw_" << d.element->name
+                 << "(acanthus::Canvas&, const acanthus::Element&);\n";
+        for (const RuleModel& r : model_.rules)
+            out_ << "acanthus::Result acr_rule_" << static_cast<long>(r.index)
+                 << "(acanthus::RuleCall&);\n";
+        if (model_.exhausted) out_ << "acanthus::Flow acr_exhausted();\n";
+        for (const ParamModel& p : model_.params) {
+            const std::string& n = p.decl->name.text;
+            out_ << "bool acr_param_set_" << n << "(std::string_view, std::string&);\n"
+                 << "std::string acr_param_get_" << n << "();\n";
+        }
+        element_types();
+        pattern();
+    }
+
     const PatternModel& model_;
     const SourceFiles& files_;
     const GenerateOptions& options_;
     CppWriter out_;
+    bool split_ = false;
     std::map<const ast::ParamDecl*, const ParamModel*> params_;
     std::map<const ast::ElementDecl*, const ElementModel*> elements_;
 };
 
 }  // namespace
 
+namespace {
+
+bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The end of the comment, literal or preprocessor line starting at `i`, or `i` when none does.
+std::size_t skip_non_code(std::string_view s, std::size_t i, bool line_start) {
+    const std::size_t n = s.size();
+    if (s.compare(i, 2, "//") == 0 || (line_start && s[i] == '#')) {
+        for (; i < n && s[i] != '\n'; ++i)
+            if (s[i] == '\\' && i + 1 < n) ++i;  // continued line
+        return i;
+    }
+    if (s.compare(i, 2, "/*") == 0) {
+        const std::size_t end = s.find("*/", i + 2);
+        return end == std::string_view::npos ? n : end + 2;
+    }
+    if (s[i] == 'R' && i + 1 < n && s[i + 1] == '"' &&
+        (i == 0 || !word_char(s[i - 1]) || s[i - 1] == '8' || s[i - 1] == 'u' || s[i - 1] == 'U' ||
+         s[i - 1] == 'L')) {
+        const std::size_t open = s.find('(', i);
+        if (open == std::string_view::npos) return n;
+        const std::string close = ")" + std::string(s.substr(i + 2, open - i - 2)) + "\"";
+        const std::size_t end = s.find(close, open);
+        return end == std::string_view::npos ? n : end + close.size();
+    }
+    // A quote after a digit separates digits (1'000).
+    if (s[i] == '"' ||
+        (s[i] == '\'' && (i == 0 || !std::isdigit(static_cast<unsigned char>(s[i - 1]))))) {
+        const char quote = s[i];
+        for (++i; i < n && s[i] != quote && s[i] != '\n'; ++i)
+            if (s[i] == '\\') ++i;
+        return std::min(n, i + 1);
+    }
+    return i;
+}
+
+// Whether the declaration before a `{` opens a namespace or a linkage block.
+bool opens_namespace(std::string_view head) {
+    std::string words;
+    for (char c : head) {
+        if (std::isspace(static_cast<unsigned char>(c))) {
+            if (!words.empty() && words.back() != ' ') words += ' ';
+        } else {
+            words += c;
+        }
+    }
+    while (!words.empty() && words.back() == ' ') words.pop_back();
+    return words.rfind("namespace", 0) == 0 || words.rfind("inline namespace", 0) == 0 ||
+           words == "extern \"C\"" || words == "extern \"C++\"";
+}
+
+}  // namespace
+
+std::string inline_namespace_definitions(std::string_view cpp) {
+    std::vector<std::pair<std::size_t, std::string>> edits;  // (where, inserted) in `cpp`
+    std::vector<bool> braces;                                // true: a namespace's
+    int parens = 0;
+    std::string decl;          // the declaration at namespace scope so far, code only
+    std::size_t start = 0;     // where it began in `cpp`
+    bool initializer = false;  // past its top-level `=`
+    bool after_body = false;   // a class's body closed in it (`struct S {} s;`)
+    bool line_start = true;
+    const auto at_namespace_scope = [&] {
+        return std::find(braces.begin(), braces.end(), false) == braces.end();
+    };
+    const auto first_word = [&] {
+        std::size_t b = 0;
+        while (b < decl.size() && !word_char(decl[b])) ++b;
+        std::size_t e = b;
+        while (e < decl.size() && word_char(decl[e])) ++e;
+        return decl.substr(b, e - b);
+    };
+    const auto has_word = [](std::string_view text, std::string_view word) {
+        for (std::size_t k = text.find(word); k != std::string_view::npos;
+             k = text.find(word, k + 1))
+            if ((k == 0 || !word_char(text[k - 1])) &&
+                (k + word.size() == text.size() || !word_char(text[k + word.size()])))
+                return true;
+        return false;
+    };
+    // Declarations that are not a variable's or a function's definition, or are one already.
+    const auto shared_already = [&] {
+        static const std::set<std::string> words{
+            "",       "using",     "typedef",   "template",      "extern", "namespace", "class",
+            "struct", "union",     "enum",      "static_assert", "friend", "typename",  "asm",
+            "export", "constexpr", "consteval", "inline",        "static"};
+        return words.count(first_word()) != 0 || has_word(decl, "inline") ||
+               has_word(decl, "constexpr") || has_word(decl, "consteval");
+    };
+    const auto make_inline = [&] {
+        if (!shared_already()) edits.emplace_back(start, "inline ");
+    };
+    for (std::size_t i = 0; i < cpp.size();) {
+        const char c = cpp[i];
+        if (const std::size_t end = skip_non_code(cpp, i, line_start); end != i) {
+            if (at_namespace_scope() && (c == '"' || c == '\'' || c == 'R')) {
+                if (decl.empty()) start = i;
+                decl.append(cpp.substr(i, end - i));
+            }
+            if (at_namespace_scope()) decl += ' ';
+            i = end;
+            continue;
+        }
+        if (c == '\n') {
+            line_start = true;
+        } else if (!std::isspace(static_cast<unsigned char>(c))) {
+            line_start = false;
+        }
+        const bool outside = at_namespace_scope();
+        if (outside && !std::isspace(static_cast<unsigned char>(c)) &&
+            decl.find_first_not_of(' ') == std::string::npos)
+            start = i;
+        if (word_char(c)) {
+            std::size_t end = i;
+            while (end < cpp.size() && word_char(cpp[end])) ++end;
+            const std::string_view word = cpp.substr(i, end - i);
+            if (outside && parens == 0 && word == "static") {
+                // The declaration's specifiers run to its name's `(`, `=`, `;` or `{`.
+                const std::size_t stop = std::min(cpp.size(), cpp.find_first_of("(=;{", end));
+                const bool has_inline =
+                    has_word(decl, "inline") || has_word(cpp.substr(end, stop - end), "inline");
+                edits.emplace_back(i, has_inline ? "" : "inline");
+            }
+            if (outside) decl.append(word);
+            i = end;
+            continue;
+        }
+        if (!outside) {
+            if (c == '{') braces.push_back(false);
+            if (c == '}') {
+                braces.pop_back();
+                if (at_namespace_scope() && !initializer && !after_body) decl.clear();
+            }
+            ++i;
+            continue;
+        }
+        if (c == '(') ++parens;
+        if (c == ')' && parens > 0) --parens;
+        if (parens == 0 && c == '=') initializer = true;
+        if (parens > 0 || (c != '{' && c != '}' && c != ';')) {
+            decl += c;
+            ++i;
+            continue;
+        }
+        if (c == '{' && !initializer) {
+            const bool space = opens_namespace(decl);
+            const std::string word = first_word();
+            const bool function = !space && decl.find('(') != std::string::npos &&
+                                  word != "class" && word != "struct" && word != "union" &&
+                                  word != "enum";
+            if (function) make_inline();
+            braces.push_back(space);
+            // A function's body ends its definition; a class's is followed by its `;`.
+            after_body = !space && !function;
+            if (space || function) decl.clear();
+        } else if (c == '{') {
+            braces.push_back(false);
+        } else if (c == '}') {
+            if (!braces.empty()) braces.pop_back();
+            decl.clear();
+        } else {  // ';'
+            const std::size_t paren = decl.find('(');
+            const bool variable = paren == std::string::npos || decl.find('=') < paren;
+            if (variable && !after_body) make_inline();
+            decl.clear();
+            initializer = after_body = false;
+        }
+        ++i;
+    }
+    // `static` becomes `inline` (or goes, beside an `inline`), in place: columns are kept.
+    std::string out(cpp);
+    std::sort(edits.begin(), edits.end(),
+              [](const auto& x, const auto& y) { return x.first > y.first; });
+    for (const auto& [at, text] : edits) {
+        const bool is_static =
+            cpp.compare(at, 6, "static") == 0 && (at + 6 == cpp.size() || !word_char(cpp[at + 6]));
+        if (is_static)
+            out.replace(at, 6, text.empty() ? "      " : text);
+        else
+            out.insert(at, text);
+    }
+    return out;
+}
+
 std::string generate_cpp(const PatternModel& model, const SourceFiles& files,
                          const GenerateOptions& options) {
     return Generator(model, files, options).run();
+}
+
+GeneratedUnits generate_cpp_units(const PatternModel& model, const SourceFiles& files,
+                                  const GenerateOptions& options) {
+    return Generator(model, files, options).run_units();
 }
 
 }  // namespace acanthus

@@ -210,7 +210,7 @@ bool RenderJob::prepare_host() {
     return true;
 }
 
-bool RenderJob::build(const std::string& stem, const std::string& cpp,
+bool RenderJob::build(const std::string& stem, const std::string& cpp, const GeneratedUnits& units,
                       std::vector<std::string>& program) {
     const std::string log = (fs::path(config_.work_dir) / "build.log").string();
     BuildOptions options = config_.build;
@@ -227,6 +227,22 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp,
     }
     error.clear();
     std::string built;
+    // Units compiled apart and linked: a save that edits one rule body compiles only it. A
+    // program that cannot be split, or does not build so, is built whole (whose messages are
+    // the ones shown).
+    if (options.shared_library && !options.link_command.empty()) {
+        std::vector<std::string> parts{units.tables, units.code};
+        parts.insert(parts.end(), units.rules.begin(), units.rules.end());
+        bool splittable = true;
+        if (cached_split_library(config_.toolchain, options, stem, parts, built, splittable,
+                                 error)) {
+            program = {host_, built};
+            return true;
+        }
+        if (cancelled) return false;
+        fs::remove(log, ec);
+        error.clear();
+    }
     if (cached_executable(config_.toolchain, options, stem, cpp, built, error)) {
         program = host_.empty() ? std::vector<std::string>{built}
                                 : std::vector<std::string>{host_, built};
@@ -262,7 +278,9 @@ void RenderJob::render(long generation) {
     std::ostringstream diagnostics;
     std::vector<std::string> files;
     std::vector<ParamSummary> params;
-    bool compiled = compile_rule_file(request, true, cpp, diagnostics, &files, &params);
+    GeneratedUnits units;
+    bool compiled = compile_rule_file(request, true, cpp, diagnostics, &files, &params,
+                                      host_.empty() ? nullptr : &units);
     files.push_back(config_.input);
     watcher_.watch(files);
     {
@@ -283,7 +301,7 @@ void RenderJob::render(long generation) {
     const auto build_start = Clock::now();
     std::vector<std::string> program;
     build_cpu_ = 0;
-    if (!build(stem, cpp, program)) return;
+    if (!build(stem, cpp, units, program)) return;
     if (cancel_) return;
     status_.set_timing("build", seconds_since(build_start));
     status_.set_timing("build_cpu", build_cpu_);

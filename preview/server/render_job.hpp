@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "code_generator.hpp"
 #include "server/settings.hpp"
 #include "server/status.hpp"
 #include "server/stroke_tools.hpp"
@@ -68,7 +69,8 @@ class RenderJob {
     bool prepare_host();  // false when cancelled
     // The program to run (the host and the rule library, or an executable); false on failure
     // (the status says why) or when cancelled.
-    bool build(const std::string& stem, const std::string& cpp, std::vector<std::string>& program);
+    bool build(const std::string& stem, const std::string& cpp, const GeneratedUnits& units,
+               std::vector<std::string>& program);
     std::string command_line(const PreviewSettings& s) const;
     // The errors of `output`, each with the source around it.
     std::vector<PreviewDiagnostic> diagnose(const std::string& output) const;
