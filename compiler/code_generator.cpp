@@ -452,7 +452,7 @@ std::string inline_namespace_definitions(std::string_view cpp) {
         }
         const bool outside = at_namespace_scope();
         if (outside && !std::isspace(static_cast<unsigned char>(c)) &&
-            decl.find_first_not_of(' ') == std::string::npos)
+            decl.find_first_not_of(" \t\n\r\f\v") == std::string::npos)
             start = i;
         if (word_char(c)) {
             std::size_t end = i;

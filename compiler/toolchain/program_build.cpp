@@ -348,8 +348,10 @@ bool copies_state(const std::vector<std::string>& objects) {
 
 bool cached_split_library(const Toolchain& toolchain, const BuildOptions& options,
                           const std::string& stem, const std::vector<std::string>& units,
-                          std::string& library, bool& splittable, std::string& error) {
+                          std::string& library, bool& splittable, std::string& error,
+                          std::size_t compile_at_most, bool* deferred) {
     splittable = true;
+    if (deferred) *deferred = false;
     const fs::path dir(cache_directory());
     const fs::path unit_dir = dir / "units";
     std::error_code ec;
@@ -381,6 +383,13 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
     key_parts.insert(key_parts.end(), options.link_command.begin(), options.link_command.end());
     library = (dir / (stem + "-" + cache_key(key_parts) + ".so")).string();
     if (access(library.c_str(), R_OK) == 0) return true;
+    std::size_t missing = 0;
+    for (const std::string& object : objects) missing += access(object.c_str(), R_OK) != 0;
+    if (missing > compile_at_most) {
+        if (deferred) *deferred = true;
+        error = std::to_string(missing) + " units to compile";
+        return false;
+    }
 
     std::string work = (fs::temp_directory_path(ec) / "acanthus-build.XXXXXX").string();
     if (!mkdtemp(work.data())) {

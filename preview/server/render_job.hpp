@@ -71,6 +71,8 @@ class RenderJob {
     // (the status says why) or when cancelled.
     bool build(const std::string& stem, const std::string& cpp, const GeneratedUnits& units,
                std::vector<std::string>& program);
+    // Compiles the units a whole build stood in for, so that the next save compiles one.
+    void fill_units();
     std::string command_line(const PreviewSettings& s) const;
     // The errors of `output`, each with the source around it.
     std::vector<PreviewDiagnostic> diagnose(const std::string& output) const;
@@ -89,6 +91,9 @@ class RenderJob {
     bool prelude_failed_ = false;
     std::string host_;  // empty: not built yet, or failed
     bool host_failed_ = false;
+    std::vector<std::string> units_to_fill_;  // (render thread only)
+    BuildOptions fill_options_;
+    std::string fill_stem_;
     std::vector<std::string> good_program_;
     std::vector<std::string> good_arguments_;
     std::vector<std::string> source_files_;

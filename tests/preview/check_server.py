@@ -197,6 +197,14 @@ def main():
             cache = (os.environ.get("ACANTHUS_CACHE_DIR") or
                      os.path.expanduser(os.path.join("~", ".cache", "acanthus")))
             units = os.path.join(cache, "units")
+            # The first build is the whole file; its units (two rules, the draws, the tables)
+            # are compiled after its picture: until no new one came for 2 s.
+            listing = lambda: set(os.listdir(units)) if os.path.isdir(units) else set()
+            seen, since, deadline = listing(), time.monotonic(), time.monotonic() + 60
+            while time.monotonic() - since < 2 and time.monotonic() < deadline:
+                time.sleep(0.1)
+                if listing() != seen:
+                    seen, since = listing(), time.monotonic()
             before = set(os.listdir(units)) if os.path.isdir(units) else set()
             save(rules, good.replace("    $$.sterile = 1;",
                                      "    $$.sterile = 1; (void)%d;" % (time.time_ns() % 10**9)))
