@@ -245,6 +245,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, const Gen
         if (deferred) {
             units_to_fill_ = std::move(parts);
             fill_options_ = options;
+            fill_options_.runner = nullptr;  // (this build's, given again by fill_units)
             fill_stem_ = stem;
         }
         fs::remove(log, ec);
