@@ -10,7 +10,7 @@ namespace acanthus {
 
 bool compile_rule_file(const CompileRequest& request, bool generate_code, std::string& cpp,
                        std::ostream& diagnostics_out, std::vector<std::string>* read_files,
-                       std::vector<ParamSummary>* params) {
+                       std::vector<ParamSummary>* params, GeneratedUnits* units) {
     SourceFiles files;
     Diagnostics diagnostics(files);
     ImportLoader loader(files, diagnostics, request.include_dirs, request.stdlib_dirs);
@@ -39,6 +39,7 @@ bool compile_rule_file(const CompileRequest& request, bool generate_code, std::s
         }
     }
     if (generate_code) cpp = generate_cpp(model, files, request.generate);
+    if (generate_code && units) *units = generate_cpp_units(model, files, request.generate);
     return true;
 }
 

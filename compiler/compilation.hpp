@@ -26,10 +26,12 @@ struct ParamSummary {
 };
 
 // True with `cpp` set when the rule file has no errors. `generate_code` false only checks.
-// `read_files`, when given, receives the path of every rule file read (the input, its imports).
+// `read_files`, when given, receives the path of every rule file read (the input, its imports);
+// `units`, the same program split into units (generate_cpp_units).
 bool compile_rule_file(const CompileRequest& request, bool generate_code, std::string& cpp,
                        std::ostream& diagnostics_out,
                        std::vector<std::string>* read_files = nullptr,
-                       std::vector<ParamSummary>* params = nullptr);
+                       std::vector<ParamSummary>* params = nullptr,
+                       GeneratedUnits* units = nullptr);
 
 }  // namespace acanthus

@@ -1,14 +1,18 @@
 #include "toolchain/program_build.hpp"
 
+#include <elf.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <acanthus/output_file.hpp>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <set>
 
 #include "toolchain/process.hpp"
 
@@ -260,6 +264,191 @@ bool cached_executable(const Toolchain& toolchain, const BuildOptions& options,
     executable = (dir / (stem + "-" + hash.hex() + (options.shared_library ? ".so" : ""))).string();
     if (access(executable.c_str(), X_OK) == 0) return true;
     return build_executable(toolchain, options, stem, cpp, executable, error);
+}
+
+}  // namespace acanthus
+
+namespace acanthus {
+
+std::vector<std::string> local_writable_objects(const std::string& object_path) {
+    std::vector<std::string> names;
+    std::ifstream in(object_path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    Elf64_Ehdr header;
+    if (bytes.size() < sizeof header) return names;
+    std::memcpy(&header, bytes.data(), sizeof header);
+    if (std::memcmp(header.e_ident, ELFMAG, SELFMAG) != 0 ||
+        header.e_ident[EI_CLASS] != ELFCLASS64 || header.e_shentsize != sizeof(Elf64_Shdr) ||
+        header.e_shoff + std::uint64_t(header.e_shnum) * sizeof(Elf64_Shdr) > bytes.size())
+        return names;
+    std::vector<Elf64_Shdr> sections(header.e_shnum);
+    std::memcpy(sections.data(), bytes.data() + header.e_shoff,
+                sections.size() * sizeof(Elf64_Shdr));
+    for (const Elf64_Shdr& table : sections) {
+        if (table.sh_type != SHT_SYMTAB || table.sh_link >= sections.size()) continue;
+        const Elf64_Shdr& strings = sections[table.sh_link];
+        if (table.sh_offset + table.sh_size > bytes.size() ||
+            strings.sh_offset + strings.sh_size > bytes.size())
+            continue;
+        for (std::uint64_t at = 0; at + sizeof(Elf64_Sym) <= table.sh_size;
+             at += sizeof(Elf64_Sym)) {
+            Elf64_Sym symbol;
+            std::memcpy(&symbol, bytes.data() + table.sh_offset + at, sizeof symbol);
+            const unsigned type = ELF64_ST_TYPE(symbol.st_info);
+            if (ELF64_ST_BIND(symbol.st_info) != STB_LOCAL ||
+                (type != STT_OBJECT && type != STT_TLS) || symbol.st_shndx >= sections.size() ||
+                !(sections[symbol.st_shndx].sh_flags & SHF_WRITE) ||
+                symbol.st_name >= strings.sh_size)
+                continue;
+            const char* name = bytes.data() + strings.sh_offset + symbol.st_name;
+            names.emplace_back(name, strnlen(name, strings.sh_size - symbol.st_name));
+        }
+    }
+    return names;
+}
+
+namespace {
+
+// A unit's text for its object's cache key: a save that adds a line above a unit's code moves
+// its #line numbers, which change nothing in the object (no debug information) unless the code
+// names its line.
+std::string without_line_numbers(const std::string& unit) {
+    for (const char* uses_line : {"__LINE__", "assert", "source_location", "__builtin_LINE"})
+        if (unit.find(uses_line) != std::string::npos) return unit;
+    std::string out;
+    out.reserve(unit.size());
+    for (std::size_t start = 0; start < unit.size();) {
+        std::size_t end = unit.find('\n', start);
+        end = end == std::string::npos ? unit.size() : end + 1;
+        if (unit.compare(start, 6, "#line ") == 0) {
+            const std::size_t name = unit.find('"', start);
+            out += "#line ";
+            if (name < end) out.append(unit, name, end - name);
+        } else {
+            out.append(unit, start, end - start);
+        }
+        start = end;
+    }
+    return out;
+}
+
+// `static` objects that two units both define: state the single program has once.
+bool copies_state(const std::vector<std::string>& objects) {
+    std::set<std::string> seen;
+    for (const std::string& object : objects) {
+        const std::vector<std::string> names = local_writable_objects(object);
+        for (const std::string& name : std::set<std::string>(names.begin(), names.end()))
+            // (<iostream>'s initialiser is meant to be one per unit)
+            if (name != "_ZStL8__ioinit" && !seen.insert(name).second) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool cached_split_library(const Toolchain& toolchain, const BuildOptions& options,
+                          const std::string& stem, const std::vector<std::string>& units,
+                          std::string& library, bool& splittable, std::string& error,
+                          std::size_t compile_at_most, bool* deferred) {
+    splittable = true;
+    if (deferred) *deferred = false;
+    const fs::path dir(cache_directory());
+    const fs::path unit_dir = dir / "units";
+    std::error_code ec;
+    fs::create_directories(unit_dir, ec);
+    if (ec) {
+        error = "cannot create the cache directory '" + unit_dir.string() + "': " + ec.message();
+        return false;
+    }
+    std::vector<std::string> flags = object_command(toolchain, options, "SOURCE", "OBJECT");
+    flags.push_back(file_identity(toolchain.runtime_library));
+    flags.push_back(file_identity(toolchain.stdlib_library));
+    if (!options.precompiled_header.empty())
+        flags.push_back(file_identity(options.precompiled_header + ".gch"));
+    std::vector<std::string> objects, keys;
+    for (const std::string& unit : units) {
+        std::vector<std::string> parts = flags;
+        parts.push_back(without_line_numbers(unit));
+        keys.push_back(cache_key(parts));
+        objects.push_back((unit_dir / (stem + "-" + keys.back() + ".o")).string());
+    }
+    // The code unit holds the %source every unit includes.
+    const fs::path whole = unit_dir / (stem + "-" + keys.at(1) + ".whole");
+    if (fs::exists(whole, ec)) {
+        splittable = false;
+        error = "the program is built whole";
+        return false;
+    }
+    std::vector<std::string> key_parts = keys;
+    key_parts.insert(key_parts.end(), options.link_command.begin(), options.link_command.end());
+    library = (dir / (stem + "-" + cache_key(key_parts) + ".so")).string();
+    if (access(library.c_str(), R_OK) == 0) return true;
+    std::size_t missing = 0;
+    for (const std::string& object : objects) missing += access(object.c_str(), R_OK) != 0;
+    if (missing > compile_at_most) {
+        if (deferred) *deferred = true;
+        error = std::to_string(missing) + " units to compile";
+        return false;
+    }
+
+    std::string work = (fs::temp_directory_path(ec) / "acanthus-build.XXXXXX").string();
+    if (!mkdtemp(work.data())) {
+        error = "cannot create a temporary directory";
+        return false;
+    }
+    const auto run = [&](const std::vector<std::string>& cmd, const char* what) {
+        int status = options.runner ? options.runner(cmd, error) : run_process(cmd, error);
+        if (status > 0) error = std::string(what) + " (exit status " + std::to_string(status) + ")";
+        return status == 0;
+    };
+    bool ok = true;
+    for (std::size_t k = 0; ok && k < units.size(); ++k) {
+        if (access(objects[k].c_str(), R_OK) == 0) continue;
+        const std::string source =
+            (fs::path(work) / (stem + "-" + std::to_string(k) + ".cpp")).string();
+        std::string temp;
+        ok = write_file_atomically(source, units[k], error) &&
+             !(temp = create_temporary_sibling(objects[k], error)).empty();
+        ok = ok && run(object_command(toolchain, options, source, temp), "the C++ compiler failed");
+        if (ok && std::rename(temp.c_str(), objects[k].c_str()) != 0) {
+            error = "cannot write '" + objects[k] + "'";
+            ok = false;
+        }
+        if (!ok && !temp.empty()) remove_if_present(temp);
+    }
+    std::string temp;
+    if (ok && copies_state(objects)) {
+        splittable = false;
+        error = "the units would each have their own copy of a static variable";
+        ok = false;
+    }
+    if (ok) ok = !(temp = create_temporary_sibling(library, error)).empty();
+    if (ok) {
+        // References inside the library stay inside it: the %source's functions, now `inline`
+        // and exported, are not taken from the host when they share a name with one of its.
+        std::vector<std::string> link{options.link_command.front(), "-Bsymbolic"};
+        for (std::size_t k = 1; k < options.link_command.size(); ++k) {
+            const std::string& w = options.link_command[k];
+            if (w == kLinkObject)
+                link.insert(link.end(), objects.begin(), objects.end());
+            else
+                link.push_back(w == kLinkOutput ? temp : w);
+        }
+        ok = run(link, "linking the rule code failed");
+        // The units define something twice: %source that only a whole program can have.
+        if (!ok && error.find("exit status") != std::string::npos) splittable = false;
+    }
+    if (ok && std::rename(temp.c_str(), library.c_str()) != 0) {
+        error = "cannot write '" + library + "'";
+        ok = false;
+    }
+    if (!ok && !temp.empty()) remove_if_present(temp);
+    if (!splittable) {
+        std::string ignored;
+        write_file_atomically(whole.string(), error + "\n", ignored);
+    }
+    fs::remove_all(work, ec);
+    return ok;
 }
 
 }  // namespace acanthus

@@ -63,6 +63,22 @@ bool cached_executable(const Toolchain& toolchain, const BuildOptions& options,
                        const std::string& stem, const std::string& cpp, std::string& executable,
                        std::string& error);
 
+// With `options.shared_library` and `options.link_command`: the library of a program generated
+// as separate units (generate_cpp_units), each unit's object cached by its text and flags, so
+// that a save which edits one rule body compiles that unit alone, then links cached objects.
+// False with `error` set when a unit does not compile or the objects do not link; `splittable`
+// false when the program cannot be split (its %source keeps state that each unit would copy,
+// or defines what the units define again), remembered for its code unit: build it whole then.
+// More than `compile_at_most` units to compile: false with `deferred` set, nothing compiled.
+bool cached_split_library(const Toolchain& toolchain, const BuildOptions& options,
+                          const std::string& stem, const std::vector<std::string>& units,
+                          std::string& library, bool& splittable, std::string& error,
+                          std::size_t compile_at_most = ~std::size_t(0), bool* deferred = nullptr);
+
+// The names of the local, writable objects an ELF object file defines (`static` variables):
+// empty when it cannot be read.
+std::vector<std::string> local_writable_objects(const std::string& object_path);
+
 // $ACANTHUS_CACHE_DIR, else $XDG_CACHE_HOME/acanthus, else ~/.cache/acanthus.
 std::string cache_directory();
 

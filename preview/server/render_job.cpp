@@ -210,7 +210,7 @@ bool RenderJob::prepare_host() {
     return true;
 }
 
-bool RenderJob::build(const std::string& stem, const std::string& cpp,
+bool RenderJob::build(const std::string& stem, const std::string& cpp, const GeneratedUnits& units,
                       std::vector<std::string>& program) {
     const std::string log = (fs::path(config_.work_dir) / "build.log").string();
     BuildOptions options = config_.build;
@@ -227,6 +227,30 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp,
     }
     error.clear();
     std::string built;
+    // Units compiled apart and linked: a save that edits one rule body compiles only it. A
+    // program that cannot be split, or does not build so, is built whole (whose messages are
+    // the ones shown).
+    if (options.shared_library && !options.link_command.empty()) {
+        std::vector<std::string> parts{units.tables, units.code};
+        parts.insert(parts.end(), units.rules.begin(), units.rules.end());
+        bool splittable = true, deferred = false;
+        // A first build, or one after the %source or the element types changed, compiles every
+        // unit: more than the whole file. The whole file then, and the units after the picture.
+        if (cached_split_library(config_.toolchain, options, stem, parts, built, splittable, error,
+                                 2, &deferred)) {
+            program = {host_, built};
+            return true;
+        }
+        if (cancelled) return false;
+        if (deferred) {
+            units_to_fill_ = std::move(parts);
+            fill_options_ = options;
+            fill_options_.runner = nullptr;  // (this build's, given again by fill_units)
+            fill_stem_ = stem;
+        }
+        fs::remove(log, ec);
+        error.clear();
+    }
     if (cached_executable(config_.toolchain, options, stem, cpp, built, error)) {
         program = host_.empty() ? std::vector<std::string>{built}
                                 : std::vector<std::string>{host_, built};
@@ -262,7 +286,9 @@ void RenderJob::render(long generation) {
     std::ostringstream diagnostics;
     std::vector<std::string> files;
     std::vector<ParamSummary> params;
-    bool compiled = compile_rule_file(request, true, cpp, diagnostics, &files, &params);
+    GeneratedUnits units;
+    bool compiled = compile_rule_file(request, true, cpp, diagnostics, &files, &params,
+                                      host_.empty() ? nullptr : &units);
     files.push_back(config_.input);
     watcher_.watch(files);
     {
@@ -283,7 +309,8 @@ void RenderJob::render(long generation) {
     const auto build_start = Clock::now();
     std::vector<std::string> program;
     build_cpu_ = 0;
-    if (!build(stem, cpp, program)) return;
+    units_to_fill_.clear();
+    if (!build(stem, cpp, units, program)) return;
     if (cancel_) return;
     status_.set_timing("build", seconds_since(build_start));
     status_.set_timing("build_cpu", build_cpu_);
@@ -354,6 +381,7 @@ void RenderJob::render(long generation) {
         status_.set_timing("grow_cpu", end.cpu_seconds);
         status_.succeed(read_text(svg), read_text(png), metrics, seconds_since(start),
                         cut_by_time_limit(metrics, settings.time_limit));
+        fill_units();
     } else {
         // Only the program's error lines: the progress lines are noise here.
         std::string shown;
@@ -375,6 +403,20 @@ void RenderJob::render(long generation) {
         status_.fail("run", shown, diagnose(shown), seconds_since(start));
     }
     for (const std::string& f : {svg, png, out, err, partial}) fs::remove(f, ec);
+}
+
+void RenderJob::fill_units() {
+    if (units_to_fill_.empty()) return;
+    // Cancelled by the next save (run_child watches cancel_); its objects are kept.
+    const std::string log = (fs::path(config_.work_dir) / "units.log").string();
+    bool cancelled = false;
+    BuildOptions options = fill_options_;
+    options.runner = runner(log, cancelled);
+    std::string library, error;
+    bool splittable = true;
+    cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
+                         splittable, error);
+    units_to_fill_.clear();
 }
 
 std::vector<std::string> RenderJob::source_files() const {

@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "code_generator.hpp"
 #include "server/settings.hpp"
 #include "server/status.hpp"
 #include "server/stroke_tools.hpp"
@@ -68,7 +69,10 @@ class RenderJob {
     bool prepare_host();  // false when cancelled
     // The program to run (the host and the rule library, or an executable); false on failure
     // (the status says why) or when cancelled.
-    bool build(const std::string& stem, const std::string& cpp, std::vector<std::string>& program);
+    bool build(const std::string& stem, const std::string& cpp, const GeneratedUnits& units,
+               std::vector<std::string>& program);
+    // Compiles the units a whole build stood in for, so that the next save compiles one.
+    void fill_units();
     std::string command_line(const PreviewSettings& s) const;
     // The errors of `output`, each with the source around it.
     std::vector<PreviewDiagnostic> diagnose(const std::string& output) const;
@@ -87,6 +91,9 @@ class RenderJob {
     bool prelude_failed_ = false;
     std::string host_;  // empty: not built yet, or failed
     bool host_failed_ = false;
+    std::vector<std::string> units_to_fill_;  // (render thread only)
+    BuildOptions fill_options_;
+    std::string fill_stem_;
     std::vector<std::string> good_program_;
     std::vector<std::string> good_arguments_;
     std::vector<std::string> source_files_;

@@ -2,6 +2,7 @@
 
 #include <httplib.h>
 
+#include <acanthus/int_pair.hpp>
 #include <acanthus/output_file.hpp>
 #include <algorithm>
 #include <cmath>
@@ -91,18 +92,6 @@ bool parse_json(const httplib::Request& req, httplib::Response& res, json& out) 
         bad_request(res, "the body must be a JSON object");
         return false;
     }
-}
-
-// "WxH", each 16 to 8192.
-bool view_size(const std::string& text, int& width, int& height) {
-    const std::size_t x = text.find('x');
-    if (x == std::string::npos || x == 0 || x > 4 || text.size() - x - 1 > 4 ||
-        text.find_first_not_of("0123456789x") != std::string::npos ||
-        text.find('x', x + 1) != std::string::npos || x + 1 == text.size())
-        return false;
-    width = std::stoi(text.substr(0, x));
-    height = std::stoi(text.substr(x + 1));
-    return width >= 16 && width <= 8192 && height >= 16 && height <= 8192;
 }
 
 void send_picture(httplib::Response& res, std::string png, const char* missing) {
@@ -373,12 +362,13 @@ void add_routes(httplib::Server& server, PreviewSite& site) {
     // ?view=WxH: the picture's room on the page in device pixels (from the page only).
     get("/status.json", [&site](const httplib::Request& req, httplib::Response& res) {
         if (req.has_param("view")) {
-            int width = 0, height = 0;
-            if (!view_size(req.get_param_value("view"), width, height)) {
-                bad_request(res, "view must be WxH, 16 to 8192 pixels each");
+            const auto size = read_view_size(req.get_param_value("view"));
+            if (!size) {
+                bad_request(res, "view must be WxH, " + std::to_string(view_size_min) + " to " +
+                                     std::to_string(view_size_max) + " pixels each");
                 return;
             }
-            site.job.set_view_size(width, height);
+            site.job.set_view_size(size->first, size->second);
         }
         json status = site.status.to_json();
         settings_json(site.job.settings(), site, status["settings"]);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "body_rewriter.hpp"
+#include "code_generator.hpp"
 #include "diagnostics.hpp"
 #include "member_fields.hpp"
 #include "param_type.hpp"
@@ -116,6 +117,37 @@ TEST(Sections, EndMarkerEndsABodyEvenInsideAComment) {
     auto p = parse("%source\n/* open\n%endsource\n%element seed point\n%endelement\n");
     EXPECT_EQ(p->diagnostics.error_count(), 0u) << p->report();
     EXPECT_EQ(p->file->sections.size(), 2u);
+}
+
+// The preview compiles each rule apart from the others, each unit with the %source: its
+// variables and functions must be one object across the units, so they become `inline`.
+TEST(SplitUnits, SourceDefinitionsBecomeInline) {
+    EXPECT_EQ(inline_namespace_definitions("static int phase = 0;\n"), "inline int phase = 0;\n");
+    EXPECT_EQ(inline_namespace_definitions("static inline int f() { return 1; }"),
+              "       inline int f() { return 1; }");
+    EXPECT_EQ(inline_namespace_definitions("int dot_count = 0;\nstd::vector<Circle> placed;\n"),
+              "inline int dot_count = 0;\ninline std::vector<Circle> placed;\n");
+    EXPECT_EQ(inline_namespace_definitions("double half(double x) { static int n; return x / 2; }"),
+              "inline double half(double x) { static int n; return x / 2; }");
+    EXPECT_EQ(inline_namespace_definitions("auto twice = [](int x) { return 2 * x; };"),
+              "inline auto twice = [](int x) { return 2 * x; };");
+    EXPECT_EQ(inline_namespace_definitions("int table[] = {1, 2};"),
+              "inline int table[] = {1, 2};");
+    EXPECT_EQ(inline_namespace_definitions("namespace n {\n  static int k;\n}\n"),
+              "namespace n {\n  inline int k;\n}\n");
+    // Left alone: members, locals, templates, constants, declarations, comments, literals and
+    // the preprocessor.
+    for (const char* same :
+         {"struct S { static int count; static int f(); };\n", "struct S { int x; } s;\n",
+          "template <class T> T twice(T x) { return 2 * x; }\n", "constexpr double k = 1.5;\n",
+          "inline int shared = 0;\n",
+          "int f(int);\nextern int elsewhere;\nusing namespace std;\ntypedef int I;\n",
+          "static_assert(sizeof(int) == 4);\n",
+          "#define ONCE static int once\n#include <vector>\n"})
+        EXPECT_EQ(inline_namespace_definitions(same), same);
+    EXPECT_EQ(inline_namespace_definitions("// static int a;\n/* static int b; */\n"
+                                           "const char* s = \"static int c;\";\n"),
+              "// static int a;\n/* static int b; */\ninline const char* s = \"static int c;\";\n");
 }
 
 TEST(MemberFields, ZeroInitializesSimpleDeclarations) {

@@ -5,6 +5,7 @@ import glob
 import http.client
 import os
 import re
+import shlex
 import shutil
 import socket
 import struct
@@ -182,6 +183,37 @@ def main():
                   "the same bytes as without Accept-Encoding")
             rules_fired = {r["rule"]: r["successes"] for r in s["metrics"]["rules"]}
             check(rules_fired.get("seed --> dot") == 1, "per-rule metrics")
+
+            # The rule code is built as units that compile apart (docs/preview.md#speed): the
+            # picture is the one `acanthus run` draws with the page's command, `dot_count` (the
+            # %source's variable both rules count with and the draw reads) one across them.
+            shown = os.path.join(work, "shown.svg")
+            command = shlex.split(s["command"])
+            check(command[0] == "acanthus" and command[-2] == "-o", "the command: %s" % command)
+            subprocess.run([acanthus, *command[1:-2], "-o", shown], cwd=work, check=True,
+                           capture_output=True, timeout=120)
+            check(open(shown, "rb").read() == first_svg, "the preview's picture is the program's")
+            # A save that edits one rule body compiles that rule's unit alone.
+            cache = (os.environ.get("ACANTHUS_CACHE_DIR") or
+                     os.path.expanduser(os.path.join("~", ".cache", "acanthus")))
+            units = os.path.join(cache, "units")
+            # The first build is the whole file; its units (two rules, the draws, the tables)
+            # are compiled after its picture: until no new one came for 2 s.
+            listing = lambda: set(os.listdir(units)) if os.path.isdir(units) else set()
+            seen, since, deadline = listing(), time.monotonic(), time.monotonic() + 60
+            while time.monotonic() - since < 2 and time.monotonic() < deadline:
+                time.sleep(0.1)
+                if listing() != seen:
+                    seen, since = listing(), time.monotonic()
+            before = set(os.listdir(units)) if os.path.isdir(units) else set()
+            save(rules, good.replace("    $$.sterile = 1;",
+                                     "    $$.sterile = 1; (void)%d;" % (time.time_ns() % 10**9)))
+            s = server.wait_revision(s["revision"])
+            added = sorted(set(os.listdir(units)) - before) if os.path.isdir(units) else []
+            check(s["state"] == "ok" and len(added) == 1 and added[0].startswith("bubbles-"),
+                  "an edited rule body compiles its own unit only: %s" % added)
+            save(rules, good)
+            s = server.wait_revision(s["revision"])
 
             # A broken file: the compiler's diagnostic at its line, the last good picture kept.
             broken = good.replace("    $$.sterile = 1;", "    $$.sterile = 1;\n    $7.radius = 2;")

@@ -1,8 +1,8 @@
 #include "output/repeat.hpp"
 
 #include <acanthus/error.hpp>
+#include <acanthus/int_pair.hpp>
 #include <algorithm>
-#include <charconv>
 #include <limits>
 
 namespace acanthus::detail {
@@ -43,18 +43,9 @@ std::vector<Point> RepeatLayout::offsets() const {
 
 std::pair<int, int> parse_int_pair(const std::string& text, int low, int high,
                                    const std::string& usage) {
-    const std::size_t x = text.find_first_of("xX");
-    if (x == std::string::npos) throw UsageError(usage);
-    auto number = [&](std::size_t begin, std::size_t end) {
-        int v = 0;
-        const char* first = text.data() + begin;
-        const char* last = text.data() + end;
-        auto [ptr, ec] = std::from_chars(first, last, v);
-        if (first == last || ec != std::errc() || ptr != last || v < low || v > high)
-            throw UsageError(usage);
-        return v;
-    };
-    return {number(0, x), number(x + 1, text.size())};
+    const auto pair = read_int_pair(text, low, high);
+    if (!pair) throw UsageError(usage);
+    return *pair;
 }
 
 std::pair<int, int> parse_repeat(const std::string& text) {

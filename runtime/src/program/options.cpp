@@ -6,6 +6,7 @@
 #include <acanthus/canvas.hpp>
 #include <acanthus/distance_metric.hpp>
 #include <acanthus/error.hpp>
+#include <acanthus/int_pair.hpp>
 #include <acanthus/param.hpp>
 #include <algorithm>
 #include <charconv>
@@ -184,9 +185,12 @@ std::optional<Point> parse_seed(const std::string& text) {
 }
 
 std::pair<int, int> parse_view_size(const std::string& text) {
-    return parse_int_pair(
-        text, 16, 8192,
-        "--view-size expects WxH, pixels from 16 to 8192 (e.g. 1200x800), not '" + text + "'");
+    const auto size = read_view_size(text);
+    if (!size)
+        throw UsageError("--view-size expects WxH, pixels from " + std::to_string(view_size_min) +
+                         " to " + std::to_string(view_size_max) + " (e.g. 1200x800), not '" + text +
+                         "'");
+    return *size;
 }
 
 std::optional<ProgramOptions> parse_program_options(const Pattern& pattern,
