@@ -200,7 +200,7 @@ TEST(ReservedNames, KeywordsSupportNamesAndGeneratedNames) {
 
 // Every name body.hpp brings into rule bodies is one a rule file may not declare again.
 TEST(ReservedNames, EveryNameBodyHppBringsIn) {
-    std::ifstream in(ACANTHUS_SOURCE_DIR "/runtime/include/acanthus/body.hpp");
+    std::ifstream in(std::string(ACANTHUS_SOURCE_DIR) + "/runtime/include/acanthus/body.hpp");
     ASSERT_TRUE(in) << "cannot read body.hpp";
     std::stringstream text;
     text << in.rdbuf();

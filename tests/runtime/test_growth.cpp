@@ -144,7 +144,8 @@ TEST(Growth, SameInputsGiveTheSameTree) {
 }
 
 TEST(RegionParts, TwoSeparatePartsAndASquareWithAHole) {
-    const Region two = Region::from_svg_file(ACANTHUS_SOURCE_DIR "/examples/panels/two-parts.svg");
+    const Region two =
+        Region::from_svg_file(std::string(ACANTHUS_SOURCE_DIR) + "/examples/panels/two-parts.svg");
     const auto parts = two.parts();
     ASSERT_EQ(parts.size(), 2u);
     EXPECT_NEAR(parts[0].area() + parts[1].area(), two.area(), 1e-6 * two.area());
@@ -180,7 +181,7 @@ TEST(RegionParts, IslandInAHoleIsAPartOfItsOwn) {
 
 TEST(Growth, DefaultSeedsOnePerPartLargestFirst) {
     const Region region =
-        Region::from_svg_file(ACANTHUS_SOURCE_DIR "/examples/panels/two-parts.svg");
+        Region::from_svg_file(std::string(ACANTHUS_SOURCE_DIR) + "/examples/panels/two-parts.svg");
     GrowthOptions o = small_options();
     o.max_elements = 200;
     const auto tree = grow(dots::pattern(), region, o);
