@@ -42,15 +42,8 @@ std::vector<Mark> jambs(const Facade& facade, const Face& f, double merge) {
         const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
         if (edge.arc || edge.closed || edge.bounds.height() <= 0) continue;
         if (edge.bounds.width() > 1e-9 * std::max(1.0, std::abs(edge.bounds.x1))) continue;
-        // A segmental arch's springing: its skewback steps with the bond round it as laid.
-        bool springs = false;
-        for (int k : {edge.corner_start, edge.corner_end}) {
-            if (k < 0) continue;
-            const Corner& c = facade.corners()[static_cast<std::size_t>(k)];
-            for (int o : {c.edge_in, c.edge_out})
-                springs |= o >= 0 && facade.edges()[static_cast<std::size_t>(o)].arc;
-        }
-        if (springs) continue;
+        // A segmental arch's jamb too: the lines reach it as a mason plumbs the perpends from
+        // the jamb, and the skewback over it steps with the bond as laid.
         const int sides = !edge.opening                        ? 0
                           : edge.inward(edge.length / 2).x > 0 ? kOpensLeft
                                                                : kOpensRight;

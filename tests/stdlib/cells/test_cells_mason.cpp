@@ -260,7 +260,7 @@ const Bond kBrickBonds[] = {Bond::running, Bond::english, Bond::flemish, Bond::h
 const std::map<std::string, long> kUnforced{
     {"row-house", 136}, {"gable", 48},        {"oculus", 1},   {"insets", 39},
     {"shopfront", 38},  {"chapel", 35},       {"terrace", 47}, {"gable-lancet", 50},
-    {"warehouse", 114}, {"ashlar-front", 95}, {"mill", 62}};
+    {"warehouse", 41},  {"ashlar-front", 95}, {"mill", 46}};
 
 std::string list(const std::vector<std::string>& v) {
     std::string s;

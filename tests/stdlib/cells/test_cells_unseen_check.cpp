@@ -221,26 +221,28 @@ Known known(const std::string& name, bool stone) {
     Known k;
     if (stone) return k;
     // Seed 1, perpends set out from the jambs, the bricks at them flush (before: shaved 60, 33,
-    // 56, 7, 10, 39, 22; odd 94, 71, 182, 58, 35, 121, 85). The segmental ends' jambs all spring
-    // arches: unchanged. The oculus under the top and the off-gauge heads have piers whose head
-    // joints cannot take up their jambs' difference with the bricks flush at both.
-    // The lancet over an arcade and the narrow pier: made up later, at the most of any bond
-    // and tree (their jambs fall anywhere between quarter bricks).
+    // 56, 7, 10, 39, 22; odd 94, 71, 182, 58, 35, 121, 85). Arched jambs set out too: the
+    // segmental ends shaved 33 -> 18, odd 71 -> 41, not forced 51 -> 20; the door past the end
+    // 8 -> 10, 32 -> 35, 17 -> 19 (the one facade worse; not yet looked into). The oculus under the
+    // top and the off-gauge heads have piers whose head joints cannot take up their jambs'
+    // difference with the bricks flush at both. The lancet over an arcade and the narrow pier: made
+    // up later, at the most of any bond and tree (their jambs fall anywhere between quarter
+    // bricks).
     static const std::map<std::string, long> shaved{
-        {"gable-pointed-end", 31}, {"segmental-ends", 33}, {"wide-opening", 20},
-        {"oculus-top", 17},        {"door-past-end", 8},   {"ashlar-arches", 21},
+        {"gable-pointed-end", 31}, {"segmental-ends", 18}, {"wide-opening", 20},
+        {"oculus-top", 17},        {"door-past-end", 10},  {"ashlar-arches", 21},
         {"off-gauge-heads", 18},   {"lancet-arcade", 61},  {"narrow-pier", 22}};
     static const std::map<std::string, long> odd{
-        {"gable-pointed-end", 65}, {"segmental-ends", 71}, {"wide-opening", 142},
-        {"oculus-top", 44},        {"door-past-end", 32},  {"ashlar-arches", 101},
+        {"gable-pointed-end", 65}, {"segmental-ends", 41}, {"wide-opening", 142},
+        {"oculus-top", 44},        {"door-past-end", 35},  {"ashlar-arches", 101},
         {"off-gauge-heads", 57},   {"lancet-arcade", 171}, {"narrow-pier", 107}};
     if (auto it = shaved.find(name); it != shaved.end()) k.shaved_bricks = it->second;
     if (auto it = odd.find(name); it != odd.end()) k.odd_pieces = it->second;
     // Of those, not forced by the geometry: runs of whole quarters between jambs the plumb unit
     // lines miss (docs/stdlib/cells.md, Limitations).
     static const std::map<std::string, long> unforced{
-        {"gable-pointed-end", 17}, {"segmental-ends", 51}, {"wide-opening", 19},
-        {"oculus-top", 35},        {"door-past-end", 17},  {"ashlar-arches", 47},
+        {"gable-pointed-end", 17}, {"segmental-ends", 20}, {"wide-opening", 19},
+        {"oculus-top", 35},        {"door-past-end", 19},  {"ashlar-arches", 47},
         {"off-gauge-heads", 29},   {"lancet-arcade", 119}, {"narrow-pier", 27}};
     if (auto it = unforced.find(name); it != unforced.end()) k.unforced_odd = it->second;
     return k;
@@ -358,7 +360,7 @@ TEST(CellsUnseen, NewFacadesForTheJambCheck) {
     // and 32 (of the odd pieces, more now fall within 12% of a brick's length). The terrace's
     // narrow piers: few of their jambs are reached with the bricks flush at both.
     const std::map<std::string, Caps> caps{{"terrace-piers", {247, 114, 0, 2, 0, 96}},
-                                           {"shop-corner", {131, 54, 0, 3, 0, 32}}};
+                                           {"shop-corner", {116, 33, 0, 3, 0, 18}}};
     Options o = centimetres();
     for (const auto& [name, cap] : caps) {
         const Facade f = Facade::from_svg_file(unseen(name));
@@ -481,6 +483,45 @@ TEST(CellsUnseen, KeyCoursedInAndNarrowPier) {
             const std::vector<std::string> v = faults(f, t.cells, spec);
             EXPECT_TRUE(v.empty()) << name << " ashlar seed " << seed << list(v);
         }
+    }
+}
+
+// Three facades made up after the arched jambs were set out, not tuned on: a gable whose
+// segmental window springs 12.3 cm from the wall's end, a shop front with a 4.12 m window, an
+// arcade of round heads on 24.7 cm piers. Every rule of the check in every bond and tree, odd
+// pieces capped at what seed 1 leaves (the most of any bond and tree).
+TEST(CellsUnseen, GableShopArcadeNotTunedOn) {
+    struct Caps {
+        long odd, shaved, unforced, cut_courses;
+    };
+    // The shop window's sill and head fall within courses; the window is 64% of the wall's
+    // width, so the courses cut to them there read as cut courses (3 in the framed tree, whose
+    // lintel's courses are cut too).
+    const std::map<std::string, Caps> caps{{"gable-segmental-end", {85, 27, 42, 1}},
+                                           {"shopfront-wide", {143, 14, 92, 3}},
+                                           {"arcade-piers", {135, 8, 33, 1}}};
+    for (const auto& [name, cap] : caps) {
+        Known k;
+        k.odd_pieces = cap.odd, k.shaved_bricks = cap.shaved, k.unforced_odd = cap.unforced;
+        k.cut_courses = cap.cut_courses;
+        const Facade f = Facade::from_svg_file(unseen(name));
+        Options o = centimetres();
+        for (Bond bond : kBrickBonds)
+            for (const auto& [tree_name, tree] : mason_trees()) {
+                o.bond = bond;
+                const Texture t = texture(f, tree, o, 1);
+                MasonReport m;
+                const std::vector<std::string> v = faults(f, t.cells, kCm, &m, k);
+                std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << m
+                          << "\n";
+                SCOPED_TRACE(name + " " + std::string(to_string(bond)) + " " + tree_name);
+                EXPECT_TRUE(v.empty()) << list(v);
+                EXPECT_EQ(m.narrow_pieces, 0);
+                EXPECT_EQ(m.king_closers_misplaced, 0);
+                if (bond != Bond::stack) {
+                    EXPECT_EQ(m.straight_joints, 0);
+                }
+            }
     }
 }
 
