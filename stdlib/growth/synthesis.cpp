@@ -72,8 +72,6 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
     const std::size_t all = reference.candidates.size();
     const std::size_t stride = (all + kMaxCandidates - 1) / kMaxCandidates;
     for (std::size_t k = 0; k < all; k += stride) candidates_.push_back(reference.candidates[k]);
-    prunable_ = !options.two_ring && options.mode != Mode::rotation && options.w1 > 0;
-    if (prunable_) build_slot_index();
     if (options.lattice && options.mode == Mode::none) {
         lattice_ = lattice_of(reference);
         if (lattice_) stats_.lattice_sites = static_cast<int>(lattice_->sites.size());
@@ -87,8 +85,7 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         if (options.fit_to_ring && options.mode == Mode::none && regularity.near_regular)
             jittered_ = fit_jittered_lattice(reference, regularity);
         if (jittered_) stats_.jitter = jittered_->rms;
-        // A honeycomb's sites come from its lattice, not from the neighbours' ring slots
-        // (fit_to_site).
+        // A honeycomb's sites are matched against elements of their own sublattice.
         if (jittered_ && jittered_->vacant >= 0) {
             stats_.honeycomb = true;
             for (int c : candidates_)
@@ -97,6 +94,20 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
                     .push_back(c);
         }
     }
+    // On a near-regular reference's lattice a seed is matched about its site (grow()), so each
+    // ring is taken about its element's site too: the placed neighbours' own jitter is compared
+    // with that of the candidate's neighbours, and the jitter the candidate brings is its own.
+    // Matched on the jittered offsets, the candidates whose jitter fits the neighbours' won, and
+    // neighbouring motifs' jitter came out alike: the grown lattice more even than the
+    // reference, its NN median wider.
+    if (jittered_) {
+        for (std::size_t c = 0; c < rings_.size(); ++c)
+            for (RingEntry& e : rings_[c]) e.offset += jittered_->jitter[c];
+        for (std::size_t c = 0; c < outer_rings_.size(); ++c)
+            for (OuterEntry& e : outer_rings_[c]) e.offset += jittered_->jitter[c];
+    }
+    prunable_ = !options.two_ring && options.mode != Mode::rotation && options.w1 > 0;
+    if (prunable_) build_slot_index();
     const std::size_t symbols = reference.symbols.size();
     gap_.assign(symbols * symbols, INFINITY);
     std::vector<long> edges(symbols * symbols, 0);
@@ -450,7 +461,8 @@ void Synthesis::grow_front() {
     }
 }
 
-std::vector<OuterEntry> Synthesis::outer_ring(int seed, const std::vector<int>& ring_nodes) const {
+std::vector<OuterEntry> Synthesis::outer_ring(int seed, const std::vector<int>& ring_nodes,
+                                              Point about) const {
     std::vector<OuterEntry> outer;
     std::vector<int> seen = ring_nodes;
     seen.push_back(seed);
@@ -459,7 +471,7 @@ std::vector<OuterEntry> Synthesis::outer_ring(int seed, const std::vector<int>& 
             if (std::find(seen.begin(), seen.end(), l.node) != seen.end()) continue;
             seen.push_back(l.node);
             const Node& o = pattern_[l.node];
-            if (o.placed()) outer.push_back({o.position - pattern_[seed].position, o.symbol});
+            if (o.placed()) outer.push_back({o.position - about, o.symbol});
         }
     return outer;
 }
@@ -583,28 +595,31 @@ void Synthesis::grow(int id) {
         pattern_.move(id, spot.at);
         candidates = &lattice_->sites[static_cast<std::size_t>(spot.site)].candidates;
     }
-    // A honeycomb, once its lattice is down: the seed's site is the one nearest it; a taken
-    // site or a hexagon centre holds no motif, and an element of the site's own sublattice is
-    // copied there.
+    // A near-regular reference, once its lattice is down: the seed's site is the one nearest
+    // it; a taken site (or a honeycomb's hexagon centre) holds no motif, and on a honeycomb an
+    // element of the site's own sublattice is copied there.
     std::pair<long, long> site{0, 0};
-    bool honeycomb_site = jittered_ && jittered_->vacant >= 0 && shift_;
-    if (honeycomb_site) {
+    bool on_site = jittered_ && shift_;
+    if (on_site) {
         site = jittered_->index(pattern_[id].position - *shift_);
         const int sublattice = JitteredLattice::sublattice(site);
-        if (sublattice == jittered_->vacant || taken_sites_.count(site) > 0) {
+        const bool honeycomb = jittered_->vacant >= 0;
+        if ((honeycomb && sublattice == jittered_->vacant) || taken_sites_.count(site) > 0) {
             // A restart fills a hole the lattice leaves (at the panel's edge): off its sites.
             if (id != restart_seed_) return drop(id);
-            honeycomb_site = false;
-        } else if (!sublattice_candidates_[sublattice].empty()) {
+            on_site = false;
+        } else if (honeycomb && !sublattice_candidates_[sublattice].empty()) {
             candidates = &sublattice_candidates_[sublattice];
         }
     }
     // The target neighbourhood w(e_tar): linked elements and seeds, CCW from the open side.
+    // On a site, about the site (the rings are taken about their elements' sites).
     std::vector<Vector> offsets;
     std::vector<int> neighbours;
+    const Point about = on_site ? jittered_->site_at(site) + *shift_ : pattern_[id].position;
     for (const Link& l : pattern_[id].links) {
         neighbours.push_back(l.node);
-        offsets.push_back(pattern_[l.node].position - pattern_[id].position);
+        offsets.push_back(pattern_[l.node].position - about);
     }
     std::vector<RingEntry> target;
     std::vector<int> target_nodes;
@@ -615,7 +630,7 @@ void Synthesis::grow(int id) {
     }
     if (options_.w4 > 0 && reference_.symbols.size() > 1 && !on_lattice()) count_coming();
     Choice choice = choose(pattern_[id], target,
-                           options_.two_ring && !on_lattice() ? outer_ring(id, target_nodes)
+                           options_.two_ring && !on_lattice() ? outer_ring(id, target_nodes, about)
                                                               : std::vector<OuterEntry>{},
                            *candidates);
     if (choice.element < 0) return drop(id);
@@ -628,15 +643,8 @@ void Synthesis::grow(int id) {
                       : 0.0;
     double radius = reference_.radius[choice.element] * scale;
     // A fitted motif was checked where it now stands.
-    bool fitted = false;
-    if (jittered_) {
-        if (jittered_->vacant >= 0) {
-            fitted = (!shift_ || honeycomb_site) &&
-                     fit_to_site(id, choice.element, radius, honeycomb_site ? &site : nullptr);
-        } else {
-            fitted = fit_to_ring(id, choice, target_nodes, radius);
-        }
-    }
+    const bool fitted = jittered_ && (!shift_ || on_site) &&
+                        fit_to_site(id, choice.element, radius, on_site ? &site : nullptr);
     if (!fitted && !motif_fits(id, pattern_[id].position, radius) && id == restart_seed_) {
         // A restart's hole holds the smallest motif, maybe not the best match: the best of
         // those that fit there (else the hole stays, its middle closed).
@@ -696,44 +704,6 @@ void Synthesis::grow(int id) {
     }
     spawn(id, choice, target_nodes);
     if (options_.relax) relax_around(id);
-}
-
-bool Synthesis::fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
-                            double radius) {
-    const int c = choice.element;
-    const auto& ring = reference_.rings[static_cast<std::size_t>(c)];
-    const auto& site = jittered_->site;
-    const auto& jitter = jittered_->jitter;
-    const double rotation = choice.match.rotation;
-    const Point at = pattern_[id].position;
-    Vector sum;
-    int placed = 0;
-    for (std::size_t i = 0; i < target_nodes.size(); ++i) {
-        const int slot = choice.slot(i, ring.size());
-        const Node& o = pattern_[target_nodes[i]];
-        if (slot < 0 || !o.placed()) continue;
-        // The neighbour's site (its position less its own element's jitter), less the
-        // lattice step from this element's site to its slot's.
-        const int e = ring[static_cast<std::size_t>(slot)].element;
-        const Vector step = site[static_cast<std::size_t>(e)] - site[static_cast<std::size_t>(c)];
-        sum += (o.position - jitter[static_cast<std::size_t>(o.source)].rotated(o.rotation) -
-                step.rotated(rotation)) -
-               at;
-        ++placed;
-    }
-    if (placed == 0) return false;
-    const Point fitted_site = at + sum / placed;
-    const Point fitted = fitted_site + jitter[static_cast<std::size_t>(c)].rotated(rotation);
-    if (!panel_.contains(fitted) || !panel_.reaches(at, fitted)) return false;
-    const int symbol = reference_.symbol[choice.element];
-    pattern_.move(id, fitted);
-    if (motif_fits(id, fitted, radius) && too_close(id, fitted, symbol, true) < 0 &&
-        !crowded(id, fitted)) {
-        ++stats_.fitted;
-        return true;
-    }
-    pattern_.move(id, at);
-    return false;
 }
 
 bool Synthesis::fit_to_site(int id, int element, double radius, const std::pair<long, long>* site) {

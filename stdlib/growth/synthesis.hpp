@@ -98,7 +98,9 @@ class Synthesis {
     Choice choose(const Node& seed, const std::vector<RingEntry>& target,
                   const std::vector<OuterEntry>& target_outer, const std::vector<int>& candidates);
     // Placed neighbours of the 1-ring nodes, beyond the seed and its 1-ring (Options::two_ring).
-    std::vector<OuterEntry> outer_ring(int seed, const std::vector<int>& ring_nodes) const;
+    // Offsets from `about` (the seed, or its site on a near-regular reference's lattice).
+    std::vector<OuterEntry> outer_ring(int seed, const std::vector<int>& ring_nodes,
+                                       Point about) const;
     bool motif_fits(int id, Point at, double radius) const;
     // Off a lattice: the node nearest `at` (other than `id`; placed motifs only when
     // `placed_only`) that a `symbol` would stand closer to than the reference ever puts those
@@ -116,18 +118,13 @@ class Synthesis {
     void drop(int seed);
     void relax_around(int centre);
     bool still_valid(int id) const;
-    // A near-regular reference (jittered_): moves seed `id`, about to become a motif of `radius`,
-    // to its lattice site (the mean of where its placed neighbours' sites and its chosen ring's
-    // lattice steps put it) plus its element's own jitter, when it is valid there. Left where
-    // its parent's ring put it, every step would add the difference of two elements' jitter;
-    // fitted to the jittered offsets alone, the jitter would even out and the spacing widen.
-    // True when moved: the motif is then valid there (checked once, here).
-    bool fit_to_ring(int id, const Choice& choice, const std::vector<int>& target_nodes,
-                     double radius);
-    // A jittered honeycomb: moves seed `id` to lattice site `site` (null: the first motif,
-    // which puts the lattice down at its element's site) plus the element's jitter, when valid
-    // there, and holds it there. Its rings are uneven (three bonds, some hexagon diagonals), so
-    // the neighbours' ring slots, which fit_to_ring pairs, often name the wrong site.
+    // A near-regular reference (jittered_): moves seed `id` to lattice site `site` (null: the
+    // first motif, which puts the lattice down at its element's site) plus the element's own
+    // jitter, when valid there, and holds it there. True when moved (checked once, here). All
+    // motifs on the one lattice: sites taken from the neighbours' ring slots drift, as a ring
+    // pairs its slots with the neighbours in turn and a jittered ring's slots (a grid's sides
+    // and some diagonals, a honeycomb's bonds and some hexagon diagonals) need not be the
+    // lattice steps they stand for.
     bool fit_to_site(int id, int element, double radius, const std::pair<long, long>* site);
     int priority(int symbol) const;
     // Options::w4: how far `symbol` is over its reference share among the placed motifs and the

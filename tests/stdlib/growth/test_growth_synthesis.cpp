@@ -592,3 +592,48 @@ TEST(GrowthSynthesis, JitteredLatticesGrowAtTheReferencesSpacing) {
             }
         }
 }
+
+TEST(GrowthSynthesis, JitteredLatticesMotifsStandOnOneLattice) {
+    // Every motif put on a site stands on one lattice, its copied element's own jitter off it:
+    // its position less that jitter is a lattice point of the fitted basis through the first
+    // motif's. Sites taken from the neighbours' ring slots drifted (a square grid jittered by
+    // 0.12: a median 0.13 spacings off one lattice), since a jittered ring's slots need not be
+    // the lattice steps the neighbours stand at.
+    for (const char* kind : {"triangular", "square", "honeycomb"}) {
+        const bool honeycomb = std::string(kind) == "honeycomb";
+        std::vector<ReferenceElement> elements = jittered(kind, 10, 0.12, 9);
+        if (honeycomb)
+            for (ReferenceElement& e : elements) e.size = 3;
+        Reference ref = Reference::from_elements(elements);
+        const auto fit = growth::detail::fit_jittered_lattice(
+            ref.data(), growth::detail::ring_regularity(ref.data()));
+        ASSERT_TRUE(fit) << kind;
+        // Motifs that exchange their elements afterwards (the same-symbol share) keep their
+        // places, not their elements' jitter: the exchange is left out here.
+        Options o;
+        o.neighbour_share = false;
+        SynthesisResult r = synthesize(ref, Region::from_spec("rect:150,120"), o, {}, 3);
+        ASSERT_GT(r.motifs.size(), 100u) << kind;
+        EXPECT_GT(static_cast<double>(r.stats.fitted), 0.85 * static_cast<double>(r.motifs.size()))
+            << kind;
+        const Vector u = fit->basis[0], w = fit->basis[1];
+        const double det = u.cross(w);
+        // The lattice through most motifs' sites: each motif's site tried as the origin.
+        std::vector<Point> sites;
+        for (const Motif& m : r.motifs)
+            sites.push_back(m.position - fit->jitter[static_cast<std::size_t>(m.source)]);
+        long best = 0;
+        for (std::size_t o = 0; o < sites.size(); o += 7) {
+            long on = 0;
+            for (Point s : sites) {
+                const Vector d = s - sites[o];
+                const double a = d.cross(w) / det, b = u.cross(d) / det;
+                const Vector miss = u * (a - std::round(a)) + w * (b - std::round(b));
+                on += miss.length() < 1e-6 * 10;
+            }
+            best = std::max(best, on);
+        }
+        // Motifs not valid on their site (the panel's edge) stay where their seed was.
+        EXPECT_GE(best, r.stats.fitted) << kind;
+    }
+}

@@ -137,9 +137,9 @@ struct Options {
     // keeps the reference's own variation (its jitter). 0: every link pulled to its offset.
     double relax_slack = 1.0;
     // In mode none, a near-regular reference (a jittered triangular, square or honeycomb lattice:
-    // its interior first shells point along four or six directions) puts each motif, as it is
-    // placed, on the lattice site its placed neighbours give it plus the copied element's own
-    // jitter (docs/stdlib/growth.md).
+    // its interior first shells point along four or six directions) is fitted to that lattice,
+    // which the first motif puts down; each motif goes on the lattice site nearest its seed plus
+    // the copied element's own jitter (docs/stdlib/growth.md).
     bool fit_to_ring = true;
     // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
     // only the 1-ring: more context at the growth front, for near-regular references.

@@ -1,0 +1,204 @@
+#!/usr/bin/env python3
+"""Grows a set of references nobody tuned on through rules/arrangement.acr, as an author runs it,
+and reports what issue 27 checks per run: the NN median against the reference's (all motifs
+against the interior reference elements, and the motifs 1.5 NN inside the panel against the
+inner reference elements), the symbol mix and the same-symbol neighbour share against the
+reference's, the largest empty circle in NN distances, the defect share, and whether the same
+seed gives the same bytes.
+
+Usage: unseen_check.py PROGRAM SOURCE_DIR WORK_DIR [--set NAME] [--seeds N] [--only SUBSTRING]
+       [--tsv FILE]
+
+Sets (each reference made here from its own random seed, coordinates rounded to 3 decimals):
+  s8  seeds 801-806: square grids jittered by 0.12 and 0.18 of their spacing (the second turned
+      by 20 degrees), a triangular lattice jittered by 0.14 turned by 35 degrees, a honeycomb
+      jittered by 0.12 of its edge, a square grid jittered by 0.15 with three symbols, and a
+      two-symbol Poisson-disc set of spacing 9; in the shield, the star, the arch with a window,
+      a bean (two cubic lobes) and a ring (a disc with a round hole, even-odd).
+"""
+import argparse
+import json
+import math
+import pathlib
+import random
+import subprocess
+import sys
+import time
+
+ap = argparse.ArgumentParser()
+ap.add_argument("program")
+ap.add_argument("source")
+ap.add_argument("work")
+ap.add_argument("--set", default="s8")
+ap.add_argument("--seeds", type=int, default=3)
+ap.add_argument("--only", default="")
+ap.add_argument("--tsv", default="")
+args = ap.parse_args()
+SOURCE = pathlib.Path(args.source)
+WORK = pathlib.Path(args.work)
+WORK.mkdir(parents=True, exist_ok=True)
+PANELS = SOURCE / "examples/panels"
+
+
+def lattice_points(kind, gap, width, height, jitter, rng, turn):
+    """Lattice points of spacing `gap` (a honeycomb: edge `gap`) over width x height, each moved
+    by up to jitter x gap in x and y, then the whole turned by `turn` degrees."""
+    pts = []
+    if kind == "square":
+        for row in range(int(height / gap) + 1):
+            for col in range(int(width / gap) + 1):
+                pts.append((col * gap, row * gap))
+    elif kind == "triangular":
+        for row in range(int(height / (gap * math.sqrt(3) / 2)) + 1):
+            for col in range(int(width / gap) + 1):
+                pts.append((col * gap + (row % 2) * gap / 2, row * gap * math.sqrt(3) / 2))
+    elif kind == "honeycomb":
+        for row in range(int(height / (1.5 * gap)) + 1):
+            for col in range(int(width / (math.sqrt(3) * gap)) + 1):
+                x = col * math.sqrt(3) * gap + (row % 2) * math.sqrt(3) * gap / 2
+                for dy in (0, gap):
+                    pts.append((x, row * 1.5 * gap + dy))
+    out = []
+    c, s = math.cos(math.radians(turn)), math.sin(math.radians(turn))
+    for x, y in pts:
+        x += rng.uniform(-jitter, jitter) * gap
+        y += rng.uniform(-jitter, jitter) * gap
+        out.append((c * x - s * y, s * x + c * y))
+    return out
+
+
+def poisson_points(gap, width, height, rng):
+    pts = []
+    for _ in range(20000):
+        x, y = rng.uniform(0, width), rng.uniform(0, height)
+        if all((x - a) ** 2 + (y - b) ** 2 >= gap * gap for a, b in pts):
+            pts.append((x, y))
+    return pts
+
+
+def make_reference(path, seed, kind, gap, width, height, jitter, turn, shares, sizes):
+    rng = random.Random(seed)
+    if kind == "poisson":
+        pts = poisson_points(gap, width, height, rng)
+    else:
+        pts = lattice_points(kind, gap, width, height, jitter, rng, turn)
+    elements = []
+    for x, y in pts:
+        r = rng.random()
+        symbol = "abc"[len(shares) - 1]
+        for s, w in zip("abc", shares):
+            if r < w:
+                symbol = s
+                break
+            r -= w
+        elements.append({"symbol": symbol, "x": round(x, 3), "y": round(y, 3),
+                         "size": sizes["abc".index(symbol)],
+                         "angle": round(rng.uniform(0, 2 * math.pi), 3)})
+    path.write_text(json.dumps({"elements": elements}))
+
+
+def own_panels():
+    bean = WORK / "bean.svg"
+    bean.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="230" height="150">\n'
+        '<path d="M 20,80 C 10,20 90,0 120,40 C 140,10 220,10 215,70 '
+        'C 210,130 150,140 120,110 C 90,145 30,140 20,80 Z"/>\n</svg>\n')
+    ring = WORK / "ring.svg"
+    ring.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="180" height="180">\n'
+        '<path fill-rule="evenodd" d="M 170,90 A 80,80 0 1 0 10,90 A 80,80 0 1 0 170,90 Z '
+        'M 125,90 A 35,35 0 1 0 55,90 A 35,35 0 1 0 125,90 Z"/>\n</svg>\n')
+    return [str(bean), str(ring)]
+
+
+def set_s8():
+    refs = []
+    # seed, kind, spacing, width, height, jitter, turn, symbol shares, sizes
+    for seed, kind, gap, w, h, jitter, turn, shares, sizes in (
+            (801, "square", 10, 100, 90, 0.12, 0, (0.45, 0.55), (3.0, 3.2)),
+            (802, "square", 9, 95, 85, 0.18, 20, (0.3, 0.7), (2.6, 2.8)),
+            (803, "triangular", 10, 100, 90, 0.14, 35, (0.5, 0.5), (3.2, 3.0)),
+            (804, "honeycomb", 8, 95, 85, 0.12, 0, (0.4, 0.6), (2.5, 2.6)),
+            (805, "square", 11, 110, 100, 0.15, 0, (0.4, 0.35, 0.25), (3.5, 3.2, 3.0)),
+            (806, "poisson", 9, 100, 85, 0, 0, (0.35, 0.65), (3.0, 2.8))):
+        name = f"{kind}-{jitter:g}-t{turn}-{seed}" if kind != "poisson" else f"poisson-{gap}-{seed}"
+        path = WORK / f"{name}.json"
+        make_reference(path, seed, kind, gap, w, h, jitter, turn, shares, sizes)
+        refs.append(path)
+    panels = [str(PANELS / p) for p in ("shield.svg", "star.svg", "arch-window.svg")] + \
+        own_panels()
+    return refs, panels
+
+
+def run(ref, panel, seed, out):
+    p = subprocess.run(["nice", args.program, "-o", str(out), "--param", f"reference={ref}",
+                        "--region", panel, "--rng-seed", str(seed), "--metrics"],
+                       capture_output=True, text=True, timeout=600)
+    if p.returncode != 0:
+        raise SystemExit(f"{ref.name} in {panel} seed {seed}: exit {p.returncode}: {p.stderr}")
+    return json.loads(p.stdout)
+
+
+refs, panels = {"s8": set_s8}[args.set]()
+rows = []
+begin = time.time()
+for ref in refs:
+    for panel in panels:
+        pname = pathlib.Path(panel).stem
+        if args.only and args.only not in f"{ref.stem} {pname}":
+            continue
+        for seed in range(1, args.seeds + 1):
+            out = WORK / f"{ref.stem}-{pname}-{seed}.svg"
+            t0 = time.time()
+            m = run(ref, panel, seed, out)
+            seconds = time.time() - t0
+            same = ""
+            if seed == 1:  # the same seed again: the same bytes
+                again = WORK / "again.svg"
+                run(ref, panel, seed, again)
+                same = "same" if again.read_bytes() == out.read_bytes() else "DIFFERENT"
+            g = m["growth"]
+            mix = max(abs(v["result"] - v["reference"]) for v in g["symbols"].values())
+            ss = g["same_symbol_neighbours"]
+            row = dict(ref=ref.stem, panel=pname, seed=seed, motifs=g["motifs"],
+                       all=g["nn_median"] / g["nn_median_reference"],
+                       inner=g["nn_median_inner"] / g["nn_median_reference_inner"],
+                       mix=mix, same=ss["result"] - ss["reference"], hole=g["largest_hole"],
+                       defects=g["defects"]["share"], interior=g["defects"]["interior"],
+                       fitted=g["near_regular"]["fitted"], lattice=g["lattice"]["sites"],
+                       bytes=same, seconds=seconds)
+            rows.append(row)
+            print(f"{row['ref']:28} {pname:12} {seed} motifs {row['motifs']:4} "
+                  f"NN all {row['all']:.3f} inner {row['inner']:.3f} mix {100 * mix:4.1f} "
+                  f"same {100 * row['same']:+5.1f} hole {row['hole']:.2f} "
+                  f"defects {row['defects']:.2f}/{row['interior']} fitted {row['fitted']} "
+                  f"{same} {seconds:.1f}s", flush=True)
+
+print("\nper reference: NN median all / inner (runs over 5%), mix, same-symbol, hole")
+for ref in refs:
+    rs = [r for r in rows if r["ref"] == ref.stem]
+    if not rs:
+        continue
+    a = [r["all"] for r in rs]
+    i = [r["inner"] for r in rs]
+    print(f"{ref.stem:28} {min(a):.3f}-{max(a):.3f} ({sum(abs(v - 1) > 0.05 for v in a)}) / "
+          f"{min(i):.3f}-{max(i):.3f} ({sum(abs(v - 1) > 0.05 for v in i)})  mix <= "
+          f"{100 * max(r['mix'] for r in rs):.1f}  same {100 * min(r['same'] for r in rs):+.1f}.."
+          f"{100 * max(r['same'] for r in rs):+.1f}  hole <= {max(r['hole'] for r in rs):.2f}  "
+          f"defects {min(r['defects'] for r in rs):.2f}-{max(r['defects'] for r in rs):.2f}")
+a = [r["all"] for r in rows]
+i = [r["inner"] for r in rows]
+print(f"\n{len(rows)} runs: NN median over 5% all {sum(abs(v - 1) > 0.05 for v in a)}, inner "
+      f"{sum(abs(v - 1) > 0.05 for v in i)}; mean all {sum(a) / len(a):.3f} inner "
+      f"{sum(i) / len(i):.3f}; mix <= {100 * max(r['mix'] for r in rows):.1f} points; same-symbol "
+      f"within {100 * max(abs(r['same']) for r in rows):.1f} points; hole <= "
+      f"{max(r['hole'] for r in rows):.2f} NN; bytes: "
+      f"{sum(r['bytes'] == 'same' for r in rows)} same, "
+      f"{sum(r['bytes'] == 'DIFFERENT' for r in rows)} different; {time.time() - begin:.0f} s")
+if args.tsv:
+    keys = list(rows[0].keys())
+    with open(args.tsv, "w") as f:
+        f.write("\t".join(keys) + "\n")
+        for r in rows:
+            f.write("\t".join(f"{r[k]:.4f}" if isinstance(r[k], float) else str(r[k])
+                              for k in keys) + "\n")
