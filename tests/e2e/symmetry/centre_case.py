@@ -3,12 +3,10 @@
     centre_case.py PROGRAM WORKDIR CX,CY MAX ARGS...
 runs PROGRAM ARGS --json WORKDIR/tree.json -o WORKDIR/out.svg and fails (exit 1) when no
 element other than a seed comes within MAX of the centre (CX, CY) (curves sampled)."""
-import json
 import math
-import os
-import shutil
-import subprocess
 import sys
+
+from grown_tree import grown_elements
 
 
 def bezier_at(c, t):
@@ -47,17 +45,9 @@ def main():
     program, work, centre, most, args = (sys.argv[1], sys.argv[2], sys.argv[3],
                                           float(sys.argv[4]), sys.argv[5:])
     c = tuple(float(v) for v in centre.split(","))
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    tree_path = os.path.join(work, "tree.json")
-    run = subprocess.run([program, *args, "--quiet", "--json", tree_path, "-o",
-                          os.path.join(work, "out.svg")], capture_output=True, text=True,
-                         timeout=300)
-    if run.returncode != 0:
-        print(f"the program failed (exit {run.returncode}):\n{run.stderr}")
+    elements = grown_elements(program, work, args)
+    if elements is None:
         return 1
-    with open(tree_path) as f:
-        elements = json.load(f)["elements"]
     nearest, what = math.inf, None
     for e in elements:
         if e["type"] == "seed":

@@ -13,6 +13,7 @@
 #include <iostream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cells_oracle.hpp"
@@ -313,7 +314,7 @@ const char* const kBrickFacades[] = {"gable-pointed-end", "segmental-ends", "wid
 // Lays unseen facade `name` in every brick bond and tree at seed 1 and calls
 // `check(bond, tree_name, report, faults)` on each wall.
 template <class Check>
-void each_brick_wall(const std::string& name, Check&& check) {
+void each_brick_wall(const std::string& name, const Known& caps, Check&& check) {
     const Facade f = Facade::from_svg_file(unseen(name));
     Options o = centimetres();
     for (Bond bond : kBrickBonds)
@@ -321,9 +322,14 @@ void each_brick_wall(const std::string& name, Check&& check) {
             o.bond = bond;
             const Texture t = texture(f, tree, o, 1);
             MasonReport m;
-            const std::vector<std::string> v = faults(f, t.cells, kCm, &m, known(name, false));
+            const std::vector<std::string> v = faults(f, t.cells, kCm, &m, caps);
             check(bond, tree_name, m, v);
         }
+}
+
+template <class Check>
+void each_brick_wall(const std::string& name, Check&& check) {
+    each_brick_wall(name, known(name, false), std::forward<Check>(check));
 }
 
 }  // namespace
@@ -500,18 +506,16 @@ TEST(CellsUnseen, GableShopArcadeNotTunedOn) {
     const std::map<std::string, Caps> caps{{"gable-segmental-end", {85, 27, 42, 1}},
                                            {"shopfront-wide", {143, 14, 92, 3}},
                                            {"arcade-piers", {135, 8, 33, 1}}};
-    for (const auto& [name, cap] : caps) {
+    for (const auto& entry : caps) {
+        const std::string& name = entry.first;  // a lambda below captures it
+        const Caps& cap = entry.second;
         Known k;
         k.odd_pieces = cap.odd, k.shaved_bricks = cap.shaved, k.unforced_odd = cap.unforced;
         k.cut_courses = cap.cut_courses;
-        const Facade f = Facade::from_svg_file(unseen(name));
-        Options o = centimetres();
-        for (Bond bond : kBrickBonds)
-            for (const auto& [tree_name, tree] : mason_trees()) {
-                o.bond = bond;
-                const Texture t = texture(f, tree, o, 1);
-                MasonReport m;
-                const std::vector<std::string> v = faults(f, t.cells, kCm, &m, k);
+        each_brick_wall(
+            name, k,
+            [&](Bond bond, const std::string& tree_name, const MasonReport& m,
+                const std::vector<std::string>& v) {
                 std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << m
                           << "\n";
                 SCOPED_TRACE(name + " " + std::string(to_string(bond)) + " " + tree_name);
@@ -521,7 +525,7 @@ TEST(CellsUnseen, GableShopArcadeNotTunedOn) {
                 if (bond != Bond::stack) {
                     EXPECT_EQ(m.straight_joints, 0);
                 }
-            }
+            });
     }
 }
 
