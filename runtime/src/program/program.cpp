@@ -471,7 +471,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
                        frame_options);
 
     // The coverage (a raster of its own, the proxies alone: no rule code runs in it) is
-    // measured on a second thread while the pictures are drawn: a twentieth of spiral's run,
+    // measured on a second thread while the pictures are drawn: 7% of spiral's run,
     // otherwise after them, before a viewer gets the picture.
     std::future<double> cover;
     if (o.metrics)
