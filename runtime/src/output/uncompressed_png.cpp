@@ -44,6 +44,11 @@ std::string uncompressed_png(cairo_surface_t* image) {
     const int stride = cairo_image_surface_get_stride(image);
     const unsigned char* pixels = cairo_image_surface_get_data(image);
     std::string out;
+    // Stored pixels: the file is their size and a little (a filter byte a row, the stored
+    // blocks' and the chunks' headers): grown piece by piece, it was copied again and again.
+    const std::size_t raw =
+        static_cast<std::size_t>(height) * (1 + 4 * static_cast<std::size_t>(width));
+    out.reserve(raw + raw / 64 + 4096);
     std::vector<png_byte> row(static_cast<std::size_t>(width) * 4);
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
