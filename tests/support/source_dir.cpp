@@ -1,5 +1,3 @@
 #include "source_dir.hpp"
 
-namespace acanthus::testing {
-const char* source_dir() { return ACANTHUS_CHECKOUT_DIR; }
-}  // namespace acanthus::testing
+const char* acanthus_test_source_dir() { return ACANTHUS_CHECKOUT_DIR; }
