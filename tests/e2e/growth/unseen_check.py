@@ -15,6 +15,13 @@ Sets (each reference made here from its own random seed, coordinates rounded to 
       jittered by 0.12 of its edge, a square grid jittered by 0.15 with three symbols, and a
       two-symbol Poisson-disc set of spacing 9; in the shield, the star, the arch with a window,
       a bean (two cubic lobes) and a ring (a disc with a round hole, even-odd).
+  s9  seeds 901-906, made after s8 with nothing tuned on it: a triangular lattice jittered by
+      0.1 drawn in millimetres (spacing 2.8), an exact 3-colour triangular lattice scaled x100
+      (spacing 1000), a honeycomb jittered by 0.09 of its edge turned by 15 degrees, an exact
+      checkerboard turned by 30 degrees, a square grid jittered by 0.16 turned by 10 degrees,
+      and a two-symbol Poisson-disc set of spacing 10; in a gourd and a wave band (each with a
+      neck, every edge curved), the circle and the L (each panel scaled with the reference's
+      units).
 """
 import argparse
 import json
@@ -44,27 +51,31 @@ def lattice_points(kind, gap, width, height, jitter, rng, turn):
     """Lattice points of spacing `gap` (a honeycomb: edge `gap`) over width x height, each moved
     by up to jitter x gap in x and y, then the whole turned by `turn` degrees."""
     pts = []
+    tags = []  # (row, col) of each point
     if kind == "square":
         for row in range(int(height / gap) + 1):
             for col in range(int(width / gap) + 1):
                 pts.append((col * gap, row * gap))
+                tags.append((row, col))
     elif kind == "triangular":
         for row in range(int(height / (gap * math.sqrt(3) / 2)) + 1):
             for col in range(int(width / gap) + 1):
                 pts.append((col * gap + (row % 2) * gap / 2, row * gap * math.sqrt(3) / 2))
+                tags.append((row, col))
     elif kind == "honeycomb":
         for row in range(int(height / (1.5 * gap)) + 1):
             for col in range(int(width / (math.sqrt(3) * gap)) + 1):
                 x = col * math.sqrt(3) * gap + (row % 2) * math.sqrt(3) * gap / 2
                 for dy in (0, gap):
                     pts.append((x, row * 1.5 * gap + dy))
+                    tags.append((row, col))
     out = []
     c, s = math.cos(math.radians(turn)), math.sin(math.radians(turn))
     for x, y in pts:
         x += rng.uniform(-jitter, jitter) * gap
         y += rng.uniform(-jitter, jitter) * gap
         out.append((c * x - s * y, s * x + c * y))
-    return out
+    return out, tags
 
 
 def poisson_points(gap, width, height, rng):
@@ -76,24 +87,70 @@ def poisson_points(gap, width, height, rng):
     return pts
 
 
-def make_reference(path, seed, kind, gap, width, height, jitter, turn, shares, sizes):
+def pattern_symbol(pattern, row, col):
+    """An exact lattice's symbol by its place: "checker" alternates on a square grid, "colour3"
+    gives a triangular lattice three symbols with no two alike side by side."""
+    if pattern == "checker":
+        return "ab"[(row + col) % 2]
+    q = col - row // 2  # axial coordinates of the offset rows
+    return "abc"[(q - row) % 3]
+
+
+JITTERED = {}  # per jittered reference: what lattice_points made it from
+
+
+def independent_copy(kind, gap, width, height, jitter, turn, seed):
+    """The inner NN median a copy whose every jitter is drawn on its own would have, over the
+    reference's: the reference's sites, each given the jitter of a random element of it, 30
+    draws, the median; inner: sites 2 spacings in from the reference's edge."""
+    pts, _ = lattice_points(kind, gap, width, height, jitter, random.Random(seed), turn)
+    sites, _ = lattice_points(kind, gap, width, height, 0, random.Random(seed), turn)
+    jit = [(p[0] - s[0], p[1] - s[1]) for p, s in zip(pts, sites)]
+    c, s = math.cos(math.radians(-turn)), math.sin(math.radians(-turn))
+    upright = [(c * x - s * y, s * x + c * y) for x, y in sites]
+    xs, ys = [u[0] for u in upright], [u[1] for u in upright]
+    inner = [i for i, (x, y) in enumerate(upright)
+             if min(x - min(xs), max(xs) - x, y - min(ys), max(ys) - y) >= 2 * gap]
+
+    def median_nn(points):
+        nn = sorted(min(math.dist(points[i], q) for j, q in enumerate(points) if j != i)
+                    for i in inner)
+        return nn[len(nn) // 2]
+
+    rng = random.Random(7)
+    draws = sorted(median_nn([(x + jit[k][0], y + jit[k][1]) for (x, y), k in
+                              zip(sites, [rng.randrange(len(jit)) for _ in sites])])
+                   for _ in range(30))
+    return draws[15] / median_nn(pts)
+
+
+def make_reference(path, seed, kind, gap, width, height, jitter, turn, shares, sizes,
+                   pattern="", unit=1.0):
+    """`unit` scales the whole reference (coordinates and sizes) before rounding to 3 decimals."""
+    if kind != "poisson" and jitter > 0:
+        JITTERED[path.stem] = (kind, gap, width, height, jitter, turn, seed)
     rng = random.Random(seed)
+    tags = None
     if kind == "poisson":
         pts = poisson_points(gap, width, height, rng)
     else:
-        pts = lattice_points(kind, gap, width, height, jitter, rng, turn)
+        pts, tags = lattice_points(kind, gap, width, height, jitter, rng, turn)
     elements = []
-    for x, y in pts:
-        r = rng.random()
-        symbol = "abc"[len(shares) - 1]
-        for s, w in zip("abc", shares):
-            if r < w:
-                symbol = s
-                break
-            r -= w
-        elements.append({"symbol": symbol, "x": round(x, 3), "y": round(y, 3),
-                         "size": sizes["abc".index(symbol)],
-                         "angle": round(rng.uniform(0, 2 * math.pi), 3)})
+    for k, (x, y) in enumerate(pts):
+        if pattern:
+            symbol = pattern_symbol(pattern, *tags[k])
+        else:
+            r = rng.random()
+            symbol = "abc"[len(shares) - 1]
+            for s, w in zip("abc", shares):
+                if r < w:
+                    symbol = s
+                    break
+                r -= w
+        elements.append({"symbol": symbol, "x": round(x * unit, 3), "y": round(y * unit, 3),
+                         "size": round(sizes["abc".index(symbol)] * unit, 3),
+                         # an exact lattice's elements all point one way (else no two alike)
+                         "angle": 0.0 if pattern else round(rng.uniform(0, 2 * math.pi), 3)})
     path.write_text(json.dumps({"elements": elements}))
 
 
@@ -130,6 +187,57 @@ def set_s8():
     return refs, panels
 
 
+def s9_panels():
+    """A gourd (a big lobe and a small one, a neck 26 wide between them) and a wave band (wavy
+    edges pinched to a neck 24 wide in the middle), every edge a cubic curve."""
+    gourd = WORK / "gourd.svg"
+    gourd.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="250" height="170">\n'
+        '<path d="M 150,72 C 160,20 235,20 240,70 C 245,120 175,130 150,98 '
+        'C 130,145 10,150 10,85 C 10,20 130,10 150,72 Z"/>\n</svg>\n')
+    wave = WORK / "wave.svg"
+    wave.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="260" height="150">\n'
+        '<path d="M 5,30 C 50,0 90,40 130,63 C 170,40 210,0 255,30 C 270,80 250,130 225,140 '
+        'C 190,150 160,110 130,87 C 100,110 70,150 35,140 C 10,130 -10,80 5,30 Z"/>\n'
+        '</svg>\n')
+    return [gourd, wave, PANELS / "circle.svg", PANELS / "l-shape.svg"]
+
+
+def scaled_panel(panel, unit):
+    """The panel in the reference's units: its drawing inside a scale(unit) group."""
+    if unit == 1.0:
+        return str(panel)
+    text = pathlib.Path(panel).read_text()
+    start = text.index(">", text.index("<svg")) + 1
+    end = text.rindex("</svg>")
+    out = WORK / f"{pathlib.Path(panel).stem}-x{unit:g}.svg"
+    out.write_text('<svg xmlns="http://www.w3.org/2000/svg">\n'
+                   f'<g transform="scale({unit:g})">{text[start:end]}</g>\n</svg>\n')
+    return str(out)
+
+
+def set_s9():
+    refs = []
+    panels = s9_panels()
+    # seed, kind, spacing, width, height, jitter, turn, symbol shares, sizes, pattern, unit
+    for seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit in (
+            (901, "triangular", 10, 100, 90, 0.1, 0, (0.4, 0.6), (3.0, 3.2), "", 0.28),
+            (902, "triangular", 10, 100, 90, 0, 0, (), (3.0, 3.0, 3.0), "colour3", 100.0),
+            (903, "honeycomb", 8, 95, 85, 0.09, 15, (0.55, 0.45), (2.4, 2.6), "", 1.0),
+            (904, "square", 10, 100, 90, 0, 30, (), (3.2, 3.0), "checker", 1.0),
+            (905, "square", 10, 100, 90, 0.16, 10, (0.6, 0.4), (3.0, 3.3), "", 1.0),
+            (906, "poisson", 10, 110, 90, 0, 0, (0.3, 0.7), (3.3, 3.0), "", 1.0)):
+        if kind == "poisson":
+            name = f"poisson-{gap}-{seed}"
+        else:
+            name = f"{kind}-{pattern or f'{jitter:g}'}-t{turn}-u{unit:g}-{seed}"
+        path = WORK / f"{name}.json"
+        make_reference(path, seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit)
+        refs.append((path, [scaled_panel(p, unit) for p in panels]))
+    return refs
+
+
 def run(ref, panel, seed, out):
     p = subprocess.run(["nice", args.program, "-o", str(out), "--param", f"reference={ref}",
                         "--region", panel, "--rng-seed", str(seed), "--metrics"],
@@ -139,11 +247,15 @@ def run(ref, panel, seed, out):
     return json.loads(p.stdout)
 
 
-refs, panels = {"s8": set_s8}[args.set]()
+if args.set == "s8":
+    refs, panels = set_s8()
+    refs = [(ref, panels) for ref in refs]
+else:
+    refs = set_s9()
 rows = []
 begin = time.time()
-for ref in refs:
-    for panel in panels:
+for ref, ref_panels in refs:
+    for panel in ref_panels:
         pname = pathlib.Path(panel).stem
         if args.only and args.only not in f"{ref.stem} {pname}":
             continue
@@ -175,7 +287,7 @@ for ref in refs:
                   f"{same} {seconds:.1f}s", flush=True)
 
 print("\nper reference: NN median all / inner (runs over 5%), mix, same-symbol, hole")
-for ref in refs:
+for ref, _ in refs:
     rs = [r for r in rows if r["ref"] == ref.stem]
     if not rs:
         continue
@@ -186,6 +298,12 @@ for ref in refs:
           f"{100 * max(r['mix'] for r in rs):.1f}  same {100 * min(r['same'] for r in rs):+.1f}.."
           f"{100 * max(r['same'] for r in rs):+.1f}  hole <= {max(r['hole'] for r in rs):.2f}  "
           f"defects {min(r['defects'] for r in rs):.2f}-{max(r['defects'] for r in rs):.2f}")
+print("\njittered references: the inner NN median a copy with each jitter drawn on its own has")
+for ref, _ in refs:
+    if ref.stem in JITTERED and any(r["ref"] == ref.stem for r in rows):
+        rs = [r["inner"] for r in rows if r["ref"] == ref.stem]
+        print(f"{ref.stem:28} {independent_copy(*JITTERED[ref.stem]):.3f} (grown: mean "
+              f"{sum(rs) / len(rs):.3f})")
 a = [r["all"] for r in rows]
 i = [r["inner"] for r in rows]
 print(f"\n{len(rows)} runs: NN median over 5% all {sum(abs(v - 1) > 0.05 for v in a)}, inner "
