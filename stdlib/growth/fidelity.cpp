@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <unordered_map>
 
+#include "lattice.hpp"
+
 namespace acanthus::growth::detail {
 namespace {
 
@@ -239,6 +241,14 @@ ReferenceProfile::ReferenceProfile(const ReferenceData& reference) : checker(ref
         most_neighbours = std::max(most_neighbours,
                                    static_cast<int>(near.of(static_cast<std::size_t>(c)).size()));
     symbol_mix = mix(ref);
+    // A lattice's own share is its sites' per cell: the reference's count depends on where its
+    // edge cuts the lattice (a 3-colour rectangle of 121 holds 44, 39 and 38).
+    if (const Lattice* lattice = lattice_of(reference)) {
+        symbol_mix.clear();
+        for (const Lattice::Site& site : lattice->sites)
+            symbol_mix[reference.symbols[static_cast<std::size_t>(site.symbol)]] +=
+                1.0 / static_cast<double>(lattice->sites.size());
+    }
     same_symbol_share = same_share(ref, checker.reach());
 }
 

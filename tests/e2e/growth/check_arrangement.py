@@ -295,8 +295,14 @@ def case_metrics():
               abs(sum(h["result"]) - 1) < 1e-9 and abs(sum(h["reference"]) - 1) < 1e-9,
               f"{name}: NN histograms of 21 bins, each summing to 1")
         mix = {s: symbols.count(s) / len(symbols) for s in set(symbols)}
-        check(all(abs(g["symbols"][s]["reference"] - v) < 1e-9 for s, v in mix.items()) and
-              abs(sum(v["result"] for v in g["symbols"].values()) - 1) < 1e-9,
+        sites = g["lattice"]["sites"]
+        if sites > 0:  # a lattice's share is its sites' per cell
+            own = all(abs(g["symbols"][s]["reference"] * sites -
+                          round(g["symbols"][s]["reference"] * sites)) < 1e-9 for s in mix)
+        else:
+            own = all(abs(g["symbols"][s]["reference"] - v) < 1e-9 for s, v in mix.items())
+        check(own and abs(sum(v["result"] for v in g["symbols"].values()) - 1) < 1e-9 and
+              abs(sum(v["reference"] for v in g["symbols"].values()) - 1) < 1e-9,
               f"{name}: symbol mix {g['symbols']}")
         same = g["same_symbol_neighbours"]
         check(0 <= same["result"] <= 1 and 0 <= same["reference"] <= 1,

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "fidelity.hpp"
 #include "growth_lattices.hpp"
@@ -172,3 +173,27 @@ TEST(GrowthFidelity, ExampleReferencesAndThePapersGrowth) {
 }
 
 }  // namespace
+
+TEST(GrowthFidelity, ALatticesSymbolMixIsItsSitesPerCell) {
+    // Ten stripe columns hold 2 b columns (20%) where the lattice has 1 in 4, ten rows of the
+    // 3-colour lattice 35% a; a faithful copy grows the lattice's share, so the report compares
+    // with that.
+    for (auto [kind, symbol, share] :
+         {std::tuple{Kind::stripes, "b", 0.25}, std::tuple{Kind::three_colour, "a", 1.0 / 3}}) {
+        const std::vector<ReferenceElement> elements = growth_lattices::lattice(kind, 10, 10);
+        const double count = static_cast<double>(std::count_if(
+            elements.begin(), elements.end(), [&](const auto& e) { return e.symbol == symbol; }));
+        EXPECT_GT(std::abs(count / static_cast<double>(elements.size()) - share), 0.01);
+        Reference ref = Reference::from_elements(elements);
+        const std::vector<Motif> motifs = as_motifs(elements);
+        Fidelity f = measure(ref, motifs, box_around(motifs));
+        EXPECT_NEAR(f.reference_symbol_mix.at(symbol), share, 1e-12) << growth_lattices::name(kind);
+    }
+    // Off a lattice the share is the count.
+    std::vector<ReferenceElement> jittered = growth_lattices::lattice(Kind::stripes, 10, 10);
+    for (std::size_t i = 0; i < jittered.size(); ++i)
+        jittered[i].position.x += 3.0 * std::sin(7.0 * static_cast<double>(i));
+    Reference off = Reference::from_elements(jittered);
+    const std::vector<Motif> motifs = as_motifs(jittered);
+    EXPECT_NEAR(measure(off, motifs, box_around(motifs)).reference_symbol_mix.at("b"), 0.2, 1e-12);
+}
