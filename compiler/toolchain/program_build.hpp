@@ -28,6 +28,11 @@ struct BuildOptions {
     // The build compiles an object (the driver runs the compiler in its own process then) and
     // runs the linker itself. Empty: the driver compiles and links in one command.
     std::vector<std::string> link_command;
+    // A split build (cached_split_library): how many units compile at once (the runner is then
+    // called from as many threads), and the optimization level of the code unit (units[1]: the
+    // %draw bodies, which run for every picture drawn; empty: `optimization`).
+    unsigned jobs = 1;
+    std::string code_unit_optimization;
 };
 
 inline constexpr const char* kLinkObject = "{object}";

@@ -134,6 +134,7 @@ void RenderJob::stop() {
 
 void RenderJob::request() {
     std::lock_guard lock(mutex_);
+    requested_at_ = PreviewStatus::now_epoch();
     ++wanted_;
     cancel_ = true;
     cv_.notify_all();
@@ -184,6 +185,19 @@ std::string RenderJob::command_line(const PreviewSettings& s) const {
     return quote_command(cmd);
 }
 
+namespace {
+
+// A build command's name in the timeline: the program and the file it compiles, or "link".
+std::string command_label(const std::vector<std::string>& argv) {
+    std::string label = fs::path(argv.front()).filename().string();
+    const auto c = std::find(argv.begin(), argv.end(), "-c");
+    return label + " " +
+           (c != argv.end() && c + 1 != argv.end() ? fs::path(*(c + 1)).filename().string()
+                                                   : std::string("link"));
+}
+
+}  // namespace
+
 CommandRunner RenderJob::runner(const std::string& log, bool& cancelled) {
     return [this, log, &cancelled](const std::vector<std::string>& argv, std::string& error) {
         ChildRun run;
@@ -192,10 +206,14 @@ CommandRunner RenderJob::runner(const std::string& log, bool& cancelled) {
         run.stderr_path = log;
         run.cancel = &cancel_;
         run.deadline_seconds = 600;
+        const std::string label = argv.empty() ? std::string() : command_label(argv);
+        status_.step("start " + label);
         ChildEnd end = run_child(run);
+        status_.step("end " + label);
+        std::lock_guard lock(runner_mutex_);
         build_cpu_ += end.cpu_seconds;
         if (end.how == ChildEnd::How::exited) return end.code;
-        cancelled = end.how == ChildEnd::How::cancelled;
+        cancelled = cancelled || end.how == ChildEnd::How::cancelled;
         error = describe(end, run.deadline_seconds);
         return -1;
     };
@@ -277,7 +295,9 @@ void RenderJob::render(long generation) {
     {
         std::lock_guard lock(mutex_);
         view_size = std::to_string(view_width_) + "x" + std::to_string(view_height_);
+        status_.start_timeline("asked", requested_at_);
     }
+    status_.step("render start");
     if (!prepare_host()) return;
     status_.begin("compiling");
     status_.set_command(command_line(settings));
@@ -311,6 +331,7 @@ void RenderJob::render(long generation) {
         stroke_tools_of(config_.stroke_tools, files, config_.toolchain.stdlib_dirs, params));
     status_.set_params(params);
     status_.set_timing("compile", seconds_since(start));
+    status_.step("compiled");
 
     status_.begin("building");
     const auto build_start = Clock::now();
@@ -321,6 +342,7 @@ void RenderJob::render(long generation) {
     if (cancel_) return;
     status_.set_timing("build", seconds_since(build_start));
     status_.set_timing("build_cpu", build_cpu_);
+    status_.step("built");
     const auto grow_start = Clock::now();
 
     status_.begin("growing");
@@ -364,7 +386,9 @@ void RenderJob::render(long generation) {
         // The program replaces the file by a rename: a new one is a new inode or time.
         if (partial_seen.changed(partial)) status_.set_partial(read_text(partial));
     };
+    status_.step("program start");
     ChildEnd end = run_child(run);
+    status_.step("program end");
     if (renamed >= 0) ::close(renamed);
     std::error_code ec;
     if (end.how == ChildEnd::How::cancelled) {
