@@ -352,9 +352,10 @@ bool copies_state(const std::vector<std::string>& objects) {
 bool cached_split_library(const Toolchain& toolchain, const BuildOptions& options,
                           const std::string& stem, const std::vector<std::string>& units,
                           std::string& library, bool& splittable, std::string& error,
-                          std::size_t compile_at_most, bool* deferred) {
+                          std::size_t compile_at_most, bool* deferred, bool* code_unit_deferred) {
     splittable = true;
     if (deferred) *deferred = false;
+    if (code_unit_deferred) *code_unit_deferred = false;
     const fs::path dir(cache_directory());
     const fs::path unit_dir = dir / "units";
     std::error_code ec;
@@ -367,20 +368,22 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
     BuildOptions code_options = options;
     if (!options.code_unit_optimization.empty())
         code_options.optimization = options.code_unit_optimization;
-    const auto unit_options = [&](std::size_t k) -> const BuildOptions& {
-        return k == 1 ? code_options : options;
-    };
-    std::vector<std::string> objects, keys;
-    for (std::size_t k = 0; k < units.size(); ++k) {
-        std::vector<std::string> parts =
-            object_command(toolchain, unit_options(k), "SOURCE", "OBJECT");
+    const auto key_of = [&](std::size_t k, const BuildOptions& level) {
+        std::vector<std::string> parts = object_command(toolchain, level, "SOURCE", "OBJECT");
         parts.push_back(file_identity(toolchain.runtime_library));
         parts.push_back(file_identity(toolchain.stdlib_library));
         if (!options.precompiled_header.empty())
             parts.push_back(file_identity(options.precompiled_header + ".gch"));
         parts.push_back(without_line_numbers(units[k]));
-        keys.push_back(cache_key(parts));
-        objects.push_back((unit_dir / (stem + "-" + keys.back() + ".o")).string());
+        return cache_key(parts);
+    };
+    const auto object_of = [&](const std::string& key) {
+        return (unit_dir / (stem + "-" + key + ".o")).string();
+    };
+    std::vector<std::string> objects, keys;
+    for (std::size_t k = 0; k < units.size(); ++k) {
+        keys.push_back(key_of(k, options));
+        objects.push_back(object_of(keys.back()));
     }
     // The code unit holds the %source every unit includes.
     const fs::path whole = unit_dir / (stem + "-" + keys.at(1) + ".whole");
@@ -389,6 +392,20 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
         error = "the program is built whole";
         return false;
     }
+    bool code_optimised = code_options.optimization != options.optimization;
+    if (code_optimised) {
+        const std::string key = key_of(1, code_options);
+        if (options.code_unit_later && access(object_of(key).c_str(), R_OK) != 0) {
+            code_optimised = false;  // this save's picture first
+            if (code_unit_deferred) *code_unit_deferred = true;
+        } else {
+            keys[1] = key;
+            objects[1] = object_of(key);
+        }
+    }
+    const auto unit_options = [&](std::size_t k) -> const BuildOptions& {
+        return k == 1 && code_optimised ? code_options : options;
+    };
     std::vector<std::string> key_parts = keys;
     key_parts.insert(key_parts.end(), options.link_command.begin(), options.link_command.end());
     library = (dir / (stem + "-" + cache_key(key_parts) + ".so")).string();

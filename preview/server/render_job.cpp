@@ -258,12 +258,21 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, const Gen
     if (options.shared_library && !options.link_command.empty()) {
         std::vector<std::string> parts{units.tables, units.code};
         parts.insert(parts.end(), units.rules.begin(), units.rules.end());
-        bool splittable = true, deferred = false;
+        bool splittable = true, deferred = false, code_deferred = false;
         // A first build, or one after the %source or the element types changed, compiles every
         // unit: more than the whole file. The whole file then, and the units after the picture.
+        // The code unit (the %draw bodies) is optimised after the picture too when it changed.
+        options.code_unit_later = true;
         if (cached_split_library(config_.toolchain, options, stem, parts, built, splittable, error,
-                                 2, &deferred)) {
+                                 2, &deferred, &code_deferred)) {
             program = {host_, built};
+            if (code_deferred) {
+                units_to_fill_ = std::move(parts);
+                fill_options_ = options;
+                fill_options_.runner = nullptr;
+                fill_options_.code_unit_later = false;
+                fill_stem_ = stem;
+            }
             return true;
         }
         if (cancelled) return false;
@@ -271,6 +280,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, const Gen
             units_to_fill_ = std::move(parts);
             fill_options_ = options;
             fill_options_.runner = nullptr;  // (this build's, given again by fill_units)
+            fill_options_.code_unit_later = false;
             fill_stem_ = stem;
         }
         fs::remove(log, ec);
