@@ -1,5 +1,6 @@
 #include "server/render_job.hpp"
 
+#include <sys/eventfd.h>
 #include <sys/inotify.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -118,7 +120,10 @@ RenderJob::RenderJob(PreviewConfig config, PreviewSettings settings, PreviewStat
     thread_ = std::thread([this] { loop(); });
 }
 
-RenderJob::~RenderJob() { stop(); }
+RenderJob::~RenderJob() {
+    stop();
+    if (cancel_event_ >= 0) ::close(cancel_event_);
+}
 
 void RenderJob::stop() {
     {
@@ -126,6 +131,7 @@ void RenderJob::stop() {
         stopping_ = true;
     }
     cancel_ = true;
+    wake_cancelled();
     stop_extras_ = true;
     cv_.notify_all();
     watcher_.stop();
@@ -137,7 +143,16 @@ void RenderJob::request() {
     requested_at_ = PreviewStatus::now_epoch();
     ++wanted_;
     cancel_ = true;
+    wake_cancelled();
     cv_.notify_all();
+}
+
+void RenderJob::wake_cancelled() {
+    // A child being waited for is stopped now, not at the wait's next tick (10 to 25 ms).
+    const std::uint64_t one = 1;
+    if (cancel_event_ >= 0 && ::write(cancel_event_, &one, sizeof one) < 0) {
+        // (full or closed: the wait's next tick sees the cancel)
+    }
 }
 
 PreviewSettings RenderJob::settings() const {
@@ -168,6 +183,8 @@ void RenderJob::loop() {
             if (stopping_) return;
             generation = wanted_;
             cancel_ = false;
+            std::uint64_t count = 0;  // (the wake of the cancels just taken back)
+            if (cancel_event_ >= 0 && ::read(cancel_event_, &count, sizeof count) < 0) count = 0;
         }
         render(generation);
         std::lock_guard lock(mutex_);
@@ -205,6 +222,7 @@ CommandRunner RenderJob::runner(const std::string& log, bool& cancelled) {
         run.stdout_path = log + ".out";
         run.stderr_path = log;
         run.cancel = &cancel_;
+        run.cancel_fd = cancel_event_;
         run.deadline_seconds = 600;
         const std::string label = argv.empty() ? std::string() : command_label(argv);
         status_.step("start " + label);
@@ -374,6 +392,7 @@ void RenderJob::render(long generation) {
     run.stdout_path = out;
     run.stderr_path = err;
     run.cancel = &cancel_;
+    run.cancel_fd = cancel_event_;
     run.memory_limit = config_.memory_limit;
     // The program stops itself at --time-limit (and a runaway body a second later); the
     // deadline is for a program that does not.
@@ -448,6 +467,16 @@ void RenderJob::render(long generation) {
 
 void RenderJob::fill_units() {
     if (units_to_fill_.empty()) return;
+    {
+        // The page fetches, decodes and paints the picture just published (about 0.1 s): the
+        // units are compiled after that, not on the two cores it needs then.
+        std::unique_lock lock(mutex_);
+        cv_.wait_for(lock, std::chrono::milliseconds(150), [&] { return stopping_ || cancel_; });
+        if (stopping_ || cancel_) {
+            units_to_fill_.clear();
+            return;
+        }
+    }
     // Cancelled by the next save (run_child watches cancel_); its objects are kept.
     const std::string log = (fs::path(config_.work_dir) / "units.log").string();
     bool cancelled = false;
@@ -455,8 +484,16 @@ void RenderJob::fill_units() {
     options.runner = runner(log, cancelled);
     std::string library, error;
     bool splittable = true;
-    cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
-                         splittable, error);
+    // The units a save's build needs first (the code unit at the ordinary level among them),
+    // then the optimised code unit: a save that cancels this early still builds only its unit.
+    options.code_unit_later = true;
+    if (cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
+                             splittable, error) &&
+        !cancel_ && !options.code_unit_optimization.empty()) {
+        options.code_unit_later = false;
+        cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
+                             splittable, error);
+    }
     units_to_fill_.clear();
 }
 
