@@ -8,6 +8,8 @@
 # "max": ..., "build_cpu_seconds": {...}, "grow_cpu_seconds": {...}, "painted_seconds": {...},
 # "painted_max": ...} (server times only without Chromium); the *_cpu_ times are processor
 # seconds of the build's commands and of the program's run, which the load does not stretch.
+# ACANTHUS_BENCH_TIMELINE=1 prints each save's steps (/status.json "timeline" and the page's), in
+# ms from the file's write; ACANTHUS_BENCH_PATTERNS=flowers,dots benches only those patterns.
 # needs: acanthus acanthus_runtime acanthus_stdlib
 set -euo pipefail
 BUILD="$1"

@@ -12,7 +12,34 @@ import time
 import urllib.request
 
 EDITS = 3
+# ACANTHUS_BENCH_TIMELINE=1: each save's steps, in ms after the file was written: the server's
+# (/status.json "timeline") and the page's.
+TIMELINE = bool(os.environ.get("ACANTHUS_BENCH_TIMELINE"))
 
+
+def print_timeline(name, n, saved, status, steps, painted):
+    """One save's steps, wall clock, in ms from the file's write."""
+    rows = [(at, step) for step, at in status.get("timeline", [])]
+    metrics = status.get("metrics", {}).get("seconds", {})
+    ends = [at for at, step in rows if step == "program end"]
+    if ends and "total" in metrics and "growth" in metrics and "render" in metrics:
+        # The program's own clock: its growth's and its pictures' seconds, before its exit.
+        rows.append((ends[0] - metrics["total"] + metrics["growth"], "(program) growth over"))
+        rows.append((ends[0] - metrics["total"] + metrics["growth"] + metrics["render"],
+                     "(program) pictures drawn"))
+    for key in ("event", "fetch", "fetched", "loaded"):
+        if key in steps:
+            rows.append((steps[key], "(page) " + key))
+    if painted:
+        rows.append((painted, "(page) painted"))
+    partials = 0
+    print("  %s edit %d timeline:" % (name, n), file=sys.stderr)
+    for at, step in sorted(rows):
+        if step == "partial":
+            partials += 1
+            if partials > 3:
+                continue
+        print("    %7.1f ms  %s" % (1000 * (at - saved), step), file=sys.stderr)
 
 def browser_command(root):
     """The paint timer's command without its URL, or None (and why) when it cannot run."""
@@ -40,14 +67,17 @@ class PaintTimer:
             raise RuntimeError("the browser did not show the first picture: %r" % line)
 
     def painted(self, revision, saved):
-        """Seconds since the epoch when the page painted `revision` (or a later one), and when
-        it first painted anything after `saved` (the growth so far, or that picture)."""
+        """Seconds since the epoch when the page painted `revision` (or a later one), when it
+        first painted anything after `saved` (the growth so far, or that picture), and the
+        page's steps for the picture ({"event", "fetch", "fetched", "loaded"}, seconds)."""
         self.process.stdin.write("wait %d %d\n" % (revision, int(saved * 1000)))
         self.process.stdin.flush()
-        words = self.process.stdout.readline().split()
-        if len(words) != 4 or words[2] == "none":
+        words = self.process.stdout.readline().split(" ", 4)
+        if len(words) < 4 or words[2] == "none":
             raise RuntimeError("the page did not paint revision %d" % revision)
-        return int(words[2]) / 1000.0, int(words[3]) / 1000.0
+        steps = json.loads(words[4]) if len(words) > 4 else {}
+        return (int(words[2]) / 1000.0, int(words[3]) / 1000.0,
+                {k: v / 1000.0 for k, v in steps.items() if isinstance(v, (int, float))})
 
     def close(self):
         self.process.stdin.close()
@@ -129,10 +159,14 @@ def measure(acanthus, root, rule, browser):
                 raise RuntimeError("%s: %s" % (rule, s["output"]))
             timings = s.get("timings", {})
             cpu.append((timings.get("build_cpu", 0.0), timings.get("grow_cpu", 0.0)))
+            steps = {}
             if timer:
-                at, first = timer.painted(s["revision"], saved)
+                at, first, steps = timer.painted(s["revision"], saved)
                 painted.append(at - saved)
                 looks.append(first - saved)
+            if TIMELINE:
+                print_timeline(os.path.basename(rule), n, saved, s, steps, painted[-1] + saved
+                               if timer else None)
             print("  %s edit %d: server %.3f s, first look %s, painted %s %s" % (
                 os.path.basename(rule), n, times[-1], "%.3f s" % looks[-1] if looks else "-",
                 "%.3f s" % painted[-1] if painted else "-", s.get("timings")), file=sys.stderr)

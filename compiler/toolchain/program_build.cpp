@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <acanthus/output_file.hpp>
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -13,6 +15,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <thread>
 
 #include "toolchain/process.hpp"
 
@@ -349,9 +352,10 @@ bool copies_state(const std::vector<std::string>& objects) {
 bool cached_split_library(const Toolchain& toolchain, const BuildOptions& options,
                           const std::string& stem, const std::vector<std::string>& units,
                           std::string& library, bool& splittable, std::string& error,
-                          std::size_t compile_at_most, bool* deferred) {
+                          std::size_t compile_at_most, bool* deferred, bool* code_unit_deferred) {
     splittable = true;
     if (deferred) *deferred = false;
+    if (code_unit_deferred) *code_unit_deferred = false;
     const fs::path dir(cache_directory());
     const fs::path unit_dir = dir / "units";
     std::error_code ec;
@@ -360,17 +364,26 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
         error = "cannot create the cache directory '" + unit_dir.string() + "': " + ec.message();
         return false;
     }
-    std::vector<std::string> flags = object_command(toolchain, options, "SOURCE", "OBJECT");
-    flags.push_back(file_identity(toolchain.runtime_library));
-    flags.push_back(file_identity(toolchain.stdlib_library));
-    if (!options.precompiled_header.empty())
-        flags.push_back(file_identity(options.precompiled_header + ".gch"));
+    // The code unit may have a level of its own (its flags are in its objects' keys).
+    BuildOptions code_options = options;
+    if (!options.code_unit_optimization.empty())
+        code_options.optimization = options.code_unit_optimization;
+    const auto key_of = [&](std::size_t k, const BuildOptions& level) {
+        std::vector<std::string> parts = object_command(toolchain, level, "SOURCE", "OBJECT");
+        parts.push_back(file_identity(toolchain.runtime_library));
+        parts.push_back(file_identity(toolchain.stdlib_library));
+        if (!options.precompiled_header.empty())
+            parts.push_back(file_identity(options.precompiled_header + ".gch"));
+        parts.push_back(without_line_numbers(units[k]));
+        return cache_key(parts);
+    };
+    const auto object_of = [&](const std::string& key) {
+        return (unit_dir / (stem + "-" + key + ".o")).string();
+    };
     std::vector<std::string> objects, keys;
-    for (const std::string& unit : units) {
-        std::vector<std::string> parts = flags;
-        parts.push_back(without_line_numbers(unit));
-        keys.push_back(cache_key(parts));
-        objects.push_back((unit_dir / (stem + "-" + keys.back() + ".o")).string());
+    for (std::size_t k = 0; k < units.size(); ++k) {
+        keys.push_back(key_of(k, options));
+        objects.push_back(object_of(keys.back()));
     }
     // The code unit holds the %source every unit includes.
     const fs::path whole = unit_dir / (stem + "-" + keys.at(1) + ".whole");
@@ -379,6 +392,20 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
         error = "the program is built whole";
         return false;
     }
+    bool code_optimised = code_options.optimization != options.optimization;
+    if (code_optimised) {
+        const std::string key = key_of(1, code_options);
+        if (options.code_unit_later && access(object_of(key).c_str(), R_OK) != 0) {
+            code_optimised = false;  // this save's picture first
+            if (code_unit_deferred) *code_unit_deferred = true;
+        } else {
+            keys[1] = key;
+            objects[1] = object_of(key);
+        }
+    }
+    const auto unit_options = [&](std::size_t k) -> const BuildOptions& {
+        return k == 1 && code_optimised ? code_options : options;
+    };
     std::vector<std::string> key_parts = keys;
     key_parts.insert(key_parts.end(), options.link_command.begin(), options.link_command.end());
     library = (dir / (stem + "-" + cache_key(key_parts) + ".so")).string();
@@ -396,26 +423,50 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
         error = "cannot create a temporary directory";
         return false;
     }
-    const auto run = [&](const std::vector<std::string>& cmd, const char* what) {
-        int status = options.runner ? options.runner(cmd, error) : run_process(cmd, error);
-        if (status > 0) error = std::string(what) + " (exit status " + std::to_string(status) + ")";
+    const auto run = [&](const std::vector<std::string>& cmd, const char* what,
+                         std::string& message) {
+        int status = options.runner ? options.runner(cmd, message) : run_process(cmd, message);
+        if (status > 0)
+            message = std::string(what) + " (exit status " + std::to_string(status) + ")";
         return status == 0;
     };
-    bool ok = true;
-    for (std::size_t k = 0; ok && k < units.size(); ++k) {
-        if (access(objects[k].c_str(), R_OK) == 0) continue;
-        const std::string source =
-            (fs::path(work) / (stem + "-" + std::to_string(k) + ".cpp")).string();
-        std::string temp;
-        ok = write_file_atomically(source, units[k], error) &&
-             !(temp = create_temporary_sibling(objects[k], error)).empty();
-        ok = ok && run(object_command(toolchain, options, source, temp), "the C++ compiler failed");
-        if (ok && std::rename(temp.c_str(), objects[k].c_str()) != 0) {
-            error = "cannot write '" + objects[k] + "'";
-            ok = false;
+    // The units to compile, `options.jobs` at a time: a save that edits a rule body compiles
+    // its unit and the tables', which waited for each other before.
+    std::vector<std::size_t> todo;
+    for (std::size_t k = 0; k < units.size(); ++k)
+        if (access(objects[k].c_str(), R_OK) != 0) todo.push_back(k);
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> failed{false};
+    std::vector<std::string> errors(units.size());
+    const auto compile = [&] {
+        for (std::size_t i; !failed && (i = next++) < todo.size();) {
+            const std::size_t k = todo[i];
+            std::string& message = errors[k];
+            const std::string source =
+                (fs::path(work) / (stem + "-" + std::to_string(k) + ".cpp")).string();
+            std::string temp;
+            bool done = write_file_atomically(source, units[k], message) &&
+                        !(temp = create_temporary_sibling(objects[k], message)).empty();
+            done = done && run(object_command(toolchain, unit_options(k), source, temp),
+                               "the C++ compiler failed", message);
+            if (done && std::rename(temp.c_str(), objects[k].c_str()) != 0) {
+                message = "cannot write '" + objects[k] + "'";
+                done = false;
+            }
+            if (!done && !temp.empty()) remove_if_present(temp);
+            if (!done) failed = true;
         }
-        if (!ok && !temp.empty()) remove_if_present(temp);
+    };
+    {
+        std::vector<std::thread> helpers;
+        const std::size_t jobs = std::max<std::size_t>(1, options.jobs);
+        for (std::size_t j = 1; j < std::min(jobs, todo.size()); ++j) helpers.emplace_back(compile);
+        compile();
+        for (std::thread& t : helpers) t.join();
     }
+    bool ok = !failed;
+    for (const std::size_t k : todo)
+        if (!errors[k].empty() && error.empty()) error = errors[k];
     std::string temp;
     if (ok && copies_state(objects)) {
         splittable = false;
@@ -434,7 +485,7 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
             else
                 link.push_back(w == kLinkOutput ? temp : w);
         }
-        ok = run(link, "linking the rule code failed");
+        ok = run(link, "linking the rule code failed", error);
         // The units define something twice: %source that only a whole program can have.
         if (!ok && error.find("exit status") != std::string::npos) splittable = false;
     }

@@ -28,6 +28,14 @@ struct BuildOptions {
     // The build compiles an object (the driver runs the compiler in its own process then) and
     // runs the linker itself. Empty: the driver compiles and links in one command.
     std::vector<std::string> link_command;
+    // A split build (cached_split_library): how many units compile at once (the runner is then
+    // called from as many threads), and the optimization level of the code unit (units[1]: the
+    // %draw bodies, which run for every picture drawn; empty: `optimization`). With
+    // `code_unit_later`, a code unit not yet compiled at that level is compiled at
+    // `optimization` (quicker to build) and the build says so (`code_unit_deferred`).
+    unsigned jobs = 1;
+    std::string code_unit_optimization;
+    bool code_unit_later = false;
 };
 
 inline constexpr const char* kLinkObject = "{object}";
@@ -73,7 +81,8 @@ bool cached_executable(const Toolchain& toolchain, const BuildOptions& options,
 bool cached_split_library(const Toolchain& toolchain, const BuildOptions& options,
                           const std::string& stem, const std::vector<std::string>& units,
                           std::string& library, bool& splittable, std::string& error,
-                          std::size_t compile_at_most = ~std::size_t(0), bool* deferred = nullptr);
+                          std::size_t compile_at_most = ~std::size_t(0), bool* deferred = nullptr,
+                          bool* code_unit_deferred = nullptr);
 
 // The names of the local, writable objects an ELF object file defines (`static` variables):
 // empty when it cannot be read.

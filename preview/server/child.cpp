@@ -132,9 +132,10 @@ ChildEnd run_child(const ChildRun& run) {
         }
         if (run.on_poll) run.on_poll();
         const int tick_ms = elapsed < 2 ? 10 : 25;
-        if (exit_fd >= 0 || run.wake_fd >= 0) {
-            pollfd p[2] = {{exit_fd, POLLIN, 0}, {run.wake_fd, POLLIN, 0}};
-            ::poll(p, 2, tick_ms);  // (a negative fd is left out)
+        if (exit_fd >= 0 || run.wake_fd >= 0 || run.cancel_fd >= 0) {
+            pollfd p[3] = {
+                {exit_fd, POLLIN, 0}, {run.wake_fd, POLLIN, 0}, {run.cancel_fd, POLLIN, 0}};
+            ::poll(p, 3, tick_ms);  // (a negative fd is left out)
         } else {
             std::this_thread::sleep_for(std::chrono::milliseconds(tick_ms));
         }

@@ -17,7 +17,8 @@ struct ChildRun {
     double deadline_seconds = 0;                // 0: none
     const std::atomic<bool>* cancel = nullptr;  // set: kill the child and return
     std::function<void()> on_poll;              // called every 10 to 25 ms while it runs
-    int wake_fd = -1;  // readable: on_poll at once, not at the next tick (on_poll drains it)
+    int wake_fd = -1;    // readable: on_poll at once, not at the next tick (on_poll drains it)
+    int cancel_fd = -1;  // readable: `cancel` is looked at once (not drained here)
     unsigned long long memory_limit = 0;  // bytes of address space (RLIMIT_AS); 0: none
 };
 

@@ -1,5 +1,6 @@
 #include "server/render_job.hpp"
 
+#include <sys/eventfd.h>
 #include <sys/inotify.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -118,7 +120,10 @@ RenderJob::RenderJob(PreviewConfig config, PreviewSettings settings, PreviewStat
     thread_ = std::thread([this] { loop(); });
 }
 
-RenderJob::~RenderJob() { stop(); }
+RenderJob::~RenderJob() {
+    stop();
+    if (cancel_event_ >= 0) ::close(cancel_event_);
+}
 
 void RenderJob::stop() {
     {
@@ -126,6 +131,7 @@ void RenderJob::stop() {
         stopping_ = true;
     }
     cancel_ = true;
+    wake_cancelled();
     stop_extras_ = true;
     cv_.notify_all();
     watcher_.stop();
@@ -134,9 +140,19 @@ void RenderJob::stop() {
 
 void RenderJob::request() {
     std::lock_guard lock(mutex_);
+    requested_at_ = PreviewStatus::now_epoch();
     ++wanted_;
     cancel_ = true;
+    wake_cancelled();
     cv_.notify_all();
+}
+
+void RenderJob::wake_cancelled() {
+    // A child being waited for is stopped now, not at the wait's next tick (10 to 25 ms).
+    const std::uint64_t one = 1;
+    if (cancel_event_ >= 0 && ::write(cancel_event_, &one, sizeof one) < 0) {
+        // (full or closed: the wait's next tick sees the cancel)
+    }
 }
 
 PreviewSettings RenderJob::settings() const {
@@ -167,6 +183,8 @@ void RenderJob::loop() {
             if (stopping_) return;
             generation = wanted_;
             cancel_ = false;
+            std::uint64_t count = 0;  // (the wake of the cancels just taken back)
+            if (cancel_event_ >= 0 && ::read(cancel_event_, &count, sizeof count) < 0) count = 0;
         }
         render(generation);
         std::lock_guard lock(mutex_);
@@ -184,6 +202,19 @@ std::string RenderJob::command_line(const PreviewSettings& s) const {
     return quote_command(cmd);
 }
 
+namespace {
+
+// A build command's name in the timeline: the program and the file it compiles, or "link".
+std::string command_label(const std::vector<std::string>& argv) {
+    std::string label = fs::path(argv.front()).filename().string();
+    const auto c = std::find(argv.begin(), argv.end(), "-c");
+    return label + " " +
+           (c != argv.end() && c + 1 != argv.end() ? fs::path(*(c + 1)).filename().string()
+                                                   : std::string("link"));
+}
+
+}  // namespace
+
 CommandRunner RenderJob::runner(const std::string& log, bool& cancelled) {
     return [this, log, &cancelled](const std::vector<std::string>& argv, std::string& error) {
         ChildRun run;
@@ -191,11 +222,16 @@ CommandRunner RenderJob::runner(const std::string& log, bool& cancelled) {
         run.stdout_path = log + ".out";
         run.stderr_path = log;
         run.cancel = &cancel_;
+        run.cancel_fd = cancel_event_;
         run.deadline_seconds = 600;
+        const std::string label = argv.empty() ? std::string() : command_label(argv);
+        status_.step("start " + label);
         ChildEnd end = run_child(run);
+        status_.step("end " + label);
+        std::lock_guard lock(runner_mutex_);
         build_cpu_ += end.cpu_seconds;
         if (end.how == ChildEnd::How::exited) return end.code;
-        cancelled = end.how == ChildEnd::How::cancelled;
+        cancelled = cancelled || end.how == ChildEnd::How::cancelled;
         error = describe(end, run.deadline_seconds);
         return -1;
     };
@@ -240,12 +276,21 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, const Gen
     if (options.shared_library && !options.link_command.empty()) {
         std::vector<std::string> parts{units.tables, units.code};
         parts.insert(parts.end(), units.rules.begin(), units.rules.end());
-        bool splittable = true, deferred = false;
+        bool splittable = true, deferred = false, code_deferred = false;
         // A first build, or one after the %source or the element types changed, compiles every
         // unit: more than the whole file. The whole file then, and the units after the picture.
+        // The code unit (the %draw bodies) is optimised after the picture too when it changed.
+        options.code_unit_later = true;
         if (cached_split_library(config_.toolchain, options, stem, parts, built, splittable, error,
-                                 2, &deferred)) {
+                                 2, &deferred, &code_deferred)) {
             program = {host_, built};
+            if (code_deferred) {
+                units_to_fill_ = std::move(parts);
+                fill_options_ = options;
+                fill_options_.runner = nullptr;
+                fill_options_.code_unit_later = false;
+                fill_stem_ = stem;
+            }
             return true;
         }
         if (cancelled) return false;
@@ -253,6 +298,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, const Gen
             units_to_fill_ = std::move(parts);
             fill_options_ = options;
             fill_options_.runner = nullptr;  // (this build's, given again by fill_units)
+            fill_options_.code_unit_later = false;
             fill_stem_ = stem;
         }
         fs::remove(log, ec);
@@ -277,7 +323,9 @@ void RenderJob::render(long generation) {
     {
         std::lock_guard lock(mutex_);
         view_size = std::to_string(view_width_) + "x" + std::to_string(view_height_);
+        status_.start_timeline("asked", requested_at_);
     }
+    status_.step("render start");
     if (!prepare_host()) return;
     status_.begin("compiling");
     status_.set_command(command_line(settings));
@@ -311,6 +359,7 @@ void RenderJob::render(long generation) {
         stroke_tools_of(config_.stroke_tools, files, config_.toolchain.stdlib_dirs, params));
     status_.set_params(params);
     status_.set_timing("compile", seconds_since(start));
+    status_.step("compiled");
 
     status_.begin("building");
     const auto build_start = Clock::now();
@@ -321,6 +370,7 @@ void RenderJob::render(long generation) {
     if (cancel_) return;
     status_.set_timing("build", seconds_since(build_start));
     status_.set_timing("build_cpu", build_cpu_);
+    status_.step("built");
     const auto grow_start = Clock::now();
 
     status_.begin("growing");
@@ -342,6 +392,7 @@ void RenderJob::render(long generation) {
     run.stdout_path = out;
     run.stderr_path = err;
     run.cancel = &cancel_;
+    run.cancel_fd = cancel_event_;
     run.memory_limit = config_.memory_limit;
     // The program stops itself at --time-limit (and a runaway body a second later); the
     // deadline is for a program that does not.
@@ -364,7 +415,9 @@ void RenderJob::render(long generation) {
         // The program replaces the file by a rename: a new one is a new inode or time.
         if (partial_seen.changed(partial)) status_.set_partial(read_text(partial));
     };
+    status_.step("program start");
     ChildEnd end = run_child(run);
+    status_.step("program end");
     if (renamed >= 0) ::close(renamed);
     std::error_code ec;
     if (end.how == ChildEnd::How::cancelled) {
@@ -414,6 +467,16 @@ void RenderJob::render(long generation) {
 
 void RenderJob::fill_units() {
     if (units_to_fill_.empty()) return;
+    {
+        // The page fetches, decodes and paints the picture just published (about 0.1 s): the
+        // units are compiled after that, not on the two cores it needs then.
+        std::unique_lock lock(mutex_);
+        cv_.wait_for(lock, std::chrono::milliseconds(150), [&] { return stopping_ || cancel_; });
+        if (stopping_ || cancel_) {
+            units_to_fill_.clear();
+            return;
+        }
+    }
     // Cancelled by the next save (run_child watches cancel_); its objects are kept.
     const std::string log = (fs::path(config_.work_dir) / "units.log").string();
     bool cancelled = false;
@@ -421,8 +484,16 @@ void RenderJob::fill_units() {
     options.runner = runner(log, cancelled);
     std::string library, error;
     bool splittable = true;
-    cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
-                         splittable, error);
+    // The units a save's build needs first (the code unit at the ordinary level among them),
+    // then the optimised code unit: a save that cancels this early still builds only its unit.
+    options.code_unit_later = true;
+    if (cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
+                             splittable, error) &&
+        !cancel_ && !options.code_unit_optimization.empty()) {
+        options.code_unit_later = false;
+        cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
+                             splittable, error);
+    }
     units_to_fill_.clear();
 }
 

@@ -3,6 +3,8 @@
 // deadline). A newer request cancels the one in progress: its compiler or program is killed.
 #pragma once
 
+#include <sys/eventfd.h>
+
 #include <atomic>
 #include <condition_variable>
 #include <mutex>
@@ -83,11 +85,16 @@ class RenderJob {
     std::condition_variable cv_;
     PreviewSettings settings_;
     long wanted_ = 1, done_ = 0;
+    double requested_at_ = 0;  // when the latest render was asked for (seconds since the epoch)
     int view_width_ = 1200, view_height_ = 900;
     bool stopping_ = false;
     std::atomic<bool> cancel_{false};
+    // Readable while a cancel is pending: wakes the wait for a child (ChildRun::cancel_fd).
+    int cancel_event_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+    void wake_cancelled();
     std::atomic<bool> stop_extras_{false};
-    double build_cpu_ = 0;  // processor time of the build's commands (render thread only)
+    std::mutex runner_mutex_;  // the build's commands may run two at a time
+    double build_cpu_ = 0;     // processor time of the build's commands (under runner_mutex_)
     bool prelude_failed_ = false;
     std::string host_;  // empty: not built yet, or failed
     bool host_failed_ = false;

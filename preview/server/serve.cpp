@@ -130,6 +130,14 @@ int serve_preview(const std::string& input, const std::vector<std::string>& incl
         direct_link_command(toolchain, shared, fast.link_command, ignored);
     }
 
+    // A save that changes several units (the tables' and a rule's when lines moved) compiles
+    // them at once, on two cores.
+    fast.jobs = std::thread::hardware_concurrency() > 1 ? 2 : 1;
+    // The %draw bodies run for every picture (the partial ones, the view, the SVG): their unit
+    // is compiled optimised, after the picture of the save that changed it. Spiral's pictures
+    // took 0.84 s at -O0 and 0.39 to 0.50 s at -O2 (docs/performance-log.md, 2026-11-28).
+    if (fast.optimization == "0") fast.code_unit_optimization = "2";
+
     int code = 0;
     {
         PreviewStatus status;

@@ -61,6 +61,7 @@ void PreviewStatus::progress(long iterations, long elements, double seconds) {
 
 void PreviewStatus::set_partial(std::string png) {
     std::lock_guard lock(mutex_);
+    if (timeline_.size() < 48) timeline_.push_back(json::array({"partial", now_epoch()}));
     partial_png_ = std::move(png);
     ++partial_;
     changed();
@@ -85,6 +86,23 @@ void PreviewStatus::set_timing(const std::string& phase, double seconds) {
     std::lock_guard lock(mutex_);
     if (phase == "compile") timings_ = json::object();
     timings_[phase] = seconds;
+}
+
+double PreviewStatus::now_epoch() {
+    return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+        .count();
+}
+
+void PreviewStatus::start_timeline(const std::string& step, double at) {
+    std::lock_guard lock(mutex_);
+    timeline_ = json::array({json::array({step, at})});
+}
+
+void PreviewStatus::step(const std::string& step) { step_at(step, now_epoch()); }
+
+void PreviewStatus::step_at(const std::string& step, double at) {
+    std::lock_guard lock(mutex_);
+    if (timeline_.size() < 64) timeline_.push_back(json::array({step, at}));
 }
 
 void PreviewStatus::set_command(std::string command) {
@@ -113,6 +131,7 @@ void PreviewStatus::succeed(std::string svg, std::string png, const json& metric
     if (kept_.empty() || kept_.back().svg != svg_) kept_.push_back({revision_, svg_, view_png_});
     while (kept_.size() > kKeptRevisions) kept_.pop_front();
     partial_png_.clear();
+    timeline_.push_back(json::array({"published", now_epoch()}));
     metrics_ = metrics;
     elements_ = metrics.value("elements", 0L);
     seconds_ = seconds;
@@ -166,6 +185,7 @@ PreviewStatus::json PreviewStatus::to_json() const {
             {"metrics", metrics_},
             {"command", command_},
             {"timings", timings_},
+            {"timeline", timeline_},
             {"progress",
              {{"iterations", progress_iterations_},
               {"elements", progress_elements_},

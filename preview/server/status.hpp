@@ -32,6 +32,13 @@ class PreviewStatus {
     void set_command(std::string command);
     // Seconds one phase of the current render took (compile, build, grow): where time goes.
     void set_timing(const std::string& phase, double seconds);
+    // The wall-clock steps of the current render (seconds since the epoch, so that a client can
+    // set them beside its own clock): where a save waits. `start` begins a new timeline at `at`
+    // (the save seen); `step` adds one at now, `step_at` at a time of the caller's.
+    void start_timeline(const std::string& step, double at);
+    void step(const std::string& step);
+    void step_at(const std::string& step, double at);
+    static double now_epoch();
     // A render finished well: the picture, as SVG and as the PNG the page shows (the program's
     // --view), and the program's --metrics.
     void succeed(std::string svg, std::string png, const json& metrics, double seconds,
@@ -82,6 +89,7 @@ class PreviewStatus {
     long partial_ = 0;       // how many partial pictures the server has had, ever
     std::string command_;
     json timings_ = json::object();
+    json timeline_ = json::array();  // [[step, seconds since the epoch], ...]
     long elements_ = 0;
     double seconds_ = 0;
     long progress_iterations_ = 0, progress_elements_ = 0;

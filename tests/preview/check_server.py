@@ -197,19 +197,22 @@ def main():
             cache = (os.environ.get("ACANTHUS_CACHE_DIR") or
                      os.path.expanduser(os.path.join("~", ".cache", "acanthus")))
             units = os.path.join(cache, "units")
-            # The first build is the whole file; its units (two rules, the draws, the tables)
-            # are compiled after its picture: until no new one came for 2 s.
+            # The first build is the whole file; its units (two rules, the draws, the tables,
+            # then the draws optimised) are compiled after its picture: until none is being
+            # compiled (a temporary `.NAME.o.tmp-XXXXXX`) and no new one came for 2 s.
             listing = lambda: set(os.listdir(units)) if os.path.isdir(units) else set()
+            objects = lambda: {f for f in listing() if not f.startswith(".")}
             seen, since, deadline = listing(), time.monotonic(), time.monotonic() + 60
-            while time.monotonic() - since < 2 and time.monotonic() < deadline:
+            while ((time.monotonic() - since < 2 or len(seen) != len(objects()))
+                   and time.monotonic() < deadline):
                 time.sleep(0.1)
                 if listing() != seen:
                     seen, since = listing(), time.monotonic()
-            before = set(os.listdir(units)) if os.path.isdir(units) else set()
+            before = objects()
             save(rules, good.replace("    $$.sterile = 1;",
                                      "    $$.sterile = 1; (void)%d;" % (time.time_ns() % 10**9)))
             s = server.wait_revision(s["revision"])
-            added = sorted(set(os.listdir(units)) - before) if os.path.isdir(units) else []
+            added = sorted(objects() - before)
             check(s["state"] == "ok" and len(added) == 1 and added[0].startswith("bubbles-"),
                   "an edited rule body compiles its own unit only: %s" % added)
             save(rules, good)

@@ -7,9 +7,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -440,6 +443,93 @@ TEST(PreviewBuild, RuleLibraryCompiledThenLinkedByTheLinkerItself) {
     ASSERT_NE(answer, nullptr);
     EXPECT_EQ(answer(), 42);
     dlclose(handle);
+}
+
+// A split build compiles the units it lacks two at a time; the code unit (the %draw bodies) at
+// its own level, and with code_unit_later first at the ordinary one, the optimised one left to
+// a later build of the same units.
+TEST(PreviewBuild, SplitUnitsTwoAtATimeTheCodeUnitOptimisedLater) {
+    std::string error;
+    if (run_process({"sh", "-c", "command -v clang++ >/dev/null"}, error) != 0)
+        GTEST_SKIP() << "no clang++";
+    const test::TempDir dir("split");
+    const char* old_cache = std::getenv("ACANTHUS_CACHE_DIR");
+    const std::string kept = old_cache ? old_cache : "";
+    setenv("ACANTHUS_CACHE_DIR", dir.path().c_str(), 1);
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    options.cxx = "clang++";
+    options.optimization = "0";
+    options.shared_library = true;
+    options.jobs = 2;
+    options.code_unit_optimization = "2";
+    ASSERT_TRUE(direct_link_command(toolchain, options, options.link_command, error)) << error;
+    std::mutex mutex;
+    std::vector<std::vector<std::string>> ran;
+    int running = 0, most = 0;
+    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
+        {
+            std::lock_guard lock(mutex);
+            ran.push_back(argv);
+            most = std::max(most, ++running);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));  // long enough to overlap
+        const int status = run_process(argv, e);
+        std::lock_guard lock(mutex);
+        --running;
+        return status;
+    };
+    const std::vector<std::string> units{"extern \"C\" int tables_part() { return 1; }\n",
+                                         "extern \"C\" int code_part() { return 20; }\n",
+                                         "extern \"C\" int rule_part() { return 300; }\n"};
+    const auto compiled_at = [&](const char* level) {
+        int n = 0;
+        for (const auto& argv : ran)
+            n += std::find(argv.begin(), argv.end(), "-c") != argv.end() &&
+                 std::find(argv.begin(), argv.end(), std::string("-O") + level) != argv.end();
+        return n;
+    };
+    const auto sum = [](const std::string& library) {
+        void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle) return -1;
+        int total = 0;
+        for (const char* name : {"tables_part", "code_part", "rule_part"})
+            if (auto f = reinterpret_cast<int (*)()>(dlsym(handle, name))) total += f();
+        dlclose(handle);
+        return total;
+    };
+    std::string first, second, third;
+    bool splittable = true, code_later = false;
+    options.code_unit_later = true;
+    ASSERT_TRUE(cached_split_library(toolchain, options, "split", units, first, splittable, error,
+                                     ~std::size_t(0), nullptr, &code_later))
+        << error;
+    EXPECT_TRUE(code_later);
+    EXPECT_EQ(compiled_at("0"), 3);
+    EXPECT_EQ(most, 2);
+    EXPECT_EQ(sum(first), 321);
+    ran.clear();
+    options.code_unit_later = false;  // the build after the picture
+    ASSERT_TRUE(cached_split_library(toolchain, options, "split", units, second, splittable, error,
+                                     ~std::size_t(0), nullptr, &code_later))
+        << error;
+    EXPECT_FALSE(code_later);
+    EXPECT_EQ(compiled_at("0"), 0);
+    EXPECT_EQ(compiled_at("2"), 1);
+    EXPECT_NE(second, first);
+    EXPECT_EQ(sum(second), 321);
+    ran.clear();
+    options.code_unit_later = true;  // the next save finds the optimised unit
+    ASSERT_TRUE(cached_split_library(toolchain, options, "split", units, third, splittable, error,
+                                     ~std::size_t(0), nullptr, &code_later))
+        << error;
+    EXPECT_FALSE(code_later);
+    EXPECT_TRUE(ran.empty());
+    EXPECT_EQ(third, second);
+    if (old_cache)
+        setenv("ACANTHUS_CACHE_DIR", kept.c_str(), 1);
+    else
+        unsetenv("ACANTHUS_CACHE_DIR");
 }
 
 }  // namespace

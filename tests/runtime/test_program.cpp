@@ -74,6 +74,8 @@ void hang_in_copies(Canvas&, const Element&) {
     if (::getpid() != test_process)
         for (;;) ::pause();
 }
+// ... and one that fails in every process.
+void throw_in_draw(Canvas&, const Element&) { throw std::runtime_error("drawn badly"); }
 const ElementType& seed::type() const { return seed_type; }
 const ElementType& dot::type() const { return dot_type; }
 
@@ -487,6 +489,45 @@ TEST_F(Program, PartialPictureCopyHangingIsStopped) {
     EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
     for (const std::string& f : files())  // no picture, and nothing the copy left
         EXPECT_EQ(f, "out.svg");
+}
+
+// With --view, the output is drawn by a copy of the program while the run draws the view: the
+// same file as without --view; a copy that crashes leaves the drawing to the run.
+TEST_F(Program, OutputDrawnByACopyIsTheRunsPicture) {
+    const auto args = [&](const std::string& out, bool view) {
+        std::vector<std::string> a{"--region", "circle:200", "--resolution", "256",
+                                   "--param",  "limit=200",  "-o",           path(out)};
+        if (view) a.insert(a.end(), {"--view", path("view.png"), "--view-size", "300x300"});
+        return a;
+    };
+    using Draw = void (*)(Canvas&, const Element&);
+    for (const Draw draw : {Draw(nullptr), Draw(&crash_in_copies)}) {
+        dot_type.draw = draw;
+        Outcome o = run(args("plain.svg", false));
+        ASSERT_EQ(o.code, 0) << o.err;
+        o = run(args("out.svg", true));
+        dot_type.draw = nullptr;
+        ASSERT_EQ(o.code, 0) << o.err;
+        EXPECT_EQ(o.err.find("abort"), std::string::npos) << o.err;
+        EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
+        EXPECT_EQ(read(path("out.svg")), read(path("plain.svg")));
+        EXPECT_EQ(read(path("view.png")).substr(0, 4), "\x89PNG");
+        for (const std::string& f : files())  // nothing the copy left
+            EXPECT_TRUE(f == "plain.svg" || f == "out.svg" || f == "view.png") << f;
+    }
+}
+
+// A %draw that fails everywhere is reported once, by the run, and leaves no file.
+TEST_F(Program, OutputCopyFailingEverywhereIsReportedOnce) {
+    dot_type.draw = &throw_in_draw;
+    Outcome o = run({"--region", "circle:100", "--resolution", "128", "--param", "limit=20",
+                     "--view", path("view.png"), "--view-size", "300x300", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    EXPECT_NE(o.code, 0);
+    const std::size_t first = o.err.find("drawn badly");
+    ASSERT_NE(first, std::string::npos) << o.err;
+    EXPECT_EQ(o.err.find("drawn badly", first + 1), std::string::npos) << o.err;
+    EXPECT_TRUE(files().empty());
 }
 
 TEST_F(Program, DebugFrameAfterTheEndWarns) {

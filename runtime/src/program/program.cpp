@@ -25,6 +25,7 @@
 #include <iostream>
 #include <new>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 #include "output/coverage.hpp"
@@ -345,6 +346,87 @@ class PartialPictures {
     Clock::time_point placed_at_;
 };
 
+// A picture drawn by a forked copy of the program beside the one this process draws. It is
+// written under a name of its own beside the target (renamed to it with the run's other
+// outputs); a copy that fails or cannot be made leaves the drawing to this process, whose
+// messages and crash reports are the run's.
+class OutputCopy {
+  public:
+    OutputCopy(const std::string& target, double body_time_limit,
+               detail::OutputTransaction& outputs)
+        : body_time_limit_(body_time_limit) {
+        const fs::path t(target);
+        path_ = (t.parent_path() / ("." + t.stem().string() + ".drawn-" + std::to_string(getpid()) +
+                                    t.extension().string()))
+                    .string();
+        outputs.add_file(path_, target);  // (removed with the run's temporaries if it fails)
+    }
+    OutputCopy(const OutputCopy&) = delete;
+    OutputCopy& operator=(const OutputCopy&) = delete;
+    ~OutputCopy() {
+        if (pid_ <= 0) return;
+        ::kill(pid_, SIGKILL);  // the run failed first
+        reap();
+    }
+
+    template <class Draw>
+    void start(Draw draw) {
+        std::fflush(nullptr);  // nothing buffered is written twice
+        const pid_t parent = getpid();
+        const pid_t pid = fork();
+        if (pid != 0) {
+            pid_ = pid;  // (-1: no copy; drawn by finish)
+            return;
+        }
+        for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGABRT}) std::signal(signal, SIG_DFL);
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent) std::_Exit(1);
+        if (body_time_limit_ > 0) alarm(static_cast<unsigned>(std::ceil(body_time_limit_)));
+        int code = 0;
+        try {
+            const detail::OutputTransaction::Bypass outside;
+            draw(path_);
+        } catch (...) {
+            code = 1;
+        }
+        std::_Exit(code);  // no destructors, no atexit: they are the parent's
+    }
+
+    // Waits for the copy; draws the picture here when the copy did not.
+    template <class Draw>
+    void finish(Draw draw) {
+        if (pid_ > 0 && reap()) return;
+        const detail::OutputTransaction::Bypass outside;  // under the name the run renames
+        draw(path_);
+    }
+
+  private:
+    // Whether the copy ended having drawn the picture. One that did not may have left its
+    // picture half written (write_output_file's temporary, `.NAME.tmp-XXXXXX` beside it).
+    bool reap() {
+        int status = 0;
+        pid_t r;
+        do r = waitpid(pid_, &status, 0);
+        while (r < 0 && errno == EINTR);
+        pid_ = 0;
+        if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
+        const fs::path drawn(path_);
+        const std::string prefix = "." + drawn.filename().string() + ".tmp-";
+        std::error_code ec;
+        const fs::path dir = drawn.has_parent_path() ? drawn.parent_path() : fs::path(".");
+        for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+            const std::string name = e.path().filename().string();
+            if (name.size() == prefix.size() + 6 && name.rfind(prefix, 0) == 0)
+                fs::remove(e.path(), ec);
+        }
+        return false;
+    }
+
+    double body_time_limit_;
+    std::string path_;
+    pid_t pid_ = 0;
+};
+
 std::string frame_path(const std::string& dir, long number) {
     char name[32];
     std::snprintf(name, sizeof name, "frame-%06ld.png", number);
@@ -470,6 +552,17 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         render_to_file(frame_path(o.frames_dir, ++frames_written), pattern, region, elements,
                        frame_options);
 
+    const Clock::time_point render_start = Clock::now();
+    // With --view, the output is drawn by a forked copy while this process draws the view: a
+    // viewer waits for both (spiral's two pictures were a quarter of its run, one after the
+    // other). Forked before the coverage's thread starts: the copy has no half-held locks.
+    std::optional<OutputCopy> output_copy;
+    if (!o.view.empty() && o.output != "-") {
+        output_copy.emplace(o.output, o.body_time_limit, outputs);
+        output_copy->start([&](const std::string& path) {
+            render_to_file(path, pattern, region, elements, o.render);
+        });
+    }
     // The coverage (a raster of its own, the proxies alone: no rule code runs in it) is
     // measured on a second thread while the pictures are drawn: 7% of spiral's run,
     // otherwise after them, before a viewer gets the picture.
@@ -479,9 +572,13 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
             return detail::coverage(region, elements,
                                     detail::rendered_line_width(region, o.render.width));
         });
-    const Clock::time_point render_start = Clock::now();
     if (!o.view.empty()) render_to_file(o.view, pattern, region, elements, view_options);
-    render_to_file(o.output, pattern, region, elements, o.render);
+    if (output_copy)
+        output_copy->finish([&](const std::string& path) {
+            render_to_file(path, pattern, region, elements, o.render);
+        });
+    else
+        render_to_file(o.output, pattern, region, elements, o.render);
     const double render_seconds = seconds_since(render_start);
     partials.settle();
 
