@@ -36,12 +36,24 @@ struct Mark {
     double x = 0, weight = 0;
     int sides = 0;
 };
-std::vector<Mark> jambs(const Facade& facade, const Face& f, double merge) {
+// An opening's plumb side under an arc (a round, pointed or segmental head).
+bool under_arc(const Facade& facade, const Edge& edge) {
+    for (int k : {edge.corner_start, edge.corner_end}) {
+        if (k < 0) continue;
+        const Corner& c = facade.corners()[static_cast<std::size_t>(k)];
+        for (int o : {c.edge_in, c.edge_out})
+            if (o >= 0 && facade.edges()[static_cast<std::size_t>(o)].arc) return true;
+    }
+    return false;
+}
+
+std::vector<Mark> jambs(const Facade& facade, const Face& f, double merge, bool arched) {
     std::vector<Mark> out;
     for (int e : f.edges) {
         const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
         if (edge.arc || edge.closed || edge.bounds.height() <= 0) continue;
         if (edge.bounds.width() > 1e-9 * std::max(1.0, std::abs(edge.bounds.x1))) continue;
+        if (!arched && edge.opening && under_arc(facade, edge)) continue;
         // A segmental arch's jamb too: the lines reach it as a mason plumbs the perpends from
         // the jamb, and the skewback over it steps with the bond as laid.
         const int sides = !edge.opening                        ? 0
@@ -183,7 +195,7 @@ void top_courses(double anchor, double w, double g, double tol, std::vector<doub
 }  // namespace
 
 CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o, bool set_out,
-                           bool breaks) {
+                           bool breaks, bool arched) {
     const Face& f = facade.faces()[static_cast<std::size_t>(face)];
     const double q = (o.brick_length + o.mortar) / 4, g = o.brick_height + o.mortar;
     const double tol = o.joint_tolerance;
@@ -192,9 +204,10 @@ CourseGrid make_brick_grid(const Facade& facade, int face, const Options& o, boo
     CourseGrid grid;
     // A face that turns a building corner keeps the bond set from the corner (quoin_rows.hpp).
     if (has_building_corner(facade, face)) set_out = false;
-    grid.xs = set_out ? set_out_lines(f.bounds.x0, f.bounds.x1, q, tol, jambs(facade, f, tol / 3),
-                                      breaks, o.bond == Bond::header, grid.breaks)
-                      : unit_lines(f.bounds.x0, f.bounds.x1, q, tol);
+    grid.xs =
+        set_out ? set_out_lines(f.bounds.x0, f.bounds.x1, q, tol, jambs(facade, f, tol / 3, arched),
+                                breaks, o.bond == Bond::header, grid.breaks)
+                : unit_lines(f.bounds.x0, f.bounds.x1, q, tol);
 
     // Level edges, bottom first (SVG: larger y lower), closer than half a course merged.
     std::vector<double> level;

@@ -21,8 +21,10 @@ namespace acanthus::cells::detail {
 // across an opening whose width is no whole number of quarters is reached with one odd unit
 // within the opening (CourseGrid::breaks): the courses over and under it take the bond's break
 // there, a cut piece under the opening, and the piers beside it are set out from their jambs.
+// Without `arched`, the jambs of arched openings are left out of the set-out (the lines may then
+// reach a flat-headed opening's jamb that an arched one's would have cost).
 CourseGrid make_brick_grid(const Facade& facade, int face, const Options& options,
-                           bool set_out = false, bool breaks = false);
+                           bool set_out = false, bool breaks = false, bool arched = true);
 
 struct BondPattern;
 // Moves each break's odd unit to the unit nearest the opening's middle where, narrower than a

@@ -452,10 +452,10 @@ void cut_at_apexes(const Facade& facade, int face, const Options& o, BrickLayout
 }
 
 BrickLayout lay(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
-                const FramedMoves& moves, bool set_out, bool breaks) {
+                const FramedMoves& moves, bool set_out, bool breaks, bool arched) {
     BrickLayout layout;
     layout.moves = moves;
-    layout.grid = make_brick_grid(facade, face, o, set_out, breaks);
+    layout.grid = make_brick_grid(facade, face, o, set_out, breaks, arched);
     layout.unit = (o.brick_length + o.mortar) / 4;
     layout.gauge = o.brick_height + o.mortar;
     layout.tolerance = o.joint_tolerance;
@@ -646,8 +646,8 @@ namespace {
 // ends still meet over each other, move the ones round each such joint a quarter brick, the move
 // that leaves the wall best first, while one helps.
 BrickLayout settled(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
-                    bool set_out, bool breaks = false) {
-    BrickLayout layout = lay(facade, face, o, quoins, lintels, {}, set_out, breaks);
+                    bool set_out, bool breaks = false, bool arched = true) {
+    BrickLayout layout = lay(facade, face, o, quoins, lintels, {}, set_out, breaks, arched);
     if (!quoins || !lintels) return layout;
     long worst = badness(layout);
     for (int step = 0; step < 6 && worst >= 100; ++step) {
@@ -659,7 +659,8 @@ BrickLayout settled(const Facade& facade, int face, const Options& o, bool quoin
         for (auto [row, unit] : straight)
             for (FramedMoves& m : moves_near(facade, face, o, layout, layout.moves, row, unit)) {
                 if (!tried.insert(m).second) continue;
-                BrickLayout next = lay(facade, face, o, quoins, lintels, m, set_out, breaks);
+                BrickLayout next =
+                    lay(facade, face, o, quoins, lintels, m, set_out, breaks, arched);
                 const long b = badness(next);
                 if (b < best_badness) best_badness = b, best = std::move(next);
             }
@@ -731,27 +732,46 @@ long unforced_odd(const Facade& facade, int face, const BrickLayout& l) {
 
 BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins,
                               bool lintels) {
-    // Perpends set out from the jambs, kept unless the bond comes out worse for them.
-    // Worse is a straight joint more; a queen closer more at a run's end is a standard closer.
-    BrickLayout layout = settled(facade, face, o, quoins, lintels, true);
-    if (badness(layout) >= 100) {
-        BrickLayout plain = settled(facade, face, o, quoins, lintels, false);
-        if (plain.grid.xs != layout.grid.xs && badness(plain) / 100 < badness(layout) / 100)
-            layout = std::move(plain);
-    }
-    set_joints(layout);
-    relay_runs(facade, face, layout);
-    // Bond breaks over and under the openings whose width is no whole number of quarters, the
-    // piers beside them set out from their jambs: kept when they leave fewer odd pieces the
-    // geometry does not force and no straight joint more.
-    if (!make_brick_grid(facade, face, o, true, true).breaks.empty()) {
-        BrickLayout broken = settled(facade, face, o, quoins, lintels, true, true);
-        if (badness(broken) / 100 <= badness(layout) / 100) {
-            set_joints(broken);
-            relay_runs(facade, face, broken);
-            if (unforced_odd(facade, face, broken) < unforced_odd(facade, face, layout))
-                layout = std::move(broken);
+    // Perpends set out from the jambs (with or without those of arched openings, below), kept
+    // unless the bond comes out worse for them. Worse is a straight joint more; a queen closer
+    // more at a run's end is a standard closer.
+    auto set_out = [&](bool arched) {
+        BrickLayout layout = settled(facade, face, o, quoins, lintels, true, false, arched);
+        if (badness(layout) >= 100) {
+            BrickLayout plain = settled(facade, face, o, quoins, lintels, false);
+            if (plain.grid.xs != layout.grid.xs && badness(plain) / 100 < badness(layout) / 100)
+                layout = std::move(plain);
         }
+        set_joints(layout);
+        relay_runs(facade, face, layout);
+        // Bond breaks over and under the openings whose width is no whole number of quarters,
+        // the piers beside them set out from their jambs: kept when they leave fewer odd pieces
+        // the geometry does not force and no straight joint more.
+        if (!make_brick_grid(facade, face, o, true, true, arched).breaks.empty()) {
+            BrickLayout broken = settled(facade, face, o, quoins, lintels, true, true, arched);
+            if (badness(broken) / 100 <= badness(layout) / 100) {
+                set_joints(broken);
+                relay_runs(facade, face, broken);
+                if (unforced_odd(facade, face, broken) < unforced_odd(facade, face, layout))
+                    layout = std::move(broken);
+            }
+        }
+        return layout;
+    };
+    BrickLayout layout = set_out(true);
+    // An arched opening's jamb stands as high as its springing, and the set-out weighs jambs by
+    // height; but where reaching it costs the lines a flat-headed opening's jamb, the piers of
+    // that opening are cut in every course it stands while the arched jamb's pier may be laid
+    // from its own jambs anyway (a door 7.9 cm from the wall's end: the lines reach the door's
+    // left jamb or the hatch's right one, not both). So the set-out without arched jambs is laid
+    // too where its lines differ, and kept where it leaves fewer odd pieces the geometry does not
+    // force and no straight joint more.
+    if (make_brick_grid(facade, face, o, true, false, false).xs !=
+        make_brick_grid(facade, face, o, true, false, true).xs) {
+        BrickLayout flat = set_out(false);
+        if (badness(flat) / 100 <= badness(layout) / 100 &&
+            unforced_odd(facade, face, flat) < unforced_odd(facade, face, layout))
+            layout = std::move(flat);
     }
     return layout;
 }

@@ -206,9 +206,14 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             continue;
         }
         const double w = b.width(), h = b.height();
+        // A lintel as deep as whole courses (less a joint) spans them: no cut course. Counted
+        // as one, the shop front's 4.1 m lintel read as a cut course over the window's head.
+        const double courses = std::round((h + s.mortar) / gauge);
+        const bool whole_lintel = c.generator == "lintel" && courses >= 1 &&
+                                  std::abs(h + s.mortar - courses * gauge) <= s.tolerance + 1e-9;
         if (std::abs(h - s.height) <= s.tolerance + 1e-9)
             bottoms.push_back(b.y1);
-        else
+        else if (!whole_lintel)
             cut[std::llround(b.y1 / (0.05 * s.mortar + 1e-9))] += w + s.mortar;
         if (std::abs(h - s.height) > 0.2 * s.height) continue;  // a cut course
         if (w < closer) ++r.narrow_pieces, r.narrow_at.push_back(b.center());

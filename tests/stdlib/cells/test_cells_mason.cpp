@@ -104,6 +104,15 @@ TEST(CellsMason, FindsStretchedBricksAndCourses) {
     EXPECT_EQ(r.cut_courses, 0);
 }
 
+// A lintel two courses deep across the wall spans its courses; one cut to 9 cm is a cut course.
+TEST(CellsMason, ALintelOfWholeCoursesIsNoCutCourse) {
+    std::vector<Cell> cells = stretchers(11.25, 4);
+    cells.push_back(brick(0, 55, 200, 70, 4, "lintel"));  // 15 cm: two courses, drawn 14
+    EXPECT_EQ(mason_check(plain_wall(), cells, kCm).cut_courses, 0);
+    cells.back() = brick(0, 61, 200, 70, 4, "lintel");  // 9 cm: within a course
+    EXPECT_EQ(mason_check(plain_wall(), cells, kCm).cut_courses, 1);
+}
+
 TEST(CellsMason, FindsSliversAndNarrowPieces) {
     std::vector<Cell> cells = stretchers(11.25, 2);
     cells.push_back(brick(0, 50, 2.5, 57.5, 7));  // 1.5 x 6.5 drawn: 7% of a face
