@@ -8,11 +8,12 @@
 // cost per fundamental element and per placed element, and both as a ratio to the cost per
 // element without symmetry (the issue asks 1.5 per fundamental element).
 //
-//   bench_symmetry [--runs N] [--resolution PX] [--groups none,c6,frieze:p2mg,wallpaper:p4m...]
+//   bench_symmetry [--runs N] [--resolution PX] [--disc R] [--groups none,c6,frieze:p2mg,...]
 //
 // --groups picks the groups (default none,c6,d8,d12); without "none" (to profile one group alone)
 // the ratios are left out. none:band, none:tile and none:tile60 grow without symmetry on that
-// panel alone (to profile it).
+// panel alone (to profile it). --disc R grows in a disc of radius R (500 by default) on the same
+// grid: two radii give a group's cost as a part per run and a part per element.
 #include <acanthus/growth.hpp>
 #include <acanthus/region.hpp>
 #include <acanthus/symmetry.hpp>
@@ -44,7 +45,7 @@ bool hexagonal(const std::string& name) {
     return name.find('3') != std::string::npos || name.find('6') != std::string::npos;
 }
 
-void grow(Result& r, int resolution) {
+void grow(Result& r, int resolution, double disc) {
     acanthus::GrowthOptions o;
     o.resolution = resolution;
     const std::string name = r.group.substr(r.group.find(':') + 1);
@@ -57,9 +58,10 @@ void grow(Result& r, int resolution) {
     } else if (r.group != "none") {
         o.symmetry = acanthus::Symmetry::parse(r.group);
     }
-    const acanthus::Region region = r.panel == "band" ? acanthus::Region::from_spec("rect:2000,250")
-                                    : r.panel == "disc" ? acanthus::Region::from_spec("circle:500")
-                                                        : acanthus::detail::tile_region(tile);
+    const acanthus::Region region =
+        r.panel == "band"   ? acanthus::Region::from_spec("rect:2000,250")
+        : r.panel == "disc" ? acanthus::Region::from_spec("circle:" + std::to_string(disc))
+                            : acanthus::detail::tile_region(tile);
     dots::dot_count = 0;
     const acanthus::Pattern pattern = dots::pattern();
     // The engine's construction counts: under a group it finds the fundamental domain's pixels
@@ -111,11 +113,13 @@ std::string json_number(double v) {
 
 int main(int argc, char** argv) {
     int runs = 3, resolution = 1024;
+    double disc = 500;
     std::string groups = "none,c6,d8,d12";
     for (int k = 1; k + 1 < argc; k += 2) {
         if (!std::strcmp(argv[k], "--runs")) runs = std::max(1, std::atoi(argv[k + 1]));
         if (!std::strcmp(argv[k], "--resolution")) resolution = std::atoi(argv[k + 1]);
         if (!std::strcmp(argv[k], "--groups")) groups = argv[k + 1];
+        if (!std::strcmp(argv[k], "--disc")) disc = std::atof(argv[k + 1]);
     }
     std::vector<Result> results;
     for (std::size_t at = 0; at <= groups.size();) {
@@ -141,7 +145,7 @@ int main(int argc, char** argv) {
             if (used) results.push_back({"none", panel, 0, 0, {}});
         }
     for (int run = 0; run < runs; ++run)
-        for (Result& r : results) grow(r, resolution);
+        for (Result& r : results) grow(r, resolution, disc);
     if (results.empty()) return 2;
     // Without the baseline the ratios are NaN (printed as nan, null in the JSON).
     auto base_of = [&](const std::string& panel) {

@@ -217,7 +217,7 @@ struct GrowthEngine::Impl {
     bool any_parent_left();
     void iterate(const Circle& goal);
     bool commit(std::vector<std::unique_ptr<Element>> children, Element* parent);
-    std::vector<Circle> rule_goals(const Circle& goal, Point toward, std::size_t* clear_from) const;
+    std::vector<Circle> rule_goals(const Circle& goal, Point toward, bool beside) const;
     bool second_seed();
     bool tried_second_seed = false;
     bool centre_seed();
@@ -314,19 +314,16 @@ std::unique_ptr<SymmetryGroup> GrowthEngine::Impl::make_group() const {
 
 // The circles a rule is offered in turn under symmetry, each inside C (so as empty): C itself
 // and C's largest circle centred on the nearest mirror; then both shrunk to clear their own
-// images, and halved again and again down to the minimum radius (at most 8 times); last, from
-// `*clear_from` on, C's largest circles clear of their own images on and off the mirrors (on
-// the side of `toward`, the parent: beside a rotation centre, where C holds only an element
-// whose images coincide with it), each halved likewise. Children that clash with their images
-// on one (or a rule that failed because intersection() found such a clash) try the next.
+// images, and halved again and again down to the minimum radius (at most 8 times); last
+// (`beside`: made only when the tries reach them, as most rules succeed before), C's largest
+// circles clear of their own images on and off the mirrors (on the side of `toward`, the
+// parent: beside a rotation centre, where C holds only an element whose images coincide with
+// it), each halved likewise. Children that clash with their images on one (or a rule that
+// failed because intersection() found such a clash) try the next.
 std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal, Point toward,
-                                                   std::size_t* clear_from) const {
+                                                   bool beside) const {
     const double tol = ornament.tolerance();
-    std::vector<Circle> bases{goal};
-    const Point on_mirror = group->snap(goal.center, goal.radius);
-    const double moved = distance(on_mirror, goal.center);
-    if (moved > tol && moved < goal.radius) bases.push_back({on_mirror, goal.radius - moved});
-    std::vector<Circle> out = bases;
+    std::vector<Circle> out;
     auto halve = [&](const std::vector<Circle>& from) {
         // Each circle's clearance once (it measures every transformation of the group).
         std::vector<double> reach;
@@ -340,12 +337,19 @@ std::vector<Circle> GrowthEngine::Impl::rule_goals(const Circle& goal, Point tow
                     out.push_back({from[k].center, r});
             }
     };
-    halve(bases);
-    *clear_from = out.size();
+    if (!beside) {
+        std::vector<Circle> bases{goal};
+        const Point on_mirror = group->snap(goal.center, goal.radius);
+        const double moved = distance(on_mirror, goal.center);
+        if (moved > tol && moved < goal.radius) bases.push_back({on_mirror, goal.radius - moved});
+        out = bases;
+        halve(bases);
+        return out;
+    }
     std::vector<Circle> clear;
     for (const Circle& c : group->clear_circles_in(goal, toward, tol))
         if (c.radius >= min_radius) clear.push_back(c);
-    out.insert(out.end(), clear.begin(), clear.end());
+    out = clear;
     halve(clear);
     return out;
 }
@@ -956,8 +960,15 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
             // or fail on C itself); without, the one goal.
             std::vector<Circle> tries{group ? goals[n] : goal};
             std::size_t clear_from = 1;
-            for (std::size_t t = 0; t < tries.size(); ++t) {
-                if (parent->sterile) break;
+            bool beside_due = false;  // the circles beside C's centre, added when reached
+            Point toward;
+            for (std::size_t t = 0;; ++t) {
+                if (t == tries.size() && beside_due) {
+                    beside_due = false;
+                    const std::vector<Circle> more = rule_goals(tries[0], toward, true);
+                    tries.insert(tries.end(), more.begin(), more.end());
+                }
+                if (t >= tries.size() || parent->sterile) break;
                 const Circle tried = tries[t];
                 env.set_goal(tried);
                 // A restart's fill library fills the circle offered (its part in the
@@ -1000,9 +1011,11 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
                 // seed's one rule) has not used it up.
                 if (result == SUCCESS) parent->sterile = was_sterile;
                 if (group && t == 0) {
-                    const std::vector<Circle> more =
-                        rule_goals(tried, parent->proxy(0).bounds().center(), &clear_from);
+                    toward = parent->proxy(0).bounds().center();
+                    const std::vector<Circle> more = rule_goals(tried, toward, false);
                     tries.insert(tries.end(), more.begin() + 1, more.end());
+                    clear_from = tries.size();
+                    beside_due = true;
                 }
             }
             if (success) {

@@ -46,27 +46,29 @@ ImageElement::ImageElement(const Element& original, const Isometry& transform)
     : original_(&original), transform_(transform) {
     sterile = true;
     depth = original.depth;
-    proxies_.reserve(original.proxy_count());
-    for (std::size_t k = 0; k < original.proxy_count(); ++k) {
+    count_ = original.proxy_count();
+    if (count_ > 1) more_.resize(count_ - 1);
+    for (std::size_t k = 0; k < count_; ++k) {
         const Proxy& p = original.proxy(k);
+        AnyProxy& out = slot(k);
         switch (p.kind()) {
             case ProxyKind::point:
-                proxies_.emplace_back(PointProxy{});
+                out.emplace<PointProxy>();
                 break;
             case ProxyKind::circle:
-                proxies_.emplace_back(CircleProxy{});
+                out.emplace<CircleProxy>();
                 break;
             case ProxyKind::arc:
-                proxies_.emplace_back(ArcProxy{});
+                out.emplace<ArcProxy>();
                 break;
             case ProxyKind::linesegment:
-                proxies_.emplace_back(LineSegmentProxy{});
+                out.emplace<LineSegmentProxy>();
                 break;
             case ProxyKind::bezier:
-                proxies_.emplace_back(BezierProxy{});
+                out.emplace<BezierProxy>();
                 break;
             case ProxyKind::polygon:
-                proxies_.emplace_back(PolygonProxy{});
+                out.emplace<PolygonProxy>();
                 break;
         }
         transform_proxy(p, transform, proxy(k));
@@ -75,12 +77,12 @@ ImageElement::ImageElement(const Element& original, const Isometry& transform)
 
 void ImageElement::set_transform(const Isometry& transform) {
     transform_ = transform;
-    for (std::size_t k = 0; k < proxies_.size(); ++k)
+    for (std::size_t k = 0; k < count_; ++k)
         transform_proxy(original_->proxy(k), transform, proxy(k));
 }
 
 Proxy& ImageElement::proxy(std::size_t k) {
-    return std::visit([](auto& p) -> Proxy& { return p; }, proxies_[k]);
+    return std::visit([](auto& p) -> Proxy& { return p; }, slot(k));
 }
 
 }  // namespace acanthus::detail

@@ -20,7 +20,7 @@ class ImageElement final : public Element {
     ImageElement(const Element& original, const Isometry& transform);
 
     const ElementType& type() const override { return original_->type(); }
-    std::size_t proxy_count() const override { return proxies_.size(); }
+    std::size_t proxy_count() const override { return count_; }
     Proxy& proxy(std::size_t k) override;
 
     // Carries the original's proxies over by another transformation, in place.
@@ -32,9 +32,13 @@ class ImageElement final : public Element {
   private:
     using AnyProxy = std::variant<PointProxy, CircleProxy, ArcProxy, LineSegmentProxy, BezierProxy,
                                   PolygonProxy>;
+    AnyProxy& slot(std::size_t k) { return k == 0 ? first_ : more_[k - 1]; }
     const Element* original_;
     Isometry transform_;
-    std::vector<AnyProxy> proxies_;
+    // The first proxy inline (most elements have one): an image costs one allocation, not two.
+    std::size_t count_ = 0;
+    AnyProxy first_;
+    std::vector<AnyProxy> more_;
 };
 
 // The element as an image, or null for a fundamental element.
