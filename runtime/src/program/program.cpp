@@ -212,6 +212,28 @@ void validate(const detail::ProgramOptions& o, const Region& region,
 // interval: a growth's last tenths of a second are often its failures alone (spiral's 0.2 to
 // 0.4 s), and the picture drawn then was the finished one again, 5 MB of it, drawn and decoded
 // by the page while the finished one came.
+// The child's side of a picture drawn by a forked copy of the program: it writes `path` and
+// exits, never returning into the parent's code. A crash here is the copy's alone: the default
+// action, not the run's crash report (which would remove the run's temporary outputs, shared
+// by name with the parent). Gone with the run, whatever ends it; and a drawing that never ends
+// (the watchdog thread is not copied) is stopped like one body that runs too long.
+template <class Draw>
+[[noreturn]] void draw_in_copy(Draw& draw, const std::string& path, pid_t parent,
+                               double body_time_limit) {
+    for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGABRT}) std::signal(signal, SIG_DFL);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) std::_Exit(1);
+    if (body_time_limit > 0) alarm(static_cast<unsigned>(std::ceil(body_time_limit)));
+    int code = 0;
+    try {
+        const detail::OutputTransaction::Bypass outside;
+        draw(path);
+    } catch (...) {
+        code = 1;
+    }
+    std::_Exit(code);  // no destructors, no atexit: they are the parent's
+}
+
 constexpr long kPartialCheckEvery = 8;  // iterations between two looks at the clock
 
 class PartialPictures {
@@ -247,7 +269,7 @@ class PartialPictures {
         std::fflush(nullptr);  // nothing buffered is written twice
         const pid_t parent = getpid();
         const pid_t pid = fork();
-        if (pid == 0) draw_and_exit(draw, parent);
+        if (pid == 0) draw_in_copy(draw, path_, parent, body_time_limit_);
         if (pid > 0) {
             drawing_ = pid;
             forked_ = begin;
@@ -280,26 +302,6 @@ class PartialPictures {
     }
 
   private:
-    template <class Draw>
-    [[noreturn]] void draw_and_exit(Draw& draw, pid_t parent) {
-        // A crash here is the copy's alone: the default action, not the run's crash report
-        // (which would remove the run's temporary outputs, shared by name with the parent).
-        for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGABRT}) std::signal(signal, SIG_DFL);
-        // Gone with the run, whatever ends it; and a drawing that never ends (the watchdog
-        // thread is not copied) is stopped like one body that runs too long.
-        prctl(PR_SET_PDEATHSIG, SIGKILL);
-        if (getppid() != parent) std::_Exit(1);
-        if (body_time_limit_ > 0) alarm(static_cast<unsigned>(std::ceil(body_time_limit_)));
-        int code = 0;
-        try {
-            const detail::OutputTransaction::Bypass outside;
-            draw(path_);
-        } catch (...) {
-            code = 1;
-        }
-        std::_Exit(code);  // no destructors, no atexit: they are the parent's
-    }
-
     // Whether the copy drawing has ended (waited for with `block`); then the next picture
     // waits at least as long as it took.
     bool reaped(bool block) {
@@ -378,18 +380,7 @@ class OutputCopy {
             pid_ = pid;  // (-1: no copy; drawn by finish)
             return;
         }
-        for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGABRT}) std::signal(signal, SIG_DFL);
-        prctl(PR_SET_PDEATHSIG, SIGKILL);
-        if (getppid() != parent) std::_Exit(1);
-        if (body_time_limit_ > 0) alarm(static_cast<unsigned>(std::ceil(body_time_limit_)));
-        int code = 0;
-        try {
-            const detail::OutputTransaction::Bypass outside;
-            draw(path_);
-        } catch (...) {
-            code = 1;
-        }
-        std::_Exit(code);  // no destructors, no atexit: they are the parent's
+        draw_in_copy(draw, path_, parent, body_time_limit_);
     }
 
     // Waits for the copy; draws the picture here when the copy did not.
