@@ -212,6 +212,20 @@ void validate(const detail::ProgramOptions& o, const Region& region,
 // interval: a growth's last tenths of a second are often its failures alone (spiral's 0.2 to
 // 0.4 s), and the picture drawn then was the finished one again, 5 MB of it, drawn and decoded
 // by the page while the finished one came.
+// What a copy that crashed or was stopped left of its picture (write_output_file's temporary
+// name, `.NAME.tmp-XXXXXX` beside it).
+void remove_copy_temporaries(const std::string& path) {
+    const fs::path target(path);
+    const std::string prefix = "." + target.filename().string() + ".tmp-";
+    std::error_code ec;
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.size() == prefix.size() + 6 && name.rfind(prefix, 0) == 0)
+            fs::remove(e.path(), ec);
+    }
+}
+
 // The child's side of a picture drawn by a forked copy of the program: it writes `path` and
 // exits, never returning into the parent's code. A crash here is the copy's alone: the default
 // action, not the run's crash report (which would remove the run's temporary outputs, shared
@@ -314,24 +328,10 @@ class PartialPictures {
         if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)
             ++published_;
         else if (r > 0)
-            remove_temporaries();
+            remove_copy_temporaries(path_);
         const Clock::time_point now = Clock::now();
         next_ = std::max(next_, now + (now - forked_));
         return true;
-    }
-
-    // What a copy that crashed or was stopped left of its picture (write_output_file's
-    // temporary name, `.NAME.tmp-XXXXXX` beside it).
-    void remove_temporaries() const {
-        const fs::path target(path_);
-        const std::string prefix = "." + target.filename().string() + ".tmp-";
-        std::error_code ec;
-        const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-        for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-            const std::string name = e.path().filename().string();
-            if (name.size() == prefix.size() + 6 && name.rfind(prefix, 0) == 0)
-                fs::remove(e.path(), ec);
-        }
     }
 
     static Clock::duration seconds(double s) {
@@ -401,15 +401,7 @@ class OutputCopy {
         while (r < 0 && errno == EINTR);
         pid_ = 0;
         if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
-        const fs::path drawn(path_);
-        const std::string prefix = "." + drawn.filename().string() + ".tmp-";
-        std::error_code ec;
-        const fs::path dir = drawn.has_parent_path() ? drawn.parent_path() : fs::path(".");
-        for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-            const std::string name = e.path().filename().string();
-            if (name.size() == prefix.size() + 6 && name.rfind(prefix, 0) == 0)
-                fs::remove(e.path(), ec);
-        }
+        remove_copy_temporaries(path_);
         return false;
     }
 
