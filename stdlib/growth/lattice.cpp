@@ -25,6 +25,9 @@ constexpr int kMaxSites = 24;
 // Candidates kept per site, the nearest the central element: on a lattice they all have one
 // ring, and a huge reference need not be matched whole at every seed.
 constexpr std::size_t kSiteCandidates = 64;
+// A lattice found on positions and symbols alone keeps its elements this close to their sites
+// (RMS, in spacings): rounded coordinates are far within, a jitter of a tenth is not.
+constexpr double kExact = 0.03;
 
 class PointGrid {
   public:
@@ -135,6 +138,29 @@ Lattice::Spot Lattice::nearest(Point origin, Point p) const {
     return best;
 }
 
+namespace {
+
+// Shortest first, then the one pointing nearer +x: a deterministic order of lattice vectors.
+bool shorter(Vector a, Vector b) {
+    const double la = a.length(), lb = b.length();
+    if (la != lb) return la < lb;
+    return a.x != b.x ? a.x > b.x : a.y > b.y;
+}
+
+// Lagrange's reduction: the two shortest vectors spanning the lattice of (a, b), |a| <= |b|.
+void reduce(Vector& a, Vector& b) {
+    if (shorter(b, a)) std::swap(a, b);
+    for (int guard = 0; guard < 64; ++guard) {
+        const double k = std::round(a.dot(b) / a.dot(a));
+        if (k == 0) break;
+        b -= a * k;
+        if (!shorter(b, a)) break;
+        std::swap(a, b);
+    }
+}
+
+}  // namespace
+
 std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
     const auto& elements = reference.elements;
     const std::size_t n = elements.size();
@@ -142,23 +168,22 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
     std::vector<Point> points;
     for (const auto& e : elements) points.push_back(e.position);
 
-    Lattice lattice;
+    double spacing = 0;
     {
-        PointGrid grid(points, 2 * reference.mean_edge);
         std::vector<double> nn;
         for (std::size_t i = 0; i < n; ++i) {
             double best = INFINITY;
             for (const RingSlot& s : reference.rings[i]) best = std::min(best, s.offset.length());
             if (std::isfinite(best)) nn.push_back(best);
         }
-        lattice.spacing = median(nn);
+        spacing = median(nn);
     }
-    const double spacing = lattice.spacing;
     if (!(spacing > 0)) return std::nullopt;
-    const double tol = lattice.tolerance = 0.15 * spacing;
+    const double tol = 0.15 * spacing;
     PointGrid grid(points, spacing);
     TriangleGrid inside(points, reference.connectivity.triangles, 2 * spacing);
 
+    // Alike in everything drawn: symbol, label, turn and size.
     auto same_kind = [&](int a, int b) {
         const ReferenceElement& x = elements[a];
         const ReferenceElement& y = elements[b];
@@ -167,6 +192,11 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
         return std::abs(turn) < 0.05 &&
                std::abs(x.size - y.size) <= 0.05 * std::max(x.size, y.size);
     };
+    // Alike in what growth places by: symbol and label (motifs turned or sized at random).
+    auto same_symbol = [&](int a, int b) {
+        return reference.symbol[a] == reference.symbol[b] && elements[a].label == elements[b].label;
+    };
+    auto any = [](int, int) { return true; };
 
     // The interior element nearest the centroid anchors the search.
     Vector sum{0, 0};
@@ -184,20 +214,14 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
     const std::vector<int> sample(order.begin(),
                                   order.begin() + static_cast<long>(std::min(n, kSample)));
 
-    // Translations: offsets from the anchor to elements of its kind, shortest first.
-    std::vector<int> targets;
-    for (int j : sample)
-        if (j != anchor && distance(points[j], points[anchor]) <= kReach * spacing &&
-            same_kind(anchor, j))
-            targets.push_back(j);  // already by distance, ties by index
-    // A translation that holds, refined as the mean offset of the pairs it maps.
-    auto holds = [&](Vector t, Vector& refined) {
+    // A translation that holds for `alike`, refined as the mean offset of the pairs it maps.
+    auto holds = [&](Vector t, Vector& refined, auto&& alike) {
         long support = 0, contra = 0;
         Vector total{0, 0};
         for (int i : sample) {
             Point q = points[i] + t;
             int j = grid.nearest(q, tol);
-            if (j >= 0 && same_kind(i, j)) {
+            if (j >= 0 && alike(i, j)) {
                 ++support;
                 total += points[j] - points[i];
             } else if (j >= 0 || inside.inside(q)) {
@@ -214,27 +238,64 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
         refined = total / static_cast<double>(support);
         return true;
     };
-    bool have1 = false, have2 = false;
-    for (int j : targets) {
-        Vector t = points[j] - points[anchor], refined;
-        if (have1 && std::abs(lattice.t1.cross(t)) < 0.2 * lattice.t1.length() * t.length())
-            continue;  // parallel to t1: a multiple of it, or a worse one
-        if (!holds(t, refined)) continue;
-        if (!have1) {
-            lattice.t1 = refined;
-            have1 = true;
-        } else {
-            lattice.t2 = refined;
-            have2 = true;
-            break;
+    // The two shortest independent offsets from the anchor to an element `alike` it that hold.
+    auto basis = [&](Vector& t1, Vector& t2, auto&& alike) {
+        bool have1 = false;
+        for (int j : sample) {
+            if (j == anchor || distance(points[j], points[anchor]) > kReach * spacing ||
+                !alike(anchor, j))
+                continue;  // the sample is by distance, ties by index
+            Vector t = points[j] - points[anchor], refined;
+            if (have1 && std::abs(t1.cross(t)) < 0.2 * t1.length() * t.length())
+                continue;  // parallel to t1: a multiple of it, or a worse one
+            if (!holds(t, refined, alike)) continue;
+            if (!have1) {
+                t1 = refined;
+                have1 = true;
+            } else {
+                t2 = refined;
+                return true;
+            }
         }
+        return false;
+    };
+
+    Lattice lattice;
+    lattice.spacing = spacing;
+    lattice.tolerance = tol;
+    bool by_symbol = false;
+    if (!basis(lattice.t1, lattice.t2, same_kind)) {
+        // Motifs turned or sized at random repeat in position and symbol only: the lattice of
+        // the positions, then its smallest sub-lattice under which the symbols repeat (a
+        // checker's, a 3-colour's, a stripe's period).
+        Vector p1, p2;
+        if (!basis(p1, p2, any)) return std::nullopt;
+        bool found = false;
+        for (int index = 1; index <= kMaxSites && !found; ++index)
+            for (int a = 1; a <= index && !found; ++a) {
+                if (index % a != 0) continue;
+                const int d = index / a;
+                for (int b = 0; b < a && !found; ++b) {
+                    Vector v1 = p1 * static_cast<double>(a),
+                           v2 = p1 * static_cast<double>(b) + p2 * static_cast<double>(d), r1, r2;
+                    reduce(v1, v2);
+                    if (v1.length() > 2 * kReach * spacing) continue;
+                    if (!holds(v1, r1, same_symbol) || !holds(v2, r2, same_symbol)) continue;
+                    lattice.t1 = r1;
+                    lattice.t2 = r2;
+                    found = true;
+                }
+            }
+        if (!found) return std::nullopt;
+        by_symbol = true;
     }
-    if (!have2) return std::nullopt;
     if (lattice.t1.cross(lattice.t2) < 0) lattice.t2 = -lattice.t2;
+    auto site_kind = [&](int a, int b) { return by_symbol ? same_symbol(a, b) : same_kind(a, b); };
 
     // Sites: every element reduced into the cell around the anchor, grouped within the tolerance.
     const double det = lattice.t1.cross(lattice.t2);
     std::vector<Vector> unwrapped_sum;
+    std::vector<Vector> unwrapped;  // per element, its offset in the cell
     lattice.site_of.assign(n, -1);
     for (std::size_t i = 0; i < n; ++i) {
         Vector d = points[i] - points[anchor];
@@ -251,7 +312,7 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
                 for (int b = -1; b <= 1 && found < 0; ++b) {
                     Vector shifted = r + lattice.t1 * a + lattice.t2 * b;
                     if ((shifted - rep).length() >= tol) continue;
-                    if (!same_kind(site.elements.front(), static_cast<int>(i)))
+                    if (!site_kind(site.elements.front(), static_cast<int>(i)))
                         return std::nullopt;  // two kinds on one site: not a lattice
                     found = static_cast<int>(s);
                     at = shifted;
@@ -267,6 +328,7 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
         }
         lattice.sites[found].elements.push_back(static_cast<int>(i));
         unwrapped_sum[found] += at;
+        unwrapped.push_back(at);
         lattice.site_of[i] = found;
     }
     for (int c : order)
@@ -279,6 +341,16 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
         Lattice::Site& site = lattice.sites[s];
         if (site.candidates.empty()) return std::nullopt;  // a site no ring can be copied from
         site.offset = unwrapped_sum[s] / static_cast<double>(site.elements.size());
+    }
+    if (by_symbol) {
+        // Found on positions alone, a jittered lattice would pass the tolerance too: it is
+        // near-regular growth's (near_regular.hpp), not one to snap every motif onto.
+        double squares = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vector off = unwrapped[i] - lattice.sites[lattice.site_of[i]].offset;
+            squares += off.dot(off);
+        }
+        if (std::sqrt(squares / static_cast<double>(n)) > kExact * spacing) return std::nullopt;
     }
     // The anchor's site sits at the origin.
     const Vector shift = lattice.sites[lattice.site_of[anchor]].offset;

@@ -2,7 +2,9 @@
 // honeycomb, 3-colour, checker, stripes, rosettes) is a set of sites repeated by two translations.
 // The translations are found among the offsets between elements like the most central one, as
 // those that map (nearly) every element onto an element of the same kind within 0.15 of the
-// nearest-neighbour distance, and never onto an empty place inside the reference. Synthesis then
+// nearest-neighbour distance, and never onto an empty place inside the reference. Motifs turned
+// or sized at random are alike in position and symbol only: then the positions' lattice is
+// found, and its smallest sub-lattice under which the symbols repeat. Synthesis then
 // keeps its growth on that lattice (synthesis.hpp), so that fronts meeting from two sides agree.
 #pragma once
 
