@@ -208,9 +208,10 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
 
     std::vector<int> order(n);  // by distance from the anchor
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-        return distance(points[a], points[anchor]) < distance(points[b], points[anchor]);
-    });
+    std::vector<double> from_anchor(n);  // once each, not twice per comparison
+    for (std::size_t i = 0; i < n; ++i) from_anchor[i] = distance(points[i], points[anchor]);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return from_anchor[a] < from_anchor[b]; });
     const std::vector<int> sample(order.begin(),
                                   order.begin() + static_cast<long>(std::min(n, kSample)));
 

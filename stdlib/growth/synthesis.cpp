@@ -522,13 +522,14 @@ Synthesis::Choice Synthesis::choose(const Node& seed, const std::vector<RingEntr
 
 double Synthesis::balance_over(const Node& seed, int c, int shift, std::size_t targets) const {
     // The ring slots no target neighbour takes become seeds of their symbols.
+    // Slot k is taken when it is within `targets` after `shift` round the ring; summed in slot
+    // order (the same bits as marking them), without an allocation per alignment.
     const std::size_t size = rings_[c].size();
-    std::vector<bool> taken(size, false);
-    for (std::size_t i = 0; i < targets && size > 0; ++i)
-        taken[(static_cast<std::size_t>(shift) + i) % size] = true;
     double over = seed.symbol < 0 ? excess(reference_.symbol[c]) : 0.0;
+    if (size == 0) return over;
+    const std::size_t first = static_cast<std::size_t>(shift) % size;
     for (std::size_t k = 0; k < size; ++k)
-        if (!taken[k]) over += excess(rings_[c][k].symbol);
+        if ((k + size - first) % size >= targets) over += excess(rings_[c][k].symbol);
     return over;
 }
 
