@@ -250,6 +250,27 @@ ReferenceProfile::ReferenceProfile(const ReferenceData& reference) : checker(ref
                 1.0 / static_cast<double>(lattice->sites.size());
     }
     same_symbol_share = same_share(ref, checker.reach());
+    // Likewise its same-symbol share: each site's neighbours within reach on the lattice, once
+    // per cell (a stripe reference cut after a stripe of the rarer symbol has more pairs alike).
+    if (const Lattice* lattice = lattice_of(reference)) {
+        const double reach = checker.reach();
+        const long span = static_cast<long>(std::ceil(
+                              reach / std::min(lattice->t1.length(), lattice->t2.length()))) +
+                          2;
+        long close = 0, same = 0;
+        for (int a = 0; a < static_cast<int>(lattice->sites.size()); ++a)
+            for (int b = 0; b < static_cast<int>(lattice->sites.size()); ++b)
+                for (long i = -span; i <= span; ++i)
+                    for (long j = -span; j <= span; ++j) {
+                        const double d = distance(lattice->point({0, 0}, a, 0, 0),
+                                                  lattice->point({0, 0}, b, i, j));
+                        if (d <= 0.5 * lattice->spacing || d > reach) continue;
+                        ++close;
+                        same += lattice->sites[static_cast<std::size_t>(a)].symbol ==
+                                lattice->sites[static_cast<std::size_t>(b)].symbol;
+                    }
+        if (close > 0) same_symbol_share = static_cast<double>(same) / static_cast<double>(close);
+    }
 }
 
 const ReferenceProfile& profile_of(const ReferenceData& reference) {

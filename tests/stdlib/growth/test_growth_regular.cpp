@@ -189,6 +189,26 @@ TEST(GrowthRegular, LatticesOfMotifsTurnedAtRandomAreLattices) {
     }
 }
 
+// On a lattice the reference's same-symbol share is its cell's, not that of the rectangle cut
+// from it: with a stripe of "b" every third column, 1 in 3 pairs across columns and every pair
+// along one are alike (2/3); 11 columns cut after a "b" stripe (4 of 10 across alike) counted
+// 70%, and a copy grown true to the lattice looked 3 points off (the panel cuts it too: 1.3).
+TEST(GrowthRegular, ALatticesSameSymbolShareIsItsCells) {
+    std::vector<ReferenceElement> elements;
+    for (int r = 0; r < 10; ++r)
+        for (int c = 0; c < 11; ++c) {
+            ReferenceElement e;
+            e.symbol = c % 3 == 2 ? "b" : "a";
+            e.position = {10.0 * c, 10.0 * r};
+            elements.push_back(e);
+        }
+    Reference ref = Reference::from_elements(std::move(elements), {}, "stripes of three");
+    SynthesisResult r = synthesize(ref, Region::from_spec("rect:240,180"), Options{}, {}, 1);
+    ASSERT_EQ(r.stats.lattice_sites, 3);
+    EXPECT_NEAR(r.fidelity.reference_same_symbol_share, 2.0 / 3.0, 1e-9);
+    EXPECT_NEAR(r.fidelity.same_symbol_share, r.fidelity.reference_same_symbol_share, 0.02);
+}
+
 // A jittered lattice is no exact one, turned motifs or not: near-regular growth keeps its
 // jitter (a lattice would snap every motif onto a site).
 TEST(GrowthRegular, JitteredLatticesOfTurnedMotifsAreNoLattices) {
