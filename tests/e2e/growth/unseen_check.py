@@ -22,6 +22,8 @@ Sets (each reference made here from its own random seed, coordinates rounded to 
       and a two-symbol Poisson-disc set of spacing 10; in a gourd and a wave band (each with a
       neck, every edge curved), the circle and the L (each panel scaled with the reference's
       units).
+  s10 seeds 1001-1006 (set_s10): exact lattices of motifs turned at random, a jittered one and
+      a Poisson-disc set, in the gourd, the wave band, the shield and the ring.
 """
 import argparse
 import json
@@ -92,6 +94,10 @@ def pattern_symbol(pattern, row, col):
     gives a triangular lattice three symbols with no two alike side by side."""
     if pattern == "checker":
         return "ab"[(row + col) % 2]
+    if pattern == "stripes":
+        return "b" if col % 3 == 2 else "a"
+    if pattern == "plain":
+        return "a"
     q = col - row // 2  # axial coordinates of the offset rows
     return "abc"[(q - row) % 3]
 
@@ -125,8 +131,9 @@ def independent_copy(kind, gap, width, height, jitter, turn, seed):
 
 
 def make_reference(path, seed, kind, gap, width, height, jitter, turn, shares, sizes,
-                   pattern="", unit=1.0):
-    """`unit` scales the whole reference (coordinates and sizes) before rounding to 3 decimals."""
+                   pattern="", unit=1.0, turned=False):
+    """`unit` scales the whole reference (coordinates and sizes) before rounding to 3 decimals;
+    `turned`: each motif turned at random also on a patterned lattice."""
     if kind != "poisson" and jitter > 0:
         JITTERED[path.stem] = (kind, gap, width, height, jitter, turn, seed)
     rng = random.Random(seed)
@@ -150,7 +157,8 @@ def make_reference(path, seed, kind, gap, width, height, jitter, turn, shares, s
         elements.append({"symbol": symbol, "x": round(x * unit, 3), "y": round(y * unit, 3),
                          "size": round(sizes["abc".index(symbol)] * unit, 3),
                          # an exact lattice's elements all point one way (else no two alike)
-                         "angle": 0.0 if pattern else round(rng.uniform(0, 2 * math.pi), 3)})
+                         "angle": 0.0 if pattern and not turned else
+                         round(rng.uniform(0, 2 * math.pi), 3)})
     path.write_text(json.dumps({"elements": elements}))
 
 
@@ -238,6 +246,33 @@ def set_s9():
     return refs
 
 
+def set_s10():
+    """Seeds 1001-1006, made after session 3's lattice change with nothing tuned on them:
+    exact lattices whose motifs are each turned at random (a 3-colour triangular one turned 25
+    degrees, a checkerboard in units of 0.1, a one-symbol honeycomb turned 40 degrees, a square
+    grid with every third column another symbol turned 12 degrees), a triangular lattice
+    jittered by 0.12 and a two-symbol Poisson-disc set of spacing 8; in the gourd, the wave band,
+    the shield and the ring."""
+    refs = []
+    panels = [str(p) for p in s9_panels()[:2]] + [str(PANELS / "shield.svg"), own_panels()[1]]
+    for seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit in (
+            (1001, "triangular", 10, 100, 90, 0, 25, (), (3.0, 3.1, 2.9), "colour3", 1.0),
+            (1002, "square", 10, 100, 90, 0, 0, (), (3.1, 3.0), "checker", 0.1),
+            (1003, "honeycomb", 8, 95, 85, 0, 40, (), (2.5,), "plain", 1.0),
+            (1004, "square", 10, 100, 90, 0, 12, (), (3.0, 3.2), "stripes", 1.0),
+            (1005, "triangular", 10, 100, 90, 0.12, 0, (0.45, 0.55), (3.0, 3.2), "", 1.0),
+            (1006, "poisson", 8, 100, 85, 0, 0, (0.4, 0.6), (2.6, 2.8), "", 1.0)):
+        if kind == "poisson":
+            name = f"poisson-{gap}-{seed}"
+        else:
+            name = f"{kind}-{pattern or f'{jitter:g}'}-t{turn}-u{unit:g}-turned-{seed}"
+        path = WORK / f"{name}.json"
+        make_reference(path, seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit,
+                       turned=True)
+        refs.append((path, [scaled_panel(p, unit) for p in panels]))
+    return refs
+
+
 def run(ref, panel, seed, out):
     p = subprocess.run(["nice", args.program, "-o", str(out), "--param", f"reference={ref}",
                         "--region", panel, "--rng-seed", str(seed), "--metrics"],
@@ -250,8 +285,10 @@ def run(ref, panel, seed, out):
 if args.set == "s8":
     refs, panels = set_s8()
     refs = [(ref, panels) for ref in refs]
-else:
+elif args.set == "s9":
     refs = set_s9()
+else:
+    refs = set_s10()
 rows = []
 begin = time.time()
 for ref, ref_panels in refs:
