@@ -108,8 +108,14 @@ std::vector<Pier> piers_of(const std::vector<Piece>& pieces) {
             contiguous &=
                 pieces[i].start + pieces[i].length == pieces[i + 1].start && !pieces[i + 1].head;
         const int start = pieces[k].start, n = pieces[e].start + pieces[e].length - start;
-        if (contiguous && n >= 4 && n <= 8) out.push_back({k, e, start, n});
-        k = e - 1;
+        // A pier found ends on its own quoin; the next pier starts past it, since two piers
+        // sharing a piece would each set it out.
+        if (contiguous && n >= 4 && n <= 8) {
+            out.push_back({k, e, start, n});
+            k = e;
+        } else {
+            k = e - 1;
+        }
     }
     return out;
 }
