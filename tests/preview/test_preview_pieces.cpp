@@ -14,8 +14,10 @@
 #include <future>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <thread>
 
+#include "compilation.hpp"
 #include "fixtures/temp_dir.hpp"
 #include "server/diagnostics.hpp"
 #include "server/guides.hpp"
@@ -530,6 +532,38 @@ TEST(PreviewBuild, SplitUnitsTwoAtATimeTheCodeUnitOptimisedLater) {
         setenv("ACANTHUS_CACHE_DIR", kept.c_str(), 1);
     else
         unsetenv("ACANTHUS_CACHE_DIR");
+}
+
+// The generated units' shared header: what the code unit and every rule unit start with (the
+// %param globals, the %source, the element classes), and not the tables.
+TEST(PreviewBuild, GeneratedUnitsStartWithTheirHeader) {
+    const test::TempDir dir("units-header");
+    const std::string input = (dir.path() / "two.acr").string();
+    std::ofstream(input) << "%param double size = 2.0;\n"
+                            "%element\nseed point\n%endelement\n"
+                            "%element\ndot circle\nint order;\n%endelement\n"
+                            "%source\nint placed_so_far = 0;\n%endsource\n"
+                            "%rule\nseed --> dot\n{\n    $0.set( $, size );\n"
+                            "    $$.sterile = 1;\n    return SUCCESS;\n}\n%endrule\n"
+                            "%rule\ndot --> dot\n{\n    if ( $goal.radius < 1 ) return FAILURE;\n"
+                            "    $0.set( $goal.center, 1 );\n    return SUCCESS;\n}\n%endrule\n";
+    CompileRequest request;
+    request.input = input;
+    request.generate.output_name = "two.cpp";
+    std::string cpp;
+    std::ostringstream diagnostics;
+    GeneratedUnits units;
+    ASSERT_TRUE(compile_rule_file(request, true, cpp, diagnostics, nullptr, nullptr, &units))
+        << diagnostics.str();
+    ASSERT_EQ(units.rules.size(), 2u);
+    EXPECT_NE(units.header.find("placed_so_far"), std::string::npos);
+    EXPECT_NE(units.header.find("struct dot"), std::string::npos);
+    EXPECT_NE(units.header.find("size"), std::string::npos);
+    EXPECT_EQ(units.header.find("acr_rule_"), std::string::npos);
+    EXPECT_EQ(units.code.compare(0, units.header.size(), units.header), 0);
+    for (const std::string& rule : units.rules)
+        EXPECT_EQ(rule.compare(0, units.header.size(), units.header), 0);
+    EXPECT_NE(units.tables.compare(0, units.header.size(), units.header), 0);
 }
 
 // The part every unit but the tables starts with is precompiled once (chained on the prelude
