@@ -50,6 +50,7 @@ class Generator {
         GeneratedUnits units;
         prologue();
         const std::string header = out_.take();
+        units.header = header;
         out_ = CppWriter(options_.output_name, options_.line_directives);
         tables();
         units.tables = out_.take();

@@ -24,6 +24,7 @@ std::string generate_cpp(const PatternModel& model, const SourceFiles& files,
 // (a save that edits one rule body compiles one small unit). Only with `emit_main` false.
 struct GeneratedUnits {
     std::string tables;              // the pattern's tables, no user code
+    std::string header;              // what `code` and each rule unit start with (no tables)
     std::string code;                // %draw, %exhausted, the parameters' access, element creation
     std::vector<std::string> rules;  // one per rule, in the pattern's order
 };

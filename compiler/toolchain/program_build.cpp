@@ -7,6 +7,7 @@
 #include <acanthus/output_file.hpp>
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -347,6 +348,76 @@ bool copies_state(const std::vector<std::string>& objects) {
     return false;
 }
 
+// The unit header precompiled (BuildOptions::unit_header), in the units' cache under the key
+// of its text, its command and the prelude it is chained on.
+struct UnitHeader {
+    std::string header, gch, failed;
+    std::vector<std::string> command;  // (output: `gch`'s temporary in place of kLinkOutput)
+};
+
+UnitHeader unit_header_of(const Toolchain& toolchain, const BuildOptions& options,
+                          const fs::path& unit_dir, const std::string& stem) {
+    UnitHeader h;
+    std::vector<std::string> cmd = compiler_flags(toolchain, options);
+    if (options.unit_header.empty() || !is_clang(cmd.front())) return h;
+    // (the header's template instantiations made once, in the .gch, as the prelude's are)
+    cmd.push_back("-fpch-instantiate-templates");
+    if (!options.precompiled_header.empty())
+        cmd.insert(cmd.end(), {"-include", options.precompiled_header});
+    for (const std::string& f : options.extra_flags)
+        if (!link_only(f)) cmd.push_back(f);
+    std::vector<std::string> parts = cmd;
+    parts.push_back(file_identity(toolchain.runtime_library));
+    parts.push_back(file_identity(toolchain.stdlib_library));
+    if (!options.precompiled_header.empty())
+        parts.push_back(file_identity(options.precompiled_header + ".gch"));
+    parts.push_back(options.unit_header);
+    const std::string base = (unit_dir / (stem + "-" + cache_key(parts))).string();
+    h.header = base + ".hpp";
+    h.gch = base + ".hpp.gch";
+    h.failed = base + ".hpp.failed";
+    cmd.insert(cmd.end(), {"-x", "c++-header", h.header, "-o", kLinkOutput});
+    h.command = std::move(cmd);
+    return h;
+}
+
+// Precompiles the unit header. The .hpp is written once and never replaced (clang checks that
+// a .gch's header is the one it was made from; another preview may be using it), the .gch by a
+// rename. False when it cannot be made (a compiler error is remembered: not tried again).
+bool precompile_unit_header(const BuildOptions& options, const UnitHeader& h,
+                            std::string& message) {
+    std::error_code ec;
+    if (fs::exists(h.failed, ec)) return false;
+    if (!fs::exists(h.header, ec)) {
+        const std::string temp = create_temporary_sibling(h.header, message);
+        if (temp.empty() || !write_file_atomically(temp, options.unit_header, message)) {
+            if (!temp.empty()) remove_if_present(temp);
+            return false;
+        }
+        // link(): fails, harmlessly, when another build made it meanwhile
+        if (::link(temp.c_str(), h.header.c_str()) != 0 && errno != EEXIST) {
+            remove_if_present(temp);
+            return false;
+        }
+        remove_if_present(temp);
+    }
+    const std::string temp = create_temporary_sibling(h.gch, message);
+    if (temp.empty()) return false;
+    std::vector<std::string> cmd = h.command;
+    for (std::string& w : cmd)
+        if (w == kLinkOutput) w = temp;
+    const int status = options.runner ? options.runner(cmd, message) : run_process(cmd, message);
+    if (status != 0 || std::rename(temp.c_str(), h.gch.c_str()) != 0) {
+        remove_if_present(temp);
+        if (status > 0) {
+            std::string ignored;
+            write_file_atomically(h.failed, "precompiling the unit header failed\n", ignored);
+        }
+        return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 bool cached_split_library(const Toolchain& toolchain, const BuildOptions& options,
@@ -435,6 +506,28 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
     std::vector<std::size_t> todo;
     for (std::size_t k = 0; k < units.size(); ++k)
         if (access(objects[k].c_str(), R_OK) != 0) todo.push_back(k);
+    // The part every unit but the tables repeats, precompiled: a unit compiles only its own code.
+    const UnitHeader header = unit_header_of(toolchain, options, unit_dir, stem);
+    bool header_ready = !header.gch.empty() && access(header.gch.c_str(), R_OK) == 0;
+    if (!header.gch.empty() && !header_ready && options.precompile_unit_header && !todo.empty()) {
+        std::string message;
+        header_ready = precompile_unit_header(options, header, message);
+    }
+    const auto uses_header = [&](std::size_t k) {
+        // (the code unit at another level: a .gch is only for the flags it was made with)
+        return header_ready && k >= 1 && &unit_options(k) == &options &&
+               units[k].compare(0, options.unit_header.size(), options.unit_header) == 0;
+    };
+    const auto unit_command = [&](std::size_t k, const std::string& source,
+                                  const std::string& object) {
+        if (!uses_header(k)) return object_command(toolchain, unit_options(k), source, object);
+        std::vector<std::string> cmd = compiler_flags(toolchain, options);
+        cmd.insert(cmd.end(), {"-include-pch", header.gch});
+        for (const std::string& f : options.extra_flags)
+            if (!link_only(f)) cmd.push_back(f);
+        cmd.insert(cmd.end(), {"-c", source, "-o", object});
+        return cmd;
+    };
     std::atomic<std::size_t> next{0};
     std::atomic<bool> failed{false};
     std::vector<std::string> errors(units.size());
@@ -445,10 +538,11 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
             const std::string source =
                 (fs::path(work) / (stem + "-" + std::to_string(k) + ".cpp")).string();
             std::string temp;
-            bool done = write_file_atomically(source, units[k], message) &&
+            const std::string text =
+                uses_header(k) ? units[k].substr(options.unit_header.size()) : units[k];
+            bool done = write_file_atomically(source, text, message) &&
                         !(temp = create_temporary_sibling(objects[k], message)).empty();
-            done = done && run(object_command(toolchain, unit_options(k), source, temp),
-                               "the C++ compiler failed", message);
+            done = done && run(unit_command(k, source, temp), "the C++ compiler failed", message);
             if (done && std::rename(temp.c_str(), objects[k].c_str()) != 0) {
                 message = "cannot write '" + objects[k] + "'";
                 done = false;

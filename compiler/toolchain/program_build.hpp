@@ -36,6 +36,12 @@ struct BuildOptions {
     unsigned jobs = 1;
     std::string code_unit_optimization;
     bool code_unit_later = false;
+    // A split build with clang: the text the code unit and each rule unit start with (the
+    // %param globals, %source and element classes: GeneratedUnits::header). Once precompiled
+    // (chained on `precompiled_header`), a unit that starts with it compiles only the rest;
+    // `precompile_unit_header` precompiles it when missing (a build after a picture).
+    std::string unit_header;
+    bool precompile_unit_header = false;
 };
 
 inline constexpr const char* kLinkObject = "{object}";

@@ -281,6 +281,7 @@ bool RenderJob::build(const std::string& stem, const std::string& cpp, const Gen
         // unit: more than the whole file. The whole file then, and the units after the picture.
         // The code unit (the %draw bodies) is optimised after the picture too when it changed.
         options.code_unit_later = true;
+        options.unit_header = units.header;
         if (cached_split_library(config_.toolchain, options, stem, parts, built, splittable, error,
                                  2, &deferred, &code_deferred)) {
             program = {host_, built};
@@ -482,6 +483,9 @@ void RenderJob::fill_units() {
     bool cancelled = false;
     BuildOptions options = fill_options_;
     options.runner = runner(log, cancelled);
+    // The units' shared header precompiled first when missing: the units after it compile
+    // faster, and so does every later save's unit.
+    options.precompile_unit_header = true;
     std::string library, error;
     bool splittable = true;
     // The units a save's build needs first (the code unit at the ordinary level among them),

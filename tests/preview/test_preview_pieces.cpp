@@ -14,8 +14,10 @@
 #include <future>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <thread>
 
+#include "compilation.hpp"
 #include "fixtures/temp_dir.hpp"
 #include "server/diagnostics.hpp"
 #include "server/guides.hpp"
@@ -526,6 +528,129 @@ TEST(PreviewBuild, SplitUnitsTwoAtATimeTheCodeUnitOptimisedLater) {
     EXPECT_FALSE(code_later);
     EXPECT_TRUE(ran.empty());
     EXPECT_EQ(third, second);
+    if (old_cache)
+        setenv("ACANTHUS_CACHE_DIR", kept.c_str(), 1);
+    else
+        unsetenv("ACANTHUS_CACHE_DIR");
+}
+
+// The generated units' shared header: what the code unit and every rule unit start with (the
+// %param globals, the %source, the element classes), and not the tables.
+TEST(PreviewBuild, GeneratedUnitsStartWithTheirHeader) {
+    const test::TempDir dir("units-header");
+    const std::string input = (dir.path() / "two.acr").string();
+    std::ofstream(input) << "%param double size = 2.0;\n"
+                            "%element\nseed point\n%endelement\n"
+                            "%element\ndot circle\nint order;\n%endelement\n"
+                            "%source\nint placed_so_far = 0;\n%endsource\n"
+                            "%rule\nseed --> dot\n{\n    $0.set( $, size );\n"
+                            "    $$.sterile = 1;\n    return SUCCESS;\n}\n%endrule\n"
+                            "%rule\ndot --> dot\n{\n    if ( $goal.radius < 1 ) return FAILURE;\n"
+                            "    $0.set( $goal.center, 1 );\n    return SUCCESS;\n}\n%endrule\n";
+    CompileRequest request;
+    request.input = input;
+    request.generate.output_name = "two.cpp";
+    std::string cpp;
+    std::ostringstream diagnostics;
+    GeneratedUnits units;
+    ASSERT_TRUE(compile_rule_file(request, true, cpp, diagnostics, nullptr, nullptr, &units))
+        << diagnostics.str();
+    ASSERT_EQ(units.rules.size(), 2u);
+    EXPECT_NE(units.header.find("placed_so_far"), std::string::npos);
+    EXPECT_NE(units.header.find("struct dot"), std::string::npos);
+    EXPECT_NE(units.header.find("size"), std::string::npos);
+    EXPECT_EQ(units.header.find("acr_rule_"), std::string::npos);
+    EXPECT_EQ(units.code.compare(0, units.header.size(), units.header), 0);
+    for (const std::string& rule : units.rules)
+        EXPECT_EQ(rule.compare(0, units.header.size(), units.header), 0);
+    EXPECT_NE(units.tables.compare(0, units.header.size(), units.header), 0);
+}
+
+// The part every unit but the tables starts with is precompiled once (chained on the prelude
+// when there is one) by a build that asks for it; from then on a unit that starts with it is
+// compiled as its own code alone, with that .gch, and the library is the same program.
+TEST(PreviewBuild, SplitUnitsCompiledWithTheirHeaderPrecompiled) {
+    std::string error;
+    if (run_process({"sh", "-c", "command -v clang++ >/dev/null"}, error) != 0)
+        GTEST_SKIP() << "no clang++";
+    const test::TempDir dir("split-header");
+    const char* old_cache = std::getenv("ACANTHUS_CACHE_DIR");
+    const std::string kept = old_cache ? old_cache : "";
+    setenv("ACANTHUS_CACHE_DIR", dir.path().c_str(), 1);
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    options.cxx = "clang++";
+    options.optimization = "0";
+    options.shared_library = true;
+    ASSERT_TRUE(direct_link_command(toolchain, options, options.link_command, error)) << error;
+    std::vector<std::vector<std::string>> ran;
+    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
+        ran.push_back(argv);
+        return run_process(argv, e);
+    };
+    options.unit_header =
+        "#include <vector>\n"
+        "struct Shared { std::vector<int> v{100, 200}; };\n"
+        "inline int twice(int x) { return 2 * x; }\n";
+    const auto rule = [&](int n) {
+        return options.unit_header + "extern \"C\" int rule_part() { return Shared{}.v[1] + " +
+               std::to_string(n) + "; }\n";
+    };
+    std::vector<std::string> units{
+        "extern \"C\" int tables_part() { return 1; }\n",
+        options.unit_header + "extern \"C\" int code_part() { return twice(10); }\n", rule(100)};
+    const auto count = [&](const std::string& word) {
+        int n = 0;
+        for (const auto& argv : ran) n += std::find(argv.begin(), argv.end(), word) != argv.end();
+        return n;
+    };
+    const auto sum = [](const std::string& library) {
+        void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle) return -1;
+        int total = 0;
+        for (const char* name : {"tables_part", "code_part", "rule_part"})
+            if (auto f = reinterpret_cast<int (*)()>(dlsym(handle, name))) total += f();
+        dlclose(handle);
+        return total;
+    };
+    std::string library;
+    bool splittable = true;
+    // Not asked to precompile: the units compiled whole.
+    ASSERT_TRUE(cached_split_library(toolchain, options, "h", units, library, splittable, error))
+        << error;
+    EXPECT_EQ(count("c++-header"), 0);
+    EXPECT_EQ(count("-include-pch"), 0);
+    EXPECT_EQ(sum(library), 321);
+    // Asked (the build after a picture): the header first, then the changed rule with it.
+    ran.clear();
+    options.precompile_unit_header = true;
+    units[2] = rule(101);
+    ASSERT_TRUE(cached_split_library(toolchain, options, "h", units, library, splittable, error))
+        << error;
+    ASSERT_EQ(count("c++-header"), 1);
+    EXPECT_EQ(count("-include-pch"), 1);
+    EXPECT_EQ(sum(library), 322);
+    // The next save's rule: compiled with the cached .gch, its source without the header.
+    ran.clear();
+    options.precompile_unit_header = false;
+    units[2] = rule(102);
+    ASSERT_TRUE(cached_split_library(toolchain, options, "h", units, library, splittable, error))
+        << error;
+    ASSERT_EQ(ran.size(), 2u);  // the rule's unit and the link
+    EXPECT_EQ(count("c++-header"), 0);
+    ASSERT_EQ(count("-include-pch"), 1);
+    EXPECT_EQ(sum(library), 323);
+    // A header that does not compile is remembered: the units are compiled whole.
+    ran.clear();
+    options.precompile_unit_header = true;
+    options.unit_header = "#error not a header\n";
+    units = {units[0], options.unit_header, options.unit_header + "int x;\n"};
+    EXPECT_FALSE(cached_split_library(toolchain, options, "h", units, library, splittable, error));
+    EXPECT_EQ(count("c++-header"), 1);
+    EXPECT_EQ(count("-include-pch"), 0);
+    ran.clear();
+    EXPECT_FALSE(cached_split_library(toolchain, options, "h", units, library, splittable, error));
+    EXPECT_EQ(count("c++-header"), 0);
     if (old_cache)
         setenv("ACANTHUS_CACHE_DIR", kept.c_str(), 1);
     else
