@@ -139,6 +139,14 @@ double curve_lower_bound(const Geom::Curve& c, Geom::Point p) {
     return d * (1 - 1e-12);
 }
 
+// path_distance() of a path of one curve, without building the path.
+double curve_distance(const Geom::Curve& c, Geom::Point p, double limit) {
+    const double box = Geom::distance(p, c.boundsFast());
+    if (box > limit) return INFINITY;
+    if (curve_lower_bound(c, p) > limit) return INFINITY;
+    return Geom::distance(p, c.pointAt(c.nearestTime(p)));
+}
+
 double path_distance(const Geom::Path& path, Geom::Point p, double limit = INFINITY) {
     // Nearest bounds first, and none whose bounds are no nearer than the best or beyond `limit`:
     // the same minimum (when it is within the limit) for fewer of lib2geom's nearest-point
@@ -379,6 +387,18 @@ double distance_to(const Proxy& p, Point q, double limit) {
         case ProxyKind::polygon: {
             Shape s(p);
             return s.inside(g) ? 0.0 : s.boundary().nearest(g).distance;
+        }
+        // A segment or a Bézier is one curve: measured as its path would be, without the
+        // path's allocations (this is the growth's most frequent distance).
+        case ProxyKind::linesegment: {
+            const auto& s = static_cast<const LineSegmentProxy&>(p);
+            return curve_distance(Geom::LineSegment(to_geom(s.p0), to_geom(s.p1)), g, limit);
+        }
+        case ProxyKind::bezier: {
+            const auto& b = static_cast<const BezierProxy&>(p);
+            return curve_distance(Geom::CubicBezier(to_geom(b.c[0]), to_geom(b.c[1]),
+                                                    to_geom(b.c[2]), to_geom(b.c[3])),
+                                  g, limit);
         }
         default:
             return path_distance(detail::proxy_path(p), g, limit);
