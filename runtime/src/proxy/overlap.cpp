@@ -29,8 +29,6 @@
 // winding numbers, and the certified branch and bound of boundary_distance.hpp.
 #include "proxy/overlap.hpp"
 
-#include <2geom/bezier-curve.h>
-
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -101,49 +99,11 @@ class Shape {
     double radius_ = 0;
 };
 
-double segment_distance(Geom::Point p, Geom::Point a, Geom::Point b) {
-    const Geom::Point ab = b - a;
-    const double len2 = Geom::dot(ab, ab);
-    double t = len2 > 0 ? Geom::dot(p - a, ab) / len2 : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
-    return Geom::distance(p, a + t * ab);
-}
-
-bool in_triangle(Geom::Point p, Geom::Point a, Geom::Point b, Geom::Point c) {
-    const double d1 = Geom::cross(b - a, p - a), d2 = Geom::cross(c - b, p - b),
-                 d3 = Geom::cross(a - c, p - c);
-    const bool neg = d1 < 0 || d2 < 0 || d3<0, pos = d1> 0 || d2 > 0 || d3 > 0;
-    return !(neg && pos);
-}
-
-// A lower bound on the distance from p to the curve. A Bézier lies inside the convex hull of
-// its control points, so p's distance to that hull bounds it: outside the hull, the nearest
-// hull edge is among the segments between control points (each inside the hull); inside, 0.
-// Shaved by a relative 1e-12 so rounding never puts it above the exact distance. Other
-// curves: their bounding box.
-double curve_lower_bound(const Geom::Curve& c, Geom::Point p) {
-    const auto* bezier = dynamic_cast<const Geom::BezierCurve*>(&c);
-    if (!bezier || bezier->size() > 4) return Geom::distance(p, c.boundsFast());
-    const unsigned n = bezier->size();
-    Geom::Point q[4];
-    for (unsigned i = 0; i < n; ++i) q[i] = (*bezier)[i];
-    if (n >= 3 && in_triangle(p, q[0], q[1], q[2])) return 0;
-    if (n == 4 && (in_triangle(p, q[0], q[1], q[3]) || in_triangle(p, q[0], q[2], q[3]) ||
-                   in_triangle(p, q[1], q[2], q[3]))) {
-        return 0;
-    }
-    double d = INFINITY;
-    for (unsigned i = 0; i < n; ++i) {
-        for (unsigned j = i + 1; j < n; ++j) d = std::min(d, segment_distance(p, q[i], q[j]));
-    }
-    return d * (1 - 1e-12);
-}
-
 // path_distance() of a path of one curve, without building the path.
 double curve_distance(const Geom::Curve& c, Geom::Point p, double limit) {
     const double box = Geom::distance(p, c.boundsFast());
     if (box > limit) return INFINITY;
-    if (curve_lower_bound(c, p) > limit) return INFINITY;
+    if (detail::curve_distance_lower_bound(c, p) > limit) return INFINITY;
     return Geom::distance(p, c.pointAt(c.nearestTime(p)));
 }
 
@@ -160,7 +120,7 @@ double path_distance(const Geom::Path& path, Geom::Point p, double limit = INFIN
     double best = INFINITY;
     for (const auto& [box, c] : order) {
         if (box >= best || box > limit) break;
-        const double hull = curve_lower_bound(*c, p);
+        const double hull = detail::curve_distance_lower_bound(*c, p);
         if (hull >= best || hull > limit) continue;
         best = std::min(best, Geom::distance(p, c->pointAt(c->nearestTime(p))));
     }
@@ -359,7 +319,8 @@ bool leaves_region(const Proxy& p, const detail::RegionData& region, double tole
             const Geom::Curve& c = *outside.curves()[i];
             if (shape.kind() == ProxyKind::circle) {
                 const Geom::Point centre = to_geom(shape.point());
-                if (curve_lower_bound(c, centre) >= shape.radius() - tolerance) continue;
+                if (detail::curve_distance_lower_bound(c, centre) >= shape.radius() - tolerance)
+                    continue;
                 if (Geom::distance(centre, c.pointAt(c.nearestTime(centre))) <
                     shape.radius() - tolerance)
                     return true;
