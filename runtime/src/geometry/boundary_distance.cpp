@@ -49,7 +49,8 @@ BoundaryDistance::Nearest BoundaryDistance::nearest(Geom::Point p) const {
         double found = INFINITY;
         auto hit = index_->nearest_entry(Point{p[Geom::X], p[Geom::Y]}, [&](SpatialIndex::Entry e) {
             const Geom::Curve& c = *curves_[static_cast<std::size_t>(e.element)];
-            if (curve_distance_lower_bound(c, p) > found) return double{INFINITY};
+            if (found < INFINITY && curve_distance_lower_bound(c, p) > found)
+                return double{INFINITY};
             const double d = Geom::distance(p, c.pointAt(c.nearestTime(p)));
             found = std::min(found, d);
             return d;
@@ -72,7 +73,7 @@ BoundaryDistance::Nearest BoundaryDistance::nearest(Geom::Point p) const {
     for (const auto& [box, i] : order) {
         if (box > best.distance) break;
         const Geom::Curve& c = *curves_[i];
-        if (curve_distance_lower_bound(c, p) > best.distance) continue;
+        if (best.distance < INFINITY && curve_distance_lower_bound(c, p) > best.distance) continue;
         Geom::Point foot = c.pointAt(c.nearestTime(p));
         double d = Geom::distance(p, foot);
         if (d < best.distance || (d == best.distance && i < best.curve)) best = {d, i, foot};

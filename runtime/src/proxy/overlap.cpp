@@ -103,7 +103,7 @@ class Shape {
 double curve_distance(const Geom::Curve& c, Geom::Point p, double limit) {
     const double box = Geom::distance(p, c.boundsFast());
     if (box > limit) return INFINITY;
-    if (detail::curve_distance_lower_bound(c, p) > limit) return INFINITY;
+    if (limit < INFINITY && detail::curve_distance_lower_bound(c, p) > limit) return INFINITY;
     return Geom::distance(p, c.pointAt(c.nearestTime(p)));
 }
 
@@ -120,8 +120,11 @@ double path_distance(const Geom::Path& path, Geom::Point p, double limit = INFIN
     double best = INFINITY;
     for (const auto& [box, c] : order) {
         if (box >= best || box > limit) break;
-        const double hull = detail::curve_distance_lower_bound(*c, p);
-        if (hull >= best || hull > limit) continue;
+        // Nothing to compare the hull with before a first distance or under no limit.
+        if (best < INFINITY || limit < INFINITY) {
+            const double hull = detail::curve_distance_lower_bound(*c, p);
+            if (hull >= best || hull > limit) continue;
+        }
         best = std::min(best, Geom::distance(p, c->pointAt(c->nearestTime(p))));
     }
     return best;
