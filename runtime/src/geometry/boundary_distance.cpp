@@ -139,11 +139,13 @@ double segment_distance(Geom::Point p, Geom::Point a, Geom::Point b) {
     return Geom::distance(p, a + ab * t);
 }
 
+// On a degenerate triangle every cross product may be 0: "inside", a bound of 0, still a bound.
 bool in_triangle(Geom::Point p, Geom::Point a, Geom::Point b, Geom::Point c) {
     const double d1 = Geom::cross(b - a, p - a), d2 = Geom::cross(c - b, p - b),
                  d3 = Geom::cross(a - c, p - c);
-    const bool neg = d1 < 0 || d2 < 0 || d3<0, pos = d1> 0 || d2 > 0 || d3 > 0;
-    return !(neg && pos);
+    const bool negative = d1 < 0 || d2 < 0 || d3 < 0;
+    const bool positive = d1 > 0 || d2 > 0 || d3 > 0;
+    return !(negative && positive);
 }
 
 // Distance from c to the convex hull of the points (0 inside).
