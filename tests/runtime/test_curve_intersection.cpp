@@ -76,12 +76,14 @@ TEST(CurveIntersection, CurveTouchingTheCircleIsLeftToLib2geom) {
     EXPECT_FALSE(intersect_curves(a, inside).empty());
 }
 
-TEST(BoundaryDistance, NearestIsTheNearestCurveLowestIndexFirst) {
+// Few curves are scanned, many go through the spatial index: both skip curves by bounds and
+// control hulls, and must still find what solving every curve finds.
+void expect_nearest_of_all(int count) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(-50, 50);
     std::vector<std::unique_ptr<Geom::BezierCurve>> owned;
     std::vector<const Geom::Curve*> curves;
-    for (int i = 0; i < 12; ++i) {
+    for (int i = 0; i < count; ++i) {
         owned.push_back(bezier(rng, 1 + i % 3, Geom::Point(u(rng), u(rng)), 15));
         curves.push_back(owned.back().get());
     }
@@ -100,6 +102,28 @@ TEST(BoundaryDistance, NearestIsTheNearestCurveLowestIndexFirst) {
         EXPECT_EQ(n.distance, best);
         EXPECT_EQ(n.curve, index);
     }
+}
+
+TEST(BoundaryDistance, NearestIsTheNearestCurveLowestIndexFirst) {
+    expect_nearest_of_all(12);
+    expect_nearest_of_all(80);  // past the 64 curves where the R-tree takes over
+}
+
+TEST(BoundaryDistance, LowerBoundNeverAboveTheCurvesDistance) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-30, 30);
+    for (int k = 0; k < 400; ++k) {
+        const auto c = bezier(rng, 1 + k % 3, Geom::Point(0, 0), 20);
+        const Geom::Point p(u(rng), u(rng));
+        double sampled = INFINITY;
+        for (int i = 0; i <= 2000; ++i)
+            sampled = std::min(sampled, Geom::distance(p, c->pointAt(i / 2000.0)));
+        EXPECT_LE(curve_distance_lower_bound(*c, p), sampled) << k;
+    }
+    // Inside the hull of an arch, away from every segment between its control points.
+    const Geom::CubicBezier arch({0, 0}, {0, 10}, {10, 10}, {10, 0});
+    EXPECT_EQ(curve_distance_lower_bound(arch, {5, 8}), 0.0);
+    EXPECT_NEAR(curve_distance_lower_bound(arch, {5, 13}), 3.0, 1e-9);
 }
 
 }  // namespace

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "proxy/overlap.hpp"
 #include "fixtures/proxy_factory.hpp"
+#include "proxy/overlap.hpp"
 #include "region/region_data.hpp"
 
 namespace acanthus {
@@ -158,6 +158,21 @@ TEST(LeavesRegion, BezierBoundedRegion) {
     EXPECT_FALSE(leaves_region(polygon_proxy({{50, 50}, {90, 50}, {50, 90}}), r, tol));
 }
 
+TEST(LeavesRegion, CircleHoldingAHoleOfCubics) {
+    // A lens-shaped hole of two cubics, 7.5 from (50, 50) at its nearest: a circle holding it
+    // leaves the region though its outline stays inside; one short of it does not.
+    Geom::PathVector pv;
+    pv.push_back(Geom::Path(Geom::Rect(0, 0, 100, 100)));
+    Geom::Path hole(Geom::Point(40, 50));
+    hole.append(Geom::CubicBezier({40, 50}, {40, 60}, {60, 60}, {60, 50}));
+    hole.append(Geom::CubicBezier({60, 50}, {60, 40}, {40, 40}, {40, 50}));
+    hole.close(true);
+    pv.push_back(hole);
+    auto r = make_region(pv, true);
+    EXPECT_TRUE(leaves_region(circle_proxy(50, 50, 20), r, tol));
+    EXPECT_FALSE(leaves_region(circle_proxy(50, 20, 12), r, tol));
+}
+
 TEST(LeavesRegion, RegionFromSpec) {
     Region region = Region::from_spec("rect:100,80");
     EXPECT_FALSE(leaves_region(circle_proxy(50, 40, 10), region, tol));
@@ -252,6 +267,23 @@ TEST(DistanceTo, MatchesSamplingOnRandomShapes) {
         auto pt = point_proxy(a.x, a.y);
         EXPECT_DOUBLE_EQ(distance_to(pt, q), distance(a, q));
     }
+}
+
+TEST(DistanceTo, BezierWithinLimitFromInsideItsControlHull) {
+    // An arch whose top is at y = 7.5, its control hull the square 0..10: from inside the hull a
+    // bound taken from the segments between control points alone could skip the curve.
+    auto arch = bezier_proxy({0, 0}, {0, 10}, {10, 10}, {10, 0});
+    EXPECT_NEAR(distance_to(arch, {5, 5}, 3), 2.5, 1e-9);
+    // (5, 8) is 0.5 from the top and 2 or more from every segment between control points.
+    EXPECT_LE(distance_to(arch, {5, 8}, 1), 0.5 + 1e-9);
+    EXPECT_NEAR(distance_to(arch, {5, 5}, 2.5), 2.5, 1e-9);
+    EXPECT_GT(distance_to(arch, {5, 5}, 2), 2.0);
+    // Outside the hull: the bound is the nearest edge's distance (here 2), below the curve's.
+    EXPECT_NEAR(distance_to(arch, {5, 12}, 4.6), 4.5, 1e-9);
+    EXPECT_GT(distance_to(arch, {5, 12}, 1.9), 1.9);
+    // Degenerate hulls: control points on a line, all in one point.
+    EXPECT_NEAR(distance_to(bezier_proxy({0, 0}, {2, 0}, {8, 0}, {10, 0}), {5, 1}, 1.5), 1.0, 1e-9);
+    EXPECT_NEAR(distance_to(bezier_proxy({1, 1}, {1, 1}, {1, 1}, {1, 1}), {1, 4}, 3.5), 3.0, 1e-9);
 }
 
 TEST(DistanceTo, ZeroInsideAreas) {

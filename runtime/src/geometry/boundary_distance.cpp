@@ -4,6 +4,7 @@
 #include <2geom/elliptical-arc.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "geometry/curve_intersection.hpp"
@@ -42,10 +43,17 @@ std::vector<std::size_t> BoundaryDistance::curves_meeting(const Geom::Rect& box)
 BoundaryDistance::Nearest BoundaryDistance::nearest(Geom::Point p) const {
     Nearest best;
     if (index_) {
-        // Bounds nearest first; ties go to the lowest index, as in the scan below.
+        // Bounds nearest first; ties go to the lowest index, as in the scan below. A curve whose
+        // lower bound is above a distance already found cannot be the nearest, nor tie: it is
+        // left unsolved (an infinite distance is skipped).
+        double found = INFINITY;
         auto hit = index_->nearest_entry(Point{p[Geom::X], p[Geom::Y]}, [&](SpatialIndex::Entry e) {
             const Geom::Curve& c = *curves_[static_cast<std::size_t>(e.element)];
-            return Geom::distance(p, c.pointAt(c.nearestTime(p)));
+            if (found < INFINITY && curve_distance_lower_bound(c, p) > found)
+                return double{INFINITY};
+            const double d = Geom::distance(p, c.pointAt(c.nearestTime(p)));
+            found = std::min(found, d);
+            return d;
         });
         if (hit) {
             const Geom::Curve& c = *curves_[static_cast<std::size_t>(hit->entry.element)];
@@ -65,6 +73,7 @@ BoundaryDistance::Nearest BoundaryDistance::nearest(Geom::Point p) const {
     for (const auto& [box, i] : order) {
         if (box > best.distance) break;
         const Geom::Curve& c = *curves_[i];
+        if (best.distance < INFINITY && curve_distance_lower_bound(c, p) > best.distance) continue;
         Geom::Point foot = c.pointAt(c.nearestTime(p));
         double d = Geom::distance(p, foot);
         if (d < best.distance || (d == best.distance && i < best.curve)) best = {d, i, foot};
@@ -128,6 +137,15 @@ double segment_distance(Geom::Point p, Geom::Point a, Geom::Point b) {
     double len2 = Geom::dot(ab, ab);
     double t = len2 > 0 ? std::clamp(Geom::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
     return Geom::distance(p, a + ab * t);
+}
+
+// On a degenerate triangle every cross product may be 0: "inside", a bound of 0, still a bound.
+bool in_triangle(Geom::Point p, Geom::Point a, Geom::Point b, Geom::Point c) {
+    const double d1 = Geom::cross(b - a, p - a), d2 = Geom::cross(c - b, p - b),
+                 d3 = Geom::cross(a - c, p - c);
+    const bool negative = d1 < 0 || d2 < 0 || d3 < 0;
+    const bool positive = d1 > 0 || d2 > 0 || d3 > 0;
+    return !(negative && positive);
 }
 
 // Distance from c to the convex hull of the points (0 inside).
@@ -314,6 +332,27 @@ std::optional<double> search(const Geom::Curve& curve, double from, double to,
 }
 
 }  // namespace
+
+// A Bézier lies inside the convex hull of its control points: outside the hull, the nearest
+// hull edge is among the segments between control points (each inside the hull); inside, 0.
+// Shaved by a relative 1e-12 so rounding never puts it above the distance nearestTime() finds.
+double curve_distance_lower_bound(const Geom::Curve& c, Geom::Point p) {
+    const auto* bezier = dynamic_cast<const Geom::BezierCurve*>(&c);
+    if (!bezier || bezier->size() > 4) return Geom::distance(p, c.boundsFast());
+    const unsigned n = bezier->size();
+    Geom::Point q[4];
+    for (unsigned i = 0; i < n; ++i) q[i] = (*bezier)[i];
+    if (n >= 3 && in_triangle(p, q[0], q[1], q[2])) return 0;
+    if (n == 4 && (in_triangle(p, q[0], q[1], q[3]) || in_triangle(p, q[0], q[2], q[3]) ||
+                   in_triangle(p, q[1], q[2], q[3]))) {
+        return 0;
+    }
+    double d = INFINITY;
+    for (unsigned i = 0; i < n; ++i) {
+        for (unsigned j = i + 1; j < n; ++j) d = std::min(d, segment_distance(p, q[i], q[j]));
+    }
+    return d * (1 - 1e-12);
+}
 
 std::optional<double> find_excursion(const Geom::Curve& curve, double from, double to,
                                      const BoundaryDistance& target, double threshold,

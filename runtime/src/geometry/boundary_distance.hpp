@@ -90,6 +90,11 @@ std::optional<Geom::PathTime> find_excursion(const Geom::Path& path, const Bound
                                              double threshold,
                                              const ExcursionOptions& options = {});
 
+// A lower bound on the distance from p to the curve, cheap next to nearestTime(): for a
+// Bézier, p's distance to the convex hull of its control points; for other curves, to their
+// fast bounds.
+double curve_distance_lower_bound(const Geom::Curve& c, Geom::Point p);
+
 // The curves of a path; a closed path (or any path `as_closed`, as region subpaths are)
 // includes its closing segment when that is not degenerate.
 std::vector<const Geom::Curve*> path_curves(const Geom::Path& path, bool as_closed = false);

@@ -99,10 +99,18 @@ class Shape {
     double radius_ = 0;
 };
 
+// path_distance() of a path of one curve, without building the path.
+double curve_distance(const Geom::Curve& c, Geom::Point p, double limit) {
+    const double box = Geom::distance(p, c.boundsFast());
+    if (box > limit) return INFINITY;
+    if (limit < INFINITY && detail::curve_distance_lower_bound(c, p) > limit) return INFINITY;
+    return Geom::distance(p, c.pointAt(c.nearestTime(p)));
+}
+
 double path_distance(const Geom::Path& path, Geom::Point p, double limit = INFINITY) {
     // Nearest bounds first, and none whose bounds are no nearer than the best or beyond `limit`:
     // the same minimum (when it is within the limit) for fewer of lib2geom's nearest-point
-    // solves.
+    // solves. A box near enough still leaves a Bézier unsolved when its control hull is not.
     thread_local std::vector<std::pair<double, const Geom::Curve*>> order;
     order.clear();
     for (const Geom::Curve* c : detail::path_curves(path))
@@ -112,6 +120,11 @@ double path_distance(const Geom::Path& path, Geom::Point p, double limit = INFIN
     double best = INFINITY;
     for (const auto& [box, c] : order) {
         if (box >= best || box > limit) break;
+        // Nothing to compare the hull with before a first distance or under no limit.
+        if (best < INFINITY || limit < INFINITY) {
+            const double hull = detail::curve_distance_lower_bound(*c, p);
+            if (hull >= best || hull > limit) continue;
+        }
         best = std::min(best, Geom::distance(p, c->pointAt(c->nearestTime(p))));
     }
     return best;
@@ -309,6 +322,8 @@ bool leaves_region(const Proxy& p, const detail::RegionData& region, double tole
             const Geom::Curve& c = *outside.curves()[i];
             if (shape.kind() == ProxyKind::circle) {
                 const Geom::Point centre = to_geom(shape.point());
+                if (detail::curve_distance_lower_bound(c, centre) >= shape.radius() - tolerance)
+                    continue;
                 if (Geom::distance(centre, c.pointAt(c.nearestTime(centre))) <
                     shape.radius() - tolerance)
                     return true;
@@ -336,6 +351,18 @@ double distance_to(const Proxy& p, Point q, double limit) {
         case ProxyKind::polygon: {
             Shape s(p);
             return s.inside(g) ? 0.0 : s.boundary().nearest(g).distance;
+        }
+        // A segment or a Bézier is one curve: measured as its path would be, without the
+        // path's allocations (this is the growth's most frequent distance).
+        case ProxyKind::linesegment: {
+            const auto& s = static_cast<const LineSegmentProxy&>(p);
+            return curve_distance(Geom::LineSegment(to_geom(s.p0), to_geom(s.p1)), g, limit);
+        }
+        case ProxyKind::bezier: {
+            const auto& b = static_cast<const BezierProxy&>(p);
+            return curve_distance(Geom::CubicBezier(to_geom(b.c[0]), to_geom(b.c[1]),
+                                                    to_geom(b.c[2]), to_geom(b.c[3])),
+                                  g, limit);
         }
         default:
             return path_distance(detail::proxy_path(p), g, limit);
