@@ -208,9 +208,12 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         const double w = b.width(), h = b.height();
         // A lintel as deep as whole courses (less a joint) spans them: no cut course. Counted
         // as one, the shop front's 4.1 m lintel read as a cut course over the window's head.
+        // Each course it spans may be off gauge by the tolerance (the corner shop's lintel spans
+        // two of 7.73 cm where the courses meet its head on a course line).
         const double courses = std::round((h + s.mortar) / gauge);
-        const bool whole_lintel = c.generator == "lintel" && courses >= 1 &&
-                                  std::abs(h + s.mortar - courses * gauge) <= s.tolerance + 1e-9;
+        const bool whole_lintel =
+            c.generator == "lintel" && courses >= 1 &&
+            std::abs(h + s.mortar - courses * gauge) <= courses * s.tolerance + 1e-9;
         if (std::abs(h - s.height) <= s.tolerance + 1e-9)
             bottoms.push_back(b.y1);
         else if (!whole_lintel)

@@ -111,6 +111,12 @@ TEST(CellsMason, ALintelOfWholeCoursesIsNoCutCourse) {
     EXPECT_EQ(mason_check(plain_wall(), cells, kCm).cut_courses, 0);
     cells.back() = brick(0, 61, 200, 70, 4, "lintel");  // 9 cm: within a course
     EXPECT_EQ(mason_check(plain_wall(), cells, kCm).cut_courses, 1);
+    // Two courses each 2.25 mm over gauge (within the tolerance): the courses' pitch, no cut.
+    cells.back() = brick(0, 54.55, 200, 70, 4, "lintel");
+    EXPECT_EQ(mason_check(plain_wall(), cells, kCm).cut_courses, 0);
+    // Each 3.5 mm over: past the tolerance, a cut course.
+    cells.back() = brick(0, 54.3, 200, 70, 4, "lintel");
+    EXPECT_EQ(mason_check(plain_wall(), cells, kCm).cut_courses, 1);
 }
 
 TEST(CellsMason, FindsSliversAndNarrowPieces) {
