@@ -406,19 +406,52 @@ TEST(FileWatcher, ReportsRenamedAndRewrittenSavesOfNewContentOnly) {
     fs::remove_all(dir);
 }
 
-// The preview builds rule code in two processes, neither of them a compiler driver that starts
-// another: the compiler on its own (-c) and the linker itself, with the command the driver gives.
-TEST(PreviewBuild, RuleLibraryCompiledThenLinkedByTheLinkerItself) {
+// The build tests run clang++, where there is one.
+bool has_clang() {
     std::string error;
-    if (run_process({"sh", "-c", "command -v clang++ >/dev/null"}, error) != 0)
-        GTEST_SKIP() << "no clang++";
-    const test::TempDir dir("build");
-    Toolchain toolchain = find_toolchain();
-    BuildOptions options;
+    return run_process({"sh", "-c", "command -v clang++ >/dev/null"}, error) == 0;
+}
+
+// clang++ at -O0 building a shared library, linked by the linker itself.
+bool clang_library_options(const Toolchain& toolchain, BuildOptions& options, std::string& error) {
     options.cxx = "clang++";
     options.optimization = "0";
     options.shared_library = true;
-    ASSERT_TRUE(direct_link_command(toolchain, options, options.link_command, error)) << error;
+    return direct_link_command(toolchain, options, options.link_command, error);
+}
+
+// ACANTHUS_CACHE_DIR set to a test's own folder while the test runs.
+class CacheDirFor {
+  public:
+    explicit CacheDirFor(const std::string& dir) {
+        const char* old = std::getenv("ACANTHUS_CACHE_DIR");
+        had_ = old != nullptr;
+        if (had_) kept_ = old;
+        setenv("ACANTHUS_CACHE_DIR", dir.c_str(), 1);
+    }
+    ~CacheDirFor() {
+        if (had_)
+            setenv("ACANTHUS_CACHE_DIR", kept_.c_str(), 1);
+        else
+            unsetenv("ACANTHUS_CACHE_DIR");
+    }
+    CacheDirFor(const CacheDirFor&) = delete;
+    CacheDirFor& operator=(const CacheDirFor&) = delete;
+
+  private:
+    bool had_ = false;
+    std::string kept_;
+};
+
+// The preview builds rule code in two processes, neither of them a compiler driver that starts
+// another: the compiler on its own (-c) and the linker itself, with the command the driver gives.
+TEST(PreviewBuild, RuleLibraryCompiledThenLinkedByTheLinkerItself) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
+    std::string error;
+    const test::TempDir dir("build");
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
     const auto& link = options.link_command;
     EXPECT_EQ(std::count(link.begin(), link.end(), kLinkObject), 1);
     EXPECT_EQ(std::count(link.begin(), link.end(), kLinkOutput), 1);
@@ -451,21 +484,15 @@ TEST(PreviewBuild, RuleLibraryCompiledThenLinkedByTheLinkerItself) {
 // its own level, and with code_unit_later first at the ordinary one, the optimised one left to
 // a later build of the same units.
 TEST(PreviewBuild, SplitUnitsTwoAtATimeTheCodeUnitOptimisedLater) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
     std::string error;
-    if (run_process({"sh", "-c", "command -v clang++ >/dev/null"}, error) != 0)
-        GTEST_SKIP() << "no clang++";
     const test::TempDir dir("split");
-    const char* old_cache = std::getenv("ACANTHUS_CACHE_DIR");
-    const std::string kept = old_cache ? old_cache : "";
-    setenv("ACANTHUS_CACHE_DIR", dir.path().c_str(), 1);
+    const CacheDirFor cache(dir.path().string());
     Toolchain toolchain = find_toolchain();
     BuildOptions options;
-    options.cxx = "clang++";
-    options.optimization = "0";
-    options.shared_library = true;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
     options.jobs = 2;
     options.code_unit_optimization = "2";
-    ASSERT_TRUE(direct_link_command(toolchain, options, options.link_command, error)) << error;
     std::mutex mutex;
     std::vector<std::vector<std::string>> ran;
     int running = 0, most = 0;
@@ -528,10 +555,6 @@ TEST(PreviewBuild, SplitUnitsTwoAtATimeTheCodeUnitOptimisedLater) {
     EXPECT_FALSE(code_later);
     EXPECT_TRUE(ran.empty());
     EXPECT_EQ(third, second);
-    if (old_cache)
-        setenv("ACANTHUS_CACHE_DIR", kept.c_str(), 1);
-    else
-        unsetenv("ACANTHUS_CACHE_DIR");
 }
 
 // The generated units' shared header: what the code unit and every rule unit start with (the
@@ -570,19 +593,13 @@ TEST(PreviewBuild, GeneratedUnitsStartWithTheirHeader) {
 // when there is one) by a build that asks for it; from then on a unit that starts with it is
 // compiled as its own code alone, with that .gch, and the library is the same program.
 TEST(PreviewBuild, SplitUnitsCompiledWithTheirHeaderPrecompiled) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
     std::string error;
-    if (run_process({"sh", "-c", "command -v clang++ >/dev/null"}, error) != 0)
-        GTEST_SKIP() << "no clang++";
     const test::TempDir dir("split-header");
-    const char* old_cache = std::getenv("ACANTHUS_CACHE_DIR");
-    const std::string kept = old_cache ? old_cache : "";
-    setenv("ACANTHUS_CACHE_DIR", dir.path().c_str(), 1);
+    const CacheDirFor cache(dir.path().string());
     Toolchain toolchain = find_toolchain();
     BuildOptions options;
-    options.cxx = "clang++";
-    options.optimization = "0";
-    options.shared_library = true;
-    ASSERT_TRUE(direct_link_command(toolchain, options, options.link_command, error)) << error;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
     std::vector<std::vector<std::string>> ran;
     options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
         ran.push_back(argv);
@@ -651,10 +668,6 @@ TEST(PreviewBuild, SplitUnitsCompiledWithTheirHeaderPrecompiled) {
     ran.clear();
     EXPECT_FALSE(cached_split_library(toolchain, options, "h", units, library, splittable, error));
     EXPECT_EQ(count("c++-header"), 0);
-    if (old_cache)
-        setenv("ACANTHUS_CACHE_DIR", kept.c_str(), 1);
-    else
-        unsetenv("ACANTHUS_CACHE_DIR");
 }
 
 }  // namespace
