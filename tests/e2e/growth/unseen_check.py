@@ -247,8 +247,7 @@ def set_s9():
 
 
 def set_s10():
-    """Seeds 1001-1006, made after session 3's lattice change with nothing tuned on them:
-    exact lattices whose motifs are each turned at random (a 3-colour triangular one turned 25
+    """Seeds 1001-1006, nothing tuned on them: exact lattices whose motifs are each turned at random (a 3-colour triangular one turned 25
     degrees, a checkerboard in units of 0.1, a one-symbol honeycomb turned 40 degrees, a square
     grid with every third column another symbol turned 12 degrees), a triangular lattice
     jittered by 0.12 and a two-symbol Poisson-disc set of spacing 8; in the gourd, the wave band,
