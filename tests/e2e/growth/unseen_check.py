@@ -247,11 +247,11 @@ def set_s9():
 
 
 def set_s10():
-    """Seeds 1001-1006, nothing tuned on them: exact lattices whose motifs are each turned at random (a 3-colour triangular one turned 25
-    degrees, a checkerboard in units of 0.1, a one-symbol honeycomb turned 40 degrees, a square
-    grid with every third column another symbol turned 12 degrees), a triangular lattice
-    jittered by 0.12 and a two-symbol Poisson-disc set of spacing 8; in the gourd, the wave band,
-    the shield and the ring."""
+    """Seeds 1001-1006, nothing tuned on them: exact lattices whose motifs are each turned at
+    random (a 3-colour triangular one turned 25 degrees, a checkerboard in units of 0.1, a one-
+    symbol honeycomb turned 40 degrees, a square grid with every third column another symbol
+    turned 12 degrees), a triangular lattice jittered by 0.12 and a two-symbol Poisson-disc set
+    of spacing 8; in the gourd, the wave band, the shield and the ring."""
     refs = []
     panels = [str(p) for p in s9_panels()[:2]] + [str(PANELS / "shield.svg"), own_panels()[1]]
     for seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit in (
