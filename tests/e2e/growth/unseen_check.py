@@ -225,24 +225,33 @@ def scaled_panel(panel, unit):
     return str(out)
 
 
+def made_reference(row, panels, turned=False):
+    """One reference of a set written from its row (seed, kind, spacing, width, height, jitter,
+    turn, symbol shares, sizes, pattern, unit), with the panels scaled to its unit."""
+    seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit = row
+    if kind == "poisson":
+        name = f"poisson-{gap}-{seed}"
+    else:
+        turned_tag = "-turned" if turned else ""
+        name = f"{kind}-{pattern or f'{jitter:g}'}-t{turn}-u{unit:g}{turned_tag}-{seed}"
+    path = WORK / f"{name}.json"
+    make_reference(path, seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit,
+                   turned=turned)
+    return path, [scaled_panel(p, unit) for p in panels]
+
+
 def set_s9():
     refs = []
     panels = s9_panels()
-    # seed, kind, spacing, width, height, jitter, turn, symbol shares, sizes, pattern, unit
-    for seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit in (
+    # rows: seed, kind, spacing, width, height, jitter, turn, symbol shares, sizes, pattern, unit
+    for row in (
             (901, "triangular", 10, 100, 90, 0.1, 0, (0.4, 0.6), (3.0, 3.2), "", 0.28),
             (902, "triangular", 10, 100, 90, 0, 0, (), (3.0, 3.0, 3.0), "colour3", 100.0),
             (903, "honeycomb", 8, 95, 85, 0.09, 15, (0.55, 0.45), (2.4, 2.6), "", 1.0),
             (904, "square", 10, 100, 90, 0, 30, (), (3.2, 3.0), "checker", 1.0),
             (905, "square", 10, 100, 90, 0.16, 10, (0.6, 0.4), (3.0, 3.3), "", 1.0),
             (906, "poisson", 10, 110, 90, 0, 0, (0.3, 0.7), (3.3, 3.0), "", 1.0)):
-        if kind == "poisson":
-            name = f"poisson-{gap}-{seed}"
-        else:
-            name = f"{kind}-{pattern or f'{jitter:g}'}-t{turn}-u{unit:g}-{seed}"
-        path = WORK / f"{name}.json"
-        make_reference(path, seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit)
-        refs.append((path, [scaled_panel(p, unit) for p in panels]))
+        refs.append(made_reference(row, panels))
     return refs
 
 
@@ -254,21 +263,14 @@ def set_s10():
     of spacing 8; in the gourd, the wave band, the shield and the ring."""
     refs = []
     panels = [str(p) for p in s9_panels()[:2]] + [str(PANELS / "shield.svg"), own_panels()[1]]
-    for seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit in (
+    for row in (
             (1001, "triangular", 10, 100, 90, 0, 25, (), (3.0, 3.1, 2.9), "colour3", 1.0),
             (1002, "square", 10, 100, 90, 0, 0, (), (3.1, 3.0), "checker", 0.1),
             (1003, "honeycomb", 8, 95, 85, 0, 40, (), (2.5,), "plain", 1.0),
             (1004, "square", 10, 100, 90, 0, 12, (), (3.0, 3.2), "stripes", 1.0),
             (1005, "triangular", 10, 100, 90, 0.12, 0, (0.45, 0.55), (3.0, 3.2), "", 1.0),
             (1006, "poisson", 8, 100, 85, 0, 0, (0.4, 0.6), (2.6, 2.8), "", 1.0)):
-        if kind == "poisson":
-            name = f"poisson-{gap}-{seed}"
-        else:
-            name = f"{kind}-{pattern or f'{jitter:g}'}-t{turn}-u{unit:g}-turned-{seed}"
-        path = WORK / f"{name}.json"
-        make_reference(path, seed, kind, gap, w, h, jitter, turn, shares, sizes, pattern, unit,
-                       turned=True)
-        refs.append((path, [scaled_panel(p, unit) for p in panels]))
+        refs.append(made_reference(row, panels, turned=True))
     return refs
 
 
