@@ -6,46 +6,67 @@
 #include <unordered_map>
 
 #include "lattice.hpp"
+#include "point_grid.hpp"
 
 namespace acanthus::growth::detail {
 namespace {
 
-// Points bucketed by cells of one reach, so each site's neighbours cost a few buckets.
+// Each point's neighbours within a reach (closer than it, as distance() measures).
 class Neighbours {
   public:
-    Neighbours(const std::vector<Point>& points, double reach) : points_(points), reach_(reach) {
-        for (std::size_t i = 0; i < points.size(); ++i) grid_[key(points[i])].push_back(i);
+    Neighbours(const std::vector<Point>& points, double reach)
+        : points_(points), reach_(reach), squared_(reach * reach), grid_(points, reach) {}
+    // f(j) for every point j within the reach of point i, other than i.
+    template <class F>
+    void each(std::size_t i, F&& f) const {
+        const Point p = points_[i];
+        grid_.around(p, [&](int k) {
+            const auto j = static_cast<std::size_t>(k);
+            if (j == i) return;
+            const double dx = points_[j].x - p.x, dy = points_[j].y - p.y;
+            const double d2 = dx * dx + dy * dy;
+            // The squares settle all but a hair's breadth round the reach, where distance()
+            // (hypot) decides as it always did.
+            if (d2 > squared_ * (1 + 1e-10)) return;
+            if (d2 >= squared_ * (1 - 1e-10) && !(distance(p, points_[j]) < reach_)) return;
+            f(j);
+        });
     }
     // Indices within the reach of point i, other than i, in index order.
     std::vector<std::size_t> of(std::size_t i) const {
         std::vector<std::size_t> out;
-        const auto [cx, cy] = cell(points_[i]);
-        for (long dx = -1; dx <= 1; ++dx)
-            for (long dy = -1; dy <= 1; ++dy) {
-                auto it = grid_.find(pack(cx + dx, cy + dy));
-                if (it == grid_.end()) continue;
-                for (std::size_t j : it->second)
-                    if (j != i && distance(points_[i], points_[j]) < reach_) out.push_back(j);
-            }
+        each(i, [&](std::size_t j) { out.push_back(j); });
         std::sort(out.begin(), out.end());
         return out;
     }
+    std::size_t count(std::size_t i) const {
+        std::size_t n = 0;
+        each(i, [&](std::size_t) { ++n; });
+        return n;
+    }
+    // The distance from point i to its nearest neighbour within the reach, or the reach.
+    double nearest(std::size_t i) const {
+        const Point p = points_[i];
+        double least = INFINITY;
+        each(i, [&](std::size_t j) {
+            const double dx = points_[j].x - p.x, dy = points_[j].y - p.y;
+            least = std::min(least, dx * dx + dy * dy);
+        });
+        // distance() of the few whose squares tie the least to within rounding: their least is
+        // the least distance().
+        double best = reach_;
+        each(i, [&](std::size_t j) {
+            const double dx = points_[j].x - p.x, dy = points_[j].y - p.y;
+            if (dx * dx + dy * dy <= least * (1 + 1e-10))
+                best = std::min(best, distance(p, points_[j]));
+        });
+        return best;
+    }
 
   private:
-    std::pair<long, long> cell(Point p) const {
-        return {static_cast<long>(std::floor(p.x / reach_)),
-                static_cast<long>(std::floor(p.y / reach_))};
-    }
-    static long long pack(long x, long y) {
-        return (static_cast<long long>(x) << 32) ^ (y & 0xffffffffLL);
-    }
-    long long key(Point p) const {
-        auto [x, y] = cell(p);
-        return pack(x, y);
-    }
     const std::vector<Point>& points_;
-    double reach_;
-    std::unordered_map<long long, std::vector<std::size_t>> grid_;  // looked up, never iterated
+    double reach_, squared_;
+    PointGrid grid_;
 };
 
 struct Site {
@@ -57,11 +78,8 @@ struct Site {
 std::vector<double> nearest(const Site& s, double cap) {
     Neighbours n(s.points, cap);
     std::vector<double> out;
-    for (std::size_t i = 0; i < s.points.size(); ++i) {
-        double best = cap;
-        for (std::size_t j : n.of(i)) best = std::min(best, distance(s.points[i], s.points[j]));
-        out.push_back(best);
-    }
+    out.reserve(s.points.size());
+    for (std::size_t i = 0; i < s.points.size(); ++i) out.push_back(n.nearest(i));
     return out;
 }
 
@@ -89,11 +107,11 @@ double same_share(const Site& s, double reach) {
     Neighbours n(s.points, reach);
     long close = 0, same = 0;
     for (std::size_t i = 0; i < s.points.size(); ++i)
-        for (std::size_t j : n.of(i))
-            if (j > i) {
-                ++close;
-                same += s.symbols[i] == s.symbols[j];
-            }
+        n.each(i, [&](std::size_t j) {
+            if (j <= i) return;
+            ++close;
+            same += s.symbols[i] == s.symbols[j];
+        });
     return close > 0 ? static_cast<double>(same) / static_cast<double>(close) : 0.0;
 }
 
@@ -230,16 +248,16 @@ ReferenceProfile::ReferenceProfile(const ReferenceData& reference) : checker(ref
     std::vector<double> inner;
     for (int c : reference.candidates) {
         bool far = true;
-        for (std::size_t j : within.of(static_cast<std::size_t>(c)))
-            far = far && !reference.connectivity.boundary[j];
+        within.each(static_cast<std::size_t>(c),
+                    [&](std::size_t j) { far = far && !reference.connectivity.boundary[j]; });
         if (far) inner.push_back(nn[static_cast<std::size_t>(c)]);
     }
     inner_nn_median = !inner.empty() && spacing > 0 ? median(inner) / spacing : copied_nn_median;
     // The crowding rule's limit: the fullest interior ring within the checker's reach.
     Neighbours near(ref.points, checker.reach());
     for (int c : reference.candidates)
-        most_neighbours = std::max(most_neighbours,
-                                   static_cast<int>(near.of(static_cast<std::size_t>(c)).size()));
+        most_neighbours =
+            std::max(most_neighbours, static_cast<int>(near.count(static_cast<std::size_t>(c))));
     symbol_mix = mix(ref);
     // A lattice's own share is its sites' per cell: the reference's count depends on where its
     // edge cuts the lattice (a 3-colour rectangle of 121 holds 44, 39 and 38).

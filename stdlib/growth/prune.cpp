@@ -67,7 +67,8 @@ void Synthesis::build_slot_index() {
     }
     if (all.empty()) return;
     std::stable_sort(all.begin(), all.end(), [](const Keyed& a, const Keyed& b) {
-        return std::tie(a.x0, a.y0, a.x1, a.y1) < std::tie(b.x0, b.y0, b.x1, b.y1);
+        return std::tie(a.x0, a.y0, a.e.symbol, a.x1, a.y1) <
+               std::tie(b.x0, b.y0, b.e.symbol, b.x1, b.y1);
     });
     index.lo = index.hi = all.front().x0;
     for (const Keyed& k : all) {
@@ -77,13 +78,17 @@ void Synthesis::build_slot_index() {
         const int id = static_cast<int>(index.entries.size());
         index.entries.push_back(k.e);
         auto& groups = index.cells[pack(k.x0, k.y0)];
-        if (groups.empty() || groups.back().x != k.x1 || groups.back().y != k.y1)
-            groups.push_back({k.x1, k.y1, id, id});
+        if (groups.empty() || groups.back().x != k.x1 || groups.back().y != k.y1 ||
+            groups.back().symbol != k.e.symbol)
+            groups.push_back({k.x1, k.y1, k.e.symbol, id, id});
         groups.back().end = id + 1;
     }
     slot_index_ = std::move(index);
     seen_.assign(reference_.elements.size(), -1);
     found_at_.assign(reference_.elements.size(), -1);
+    bounded_.assign(reference_.elements.size(), -1);
+    balance_low_.assign(reference_.elements.size(), 0.0);
+    balance_high_.assign(reference_.elements.size(), 0.0);
 }
 
 Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<RingEntry>& target,
@@ -104,20 +109,49 @@ Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<R
     };
     std::vector<Found> found;
     // With w4, an element's error is its least ring error plus w4 times the excess of the slots
-    // it leaves open (and its own symbol for a seed without one): between w4 * low and w4 * high
-    // per such slot. `best` is the least upper bound on a chosen element's error so far.
-    double low = 0, high = 0;
+    // it leaves open (and its own symbol for a seed without one): at least w4 * low per such
+    // slot. `best` is the least upper bound on a chosen element's error so far.
+    double low = 0;
     if (balance)
-        for (std::size_t k = 0; k < reference_.symbols.size(); ++k) {
+        for (std::size_t k = 0; k < reference_.symbols.size(); ++k)
             low = std::min(low, excess(static_cast<int>(k)));
-            high = std::max(high, excess(static_cast<int>(k)));
-        }
     const double w4 = balance ? options_.w4 * (1 + 1e-9) : 0.0;
     auto open_slots = [&](int slots) {
         return static_cast<double>(slots - static_cast<int>(target.size()) + (seed.symbol < 0));
     };
     // The least w4 term of any alignment (<= 0): how much further out a ring error may lie.
     const double any_low = w4 * low * std::max(0.0, open_slots(index.max_slots));
+    // An element's own w4 terms, least and most over its shifts: the term of a shift is its
+    // symbol's excess (a seed without one) plus its ring's excess less that of the window of
+    // slots the targets take, so the extremes come from the windows' most and least excess.
+    // The margins keep rounding (the sum's order differs from balance_over's) on the safe side.
+    std::vector<double> symbol_excess(reference_.symbols.size());
+    for (std::size_t k = 0; k < symbol_excess.size(); ++k)
+        symbol_excess[k] = excess(static_cast<int>(k));
+    const std::size_t taken = target.size();
+    auto bound_balance = [&](int c) {
+        const auto& ring = rings_[static_cast<std::size_t>(c)];
+        const std::size_t m = ring.size();
+        double whole = 0;
+        for (const RingEntry& e : ring) whole += symbol_excess[static_cast<std::size_t>(e.symbol)];
+        double window = 0;
+        for (std::size_t j = 0; j < taken && j < m; ++j)
+            window += symbol_excess[static_cast<std::size_t>(ring[j].symbol)];
+        double most = window, least = window;
+        for (std::size_t k = 1; k < m && taken < m; ++k) {
+            window += symbol_excess[static_cast<std::size_t>(ring[(k + taken - 1) % m].symbol)] -
+                      symbol_excess[static_cast<std::size_t>(ring[k - 1].symbol)];
+            most = std::max(most, window);
+            least = std::min(least, window);
+        }
+        const double own =
+            seed.symbol < 0 ? symbol_excess[static_cast<std::size_t>(reference_.symbol[c])] : 0.0;
+        const double lo = options_.w4 * (own + whole - most);
+        const double hi = options_.w4 * (own + whole - least);
+        balance_low_[static_cast<std::size_t>(c)] = lo - 1e-9 * (1 + std::abs(lo));
+        balance_high_[static_cast<std::size_t>(c)] = hi + 1e-9 * (1 + std::abs(hi));
+        bounded_[static_cast<std::size_t>(c)] = seen_generation_;
+    };
     double best = INFINITY;
     auto bound = [&] { return best + 1e-9 * (1 + std::abs(best)); };
     // Bounds leave a margin, so that rounding never prunes an alignment the exact sum keeps.
@@ -126,12 +160,19 @@ Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<R
         const SlotEntry& s = index.entries[static_cast<std::size_t>(id)];
         if (seed.symbol >= 0 && s.symbol != seed.symbol) return;
         if (target.size() > static_cast<std::size_t>(s.slots)) return;
-        // The ring error past which this alignment's whole error cannot be chosen.
-        const double ring_limit = limit() - w4 * low * open_slots(s.slots);
+        // The ring error past which this alignment's whole error cannot be chosen: first with
+        // the least w4 term of any ring this size, then with the element's own.
+        double ring_limit = limit() - w4 * low * open_slots(s.slots);
         double lower = 0;
         for (std::size_t j = 0; j < bounded; ++j) {
             const Vector d = s.slot[j] - q[j];
             lower += w1 * std::sqrt(d.dot(d));
+            if (lower > ring_limit) return;
+        }
+        if (balance) {
+            if (bounded_[static_cast<std::size_t>(s.element)] != seen_generation_)
+                bound_balance(s.element);
+            ring_limit = limit() - balance_low_[static_cast<std::size_t>(s.element)];
             if (lower > ring_limit) return;
         }
         const auto& ring = rings_[s.element];
@@ -155,7 +196,7 @@ Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<R
             }
         }
         // Its least ring error is at most e: its error is at most e plus the most w4 adds.
-        best = std::min(best, e + w4 * high * open_slots(s.slots));
+        best = std::min(best, balance ? e + balance_high_[static_cast<std::size_t>(c)] : e);
     };
     // The distance from p to cell (x, y)'s nearest point, a hair short.
     auto gap = [&](Vector p, long x, long y) {
@@ -180,6 +221,7 @@ Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<R
                 auto it = index.cells.find(pack(x, y));
                 if (it == index.cells.end()) continue;
                 for (const SlotGroup& group : it->second) {
+                    if (seed.symbol >= 0 && group.symbol != seed.symbol) continue;
                     if (target.size() > 1 &&
                         w1 * (g0 + gap(q[1], group.x, group.y)) > limit() - any_low)
                         continue;

@@ -176,13 +176,14 @@ class Synthesis {
     };
     struct SlotGroup {
         long x = 0, y = 0;       // the next slot's cell
+        int symbol = -1;         // its entries' element's symbol
         int begin = 0, end = 0;  // its entries
     };
     struct SlotIndex {
         double cell = 0;
         long lo = 0, hi = -1;            // the cell coordinates of first slots, both axes
         int max_slots = 0;               // the largest ring
-        std::vector<SlotEntry> entries;  // grouped by first slot's cell, then the next slot's
+        std::vector<SlotEntry> entries;  // grouped by first slot's cell, symbol, next slot's cell
         std::unordered_map<std::int64_t, std::vector<SlotGroup>> cells;  // looked up only
     };
     void build_slot_index();
@@ -197,6 +198,10 @@ class Synthesis {
     bool prunable_ = false;
     std::vector<int> seen_;      // per element: the choose_pruned call that last evaluated it
     std::vector<int> found_at_;  // per element seen in this call: its place in the found list
+    // Per element, in the choose_pruned call of bounded_ (else stale): the least and the most
+    // w4 term over its ring's shifts.
+    std::vector<int> bounded_;
+    std::vector<double> balance_low_, balance_high_;
     int seen_generation_ = 0;
     std::vector<int> candidates_;  // the reference's, or an even sample of a huge one
     std::vector<int> priority_;    // per symbol id
