@@ -47,20 +47,18 @@ class Neighbours {
     // The distance from point i to its nearest neighbour within the reach, or the reach.
     double nearest(std::size_t i) const {
         const Point p = points_[i];
-        double least = INFINITY;
+        // distance() of the points whose squares come within rounding of the least so far:
+        // the least distance() is among them.
+        double least = INFINITY, best = INFINITY;
         each(i, [&](std::size_t j) {
             const double dx = points_[j].x - p.x, dy = points_[j].y - p.y;
-            least = std::min(least, dx * dx + dy * dy);
+            const double d2 = dx * dx + dy * dy;
+            if (d2 > least * (1 + 1e-10)) return;
+            if (d2 < least * (1 - 1e-10)) best = INFINITY;
+            least = std::min(least, d2);
+            best = std::min(best, distance(p, points_[j]));
         });
-        // distance() of the few whose squares tie the least to within rounding: their least is
-        // the least distance().
-        double best = reach_;
-        each(i, [&](std::size_t j) {
-            const double dx = points_[j].x - p.x, dy = points_[j].y - p.y;
-            if (dx * dx + dy * dy <= least * (1 + 1e-10))
-                best = std::min(best, distance(p, points_[j]));
-        });
-        return best;
+        return std::min(best, reach_);
     }
 
   private:

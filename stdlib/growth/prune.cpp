@@ -20,14 +20,14 @@ std::int64_t pack(long x, long y) {
 
 // alignment_error_within with sqrt for hypot (which rounds alike to within an ulp or so): a
 // cheap estimate, exact only for the few alignments that come close; infinity past `limit`.
-double alignment_estimate(const std::vector<RingEntry>& target,
-                          const std::vector<RingEntry>& reference, int shift, double cos_r,
-                          double sin_r, const Weights& w, double limit) {
-    const std::size_t m = reference.size();
+double alignment_estimate(const std::vector<RingEntry>& target, const RingEntry* reference,
+                          std::size_t m, int shift, double cos_r, double sin_r, const Weights& w,
+                          double limit) {
     double error = 0;
-    for (std::size_t i = 0; i < target.size(); ++i) {
+    std::size_t k = static_cast<std::size_t>(shift) % m;
+    for (std::size_t i = 0; i < target.size(); ++i, k = k + 1 == m ? 0 : k + 1) {
         const RingEntry& t = target[i];
-        const RingEntry& r = reference[(static_cast<std::size_t>(shift) + i) % m];
+        const RingEntry& r = reference[k];
         const Vector d = t.offset - Vector{cos_r * r.offset.x - sin_r * r.offset.y,
                                            sin_r * r.offset.x + cos_r * r.offset.y};
         error += w.w1 * std::sqrt(d.dot(d));
@@ -51,9 +51,15 @@ void Synthesis::build_slot_index() {
         SlotEntry e;
     };
     std::vector<Keyed> all;
-    for (int c : candidates_) {
+    for (std::size_t n = 0; n < candidates_.size(); ++n) {
+        const int c = candidates_[n];
         const auto& ring = rings_[c];
         const std::size_t m = ring.size();
+        index.ring_begin.push_back(static_cast<int>(index.rings.size()));
+        for (const RingEntry& r : ring) {
+            index.rings.push_back(r);
+            index.ring_symbols.push_back(r.symbol);
+        }
         for (std::size_t k = 0; k < m; ++k) {
             SlotEntry e;
             for (std::size_t j = 0; j < 3; ++j) e.slot[j] = ring[(k + j) % m].offset;
@@ -61,10 +67,12 @@ void Synthesis::build_slot_index() {
             e.shift = static_cast<int>(k);
             e.symbol = reference_.symbol[c];
             e.slots = static_cast<int>(m);
+            e.candidate = static_cast<int>(n);
             all.push_back(
                 {cell(e.slot[0].x), cell(e.slot[0].y), cell(e.slot[1].x), cell(e.slot[1].y), e});
         }
     }
+    index.ring_begin.push_back(static_cast<int>(index.rings.size()));
     if (all.empty()) return;
     std::stable_sort(all.begin(), all.end(), [](const Keyed& a, const Keyed& b) {
         return std::tie(a.x0, a.y0, a.e.symbol, a.x1, a.y1) <
@@ -84,11 +92,11 @@ void Synthesis::build_slot_index() {
         groups.back().end = id + 1;
     }
     slot_index_ = std::move(index);
-    seen_.assign(reference_.elements.size(), -1);
-    found_at_.assign(reference_.elements.size(), -1);
-    bounded_.assign(reference_.elements.size(), -1);
-    balance_low_.assign(reference_.elements.size(), 0.0);
-    balance_high_.assign(reference_.elements.size(), 0.0);
+    seen_.assign(candidates_.size(), -1);
+    found_at_.assign(candidates_.size(), -1);
+    bounded_.assign(candidates_.size(), -1);
+    balance_low_.assign(candidates_.size(), 0.0);
+    balance_high_.assign(candidates_.size(), 0.0);
 }
 
 Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<RingEntry>& target,
@@ -129,28 +137,30 @@ Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<R
     for (std::size_t k = 0; k < symbol_excess.size(); ++k)
         symbol_excess[k] = excess(static_cast<int>(k));
     const std::size_t taken = target.size();
-    auto bound_balance = [&](int c) {
-        const auto& ring = rings_[static_cast<std::size_t>(c)];
-        const std::size_t m = ring.size();
+    auto bound_balance = [&](const SlotEntry& s) {
+        const auto n = static_cast<std::size_t>(s.candidate);
+        const int* ring = index.ring_symbols.data() + index.ring_begin[n];
+        const auto m = static_cast<std::size_t>(s.slots);
+        auto ex = [&](std::size_t k) { return symbol_excess[static_cast<std::size_t>(ring[k])]; };
         double whole = 0;
-        for (const RingEntry& e : ring) whole += symbol_excess[static_cast<std::size_t>(e.symbol)];
+        for (std::size_t k = 0; k < m; ++k) whole += ex(k);
         double window = 0;
-        for (std::size_t j = 0; j < taken && j < m; ++j)
-            window += symbol_excess[static_cast<std::size_t>(ring[j].symbol)];
+        for (std::size_t j = 0; j < taken && j < m; ++j) window += ex(j);
         double most = window, least = window;
-        for (std::size_t k = 1; k < m && taken < m; ++k) {
-            window += symbol_excess[static_cast<std::size_t>(ring[(k + taken - 1) % m].symbol)] -
-                      symbol_excess[static_cast<std::size_t>(ring[k - 1].symbol)];
+        // The window from slot k to slot `last`, round the ring.
+        for (std::size_t k = 1, last = taken % m; k < m && taken < m;
+             ++k, last = last + 1 == m ? 0 : last + 1) {
+            window += ex(last) - ex(k - 1);
             most = std::max(most, window);
             least = std::min(least, window);
         }
         const double own =
-            seed.symbol < 0 ? symbol_excess[static_cast<std::size_t>(reference_.symbol[c])] : 0.0;
+            seed.symbol < 0 ? symbol_excess[static_cast<std::size_t>(s.symbol)] : 0.0;
         const double lo = options_.w4 * (own + whole - most);
         const double hi = options_.w4 * (own + whole - least);
-        balance_low_[static_cast<std::size_t>(c)] = lo - 1e-9 * (1 + std::abs(lo));
-        balance_high_[static_cast<std::size_t>(c)] = hi + 1e-9 * (1 + std::abs(hi));
-        bounded_[static_cast<std::size_t>(c)] = seen_generation_;
+        balance_low_[n] = lo - 1e-9 * (1 + std::abs(lo));
+        balance_high_[n] = hi + 1e-9 * (1 + std::abs(hi));
+        bounded_[n] = seen_generation_;
     };
     double best = INFINITY;
     auto bound = [&] { return best + 1e-9 * (1 + std::abs(best)); };
@@ -169,26 +179,27 @@ Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<R
             lower += w1 * std::sqrt(d.dot(d));
             if (lower > ring_limit) return;
         }
+        const auto n = static_cast<std::size_t>(s.candidate);
         if (balance) {
-            if (bounded_[static_cast<std::size_t>(s.element)] != seen_generation_)
-                bound_balance(s.element);
-            ring_limit = limit() - balance_low_[static_cast<std::size_t>(s.element)];
+            if (bounded_[n] != seen_generation_) bound_balance(s);
+            ring_limit = limit() - balance_low_[n];
             if (lower > ring_limit) return;
         }
-        const auto& ring = rings_[s.element];
-        if (target.size() > 3 && !(alignment_estimate(target, ring, s.shift, cos_t, sin_t, weights_,
-                                                      ring_limit) <= ring_limit))
+        if (target.size() > 3 &&
+            !(alignment_estimate(target, index.rings.data() + index.ring_begin[n],
+                                 static_cast<std::size_t>(s.slots), s.shift, cos_t, sin_t, weights_,
+                                 ring_limit) <= ring_limit))
             return;
-        double e = alignment_error_within(target, ring, s.shift, cos_t, sin_t, weights_,
-                                          balance ? ring_limit : bound());
+        double e = alignment_error_within(target, rings_[s.element], s.shift, cos_t, sin_t,
+                                          weights_, balance ? ring_limit : bound());
         if (!std::isfinite(e)) return;
         const int c = s.element, k = s.shift;
-        if (seen_[c] != seen_generation_) {
-            seen_[c] = seen_generation_;
-            found_at_[c] = static_cast<int>(found.size());
+        if (seen_[n] != seen_generation_) {
+            seen_[n] = seen_generation_;
+            found_at_[n] = static_cast<int>(found.size());
             found.push_back({c, e, k});
         } else {
-            Found& f = found[static_cast<std::size_t>(found_at_[c])];
+            Found& f = found[static_cast<std::size_t>(found_at_[n])];
             // match_ring keeps the first shift of the least error.
             if (e < f.error || (e == f.error && k < f.shift)) {
                 f.error = e;
@@ -196,7 +207,7 @@ Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<R
             }
         }
         // Its least ring error is at most e: its error is at most e plus the most w4 adds.
-        best = std::min(best, balance ? e + balance_high_[static_cast<std::size_t>(c)] : e);
+        best = std::min(best, balance ? e + balance_high_[n] : e);
     };
     // The distance from p to cell (x, y)'s nearest point, a hair short.
     auto gap = [&](Vector p, long x, long y) {

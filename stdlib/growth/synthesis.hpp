@@ -173,6 +173,7 @@ class Synthesis {
     struct SlotEntry {
         Vector slot[3];  // slot k's offset and the next two (cyclically)
         int element = -1, shift = 0, symbol = -1, slots = 0;
+        int candidate = -1;  // its place in candidates_ (the index's rings_ below)
     };
     struct SlotGroup {
         long x = 0, y = 0;       // the next slot's cell
@@ -185,6 +186,11 @@ class Synthesis {
         int max_slots = 0;               // the largest ring
         std::vector<SlotEntry> entries;  // grouped by first slot's cell, symbol, next slot's cell
         std::unordered_map<std::int64_t, std::vector<SlotGroup>> cells;  // looked up only
+        // The candidates' rings side by side (candidate k's from ring_begin[k]), and their
+        // symbols alone: what a choice reads of them, packed.
+        std::vector<RingEntry> rings;
+        std::vector<int> ring_symbols;
+        std::vector<int> ring_begin;
     };
     void build_slot_index();
     // choose() over the index: the same choice as matching every candidate, with the w4 term
@@ -196,9 +202,9 @@ class Synthesis {
     double balance_over(const Node& seed, int c, int shift, std::size_t targets) const;
     std::optional<SlotIndex> slot_index_;
     bool prunable_ = false;
-    std::vector<int> seen_;      // per element: the choose_pruned call that last evaluated it
-    std::vector<int> found_at_;  // per element seen in this call: its place in the found list
-    // Per element, in the choose_pruned call of bounded_ (else stale): the least and the most
+    std::vector<int> seen_;      // per candidate: the choose_pruned call that last found it
+    std::vector<int> found_at_;  // per candidate found in this call: its place in `found`
+    // Per candidate, in the choose_pruned call of bounded_ (else stale): the least and the most
     // w4 term over its ring's shifts.
     std::vector<int> bounded_;
     std::vector<double> balance_low_, balance_high_;
