@@ -162,9 +162,13 @@ std::int64_t RingChecker::key(Vector v) const {
     return (x << 32) ^ (y & 0xffffffff);
 }
 
-RingChecker::RingChecker(const ReferenceData& reference) : spacing_(reference_spacing(reference)) {
-    if (!(spacing_ > 0)) spacing_ = reference.mean_edge;
+RingChecker::RingChecker(const ReferenceData& reference) {
     const std::vector<Point> points = points_of(reference);
+    // reference_spacing(), keeping the distances.
+    nn_cap_ = 2 * reference.mean_edge;
+    nn_ = nearest(Site{points, {}}, nn_cap_);
+    spacing_ = median(nn_);
+    if (!(spacing_ > 0)) spacing_ = reference.mean_edge;
     std::vector<Ring> all = rings(points, reference.symbol, reach());
     for (const Ring& r : all) full_ = std::max(full_, r.offsets.size());
     for (std::size_t k = 0; k < all.size(); ++k) {
@@ -233,29 +237,56 @@ ReferenceProfile::ReferenceProfile(const ReferenceData& reference) : checker(ref
     ref.points = points_of(reference);
     for (const ReferenceElement& e : reference.elements) ref.symbols.push_back(e.symbol);
     const double spacing = checker.spacing();
-    std::vector<double> nn = nearest(ref, 2.1 * spacing);
+    // NN distances within 2.1 NN: the checker's, taken within its own cap, serve where that
+    // reaches as far (a distance under a cap is the same under any cap above it).
+    const double cap = 2.1 * spacing;
+    std::vector<double> nn = checker.reference_nn();
+    std::vector<std::size_t> far_apart;
+    for (std::size_t i = 0; i < nn.size(); ++i) {
+        if (nn[i] < checker.nn_cap() || cap <= checker.nn_cap())
+            nn[i] = std::min(nn[i], cap);
+        else
+            far_apart.push_back(i);
+    }
+    if (!far_apart.empty()) {
+        const Neighbours wider(ref.points, cap);
+        for (std::size_t i : far_apart) nn[i] = wider.nearest(i);
+    }
     for (double& d : nn)
-        if (d >= 2.1 * spacing) d = 4 * spacing;
+        if (d >= cap) d = 4 * spacing;
     nn_histogram = histogram(nn, spacing, Fidelity{}.histogram_bin);
     // Boundary elements are never copied, and their NN is measured from one side only.
     std::vector<double> copied;
     for (int c : reference.candidates) copied.push_back(nn[static_cast<std::size_t>(c)]);
     if (!copied.empty() && spacing > 0) copied_nn_median = median(copied) / spacing;
-    // Inner: two rings in from the reference's edge, like the inner motifs from the panel's.
+    // Inner: two rings in from the reference's edge, like the inner motifs from the panel's:
+    // no other boundary element within the clearance (found from the boundary's few).
     const Neighbours within(ref.points, checker.interior_clearance());
+    std::vector<bool> near_edge(ref.points.size(), false);
+    for (std::size_t j = 0; j < ref.points.size(); ++j)
+        if (reference.connectivity.boundary[j])
+            within.each(j, [&](std::size_t k) { near_edge[k] = true; });
     std::vector<double> inner;
-    for (int c : reference.candidates) {
-        bool far = true;
-        within.each(static_cast<std::size_t>(c),
-                    [&](std::size_t j) { far = far && !reference.connectivity.boundary[j]; });
-        if (far) inner.push_back(nn[static_cast<std::size_t>(c)]);
-    }
-    inner_nn_median = !inner.empty() && spacing > 0 ? median(inner) / spacing : copied_nn_median;
-    // The crowding rule's limit: the fullest interior ring within the checker's reach.
-    Neighbours near(ref.points, checker.reach());
     for (int c : reference.candidates)
-        most_neighbours =
-            std::max(most_neighbours, static_cast<int>(near.count(static_cast<std::size_t>(c))));
+        if (!near_edge[static_cast<std::size_t>(c)])
+            inner.push_back(nn[static_cast<std::size_t>(c)]);
+    inner_nn_median = !inner.empty() && spacing > 0 ? median(inner) / spacing : copied_nn_median;
+    // Within the checker's reach, each pair once: the crowding rule's limit (the fullest
+    // interior ring) and the same-symbol share.
+    const Neighbours near(ref.points, checker.reach());
+    std::vector<int> neighbours(ref.points.size(), 0);
+    long pairs = 0, alike = 0;
+    for (std::size_t i = 0; i < ref.points.size(); ++i)
+        near.each(i, [&](std::size_t j) {
+            if (j <= i) return;
+            ++neighbours[i];
+            ++neighbours[j];
+            ++pairs;
+            alike += reference.symbol[i] == reference.symbol[j];
+        });
+    for (int c : reference.candidates)
+        most_neighbours = std::max(most_neighbours, neighbours[static_cast<std::size_t>(c)]);
+    same_symbol_share = pairs > 0 ? static_cast<double>(alike) / static_cast<double>(pairs) : 0.0;
     symbol_mix = mix(ref);
     // A lattice's own share is its sites' per cell: the reference's count depends on where its
     // edge cuts the lattice (a 3-colour rectangle of 121 holds 44, 39 and 38).
@@ -265,7 +296,6 @@ ReferenceProfile::ReferenceProfile(const ReferenceData& reference) : checker(ref
             symbol_mix[reference.symbols[static_cast<std::size_t>(site.symbol)]] +=
                 1.0 / static_cast<double>(lattice->sites.size());
     }
-    same_symbol_share = same_share(ref, checker.reach());
     // Likewise its same-symbol share: each site's neighbours within reach on the lattice, once
     // per cell (a stripe reference cut after a stripe of the rarer symbol has more pairs alike).
     if (const Lattice* lattice = lattice_of(reference)) {

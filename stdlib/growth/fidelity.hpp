@@ -31,6 +31,10 @@ class RingChecker {
     std::vector<bool> good(const std::vector<Point>& points, const std::vector<int>& symbols) const;
     // Motifs at least this far inside the panel are the ones a report checks (1.5 NN).
     double interior_clearance() const { return 1.5 * spacing_; }
+    // Per reference element: its nearest neighbour's distance, or nn_cap() when none is nearer
+    // (what spacing() is the median of).
+    const std::vector<double>& reference_nn() const { return nn_; }
+    double nn_cap() const { return nn_cap_; }
 
     struct Ring {
         std::vector<Vector> offsets;
@@ -41,6 +45,8 @@ class RingChecker {
     bool matches(const Ring& ring, int symbol) const;
     std::int64_t key(Vector v) const;
 
+    std::vector<double> nn_;
+    double nn_cap_ = 0;
     double spacing_ = 1;
     std::size_t full_ = 0;
     std::vector<Ring> distinct_;

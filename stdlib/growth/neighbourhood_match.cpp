@@ -43,10 +43,9 @@ double alignment_error(const std::vector<RingEntry>& target,
     return error;
 }
 
-double alignment_error_within(const std::vector<RingEntry>& target,
-                              const std::vector<RingEntry>& reference, int shift, double cos_r,
-                              double sin_r, const Weights& w, double bound) {
-    const std::size_t m = reference.size();
+double alignment_error_within(const std::vector<RingEntry>& target, const RingEntry* reference,
+                              std::size_t m, int shift, double cos_r, double sin_r,
+                              const Weights& w, double bound) {
     double error = 0;
     for (std::size_t i = 0; i < target.size(); ++i) {
         const RingEntry& t = target[i];

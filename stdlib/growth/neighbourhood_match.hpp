@@ -43,9 +43,9 @@ double alignment_error(const std::vector<RingEntry>& target,
 
 // alignment_error at the rotation whose cosine and sine are given (the same bits as
 // Vector::rotated), summed in the same order, or infinity as soon as the sum exceeds `bound`.
-double alignment_error_within(const std::vector<RingEntry>& target,
-                              const std::vector<RingEntry>& reference, int shift, double cos_r,
-                              double sin_r, const Weights& w, double bound);
+double alignment_error_within(const std::vector<RingEntry>& target, const RingEntry* reference,
+                              std::size_t size, int shift, double cos_r, double sin_r,
+                              const Weights& w, double bound);
 
 // The rotation that best maps the paired reference offsets onto the target ones (least squares,
 // closed form; the centre stays fixed).

@@ -190,7 +190,8 @@ Synthesis::Choice Synthesis::choose_pruned(const Node& seed, const std::vector<R
                                  static_cast<std::size_t>(s.slots), s.shift, cos_t, sin_t, weights_,
                                  ring_limit) <= ring_limit))
             return;
-        double e = alignment_error_within(target, rings_[s.element], s.shift, cos_t, sin_t,
+        double e = alignment_error_within(target, index.rings.data() + index.ring_begin[n],
+                                          static_cast<std::size_t>(s.slots), s.shift, cos_t, sin_t,
                                           weights_, balance ? ring_limit : bound());
         if (!std::isfinite(e)) return;
         const int c = s.element, k = s.shift;
