@@ -7,6 +7,7 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "point_grid.hpp"
 #include "reference.hpp"
 
 namespace acanthus::growth::detail {
@@ -29,41 +30,20 @@ constexpr std::size_t kSiteCandidates = 64;
 // (RMS, in spacings): rounded coordinates are far within, a jitter of a tenth is not.
 constexpr double kExact = 0.03;
 
-class PointGrid {
-  public:
-    PointGrid(const std::vector<Point>& points, double cell) : points_(points), cell_(cell) {
-        for (std::size_t i = 0; i < points.size(); ++i)
-            grid_[key(cx(points[i].x), cx(points[i].y))].push_back(static_cast<int>(i));
-    }
-    // The nearest point within r (r <= cell), or -1.
-    int nearest(Point q, double r) const {
-        int best = -1;
-        double best_d = r;
-        const long x = cx(q.x), y = cx(q.y);
-        for (long dx = -1; dx <= 1; ++dx)
-            for (long dy = -1; dy <= 1; ++dy) {
-                auto it = grid_.find(key(x + dx, y + dy));
-                if (it == grid_.end()) continue;
-                for (int i : it->second) {
-                    double d = distance(points_[i], q);
-                    if (d < best_d || (d == best_d && best >= 0 && i < best)) {
-                        best_d = d;
-                        best = i;
-                    }
-                }
-            }
-        return best;
-    }
-
-  private:
-    long cx(double v) const { return static_cast<long>(std::floor(v / cell_)); }
-    static std::int64_t key(long x, long y) {
-        return (static_cast<std::int64_t>(x) << 32) ^ (static_cast<std::int64_t>(y) & 0xffffffff);
-    }
-    const std::vector<Point>& points_;
-    double cell_;
-    std::unordered_map<std::int64_t, std::vector<int>> grid_;  // looked up, never iterated
-};
+// The nearest of `points` to q within r (r at most the grid's cell), the lowest index among
+// equals; -1 when none.
+int nearest_within(const PointGrid& grid, const std::vector<Point>& points, Point q, double r) {
+    int best = -1;
+    double best_d = r;
+    grid.around(q, [&](int i) {
+        const double d = distance(points[static_cast<std::size_t>(i)], q);
+        if (d < best_d || (d == best_d && best >= 0 && i < best)) {
+            best_d = d;
+            best = i;
+        }
+    });
+    return best;
+}
 
 // The kept triangles, for "is this place inside the reference" (an empty place inside a
 // honeycomb's hexagon is one; beyond the reference's edge is not).
@@ -221,7 +201,7 @@ std::optional<Lattice> detect_lattice(const ReferenceData& reference) {
         Vector total{0, 0};
         for (int i : sample) {
             Point q = points[i] + t;
-            int j = grid.nearest(q, tol);
+            int j = nearest_within(grid, points, q, tol);
             if (j >= 0 && alike(i, j)) {
                 ++support;
                 total += points[j] - points[i];
