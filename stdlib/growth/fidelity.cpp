@@ -73,19 +73,7 @@ struct Site {
 };
 
 // NN distances (within `cap`; a lone point counts as `cap`).
-std::vector<double> nearest(const Site& s, double cap) {
-    Neighbours n(s.points, cap);
-    std::vector<double> out;
-    out.reserve(s.points.size());
-    for (std::size_t i = 0; i < s.points.size(); ++i) out.push_back(n.nearest(i));
-    return out;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-    return v[v.size() / 2];
-}
+std::vector<double> nearest(const Site& s, double cap) { return nn_distances(s.points, cap); }
 
 std::vector<double> histogram(const std::vector<double>& nn, double spacing, double bin) {
     std::vector<double> h(21, 0.0);  // 0 to 2 NN, and beyond
@@ -148,6 +136,20 @@ std::vector<Point> points_of(const ReferenceData& reference) {
 }
 
 }  // namespace
+
+std::vector<double> nn_distances(const std::vector<Point>& points, double cap) {
+    Neighbours n(points, cap);
+    std::vector<double> out;
+    out.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) out.push_back(n.nearest(i));
+    return out;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
 
 double reference_spacing(const ReferenceData& reference) {
     Site ref;
@@ -409,11 +411,11 @@ std::string fidelity_json(const SynthesisResult& result) {
     out["lattice"] = Json{{"sites", result.stats.lattice_sites},
                           {"completed", result.stats.completed},
                           {"repaired", result.stats.repaired}};
-    out["near_regular"] = Json{{"ring_order", result.stats.ring_order},
-                               {"near_regular", result.stats.near_regular},
-                               {"honeycomb", result.stats.honeycomb},
-                               {"jitter", result.stats.jitter},
-                               {"fitted", result.stats.fitted}};
+    out["near_regular"] =
+        Json{{"ring_order", result.stats.ring_order}, {"near_regular", result.stats.near_regular},
+             {"honeycomb", result.stats.honeycomb},   {"jitter", result.stats.jitter},
+             {"fitted", result.stats.fitted},         {"jitter_scale", result.stats.jitter_scale},
+             {"rescaled", result.stats.rescaled}};
     return out.dump();
 }
 

@@ -54,6 +54,11 @@ class RingChecker {
     std::unordered_map<std::int64_t, std::vector<int>> index_;  // offset cell -> rings; looked up
 };
 
+// Per point, the distance to its nearest other point, or `cap` when none is nearer.
+std::vector<double> nn_distances(const std::vector<Point>& points, double cap);
+// The middle value (the upper of the two middle ones); 0 for none.
+double median(std::vector<double> values);
+
 // The reference's median nearest-neighbour distance, measured on its points.
 double reference_spacing(const ReferenceData& reference);
 

@@ -338,6 +338,7 @@ void Synthesis::run() {
     }
     if (on_lattice() && room()) repair_lattice();
     balance_neighbours();
+    match_spacing();
     stats_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
@@ -723,6 +724,7 @@ bool Synthesis::fit_to_site(int id, int element, double radius, const std::pair<
         !crowded(id, fitted)) {
         shift_ = shift;
         taken_sites_.insert(index);
+        fitted_sites_.push_back({id, fitted - own});
         // On its site: relaxation (whose links a honeycomb's uneven rings misalign) holds it.
         pattern_[id].fixed = true;
         ++stats_.fitted;

@@ -150,6 +150,9 @@ class Synthesis {
     // reference elements until the close pairs' same-symbol share is the reference's
     // (neighbour_share.cpp).
     void balance_neighbours();
+    // A near-regular reference (Options::match_spacing): the fitted motifs' jitter scaled by one
+    // factor until the NN median is the reference's (spacing_match.cpp).
+    void match_spacing();
     void remove_motif(int id);
 
     const ReferenceData& reference_;
@@ -223,6 +226,7 @@ class Synthesis {
     // shift_), and the sites taken (lattice coordinates).
     std::optional<Vector> shift_;
     std::set<std::pair<long, long>> taken_sites_;
+    std::vector<std::pair<int, Point>> fitted_sites_;  // (node, its site), in placement order
     // A honeycomb's candidates per sublattice: a site's bonds point one of two ways, and an
     // element copied onto a site of the other way would put its ring seeds in hexagon centres.
     std::vector<int> sublattice_candidates_[3];

@@ -4,7 +4,8 @@ and reports what issue 27 checks per run: the NN median against the reference's 
 against the interior reference elements, and the motifs 1.5 NN inside the panel against the
 inner reference elements), the symbol mix and the same-symbol neighbour share against the
 reference's, the largest empty circle in NN distances, the defect share, and whether the same
-seed gives the same bytes.
+seed gives the same bytes. Each run's line also shows the factor the spacing match scaled the
+jitter by (x1.00: left as grown).
 
 Usage: unseen_check.py PROGRAM SOURCE_DIR WORK_DIR [--set NAME] [--seeds N] [--only SUBSTRING]
        [--tsv FILE]
@@ -316,12 +317,14 @@ for ref, ref_panels in refs:
                        mix=mix, same=ss["result"] - ss["reference"], hole=g["largest_hole"],
                        defects=g["defects"]["share"], interior=g["defects"]["interior"],
                        fitted=g["near_regular"]["fitted"], lattice=g["lattice"]["sites"],
+                       scale=g["near_regular"]["jitter_scale"],
                        bytes=same, seconds=seconds)
             rows.append(row)
             print(f"{row['ref']:28} {pname:12} {seed} motifs {row['motifs']:4} "
                   f"NN all {row['all']:.3f} inner {row['inner']:.3f} mix {100 * mix:4.1f} "
                   f"same {100 * row['same']:+5.1f} hole {row['hole']:.2f} "
                   f"defects {row['defects']:.2f}/{row['interior']} fitted {row['fitted']} "
+                  f"x{row['scale']:.2f} "
                   f"{same} {seconds:.1f}s", flush=True)
 
 print("\nper reference: NN median all / inner (runs over 5%), mix, same-symbol, hole")

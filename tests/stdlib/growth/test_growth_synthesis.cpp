@@ -593,6 +593,60 @@ TEST(GrowthSynthesis, JitteredLatticesGrowAtTheReferencesSpacing) {
         }
 }
 
+TEST(GrowthSynthesis, JitteredLatticesSpacingMatchedToTheReferences) {
+    // Copied jitter on a hundred motifs is a fresh draw of the spacing: runs land a few percent
+    // off the reference's own NN median. Those more than 2.5% off (the mean of the all and the
+    // inner ratio) get their jitter scaled back to 2.5%; the others are left as grown, byte for
+    // byte.
+    auto ratio = [](const Fidelity& f) {
+        return (f.nn_median / f.reference_nn_median +
+                f.nn_median_inner / f.reference_nn_median_inner) /
+               2;
+    };
+    int off = 0, runs = 0;
+    for (const char* kind : {"triangular", "square"})
+        for (std::uint64_t ref_seed : {3, 4, 5})
+            for (const char* panel : {"circle:42", "rect:90,60"})
+                for (std::uint64_t seed : {1, 2, 3}) {
+                    Reference ref = Reference::from_elements(jittered(kind, 10, 0.15, ref_seed));
+                    Options as_grown;
+                    as_grown.match_spacing = false;
+                    const Region region = Region::from_spec(panel);
+                    SynthesisResult grown = synthesize(ref, region, as_grown, {}, seed);
+                    SynthesisResult matched = synthesize(ref, region, Options{}, {}, seed);
+                    const std::string what = std::string(kind) + " " + panel + " reference " +
+                                             std::to_string(ref_seed) + " seed " +
+                                             std::to_string(seed);
+                    ++runs;
+                    const double before = ratio(grown.fidelity), after = ratio(matched.fidelity);
+                    EXPECT_EQ(grown.stats.jitter_scale, 1) << what;
+                    // Within 2.5% (and the 0.4% it counts as near enough): as grown.
+                    if (std::abs(before - 1) <= 0.029) {
+                        EXPECT_EQ(matched.stats.jitter_scale, 1) << what;
+                        ASSERT_EQ(matched.motifs.size(), grown.motifs.size()) << what;
+                        for (std::size_t i = 0; i < grown.motifs.size(); ++i)
+                            EXPECT_EQ(matched.motifs[i].position, grown.motifs[i].position) << what;
+                        continue;
+                    }
+                    ++off;
+                    EXPECT_NE(matched.stats.jitter_scale, 1) << what;
+                    EXPECT_GT(matched.stats.rescaled, 0) << what;
+                    // Motifs that would overlap stay as copied: within 1% of the band's edge.
+                    EXPECT_LE(std::abs(after - 1), 0.035) << what << " before " << before;
+                    // More jitter where the copy came out too wide, less where too tight.
+                    EXPECT_EQ(matched.stats.jitter_scale > 1, before > 1) << what;
+                    // Still valid: no two motifs overlap.
+                    for (std::size_t i = 0; i < matched.motifs.size(); ++i)
+                        for (std::size_t j = i + 1; j < matched.motifs.size(); ++j)
+                            EXPECT_GE(
+                                distance(matched.motifs[i].position, matched.motifs[j].position),
+                                matched.motifs[i].radius + matched.motifs[j].radius - 1e-6)
+                                << what;
+                }
+    // The case is exercised: a few runs came out more than 2.5% off.
+    EXPECT_GE(off, 2) << runs << " runs";
+}
+
 TEST(GrowthSynthesis, JitteredLatticesMotifsStandOnOneLattice) {
     // Every motif put on a site stands on one lattice, its copied element's own jitter off it:
     // its position less that jitter is a lattice point of the fitted basis through the first
@@ -610,8 +664,10 @@ TEST(GrowthSynthesis, JitteredLatticesMotifsStandOnOneLattice) {
         ASSERT_TRUE(fit) << kind;
         // Motifs that exchange their elements afterwards (the same-symbol share) keep their
         // places, not their elements' jitter: the exchange is left out here.
+        // Nor is the spacing matched (which scales the jitter).
         Options o;
         o.neighbour_share = false;
+        o.match_spacing = false;
         SynthesisResult r = synthesize(ref, Region::from_spec("rect:150,120"), o, {}, 3);
         ASSERT_GT(r.motifs.size(), 100u) << kind;
         EXPECT_GT(static_cast<double>(r.stats.fitted), 0.85 * static_cast<double>(r.motifs.size()))

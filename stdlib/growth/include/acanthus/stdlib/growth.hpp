@@ -141,6 +141,9 @@ struct Options {
     // which the first motif puts down; each motif goes on the lattice site nearest its seed plus
     // the copied element's own jitter (docs/stdlib/growth.md).
     bool fit_to_ring = true;
+    // After growth on such a lattice, the fitted motifs' jitter about their sites is scaled by
+    // one factor (0.6 to 1.5) so that the NN median is the reference's; false: as copied.
+    bool match_spacing = true;
     // Match each candidate's 2-ring too (its neighbours' neighbours, by nearest position), not
     // only the 1-ring: more context at the growth front, for near-regular references.
     bool two_ring = false;
@@ -218,6 +221,10 @@ struct SynthesisStats {
     bool honeycomb = false;  // its first shell of three edges stands apart from the next ones
     double jitter = 0;
     long fitted = 0;
+    // Options::match_spacing: the factor the fitted motifs' jitter was scaled by (1: none), and
+    // the motifs moved by it (one whose move would overlap or crowd stays as copied).
+    double jitter_scale = 1;
+    long rescaled = 0;
     double seconds = 0;  // wall time (reported only, never used)
     double relax_seconds = 0;
     // How far the result is from the reference's offsets: RMS over the links between motifs of
