@@ -8,6 +8,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <future>
 #include <stdexcept>
 
 #include "fidelity.hpp"
@@ -94,6 +95,12 @@ int Reference::symbol_index(std::size_t i) const { return data_->symbol.at(i); }
 
 namespace {
 
+// From this many elements, the first synthesis from a reference works out its side of the
+// fidelity report (also the crowding rule's limit) on a second thread while it finds the
+// reference's spacing, lattice and jitter: a hundred thousand elements take a fifth of a second
+// each way. Smaller ones are not worth a thread.
+constexpr std::size_t kHugeReference = 20000;
+
 void check_options(const Options& o) {
     auto bad = [](const std::string& why) { throw InputError("growth: " + why); };
     for (double w : {o.w1, o.w2, o.w3, o.w4})
@@ -161,6 +168,17 @@ SynthesisResult synthesize(const Reference& reference, const Region& region, con
                            const std::vector<Point>& starts, std::uint64_t seed) {
     // Before anything that costs in proportion to the panel; a bad max_motifs is said as such.
     check_options(options);
+    // Made once per reference (call_once): a later call, or the synthesis asking for it while
+    // the thread is at it, waits for the one result. What the thread throws is thrown again
+    // where the synthesis asks.
+    std::future<void> profile;
+    if (reference.data().elements.size() >= kHugeReference)
+        profile = std::async(std::launch::async, [&reference] {
+            try {
+                detail::profile_of(reference.data());
+            } catch (...) {
+            }
+        });
     detail::check_motif_count(reference.data(), region.area(), options);
     std::vector<Point> points = starts;
     if (points.empty() && options.spray_strokes.empty())

@@ -110,7 +110,7 @@ std::optional<JitteredLattice> fit_jittered_lattice(const ReferenceData& referen
     std::vector<Vector> offsets;
     for (int e : reference.candidates)
         for (const RingSlot& s : reference.rings[static_cast<std::size_t>(e)])
-            if (s.offset.length() < 2.5 * a) offsets.push_back(s.offset);
+            if (s.offset.dot(s.offset) < 6.25 * a * a) offsets.push_back(s.offset);
     std::vector<std::pair<double, double>> steps(offsets.size());
     for (int pass = 0; pass < 2; ++pass) {
         for (std::size_t k = 0; k < offsets.size(); ++k) steps[k] = rounded(offsets[k], u, w);
@@ -122,8 +122,12 @@ std::optional<JitteredLattice> fit_jittered_lattice(const ReferenceData& referen
     Point mean;
     for (const auto& e : elements) mean = mean + (e.position - Point{}) / static_cast<double>(n);
     Point origin = elements.front().position;
+    double nearest = (origin - mean).dot(origin - mean);
     for (const auto& e : elements)
-        if (distance(e.position, mean) < distance(origin, mean)) origin = e.position;
+        if ((e.position - mean).dot(e.position - mean) < nearest) {
+            origin = e.position;
+            nearest = (e.position - mean).dot(e.position - mean);
+        }
     std::vector<std::pair<double, double>> index(n);
     std::vector<Vector> from(n);
     for (int pass = 0; pass < 3; ++pass) {
@@ -162,6 +166,23 @@ std::optional<JitteredLattice> fit_jittered_lattice(const ReferenceData& referen
             out.vacant = static_cast<int>(least);
     }
     return out;
+}
+
+const RingRegularity& regularity_of(const ReferenceData& reference) {
+    std::call_once(reference.regularity_once, [&] {
+        reference.regularity = std::make_shared<const RingRegularity>(ring_regularity(reference));
+    });
+    return *reference.regularity;
+}
+
+const JitteredLattice* jittered_lattice_of(const ReferenceData& reference) {
+    std::call_once(reference.jittered_once, [&] {
+        const RingRegularity& regularity = regularity_of(reference);
+        if (!regularity.near_regular) return;
+        if (auto fit = fit_jittered_lattice(reference, regularity))
+            reference.jittered = std::make_shared<const JitteredLattice>(std::move(*fit));
+    });
+    return reference.jittered.get();
 }
 
 std::pair<long, long> JitteredLattice::index(Point p) const {

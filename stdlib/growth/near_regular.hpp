@@ -69,6 +69,10 @@ inline constexpr double kNoiseMargin = 4;
 inline constexpr double kShellGap = 1.35;
 
 RingRegularity ring_regularity(const ReferenceData& reference);
+// Worked out once per reference: ring_regularity(), and fit_jittered_lattice() on it when it is
+// near-regular (null: not, or no lattice fits).
+const RingRegularity& regularity_of(const ReferenceData& reference);
+const JitteredLattice* jittered_lattice_of(const ReferenceData& reference);
 
 // Fits a near-regular reference to the triangular (fold 6) or square (fold 4) lattice its rings
 // show; none when no lattice explains it (two elements on one site, or a jitter above

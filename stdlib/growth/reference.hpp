@@ -15,6 +15,8 @@ namespace acanthus::growth::detail {
 
 struct ReferenceProfile;  // fidelity.hpp
 struct Lattice;           // lattice.hpp
+struct RingRegularity;    // near_regular.hpp
+struct JitteredLattice;   // near_regular.hpp
 
 // One neighbour in a reference 1-ring.
 struct RingSlot {
@@ -43,6 +45,12 @@ struct ReferenceData {
     mutable std::once_flag profile_once, lattice_once;
     mutable std::shared_ptr<const ReferenceProfile> profile;
     mutable std::shared_ptr<const Lattice> lattice;  // null: not a lattice
+    // The rings' spacing and the restart radius in it (synthesis.hpp), the rings' regularity and
+    // the jittered lattice fitted to them (near_regular.hpp; null: none fits).
+    mutable std::once_flag spacing_once, regularity_once, jittered_once;
+    mutable double spacing = 0, restart_radius = 0;
+    mutable std::shared_ptr<const RingRegularity> regularity;
+    mutable std::shared_ptr<const JitteredLattice> jittered;
 };
 
 // Validates (finite coordinates and sizes, at least 3 distinct points, flips) and analyses.

@@ -39,7 +39,7 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
       tolerance_(1e-9 * reference.mean_edge),
       pattern_(reference.mean_edge) {
     spacing_ = ring_spacing(reference);
-    restart_radius_ = restart_radius(reference, spacing_);
+    restart_radius_ = reference.restart_radius;
     check_motif_count(reference, panel.area(), options);
     for (std::size_t i = 0; i < reference.elements.size(); ++i) {
         std::vector<RingEntry> ring;
@@ -77,13 +77,13 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
         if (lattice_) stats_.lattice_sites = static_cast<int>(lattice_->sites.size());
     }
     if (!lattice_) {
-        const RingRegularity regularity = ring_regularity(reference);
+        const RingRegularity& regularity = regularity_of(reference);
         stats_.ring_order = regularity.order;
         stats_.near_regular = regularity.near_regular;
         stats_.honeycomb = regularity.honeycomb;
         // Like a lattice, only where motifs keep the reference's orientation (mode none).
         if (options.fit_to_ring && options.mode == Mode::none && regularity.near_regular)
-            jittered_ = fit_jittered_lattice(reference, regularity);
+            if (const JitteredLattice* fit = jittered_lattice_of(reference)) jittered_ = *fit;
         if (jittered_) stats_.jitter = jittered_->rms;
         // A honeycomb's sites are matched against elements of their own sublattice.
         if (jittered_ && jittered_->vacant >= 0) {
@@ -160,16 +160,30 @@ Synthesis::Synthesis(const ReferenceData& reference, const Panel& panel, const O
 }
 
 double ring_spacing(const ReferenceData& reference) {
-    std::vector<double> nearest;
-    for (const auto& ring : reference.rings) {
-        double best = INFINITY;
-        for (const RingSlot& s : ring) best = std::min(best, s.offset.length());
-        if (std::isfinite(best)) nearest.push_back(best);
-    }
-    if (nearest.empty()) return 1;
-    std::nth_element(nearest.begin(), nearest.begin() + static_cast<long>(nearest.size() / 2),
-                     nearest.end());
-    return nearest[nearest.size() / 2];
+    std::call_once(reference.spacing_once, [&] {
+        // Each ring's shortest offset: the least square, then hypot() of the offsets within
+        // rounding of it (the least hypot() is among them).
+        std::vector<double> nearest;
+        nearest.reserve(reference.rings.size());
+        for (const auto& ring : reference.rings) {
+            double least = INFINITY, best = INFINITY;
+            for (const RingSlot& s : ring) least = std::min(least, s.offset.dot(s.offset));
+            for (const RingSlot& s : ring)
+                if (s.offset.dot(s.offset) <= least * (1 + 1e-10))
+                    best = std::min(best, s.offset.length());
+            if (std::isfinite(best)) nearest.push_back(best);
+        }
+        double spacing = 1;
+        if (!nearest.empty()) {
+            std::nth_element(nearest.begin(),
+                             nearest.begin() + static_cast<long>(nearest.size() / 2),
+                             nearest.end());
+            spacing = nearest[nearest.size() / 2];
+        }
+        reference.spacing = spacing;
+        reference.restart_radius = restart_radius(reference, spacing);
+    });
+    return reference.spacing;
 }
 
 void check_motif_count(const ReferenceData& reference, double area, const Options& options) {

@@ -693,3 +693,31 @@ TEST(GrowthSynthesis, JitteredLatticesMotifsStandOnOneLattice) {
         EXPECT_GE(best, r.stats.fitted) << kind;
     }
 }
+
+TEST(GrowthSynthesis, AHugeReferenceGrowsAlikeOnEveryCall) {
+    // From 20,000 elements the first synthesis works out the reference's profile on a second
+    // thread, and every synthesis reuses what the reference worked out once (spacing, lattice,
+    // jitter, profile): the first call, a later one and one from a fresh copy agree.
+    const auto elements = growth_fixtures::jittered_lattice(145, 145, 10, 1.5, {"a", "b"});
+    ASSERT_GE(elements.size(), 20000u);
+    Options o;
+    o.max_elements = 150;
+    const Region panel = Region::from_spec("rect:160,120");
+    Reference ref = Reference::from_elements(elements);
+    SynthesisResult first = synthesize(ref, panel, o, {}, 4);
+    SynthesisResult later = synthesize(ref, panel, o, {}, 4);
+    SynthesisResult fresh = synthesize(Reference::from_elements(elements), panel, o, {}, 4);
+    ASSERT_EQ(first.motifs.size(), 150u);
+    EXPECT_TRUE(first.stats.near_regular);
+    EXPECT_GT(first.stats.fitted, 0);
+    for (const SynthesisResult* r : {&later, &fresh}) {
+        ASSERT_EQ(r->motifs.size(), first.motifs.size());
+        for (std::size_t i = 0; i < first.motifs.size(); ++i) {
+            EXPECT_EQ(r->motifs[i].position, first.motifs[i].position) << i;
+            EXPECT_EQ(r->motifs[i].source, first.motifs[i].source) << i;
+        }
+        EXPECT_EQ(r->fidelity.nn_median, first.fidelity.nn_median);
+        EXPECT_EQ(r->fidelity.reference_nn_median_inner, first.fidelity.reference_nn_median_inner);
+        EXPECT_EQ(r->fidelity.defects, first.fidelity.defects);
+    }
+}
