@@ -14,6 +14,8 @@ bool RegionPanel::admits(Circle motif, double tolerance) const {
 
 bool EnvironmentPanel::contains(Point p) const { return env_.inside(p); }
 
+bool EnvironmentPanel::symmetric() const { return env_.symmetric(); }
+
 Rect EnvironmentPanel::bounds() const { return env_.region() ? env_.region()->bounds() : Rect{}; }
 
 double EnvironmentPanel::clearance(Point p) const { return env_.distance_to_boundary(p); }

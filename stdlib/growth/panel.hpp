@@ -23,6 +23,9 @@ class Panel {
     virtual Rect bounds() const = 0;
     // Distance from p to the panel's edge (for choosing the middle of an empty lobe).
     virtual double clearance(Point p) const = 0;
+    // Under a symmetry group: the first motif stays on the seed it is given (a lattice moved
+    // off it would no longer mesh with its images across mirrors and tile edges).
+    virtual bool symmetric() const { return false; }
     // The room's area, at most (for the estimate of how many motifs it holds).
     virtual double area() const {
         Rect b = bounds();
@@ -53,6 +56,7 @@ class EnvironmentPanel : public Panel {
     Rect bounds() const override;
     double clearance(Point p) const override;
     double area() const override;
+    bool symmetric() const override;
 
   private:
     Environment& env_;

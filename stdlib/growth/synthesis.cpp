@@ -610,6 +610,13 @@ void Synthesis::grow(int id) {
         if (other >= 0 && pattern_[other].placed()) return drop(id);
         pattern_.move(id, spot.at);
         candidates = &lattice_->sites[static_cast<std::size_t>(spot.site)].candidates;
+    } else if (lattice_ && !phase_ && options_.lattice_phase && !phase_tried_) {
+        // Once: a first motif that cannot stand there leaves the next seeds as they are.
+        phase_tried_ = true;
+        if (const auto first = lattice_phase(pattern_[id].position)) {
+            pattern_.move(id, first->at);
+            candidates = &lattice_->sites[static_cast<std::size_t>(first->site)].candidates;
+        }
     }
     // A near-regular reference, once its lattice is down: the seed's site is the one nearest
     // it; a taken site (or a honeycomb's hexagon centre) holds no motif, and on a honeycomb an

@@ -143,6 +143,16 @@ class Synthesis {
     // A seed on lattice point `spot`, linked to the motifs on its site's ring; -1 when the
     // point is taken, outside, or no motif of its site fits there.
     int plant_on_lattice(const Lattice::Spot& spot, Point from);
+    // Where the first motif goes (its seed's place or half a cell from it) and which site it
+    // takes (the lattice's phase): of the phases under which the panel holds the most lattice
+    // points, the one whose points come nearest the reference's symbol shares per cell (a
+    // stripe or a colour more or less where the panel's edge cuts the lattice). None: as
+    // matched (one symbol, or a panel too large to count).
+    struct Phase {
+        int site = -1;
+        Point at;
+    };
+    std::optional<Phase> lattice_phase(Point start) const;
     // Motifs whose ring matches no reference ring (RingChecker), with their neighbours that lie
     // off the lattice or carry another site's symbol, removed and grown again, a few rounds.
     void repair_lattice();
@@ -230,7 +240,8 @@ class Synthesis {
     // A honeycomb's candidates per sublattice: a site's bonds point one of two ways, and an
     // element copied onto a site of the other way would put its ring seeds in hexagon centres.
     std::vector<int> sublattice_candidates_[3];
-    bool phase_ = false;  // the lattice's origin is set (by the first motif)
+    bool phase_ = false;        // the lattice's origin is set (by the first motif)
+    bool phase_tried_ = false;  // lattice_phase() asked (for the first seed grown)
     Point origin_;
     std::set<Lattice::Spot> planted_spots_;  // completion seeds, each point once
     std::set<Lattice::Spot> reopened_;       // emptied by the repair

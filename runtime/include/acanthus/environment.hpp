@@ -25,6 +25,9 @@ class Environment {
     // The region being filled, or null when the environment has none (libraries such as
     // dartfill use it for their own exact containment tests).
     virtual const Region* region() const { return nullptr; }
+    // True while the ornament grows under a symmetry group: where a body puts its first
+    // element relative to the seed it was given then places the group's images too.
+    virtual bool symmetric() const { return false; }
 
     // The environment installed for the running body, or null.
     static Environment* current();

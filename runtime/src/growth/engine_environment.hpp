@@ -67,6 +67,7 @@ class GrowthEnvironment : public Environment {
     // on the first call (most rules never read it).
     void set_panel(std::function<const Region*()> panel) { panel_ = std::move(panel); }
     const Region* region() const override { return panel_ ? panel_() : &region_; }
+    bool symmetric() const override { return group_ != nullptr; }
     bool filling_hole() const { return static_cast<bool>(panel_); }
 
   private:

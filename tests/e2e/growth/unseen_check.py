@@ -25,6 +25,9 @@ Sets (each reference made here from its own random seed, coordinates rounded to 
       units).
   s10 seeds 1001-1006 (set_s10): exact lattices of motifs turned at random, a jittered one and
       a Poisson-disc set, in the gourd, the wave band, the shield and the ring.
+  s11 seeds 1101-1106 (set_s11): jittered lattices in three units, exact 3-colour and stripe
+      lattices and a Poisson-disc set, in the gourd, the wave band, the heart and the narrow
+      neck.
 """
 import argparse
 import json
@@ -275,6 +278,26 @@ def set_s10():
     return refs
 
 
+def set_s11():
+    """Seeds 1101-1106, made after the spacing match with nothing tuned on them: a triangular
+    lattice jittered by 0.16 turned 50 degrees in units of 2.54, a square grid jittered by 0.13
+    in units of 0.1, a honeycomb jittered by 0.1 turned 25 degrees, an exact 3-colour triangular
+    lattice, exact stripes turned 45 degrees in units of 10 and a two-symbol Poisson-disc set of
+    spacing 11; in the gourd, the wave band, the heart and the narrow neck."""
+    refs = []
+    panels = [str(p) for p in s9_panels()[:2]] + [str(PANELS / "heart.svg"),
+                                                  str(PANELS / "narrow-neck.svg")]
+    for row in (
+            (1101, "triangular", 10, 110, 95, 0.16, 50, (0.5, 0.5), (3.0, 3.1), "", 2.54),
+            (1102, "square", 10, 100, 90, 0.13, 0, (0.35, 0.65), (3.1, 3.0), "", 0.1),
+            (1103, "honeycomb", 8, 95, 85, 0.1, 25, (0.5, 0.5), (2.4, 2.5), "", 1.0),
+            (1104, "triangular", 10, 100, 90, 0, 0, (), (3.0, 3.0, 3.0), "colour3", 1.0),
+            (1105, "square", 10, 100, 90, 0, 45, (), (3.1, 3.0), "stripes", 10.0),
+            (1106, "poisson", 11, 110, 90, 0, 0, (0.45, 0.55), (3.4, 3.1), "", 1.0)):
+        refs.append(made_reference(row, panels))
+    return refs
+
+
 def run(ref, panel, seed, out):
     p = subprocess.run(["nice", args.program, "-o", str(out), "--param", f"reference={ref}",
                         "--region", panel, "--rng-seed", str(seed), "--metrics"],
@@ -289,8 +312,10 @@ if args.set == "s8":
     refs = [(ref, panels) for ref in refs]
 elif args.set == "s9":
     refs = set_s9()
-else:
+elif args.set == "s10":
     refs = set_s10()
+else:
+    refs = set_s11()
 rows = []
 begin = time.time()
 for ref, ref_panels in refs:

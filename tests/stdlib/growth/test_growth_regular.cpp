@@ -8,6 +8,7 @@
 #include <acanthus/stdlib/growth.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "growth_lattices.hpp"
 
 using namespace acanthus;
 using namespace acanthus::growth;
@@ -221,3 +224,44 @@ TEST(GrowthRegular, JitteredLatticesOfTurnedMotifsAreNoLattices) {
 }
 
 }  // namespace
+
+TEST(GrowthRegular, ALatticesPhaseKeepsItsSymbolMixInThePanel) {
+    // Where the panel's edge cuts a lattice of several symbols, a stripe or a colour more or
+    // less comes in. The first motif's place and site are chosen so that the panel holds the
+    // most of the lattice with the reference's shares per cell: over these panels the symbol
+    // mix keeps within 3.2 points and 1.0 on average, against 1.6 on average (up to 3.8) and up
+    // to 7 motifs fewer with the site the first match gives.
+    using growth_lattices::Kind;
+    double sum_chosen = 0, sum_matched = 0;
+    int runs = 0;
+    auto mix_of = [](const Fidelity& f) {
+        double mix = 0;
+        for (const auto& [symbol, share] : f.reference_symbol_mix) {
+            auto it = f.symbol_mix.find(symbol);
+            mix = std::max(mix, std::abs((it == f.symbol_mix.end() ? 0.0 : it->second) - share));
+        }
+        return mix;
+    };
+    for (Kind kind : {Kind::three_colour, Kind::checker, Kind::stripes})
+        for (const char* panel : {"heart.svg", "star.svg", "shield.svg", "narrow-neck.svg"}) {
+            Reference ref = Reference::from_elements(growth_lattices::lattice(kind, 14, 10, 3));
+            const Region region = scaled_panel(panel, 0.8);
+            Options matched;
+            matched.lattice_phase = false;
+            SynthesisResult a = synthesize(ref, region, Options{}, {}, 1);
+            SynthesisResult b = synthesize(ref, region, matched, {}, 1);
+            const std::string what = std::string(growth_lattices::name(kind)) + " in " + panel;
+            ASSERT_GT(a.stats.lattice_sites, 1) << what;
+            const double chosen = mix_of(a.fidelity), as_matched = mix_of(b.fidelity);
+            std::printf("%-28s %3zu motifs, mix %.3f; as matched %3zu, %.3f\n", what.c_str(),
+                        a.motifs.size(), chosen, b.motifs.size(), as_matched);
+            EXPECT_LE(chosen, 0.032) << what;
+            EXPECT_GE(a.motifs.size(), b.motifs.size()) << what;
+            EXPECT_EQ(a.fidelity.defects, 0) << what;
+            sum_chosen += chosen;
+            sum_matched += as_matched;
+            ++runs;
+        }
+    EXPECT_LT(sum_chosen / runs, 0.012);
+    EXPECT_LT(sum_chosen, sum_matched - 0.002 * runs);
+}

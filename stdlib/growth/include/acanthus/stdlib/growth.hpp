@@ -152,6 +152,11 @@ struct Options {
     // matches no reference ring are removed and grown again (mode none only; false: the paper's
     // growth alone, which lets domains slip where fronts meet).
     bool lattice = true;
+    // On a lattice with more than one symbol, the first motif goes where (its seed's place or a
+    // quarter or half cell from it) and takes the site whose lattice the panel holds most of,
+    // with the symbols' shares nearest the reference's per cell; false: on its seed, the site
+    // its match gives.
+    bool lattice_phase = true;
     double scale_min = 1.0;  // random scale per motif, uniform
     double scale_max = 1.0;
     double angle_jitter = 0.0;     // radians: random turn of each motif, uniform in +-jitter
