@@ -10,7 +10,9 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -127,4 +129,30 @@ TEST(Render, DashWritesSvgToStdout) {
     std::string out = testing::internal::GetCapturedStdout();
     EXPECT_EQ(out.rfind("<?xml", 0), 0u);
     EXPECT_NE(out.find("</svg>"), std::string::npos);
+}
+
+// A draft (the preview's growth so far) is a PNG of the same size drawn with Cairo's coarser
+// antialiasing, so its edge pixels differ from the finished picture's; an SVG is the same.
+TEST(Render, DraftPngIsCoarserAndTheSameSize) {
+    TempDir dir;
+    sample::Ornament o;
+    RenderOptions fine = outline(300);
+    fine.fit_width = 240;
+    fine.fit_height = 200;
+    fine.stored_png = true;
+    RenderOptions draft = fine;
+    draft.draft = true;
+    const auto read = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    render_to_file(dir / "fine.png", o.pattern, panel(), o.placed, fine);
+    render_to_file(dir / "draft.png", o.pattern, panel(), o.placed, draft);
+    const std::string a = read(dir / "fine.png"), b = read(dir / "draft.png");
+    ASSERT_EQ(a.size(), b.size());                // stored pixels: the same width and height
+    EXPECT_EQ(a.substr(0, 24), b.substr(0, 24));  // signature and IHDR's size
+    EXPECT_NE(a, b);
+    render_to_file(dir / "fine.svg", o.pattern, panel(), o.placed, fine);
+    render_to_file(dir / "draft.svg", o.pattern, panel(), o.placed, draft);
+    EXPECT_EQ(read(dir / "fine.svg"), read(dir / "draft.svg"));
 }

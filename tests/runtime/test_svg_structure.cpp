@@ -6,10 +6,13 @@
 
 #include <acanthus/region.hpp>
 #include <acanthus/render.hpp>
+#include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <pugixml.hpp>
+#include <random>
 #include <set>
 #include <string>
 
@@ -134,6 +137,54 @@ TEST(SvgStructure, NumbersToThePrecisionOfThePageWithoutTrailingZeros) {
     EXPECT_EQ(detail::svg_number(-0.001), "0");
     EXPECT_EQ(detail::svg_number(-3.10), "-3.1");
     EXPECT_EQ(detail::xml_escape("a<b&\"c'>"), "a&lt;b&amp;&quot;c&apos;&gt;");
+}
+
+// svg_number's quick path (an integer scaled in a double) against std::to_chars' fixed format,
+// which it must match byte for byte: page coordinates, values next to a tie at every precision
+// (1.005, 0.125: the binary value decides), negative ones, huge ones.
+TEST(SvgStructure, NumbersAsToCharsRoundsThem) {
+    const auto reference = [](double value, int digits) {
+        char buffer[64];
+        auto [end, ec] =
+            std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, digits);
+        if (ec != std::errc()) return std::string("0");
+        std::string text(buffer, end);
+        if (text.find('.') != std::string::npos) {
+            text.erase(text.find_last_not_of('0') + 1);
+            if (text.back() == '.') text.pop_back();
+        }
+        return text == "-0" ? std::string("0") : text;
+    };
+    std::mt19937_64 random(29);
+    std::uniform_real_distribution<double> page(-50, 5000);
+    std::vector<double> values{0.0,
+                               -0.0,
+                               1.005,
+                               0.125,
+                               -0.125,
+                               2.5,
+                               -2.5,
+                               0.05,
+                               1e-9,
+                               -1e-9,
+                               4503599627370495.5,
+                               1e15,
+                               1e17,
+                               -3e18,
+                               1e300,
+                               5e-324,
+                               0.0049999999999999,
+                               999.9999999,
+                               -999.99995};
+    for (int i = 0; i < 200000; ++i) values.push_back(page(random));
+    for (int i = 0; i < 20000; ++i) {  // ties at 1 to 4 decimals, and their neighbours
+        const double tie = (std::floor(page(random) * 1000) + 0.5) / 1000;
+        values.insert(values.end(), {tie, std::nextafter(tie, 0.0), std::nextafter(tie, 1e9), -tie,
+                                     (std::floor(tie * 10) + 0.5) / 10});
+    }
+    for (double v : values)
+        for (int digits = 0; digits <= 9; ++digits)
+            ASSERT_EQ(detail::svg_number(v, digits), reference(v, digits)) << v << " " << digits;
 }
 
 TEST(SvgStructure, FallbackIdsArePrefixed) {

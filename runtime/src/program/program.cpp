@@ -466,6 +466,10 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     view_options.fit_width = o.view_width;
     view_options.fit_height = o.view_height;
     view_options.stored_png = true;
+    // The growth so far, replaced within a tenth of a second: drawn in draft, so that the copies
+    // drawing it take less of the cores the growth and the viewer need.
+    RenderOptions partial_options = view_options;
+    partial_options.draft = true;
     long frames_written = 0, last_frame_iteration = -1;
     PartialPictures partials(o.partial, o.partial_every, o.body_time_limit);
     if (!o.frames_dir.empty() || !o.partial.empty()) {
@@ -483,7 +487,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
             for (const RuleStats& r : engine.stats().rules) placed += r.successes;
             if (partials.due(placed))
                 partials.write(placed, [&](const std::string& path) {
-                    render_to_file(path, pattern, region, elements, view_options);
+                    render_to_file(path, pattern, region, elements, partial_options);
                 });
         });
     }
@@ -496,7 +500,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         const std::function<void(const std::string&, const std::vector<const Element*>&)> draw;
     } body_partials{partials, engine,
                     [&](const std::string& path, const std::vector<const Element*>& elements) {
-                        render_to_file(path, pattern, region, elements, view_options);
+                        render_to_file(path, pattern, region, elements, partial_options);
                     }};
     const auto body_partial = [](void* context, long placed, const PartialElements& extra) {
         BodyPartials& b = *static_cast<BodyPartials*>(context);
