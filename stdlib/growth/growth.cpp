@@ -10,6 +10,7 @@
 #include <cmath>
 #include <future>
 #include <stdexcept>
+#include <system_error>
 
 #include "fidelity.hpp"
 #include "geometry/coordinate_range.hpp"
@@ -172,13 +173,18 @@ SynthesisResult synthesize(const Reference& reference, const Region& region, con
     // the thread is at it, waits for the one result. What the thread throws is thrown again
     // where the synthesis asks.
     std::future<void> profile;
-    if (reference.data().elements.size() >= kHugeReference)
-        profile = std::async(std::launch::async, [&reference] {
-            try {
-                detail::profile_of(reference.data());
-            } catch (...) {
-            }
-        });
+    if (reference.data().elements.size() >= kHugeReference) {
+        try {
+            profile = std::async(std::launch::async, [&reference] {
+                try {
+                    detail::profile_of(reference.data());
+                } catch (...) {
+                }
+            });
+        } catch (const std::system_error&) {
+            // No thread to be had (a process limit): the synthesis works it out itself.
+        }
+    }
     detail::check_motif_count(reference.data(), region.area(), options);
     std::vector<Point> points = starts;
     if (points.empty() && options.spray_strokes.empty())
