@@ -1179,3 +1179,62 @@ TEST(CellsFresh, AshlarWalls) {
     for (const char* n : kFresh) files.push_back(fresh(n));
     EXPECT_GT(stone_walls(files, 6), 50);
 }
+
+// Bad facades drawn for the fresh check, each refused naming its shapes: two windows that share a
+// side (no wall between them: they had been merged into one opening and refused as a 0 x 100
+// opening named after one of them), a pointed door whose apex reaches into a round window, one
+// window inside another, an ellipse of no height, a polygon along a line, a post 5 cm wide.
+TEST(CellsFresh, BadFacadesRefused) {
+    auto refused = [](const std::string& body, const std::vector<std::string>& names) {
+        const std::string svg =
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 800 600\">" + body + "</svg>";
+        try {
+            const Facade f = Facade::from_svg_string(svg, "bad.svg");
+            texture(f, brick_tree(), centimetres(), 1);
+        } catch (const acanthus::InputError& e) {
+            const std::string what = e.what();
+            for (const std::string& n : names)
+                EXPECT_NE(what.find("id=\"" + n + "\""), std::string::npos)
+                    << what << " does not name " << n;
+            EXPECT_NE(what.find("bad.svg"), std::string::npos) << what;
+            return;
+        }
+        ADD_FAILURE() << "accepted: " << body;
+    };
+    const std::string wall = "<rect id=\"w\" class=\"wall\" width=\"800\" height=\"600\"/>";
+    refused(wall +
+                "<rect id=\"a\" class=\"window\" x=\"100\" y=\"100\" width=\"100\" "
+                "height=\"100\"/><rect id=\"b\" class=\"window\" x=\"200\" y=\"100\" "
+                "width=\"100\" height=\"100\"/>",
+            {"a", "b"});
+    refused(wall +
+                "<rect id=\"over\" class=\"window\" x=\"100\" y=\"100\" width=\"100\" "
+                "height=\"100\"/><rect id=\"under\" class=\"window\" x=\"120\" y=\"200\" "
+                "width=\"60\" height=\"100\"/>",
+            {"over", "under"});
+    refused(wall +
+                "<path id=\"door\" class=\"door arch pointed\" d=\"M 300 600 V 450 A 100 100 0 0 "
+                "1 350 363.4 A 100 100 0 0 1 400 450 V 600 Z\"/><circle id=\"eye\" "
+                "class=\"window\" cx=\"350\" cy=\"340\" r=\"40\"/>",
+            {"door", "eye"});
+    refused(wall +
+                "<rect id=\"big\" class=\"window\" x=\"100\" y=\"100\" width=\"200\" "
+                "height=\"200\"/><rect id=\"small\" class=\"window\" x=\"150\" y=\"150\" "
+                "width=\"50\" height=\"50\"/>",
+            {"big", "small"});
+    refused(wall +
+                "<ellipse id=\"flat\" class=\"window\" cx=\"300\" cy=\"300\" rx=\"40\" "
+                "ry=\"0\"/>",
+            {"flat"});
+    refused(wall + "<polygon id=\"line\" class=\"window\" points=\"100,100 200,200 300,300\"/>",
+            {"line"});
+    refused("<rect id=\"post\" class=\"wall\" width=\"5\" height=\"600\"/>", {"post"});
+    // Apart by a joint's width: a pier, accepted.
+    const Facade apart = Facade::from_svg_string(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 800 600\">" + wall +
+            "<rect id=\"a\" class=\"window\" x=\"100\" y=\"100\" width=\"100\" height=\"100\"/>"
+            "<rect id=\"b\" class=\"window\" x=\"223.5\" y=\"100\" width=\"100\" "
+            "height=\"100\"/></svg>",
+        "apart.svg");
+    EXPECT_GT(texture(apart, brick_tree(), centimetres(), 1).cells.size(), 100u);
+}
