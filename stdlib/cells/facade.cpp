@@ -172,8 +172,8 @@ Facade Facade::from_shapes(std::vector<FacadeShape> shapes, const std::string& s
     for (std::size_t i = 0; i < shapes.size(); ++i) opening[i] = !is_wall(shapes[i]);
     if (auto [a, b] = detail::overlapping_openings(filled, opening); a >= 0)
         throw InputError(source_name + ": " + describe(shapes[a]) + " and " + describe(shapes[b]) +
-                         ": openings overlap or touch (they are not merged: draw one opening "
-                         "as one shape, or move them apart)");
+                         ": openings overlap (they are not merged: draw one opening as one "
+                         "shape, or move them apart)");
     ClipperLib::Paths opening_union;
     holes.Execute(ClipperLib::ctUnion, opening_union, ClipperLib::pftNonZero,
                   ClipperLib::pftNonZero);

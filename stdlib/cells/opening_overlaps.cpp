@@ -32,18 +32,6 @@ double area_of(const ClipperLib::Paths& paths) {
     return std::abs(a);
 }
 
-// Outer rings of the fill of `a` and `b` together (holes not counted).
-long outlines(const ClipperLib::Paths& a, const ClipperLib::Paths& b = {}) {
-    ClipperLib::Clipper c;
-    c.AddPaths(a, ClipperLib::ptSubject, true);
-    if (!b.empty()) c.AddPaths(b, ClipperLib::ptClip, true);
-    ClipperLib::Paths joined;
-    c.Execute(ClipperLib::ctUnion, joined, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    long n = 0;
-    for (const ClipperLib::Path& r : joined) n += ClipperLib::Orientation(r) ? 1 : 0;
-    return n;
-}
-
 }  // namespace
 
 std::pair<int, int> overlapping_openings(const std::vector<ClipperLib::Paths>& filled,
@@ -61,9 +49,9 @@ std::pair<int, int> overlapping_openings(const std::vector<ClipperLib::Paths>& f
     std::pair<int, int> first{-1, -1};
     for (std::size_t k = 0; k < order.size(); ++k) {
         const Box& a = boxes[order[k]];
-        for (std::size_t m = k + 1; m < order.size() && boxes[order[m]].x0 <= a.x1; ++m) {
+        for (std::size_t m = k + 1; m < order.size() && boxes[order[m]].x0 < a.x1; ++m) {
             const Box& b = boxes[order[m]];
-            if (b.y0 > a.y1 || a.y0 > b.y1) continue;
+            if (b.y0 >= a.y1 || a.y0 >= b.y1) continue;
             ClipperLib::Clipper c;
             c.AddPaths(filled[order[k]], ClipperLib::ptSubject, true);
             c.AddPaths(filled[order[m]], ClipperLib::ptClip, true);
@@ -71,12 +59,7 @@ std::pair<int, int> overlapping_openings(const std::vector<ClipperLib::Paths>& f
             c.Execute(ClipperLib::ctIntersection, common, ClipperLib::pftNonZero,
                       ClipperLib::pftNonZero);
             const double smaller = std::min(area_of(filled[order[k]]), area_of(filled[order[m]]));
-            // Touching along a side: their union is one outline where they were two (no wall
-            // between them to lay a brick in; merged, they were one opening nobody drew).
-            if (!(area_of(common) > 1e-4 * smaller) &&
-                outlines(filled[order[k]], filled[order[m]]) ==
-                    outlines(filled[order[k]]) + outlines(filled[order[m]]))
-                continue;
+            if (!(area_of(common) > 1e-4 * smaller)) continue;
             // The pair first in document order, whatever the sweep met first: one message per file.
             std::pair<int, int> pair{std::min(order[k], order[m]), std::max(order[k], order[m])};
             if (first.first < 0 || pair < first) first = pair;

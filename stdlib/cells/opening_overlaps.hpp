@@ -8,8 +8,7 @@
 namespace acanthus::cells::detail {
 
 // The first pair (i, j), i < j, of shapes marked in `opening` whose fills share area (more than
-// a ten-thousandth of the smaller one) or a stretch of outline (their union one outline where
-// they were two: no wall between them); {-1, -1} when none.
+// a ten-thousandth of the smaller one: shapes that only touch pass); {-1, -1} when none.
 std::pair<int, int> overlapping_openings(const std::vector<ClipperLib::Paths>& filled,
                                          const std::vector<bool>& opening);
 
