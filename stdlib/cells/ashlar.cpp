@@ -144,16 +144,20 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
             const int held = owner[static_cast<std::size_t>(row * grid.units() + u)];
             if (s == detail::kOutside) continue;
             const Rect unit = grid.cell(row, u, u + 1);
-            if (held <= -2 && s == detail::kFull) {
+            if (held <= -2) {
                 // What a voussoir or skewback leaves of a unit holding its centre: a plumb strip
                 // laid alone would stand on end, so one worth a stone joins one of the layout,
                 // cut to the skewback, and counts as narrow as it is. Pieces cut to a curve are
-                // laid alone, as before.
+                // laid alone, as before. A strip is read by its area against its box (a corner of
+                // a voussoir's extrados may notch its top), also in a unit the opening reaches
+                // into (beside a segmental arch's skewback at its springing, a strip 1.4 cm wide
+                // stood on end).
                 const std::vector<std::vector<Point>> left =
                     occupancy.free_part(detail::polygon_of(unit));
-                Rect strip;
+                const Rect strip = left.size() == 1 ? detail::bounds_of(left[0]) : Rect{};
                 if (const double part = wall_part(occupancy, unit);
-                    part > 0.1 && left.size() == 1 && detail::axis_rect(left[0], strip) &&
+                    part > 0.1 && left.size() == 1 &&
+                    std::abs(detail::area_of(left[0])) >= 0.8 * strip.width() * strip.height() &&
                     strip.y1 - strip.y0 > 1.1 * (strip.x1 - strip.x0)) {
                     rules.free(row, u);
                     rules.cut(row, u, part);
