@@ -1112,6 +1112,8 @@ TEST(CellsFresh, BrickWalls) {
                 const Texture t = texture(f, tree, o, 1);
                 MasonReport m;
                 const std::vector<std::string> v = faults(f, t.cells, kCm, &m, k);
+                std::cout << name << " " << to_string(bond) << " " << tree_name << ": " << m
+                          << "\n";
                 SCOPED_TRACE(std::string(name) + " " + std::string(to_string(bond)) + " " +
                              tree_name);
                 EXPECT_TRUE(v.empty()) << list(v);
