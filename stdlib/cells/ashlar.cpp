@@ -237,15 +237,35 @@ Generator ashlar() {
         if (f.kind == FeatureKind::corner) {
             const Corner& k = facade.corners()[static_cast<std::size_t>(f.index)];
             if (rules && !k.convex) return;  // the face's layout takes it
-            Point p = detail::inside_corner(k, inset);
-            int row = grid.row_at(p.y), u = grid.unit_at(p.x);
-            if (row < 0 || u < 0) return;
-            int u0 = u, u1 = u + 1;
-            if (rules) {  // a stone two units long, lying along the course into the wall
-                const int v = p.x >= k.position.x ? u + 1 : u - 1;
-                if (v >= 0 && v < grid.units() && grid.at(row, v) != detail::kOutside)
+            // A corner's stone: its row and units, two long along the course into the wall
+            // with the joint rules.
+            auto corner_stone = [&](const Corner& at, int& row, int& u0, int& u1) {
+                const Point p = detail::inside_corner(at, inset);
+                row = grid.row_at(p.y);
+                const int u = grid.unit_at(p.x);
+                if (row < 0 || u < 0) return false;
+                u0 = u, u1 = u + 1;
+                const int v = p.x >= at.position.x ? u + 1 : u - 1;
+                if (rules && v >= 0 && v < grid.units() && grid.at(row, v) != detail::kOutside)
                     u0 = std::min(u, v), u1 = std::max(u, v) + 1;
-            }
+                return true;
+            };
+            int row = 0, u0 = 0, u1 = 0;
+            if (!corner_stone(k, row, u0, u1)) return;
+            // One unit left between this stone and another corner's to its right in the row
+            // (the wall's end and a door's jamb at the ground): that unit alone would stand on
+            // end, so this stone takes it.
+            if (rules && u1 - u0 < std::max(1, o.ashlar_max_width) && u1 < grid.units() &&
+                grid.at(row, u1) == detail::kFull)
+                for (int j : facade.faces()[static_cast<std::size_t>(face)].corners) {
+                    const Corner& other = facade.corners()[static_cast<std::size_t>(j)];
+                    int r2 = 0, a = 0, b = 0;
+                    if (j != f.index && other.convex && corner_stone(other, r2, a, b) &&
+                        r2 == row && a == u1 + 1) {
+                        ++u1;
+                        break;
+                    }
+                }
             c.place(detail::polygon_of(grid.cell(row, u0, u1)), grid.course(row));
             return;
         }
