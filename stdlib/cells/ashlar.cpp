@@ -144,16 +144,20 @@ void rules_face(int face, const CourseGrid& grid, Context& c) {
             const int held = owner[static_cast<std::size_t>(row * grid.units() + u)];
             if (s == detail::kOutside) continue;
             const Rect unit = grid.cell(row, u, u + 1);
-            if (held <= -2 && s == detail::kFull) {
+            if (held <= -2) {
                 // What a voussoir or skewback leaves of a unit holding its centre: a plumb strip
                 // laid alone would stand on end, so one worth a stone joins one of the layout,
                 // cut to the skewback, and counts as narrow as it is. Pieces cut to a curve are
-                // laid alone, as before.
+                // laid alone, as before. A strip is read by its area against its box (a corner of
+                // a voussoir's extrados may notch its top), also in a unit the opening reaches
+                // into (beside a segmental arch's skewback at its springing, a strip 1.4 cm wide
+                // stood on end).
                 const std::vector<std::vector<Point>> left =
                     occupancy.free_part(detail::polygon_of(unit));
-                Rect strip;
+                const Rect strip = left.size() == 1 ? detail::bounds_of(left[0]) : Rect{};
                 if (const double part = wall_part(occupancy, unit);
-                    part > 0.1 && left.size() == 1 && detail::axis_rect(left[0], strip) &&
+                    part > 0.1 && left.size() == 1 &&
+                    std::abs(detail::area_of(left[0])) >= 0.8 * strip.width() * strip.height() &&
                     strip.y1 - strip.y0 > 1.1 * (strip.x1 - strip.x0)) {
                     rules.free(row, u);
                     rules.cut(row, u, part);
@@ -233,15 +237,35 @@ Generator ashlar() {
         if (f.kind == FeatureKind::corner) {
             const Corner& k = facade.corners()[static_cast<std::size_t>(f.index)];
             if (rules && !k.convex) return;  // the face's layout takes it
-            Point p = detail::inside_corner(k, inset);
-            int row = grid.row_at(p.y), u = grid.unit_at(p.x);
-            if (row < 0 || u < 0) return;
-            int u0 = u, u1 = u + 1;
-            if (rules) {  // a stone two units long, lying along the course into the wall
-                const int v = p.x >= k.position.x ? u + 1 : u - 1;
-                if (v >= 0 && v < grid.units() && grid.at(row, v) != detail::kOutside)
+            // A corner's stone: its row and units, two long along the course into the wall
+            // with the joint rules.
+            auto corner_stone = [&](const Corner& at, int& row, int& u0, int& u1) {
+                const Point p = detail::inside_corner(at, inset);
+                row = grid.row_at(p.y);
+                const int u = grid.unit_at(p.x);
+                if (row < 0 || u < 0) return false;
+                u0 = u, u1 = u + 1;
+                const int v = p.x >= at.position.x ? u + 1 : u - 1;
+                if (rules && v >= 0 && v < grid.units() && grid.at(row, v) != detail::kOutside)
                     u0 = std::min(u, v), u1 = std::max(u, v) + 1;
-            }
+                return true;
+            };
+            int row = 0, u0 = 0, u1 = 0;
+            if (!corner_stone(k, row, u0, u1)) return;
+            // One unit left between this stone and another corner's to its right in the row
+            // (the wall's end and a door's jamb at the ground): that unit alone would stand on
+            // end, so this stone takes it.
+            if (rules && u1 - u0 < std::max(1, o.ashlar_max_width) && u1 < grid.units() &&
+                grid.at(row, u1) == detail::kFull)
+                for (int j : facade.faces()[static_cast<std::size_t>(face)].corners) {
+                    const Corner& other = facade.corners()[static_cast<std::size_t>(j)];
+                    int r2 = 0, a = 0, b = 0;
+                    if (j != f.index && other.convex && corner_stone(other, r2, a, b) &&
+                        r2 == row && a == u1 + 1) {
+                        ++u1;
+                        break;
+                    }
+                }
             c.place(detail::polygon_of(grid.cell(row, u0, u1)), grid.course(row));
             return;
         }

@@ -336,82 +336,114 @@ void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
     };
     const double quarter = q - m / 4;
     // Head joints of a row (centres), as laid now.
+    // Head joints of a row (centres), as laid now, each with the room it needs: a joint beside a
+    // piece cut at a jamb a few millimetres off whole quarters (not laid again) may still move
+    // when the piece is placed (laid whole against a reveal, context.cpp), by up to half a
+    // quarter joint.
+    const double margin = std::min(m / 4, tol) / 2;
     auto joints = [&](std::size_t r) {
-        std::vector<double> out;
+        std::vector<std::pair<double, double>> out;
         const auto& ps = layout.rows[r];
-        for (std::size_t k = 0; k + 1 < ps.size(); ++k)
-            if (ps[k].start + ps[k].length == ps[k + 1].start)
-                out.push_back((layout.drawn(static_cast<int>(r), static_cast<int>(k)).x1 +
-                               layout.drawn(static_cast<int>(r), static_cast<int>(k + 1)).x0) /
-                              2);
+        const int row = static_cast<int>(r);
+        for (std::size_t k = 0; k + 1 < ps.size(); ++k) {
+            if (ps[k].start + ps[k].length != ps[k + 1].start) continue;
+            const int a = static_cast<int>(k), b = a + 1;
+            // Only a piece a few millimetres off whole quarters is laid whole (nominal_at_jamb).
+            auto moves = [&](std::size_t i) {
+                if (ps[i].full || relaid_at(layout, row, static_cast<int>(i))) return false;
+                // The piece as the face cuts it: its claim to the jamb it stops at.
+                const Rect c = layout.rect(row, static_cast<int>(i));
+                double lo = c.x0, hi = c.x1, x = 0;
+                if (jamb_at(row, ps[i].start, true, x)) lo = std::max(lo, x);
+                if (jamb_at(row, ps[i].start + ps[i].length - 1, false, x)) hi = std::min(hi, x);
+                const double w = hi - lo - m;
+                const double off = std::abs(w + m - std::round((w + m) / q) * q);
+                return off > eps && off <= h + eps;
+            };
+            const bool cut = moves(k) || moves(k + 1);
+            out.push_back(
+                {(layout.drawn(row, a).x1 + layout.drawn(row, b).x0) / 2, cut ? margin : 0.0});
+        }
         return out;
     };
-    for (std::size_t rr = layout.rows.size(); rr-- > 0;) {  // bottom course first
-        const int row = static_cast<int>(rr);
-        const auto& ps = layout.rows[rr];
-        for (std::size_t a = 0; a < ps.size();) {
-            std::size_t b = a + 1;
-            while (b < ps.size() && ps[b - 1].start + ps[b - 1].length == ps[b].start) ++b;
-            const std::size_t n = b - a;
-            bool bricks = n >= 2;
-            for (std::size_t k = a; k < b; ++k)
-                bricks &=
-                    !ps[k].fixed() && !ps[k].sill && ((k > a && k + 1 < b) ? ps[k].full : true);
-            double xl = 0, xr = 0;
-            const int u0 = ps[a].start, u1 = ps[b - 1].start + ps[b - 1].length - 1;
-            const std::size_t a0 = a;
-            a = b;
-            if (!bricks || !jamb_at(row, u0, true, xl) || !jamb_at(row, u1, false, xr)) continue;
-            bool near_head = false;
-            for (const Rect& hb : heads)
-                near_head |= hb.x0 < xr && hb.x1 > xl && hb.y0 < g.ys[rr + 1] && hb.y1 > g.ys[rr];
-            if (near_head) continue;
-            const double w = xr - xl;
-            const int total = static_cast<int>(std::lround(w / q));
-            // Whole: a pier already flush at both jambs is left as it is.
-            const bool on_lines = std::abs(xl - g.xs[static_cast<std::size_t>(u0)]) <= eps &&
-                                  std::abs(xr - g.xs[static_cast<std::size_t>(u1 + 1)]) <= eps;
-            if (on_lines || total < 2 ||
-                std::abs(w - total * q) > static_cast<double>(n - 1) * tol + eps)
-                continue;
-            // The left piece to the nearer whole quarter: what of its first unit lies in the face.
-            const double inside = (g.xs[static_cast<std::size_t>(u0) + 1] - xl) /
-                                  (g.xs[static_cast<std::size_t>(u0) + 1] - g.xs[u0]);
-            std::vector<int> len;
-            int inner = 0;
-            for (std::size_t k = a0; k < b; ++k) len.push_back(ps[k].length);
-            for (std::size_t k = 1; k + 1 < n; ++k) inner += len[k];
-            len[0] = len[0] - 1 + (inside >= 0.5 - 1e-9 ? 1 : 0);
-            len[n - 1] = total - inner - len[0];
-            if (len[0] < 1 || len[n - 1] < 1 || len[0] > 4 || len[n - 1] > 4) continue;
-            const double extra = (w - total * q) / static_cast<double>(n - 1);
-            std::vector<Rect> laid;
-            std::vector<double> mine;
-            double x = xl + h;
-            const double y0 = layout.drawn(row, static_cast<int>(a0 + 1)).y0,
-                         y1 = layout.drawn(row, static_cast<int>(a0 + 1)).y1;
-            for (std::size_t k = 0; k < n; ++k) {
-                const double wk = len[k] * q - m;
-                laid.push_back({x, y0, x + wk, y1});
-                x += wk + m + extra;
-                if (k + 1 < n) mine.push_back(x - h - extra / 2);
-            }
-            // No joint brought within a quarter brick of one in the course below or above.
-            bool clear = true;
-            for (std::size_t nb : {rr + 1, rr - 1}) {
-                if (layout.bond.bond == Bond::stack) break;
-                if (nb >= layout.rows.size()) continue;
-                for (double j : joints(nb))
-                    for (double i : mine) clear &= std::abs(i - j) >= quarter - eps;
-            }
-            if (!clear) continue;
-            for (std::size_t k = 0; k < n; ++k) {
-                // Its claim: to the middle of its joints, so that what another generator
-                // took first cuts it and not its neighbour.
-                Rect c = layout.rect(row, static_cast<int>(a0 + k));
-                c.x0 = k == 0 ? xl : laid[k].x0 - h - extra / 2;
-                c.x1 = k + 1 == n ? xr : laid[k].x1 + h + extra / 2;
-                layout.relaid[rr][a0 + k] = {laid[k], c};
+    // Bottom course first, in passes until none changes: a run judged against a course not yet
+    // laid again (its joints still on the unit lines) is judged again against it as relaid (a
+    // pier in header bond: every other course kept a cut piece whose joint came 5.36 cm under
+    // the relaid course's, a straight joint).
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t rr = layout.rows.size(); rr-- > 0;) {
+            const int row = static_cast<int>(rr);
+            const auto& ps = layout.rows[rr];
+            for (std::size_t a = 0; a < ps.size();) {
+                std::size_t b = a + 1;
+                while (b < ps.size() && ps[b - 1].start + ps[b - 1].length == ps[b].start) ++b;
+                const std::size_t n = b - a;
+                bool bricks = n >= 2;
+                for (std::size_t k = a; k < b; ++k)
+                    bricks &=
+                        !ps[k].fixed() && !ps[k].sill && ((k > a && k + 1 < b) ? ps[k].full : true);
+                double xl = 0, xr = 0;
+                const int u0 = ps[a].start, u1 = ps[b - 1].start + ps[b - 1].length - 1;
+                const std::size_t a0 = a;
+                a = b;
+                if (!bricks || relaid_at(layout, row, static_cast<int>(a0)) ||
+                    !jamb_at(row, u0, true, xl) || !jamb_at(row, u1, false, xr))
+                    continue;
+                bool near_head = false;
+                for (const Rect& hb : heads)
+                    near_head |=
+                        hb.x0 < xr && hb.x1 > xl && hb.y0 < g.ys[rr + 1] && hb.y1 > g.ys[rr];
+                if (near_head) continue;
+                const double w = xr - xl;
+                const int total = static_cast<int>(std::lround(w / q));
+                // Whole: a pier already flush at both jambs is left as it is.
+                const bool on_lines = std::abs(xl - g.xs[static_cast<std::size_t>(u0)]) <= eps &&
+                                      std::abs(xr - g.xs[static_cast<std::size_t>(u1 + 1)]) <= eps;
+                if (on_lines || total < 2 ||
+                    std::abs(w - total * q) > static_cast<double>(n - 1) * tol + eps)
+                    continue;
+                // The left piece to the nearer whole quarter: what of its first unit lies in the
+                // face.
+                const double inside = (g.xs[static_cast<std::size_t>(u0) + 1] - xl) /
+                                      (g.xs[static_cast<std::size_t>(u0) + 1] - g.xs[u0]);
+                std::vector<int> len;
+                int inner = 0;
+                for (std::size_t k = a0; k < b; ++k) len.push_back(ps[k].length);
+                for (std::size_t k = 1; k + 1 < n; ++k) inner += len[k];
+                len[0] = len[0] - 1 + (inside >= 0.5 - 1e-9 ? 1 : 0);
+                len[n - 1] = total - inner - len[0];
+                if (len[0] < 1 || len[n - 1] < 1 || len[0] > 4 || len[n - 1] > 4) continue;
+                const double extra = (w - total * q) / static_cast<double>(n - 1);
+                std::vector<Rect> laid;
+                std::vector<double> mine;
+                double x = xl + h;
+                const double y0 = layout.drawn(row, static_cast<int>(a0 + 1)).y0,
+                             y1 = layout.drawn(row, static_cast<int>(a0 + 1)).y1;
+                for (std::size_t k = 0; k < n; ++k) {
+                    const double wk = len[k] * q - m;
+                    laid.push_back({x, y0, x + wk, y1});
+                    x += wk + m + extra;
+                    if (k + 1 < n) mine.push_back(x - h - extra / 2);
+                }
+                // No joint brought within a quarter brick of one in the course below or above.
+                bool clear = true;
+                for (std::size_t nb : {rr + 1, rr - 1}) {
+                    if (layout.bond.bond == Bond::stack) break;
+                    if (nb >= layout.rows.size()) continue;
+                    for (auto [j, room] : joints(nb))
+                        for (double i : mine) clear &= std::abs(i - j) >= quarter + room - eps;
+                }
+                if (!clear) continue;
+                for (std::size_t k = 0; k < n; ++k) {
+                    // Its claim: to the middle of its joints, so that what another generator
+                    // took first cuts it and not its neighbour.
+                    Rect c = layout.rect(row, static_cast<int>(a0 + k));
+                    c.x0 = k == 0 ? xl : laid[k].x0 - h - extra / 2;
+                    c.x1 = k + 1 == n ? xr : laid[k].x1 + h + extra / 2;
+                    layout.relaid[rr][a0 + k] = {laid[k], c};
+                }
+                changed = true;
             }
         }
     }

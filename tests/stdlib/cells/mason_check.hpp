@@ -81,6 +81,7 @@ struct MasonReport {
     std::vector<Point> four_way_at;
     long stones_on_end = 0;      // a tenth taller than wide (a square on a stretched grid is not),
                                  // away from a jamb or the wall's end
+    std::vector<Point> on_end_at;  // their top left corners
     long pier_stones = 0;        // of those not counted: a pier between two stones of another
                                  // generator (lintels' bearings, sills' lugs) of its height
     long unit_square_pairs = 0;  // two stones of about one grid unit sharing a side
@@ -434,6 +435,7 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             }
             r.pier_stones += !jamb && left && right;
             r.stones_on_end += !jamb && !(left && right);
+            if (!jamb && !(left && right)) r.on_end_at.push_back({b.x0, b.y0});
         }
         auto unit_square = [&](const Rect& b) {
             return b.width() < 1.5 * unit && b.height() < 1.5 * unit;

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""The mason's checker summed over the 300 brick walls (20 facades x 5 bonds x 3 trees, seed 1).
+"""The mason's checker summed over the 420 brick walls (28 facades x 5 bonds x 3 trees, seed 1).
 
 Runs the cells test binary's per-wall checks (CellsMason.ExampleFacades/UnseenFacades,
-CellsUnseen.BrickWalls/NewFacadesForTheJambCheck), reads the report line each prints per wall and
+CellsUnseen.BrickWalls/NewFacadesForTheJambCheck, CellsFresh.BrickWalls), reads the report line each prints per wall and
 sums odd pieces, the ones the geometry does not force, straight joints and narrow pieces, by
 bond; with --walls, one line per wall (to diff two builds).
 
@@ -14,7 +14,8 @@ import subprocess
 import sys
 
 RUNS = (("test_cells_mason", "CellsMason.ExampleFacades:CellsMason.UnseenFacades"),
-        ("test_cells_unseen_check", "CellsUnseen.BrickWalls:CellsUnseen.NewFacadesForTheJambCheck"))
+        ("test_cells_unseen_check",
+         "CellsUnseen.BrickWalls:CellsUnseen.NewFacadesForTheJambCheck:CellsFresh.BrickWalls"))
 LINE = re.compile(r"^([\w-]+) (running|english|flemish|header|stack) (\w+): (straight .*)$")
 
 
