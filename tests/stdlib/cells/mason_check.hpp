@@ -79,13 +79,13 @@ struct MasonReport {
     long stones = 0;
     long four_way = 0;  // points where four stones meet
     std::vector<Point> four_way_at;
-    long stones_on_end = 0;      // a tenth taller than wide (a square on a stretched grid is not),
-                                 // away from a jamb or the wall's end
+    long stones_on_end = 0;  // a tenth taller than wide (a square on a stretched grid is not),
+                             // away from a jamb or the wall's end
     std::vector<Point> on_end_at;  // their top left corners
-    long pier_stones = 0;        // of those not counted: a pier between two stones of another
-                                 // generator (lintels' bearings, sills' lugs) of its height
-    long unit_square_pairs = 0;  // two stones of about one grid unit sharing a side
-    long unit_square_runs = 0;   // three or more in a line (counted by their middle ones)
+    long pier_stones = 0;          // of those not counted: a pier between two stones of another
+                                   // generator (lintels' bearings, sills' lugs) of its height
+    long unit_square_pairs = 0;    // two stones of about one grid unit sharing a side
+    long unit_square_runs = 0;     // three or more in a line (counted by their middle ones)
     // King closers (Cell::piece): three quarters of a brick on the face, against a reveal (a
     // plumb side of the wall or an opening) or a quoin, a stretcher (or an opening's head) beside
     // them in the course.
