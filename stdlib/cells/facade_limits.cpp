@@ -8,6 +8,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "facade_data.hpp"
 #include "relieving_arch.hpp"
@@ -79,23 +80,46 @@ void check_limits(const Facade& facade, const Options& o) {
     // An opening smaller than a tenth of a brick's face, or narrower than a joint, cannot be
     // left in brickwork (no piece that small is cut, and cells have no holes): a drawing error,
     // named rather than covered by a brick.
-    std::map<std::string, Rect> boxes;
-    for (const Edge& e : facade.edges()) {
+    // One box per outline (edges joined at corners), not per name: two shapes drawn touching
+    // are one opening, and the part of the outline one of them keeps may be a line.
+    const std::vector<Edge>& edges = facade.edges();
+    std::vector<std::size_t> root(edges.size());
+    for (std::size_t i = 0; i < root.size(); ++i) root[i] = i;
+    auto find = [&](std::size_t i) {
+        while (root[i] != i) i = root[i] = root[root[i]];
+        return i;
+    };
+    std::map<int, std::size_t> at_corner;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        if (!edges[i].opening) continue;
+        for (int c : {edges[i].corner_start, edges[i].corner_end}) {
+            if (c < 0) continue;
+            auto [it, fresh] = at_corner.try_emplace(c, i);
+            if (!fresh) root[find(i)] = find(it->second);
+        }
+    }
+    std::map<std::size_t, std::pair<std::string, Rect>> boxes;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        const Edge& e = edges[i];
         if (!e.opening) continue;
-        auto [it, fresh] = boxes.try_emplace(names_of(e), e.bounds);
-        Rect& b = it->second;
-        if (!fresh)
-            b = {std::min(b.x0, e.bounds.x0), std::min(b.y0, e.bounds.y0),
-                 std::max(b.x1, e.bounds.x1), std::max(b.y1, e.bounds.y1)};
+        auto [it, fresh] = boxes.try_emplace(find(i), names_of(e), e.bounds);
+        auto& [names, b] = it->second;
+        if (fresh) continue;
+        if (const std::string n = names_of(e); names.find(n) == std::string::npos)
+            names += "\" and \"" + n;
+        b = {std::min(b.x0, e.bounds.x0), std::min(b.y0, e.bounds.y0), std::max(b.x1, e.bounds.x1),
+             std::max(b.y1, e.bounds.y1)};
     }
     const double face = o.brick_length * o.brick_height;
-    for (const auto& [names, b] : boxes)
+    for (const auto& [root_edge, box] : boxes) {
+        const auto& [names, b] = box;
         if (b.width() * b.height() < 0.1 * face || std::min(b.width(), b.height()) < o.mortar)
             throw InputError(
                 facade.name() + ": the opening \"" + names + "\" (" + number(b.width()) + " x " +
                 number(b.height()) +
                 ") is smaller than a tenth of a brick's face or narrower than a "
                 "joint: no brickwork can be cut round it; remove it or draw it to size");
+    }
     // A relieving arch stands over a lintel: an opening labelled so needs a straight level head,
     // wide enough that the arch rises a course over it.
     std::map<std::string, std::pair<const Edge*, bool>> relief;  // a straight head, an arc

@@ -174,6 +174,36 @@ TEST(CellsFacade, ThinAndHugeWallsRefusedBeforeLaying) {
     EXPECT_NE(refusal(row_house()).find("cells_max_cells must be at least 1"), std::string::npos);
 }
 
+// Two windows drawn side by side, sharing a side, are one opening as wide as both (as a door
+// and its fanlight drawn apart are one); each name's share of the outline is no opening size.
+TEST(CellsFacade, WindowsDrawnSideBySideAreLaidAsOneOpening) {
+    auto laid = [](const std::vector<FacadeShape>& shapes, std::string& error) {
+        try {
+            Options o;
+            return texture(Facade::from_shapes(shapes, "pair.svg"), brick_tree(), o, 1)
+                .cells.size();
+        } catch (const acanthus::InputError& e) {
+            error = e.what();
+        }
+        return std::size_t{0};
+    };
+    std::string error;
+    EXPECT_GT(laid({shape(rect(0, 0, 4000, 3000), {"wall"}, "front"),
+                    shape(rect(1000, 1000, 800, 1000), {"window"}, "w1"),
+                    shape(rect(1800, 1000, 800, 1000), {"window"}, "w2")},
+                   error),
+              0u)
+        << error;
+    // A speck beside a window, not touching it, is still refused by its own name.
+    error.clear();
+    laid({shape(rect(0, 0, 4000, 3000), {"wall"}, "front"),
+          shape(rect(1000, 1000, 800, 1000), {"window"}, "w1"),
+          shape(rect(1900, 1000, 1, 1), {"window"}, "speck")},
+         error);
+    EXPECT_NE(error.find("\"window speck\""), std::string::npos) << error;
+    EXPECT_EQ(error.find("w1"), std::string::npos) << error;
+}
+
 TEST(CellsFacade, EdgeOccupancyMergesIntervals) {
     EdgeOccupancy e(10);
     e.claim(2, 3);
