@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -84,8 +85,11 @@ void record_niceness_in_copies(Canvas&, const Element&) {
     errno = 0;
     const int nice = ::getpriority(PRIO_PROCESS, 0);
     const auto now = std::chrono::steady_clock::now().time_since_epoch();
-    std::ofstream(niceness_dir + "/nice-" + std::to_string(::getpid()))
+    const std::string name = niceness_dir + "/nice-" + std::to_string(::getpid());
+    // (renamed into place: a copy stopped while writing leaves only its temporary)
+    std::ofstream(name + ".tmp")
         << std::chrono::duration_cast<std::chrono::nanoseconds>(now).count() << " " << nice;
+    std::rename((name + ".tmp").c_str(), name.c_str());
 }
 // ... and one that fails in every process.
 void throw_in_draw(Canvas&, const Element&) { throw std::runtime_error("drawn badly"); }
@@ -521,6 +525,7 @@ TEST_F(Program, LaterPartialPictureCopiesRunNicer) {
     ASSERT_EQ(o.code, 0) << o.err;
     std::vector<std::pair<long long, int>> copies;  // (when it drew, niceness)
     for (const auto& e : fs::directory_iterator(path("nice"))) {
+        if (e.path().extension() == ".tmp") continue;
         std::istringstream line(read(e.path().string()));
         long long when = 0;
         int nice = 0;
