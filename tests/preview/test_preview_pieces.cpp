@@ -670,5 +670,71 @@ TEST(PreviewBuild, SplitUnitsCompiledWithTheirHeaderPrecompiled) {
     EXPECT_EQ(count("c++-header"), 0);
 }
 
+// A rule body that gains a line moves the #line numbers of the %source after it in the header:
+// the header precompiled before is still the same code, and the changed rule is compiled with
+// it, not with the header's text again. A header that uses its line numbers (__LINE__) is not.
+TEST(PreviewBuild, UnitHeaderPrecompiledKeptWhenOnlyItsLinesMove) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
+    std::string error;
+    const test::TempDir dir("split-header-lines");
+    const CacheDirFor cache(dir.path().string());
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
+    std::vector<std::vector<std::string>> ran;
+    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
+        ran.push_back(argv);
+        return run_process(argv, e);
+    };
+    const auto header_at = [](int line, const std::string& body) {
+        return "#line " + std::to_string(line) + " \"p.acr\"\n" + body + "#line 9 \"p.cpp\"\n";
+    };
+    const auto units_with = [](const std::string& header, int n) {
+        return std::vector<std::string>{
+            "extern \"C\" int tables_part() { return 1; }\n",
+            header + "extern \"C\" int code_part() { return twice(10); }\n",
+            header + "extern \"C\" int rule_part() { return twice(" + std::to_string(n) + "); }\n"};
+    };
+    const auto count = [&](const std::string& word) {
+        int n = 0;
+        for (const auto& argv : ran) n += std::find(argv.begin(), argv.end(), word) != argv.end();
+        return n;
+    };
+    const auto sum = [](const std::string& library) {
+        void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle) return -1;
+        int total = 0;
+        for (const char* name : {"tables_part", "code_part", "rule_part"})
+            if (auto f = reinterpret_cast<int (*)()>(dlsym(handle, name))) total += f();
+        dlclose(handle);
+        return total;
+    };
+    for (const std::string& body : {std::string("inline int twice(int x) { return 2 * x; }\n"),
+                                    std::string("inline int twice(int x) { return 2 * x + "
+                                                "(__LINE__ - __LINE__); }\n")}) {
+        const bool uses_lines = body.find("__LINE__") != std::string::npos;
+        std::string library;
+        bool splittable = true;
+        options.precompile_unit_header = true;
+        options.unit_header = header_at(40, body);
+        std::vector<std::string> units = units_with(options.unit_header, 100);
+        ASSERT_TRUE(
+            cached_split_library(toolchain, options, "l", units, library, splittable, error))
+            << error;
+        ASSERT_EQ(sum(library), 221);
+        // The save: a line more in a rule above the %source; the rule changed too.
+        ran.clear();
+        options.precompile_unit_header = false;
+        options.unit_header = header_at(41, body);
+        units = units_with(options.unit_header, 101);
+        ASSERT_TRUE(
+            cached_split_library(toolchain, options, "l", units, library, splittable, error))
+            << error;
+        EXPECT_EQ(sum(library), 223);
+        EXPECT_EQ(count("c++-header"), 0);
+        EXPECT_EQ(count("-include-pch"), uses_lines ? 0 : 1) << body;
+    }
+}
+
 }  // namespace
 }  // namespace acanthus
