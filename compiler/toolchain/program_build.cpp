@@ -443,6 +443,10 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
     BuildOptions code_options = options;
     if (!options.code_unit_optimization.empty())
         code_options.optimization = options.code_unit_optimization;
+    // The precompiled prelude is made at the ordinary level, and clang refuses a .gch made with
+    // other predefined macros (__OPTIMIZE__): the code unit at a level of its own includes the
+    // prelude's headers itself, as every generated unit does.
+    if (code_options.optimization != options.optimization) code_options.precompiled_header.clear();
     const auto key_of = [&](std::size_t k, const BuildOptions& level) {
         std::vector<std::string> parts = object_command(toolchain, level, "SOURCE", "OBJECT");
         parts.push_back(file_identity(toolchain.runtime_library));

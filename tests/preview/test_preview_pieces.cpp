@@ -25,6 +25,7 @@
 #include "server/settings.hpp"
 #include "server/stroke_tools.hpp"
 #include "server/watcher.hpp"
+#include "toolchain/precompiled_prelude.hpp"
 #include "toolchain/process.hpp"
 #include "toolchain/program_build.hpp"
 #include "toolchain/toolchain.hpp"
@@ -734,6 +735,57 @@ TEST(PreviewBuild, UnitHeaderPrecompiledKeptWhenOnlyItsLinesMove) {
         EXPECT_EQ(count("c++-header"), 0);
         EXPECT_EQ(count("-include-pch"), uses_lines ? 0 : 1) << body;
     }
+}
+
+// The code unit at its own level with the precompiled prelude: the prelude's .gch was made at
+// the ordinary level, which clang refuses for another (__OPTIMIZE__ differs), so the optimised
+// code unit is compiled without it and builds (it failed at every save before: the %draw
+// bodies were never optimised in the preview).
+TEST(PreviewBuild, CodeUnitOptimisedBuildsBesideThePrecompiledPrelude) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
+    std::string error;
+    const test::TempDir dir("split-prelude");
+    const CacheDirFor cache(dir.path().string());
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
+    ASSERT_TRUE(use_precompiled_prelude(toolchain, options, error, "")) << error;
+    ASSERT_FALSE(options.precompiled_header.empty());
+    options.code_unit_optimization = "2";
+    std::vector<std::vector<std::string>> ran;
+    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
+        ran.push_back(argv);
+        return run_process(argv, e);
+    };
+    const std::string includes = "#include <acanthus/rules.hpp>\n#include <string>\n";
+    const std::vector<std::string> units{
+        includes + "extern \"C\" int tables_part() { return 1; }\n",
+        includes + "extern \"C\" int code_part() { return int(std::string(\"ab\").size()); }\n",
+        includes + "extern \"C\" int rule_part() { return 300; }\n"};
+    std::string library;
+    bool splittable = true;
+    ASSERT_TRUE(cached_split_library(toolchain, options, "p", units, library, splittable, error))
+        << error;
+    int at_o2 = 0, at_o0_with_prelude = 0;
+    for (const auto& argv : ran) {
+        if (std::find(argv.begin(), argv.end(), "-c") == argv.end()) continue;
+        const bool prelude =
+            std::find(argv.begin(), argv.end(), options.precompiled_header) != argv.end();
+        if (std::find(argv.begin(), argv.end(), "-O2") != argv.end()) {
+            ++at_o2;
+            EXPECT_FALSE(prelude);
+        } else {
+            at_o0_with_prelude += prelude;
+        }
+    }
+    EXPECT_EQ(at_o2, 1);
+    EXPECT_EQ(at_o0_with_prelude, 2);
+    void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+    ASSERT_NE(handle, nullptr) << dlerror();
+    auto code = reinterpret_cast<int (*)()>(dlsym(handle, "code_part"));
+    ASSERT_NE(code, nullptr);
+    EXPECT_EQ(code(), 2);
+    dlclose(handle);
 }
 
 }  // namespace
