@@ -25,6 +25,7 @@
 #include "server/settings.hpp"
 #include "server/stroke_tools.hpp"
 #include "server/watcher.hpp"
+#include "toolchain/precompiled_prelude.hpp"
 #include "toolchain/process.hpp"
 #include "toolchain/program_build.hpp"
 #include "toolchain/toolchain.hpp"
@@ -668,6 +669,123 @@ TEST(PreviewBuild, SplitUnitsCompiledWithTheirHeaderPrecompiled) {
     ran.clear();
     EXPECT_FALSE(cached_split_library(toolchain, options, "h", units, library, splittable, error));
     EXPECT_EQ(count("c++-header"), 0);
+}
+
+// A rule body that gains a line moves the #line numbers of the %source after it in the header:
+// the header precompiled before is still the same code, and the changed rule is compiled with
+// it, not with the header's text again. A header that uses its line numbers (__LINE__) is not.
+TEST(PreviewBuild, UnitHeaderPrecompiledKeptWhenOnlyItsLinesMove) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
+    std::string error;
+    const test::TempDir dir("split-header-lines");
+    const CacheDirFor cache(dir.path().string());
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
+    std::vector<std::vector<std::string>> ran;
+    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
+        ran.push_back(argv);
+        return run_process(argv, e);
+    };
+    const auto header_at = [](int line, const std::string& body) {
+        return "#line " + std::to_string(line) + " \"p.acr\"\n" + body + "#line 9 \"p.cpp\"\n";
+    };
+    const auto units_with = [](const std::string& header, int n) {
+        return std::vector<std::string>{
+            "extern \"C\" int tables_part() { return 1; }\n",
+            header + "extern \"C\" int code_part() { return twice(10); }\n",
+            header + "extern \"C\" int rule_part() { return twice(" + std::to_string(n) + "); }\n"};
+    };
+    const auto count = [&](const std::string& word) {
+        int n = 0;
+        for (const auto& argv : ran) n += std::find(argv.begin(), argv.end(), word) != argv.end();
+        return n;
+    };
+    const auto sum = [](const std::string& library) {
+        void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle) return -1;
+        int total = 0;
+        for (const char* name : {"tables_part", "code_part", "rule_part"})
+            if (auto f = reinterpret_cast<int (*)()>(dlsym(handle, name))) total += f();
+        dlclose(handle);
+        return total;
+    };
+    for (const std::string& body : {std::string("inline int twice(int x) { return 2 * x; }\n"),
+                                    std::string("inline int twice(int x) { return 2 * x + "
+                                                "(__LINE__ - __LINE__); }\n")}) {
+        const bool uses_lines = body.find("__LINE__") != std::string::npos;
+        std::string library;
+        bool splittable = true;
+        options.precompile_unit_header = true;
+        options.unit_header = header_at(40, body);
+        std::vector<std::string> units = units_with(options.unit_header, 100);
+        ASSERT_TRUE(
+            cached_split_library(toolchain, options, "l", units, library, splittable, error))
+            << error;
+        ASSERT_EQ(sum(library), 221);
+        // The save: a line more in a rule above the %source; the rule changed too.
+        ran.clear();
+        options.precompile_unit_header = false;
+        options.unit_header = header_at(41, body);
+        units = units_with(options.unit_header, 101);
+        ASSERT_TRUE(
+            cached_split_library(toolchain, options, "l", units, library, splittable, error))
+            << error;
+        EXPECT_EQ(sum(library), 223);
+        EXPECT_EQ(count("c++-header"), 0);
+        EXPECT_EQ(count("-include-pch"), uses_lines ? 0 : 1) << body;
+    }
+}
+
+// The code unit at its own level with the precompiled prelude: the prelude's .gch was made at
+// the ordinary level, which clang refuses for another (__OPTIMIZE__ differs), so the optimised
+// code unit is compiled without it and builds (it failed at every save before: the %draw
+// bodies were never optimised in the preview).
+TEST(PreviewBuild, CodeUnitOptimisedBuildsBesideThePrecompiledPrelude) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
+    std::string error;
+    const test::TempDir dir("split-prelude");
+    const CacheDirFor cache(dir.path().string());
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
+    ASSERT_TRUE(use_precompiled_prelude(toolchain, options, error, "")) << error;
+    ASSERT_FALSE(options.precompiled_header.empty());
+    options.code_unit_optimization = "2";
+    std::vector<std::vector<std::string>> ran;
+    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
+        ran.push_back(argv);
+        return run_process(argv, e);
+    };
+    const std::string includes = "#include <acanthus/rules.hpp>\n#include <string>\n";
+    const std::vector<std::string> units{
+        includes + "extern \"C\" int tables_part() { return 1; }\n",
+        includes + "extern \"C\" int code_part() { return int(std::string(\"ab\").size()); }\n",
+        includes + "extern \"C\" int rule_part() { return 300; }\n"};
+    std::string library;
+    bool splittable = true;
+    ASSERT_TRUE(cached_split_library(toolchain, options, "p", units, library, splittable, error))
+        << error;
+    int at_o2 = 0, at_o0_with_prelude = 0;
+    for (const auto& argv : ran) {
+        if (std::find(argv.begin(), argv.end(), "-c") == argv.end()) continue;
+        const bool prelude =
+            std::find(argv.begin(), argv.end(), options.precompiled_header) != argv.end();
+        if (std::find(argv.begin(), argv.end(), "-O2") != argv.end()) {
+            ++at_o2;
+            EXPECT_FALSE(prelude);
+        } else {
+            at_o0_with_prelude += prelude;
+        }
+    }
+    EXPECT_EQ(at_o2, 1);
+    EXPECT_EQ(at_o0_with_prelude, 2);
+    void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+    ASSERT_NE(handle, nullptr) << dlerror();
+    auto code = reinterpret_cast<int (*)()>(dlsym(handle, "code_part"));
+    ASSERT_NE(code, nullptr);
+    EXPECT_EQ(code(), 2);
+    dlclose(handle);
 }
 
 }  // namespace

@@ -9,6 +9,10 @@
 #include <acanthus/param.hpp>
 #include <acanthus/program.hpp>
 #include <acanthus/rule_call.hpp>
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -73,6 +77,19 @@ void crash_in_copies(Canvas&, const Element&) {
 void hang_in_copies(Canvas&, const Element&) {
     if (::getpid() != test_process)
         for (;;) ::pause();
+}
+// ... and one that writes, in each copy, the copy's niceness to a file named by its pid.
+std::string niceness_dir;
+void record_niceness_in_copies(Canvas&, const Element&) {
+    if (::getpid() == test_process) return;
+    errno = 0;
+    const int nice = ::getpriority(PRIO_PROCESS, 0);
+    const auto now = std::chrono::steady_clock::now().time_since_epoch();
+    const std::string name = niceness_dir + "/nice-" + std::to_string(::getpid());
+    // (renamed into place: a copy stopped while writing leaves only its temporary)
+    std::ofstream(name + ".tmp")
+        << std::chrono::duration_cast<std::chrono::nanoseconds>(now).count() << " " << nice;
+    std::rename((name + ".tmp").c_str(), name.c_str());
 }
 // ... and one that fails in every process.
 void throw_in_draw(Canvas&, const Element&) { throw std::runtime_error("drawn badly"); }
@@ -489,6 +506,37 @@ TEST_F(Program, PartialPictureCopyHangingIsStopped) {
     EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
     for (const std::string& f : files())  // no picture, and nothing the copy left
         EXPECT_EQ(f, "out.svg");
+}
+
+// The copies drawing partial pictures after the first run at a lower priority than the run
+// (the growth keeps its core); the first, the viewer's first look, at the run's.
+TEST_F(Program, LaterPartialPictureCopiesRunNicer) {
+    errno = 0;
+    const int run_nice = ::getpriority(PRIO_PROCESS, 0);
+    ASSERT_EQ(errno, 0);
+    if (run_nice >= 19) GTEST_SKIP() << "already at the lowest priority";
+    fs::create_directories(path("nice"));
+    niceness_dir = path("nice");
+    dot_type.draw = &record_niceness_in_copies;
+    Outcome o = run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000",
+                     "--param", "dot_radius=2", "--partial", path("partial.svg"), "--partial-every",
+                     "0.01", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    std::vector<std::pair<long long, int>> copies;  // (when it drew, niceness)
+    for (const auto& e : fs::directory_iterator(path("nice"))) {
+        if (e.path().extension() == ".tmp") continue;
+        std::istringstream line(read(e.path().string()));
+        long long when = 0;
+        int nice = 0;
+        ASSERT_TRUE(line >> when >> nice) << e.path();
+        copies.emplace_back(when, nice);
+    }
+    ASSERT_GE(copies.size(), 2u) << "too few partial pictures to compare";
+    std::sort(copies.begin(), copies.end());  // (copies draw one at a time)
+    EXPECT_EQ(copies.front().second, run_nice);
+    for (std::size_t i = 1; i < copies.size(); ++i)
+        EXPECT_GT(copies[i].second, run_nice) << "copy " << i;
 }
 
 // With --view, the output is drawn by a copy of the program while the run draws the view: the

@@ -1,6 +1,7 @@
 // run_program: the generated program's main(). Everything the command line names is checked
 // before growth starts, so a bad argument never costs a long run and never leaves a file behind.
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -231,12 +232,19 @@ void remove_copy_temporaries(const std::string& path) {
 // action, not the run's crash report (which would remove the run's temporary outputs, shared
 // by name with the parent). Gone with the run, whatever ends it; and a drawing that never ends
 // (the watchdog thread is not copied) is stopped like one body that runs too long.
+// `nicer`: how much lower the copy's priority is than the run's (setpriority: the copy has
+// one thread, the one that forked).
 template <class Draw>
 [[noreturn]] void draw_in_copy(Draw& draw, const std::string& path, pid_t parent,
-                               double body_time_limit) {
+                               double body_time_limit, int nicer = 0) {
     for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGABRT}) std::signal(signal, SIG_DFL);
     prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (getppid() != parent) std::_Exit(1);
+    if (nicer > 0) {
+        errno = 0;
+        const int now = getpriority(PRIO_PROCESS, 0);
+        if (errno == 0) setpriority(PRIO_PROCESS, 0, std::min(now + nicer, 19));
+    }
     if (body_time_limit > 0) alarm(static_cast<unsigned>(std::ceil(body_time_limit)));
     int code = 0;
     try {
@@ -249,6 +257,11 @@ template <class Draw>
 }
 
 constexpr long kPartialCheckEvery = 8;  // iterations between two looks at the clock
+// The copies drawing partial pictures after the first (the viewer's first look, at the run's
+// priority) run this much nicer than the growth: on a busy machine they take the cores the
+// growth and the viewer leave (a draft late by a few tens of milliseconds is still a draft;
+// the growth late is the finished picture late).
+constexpr int kPartialCopyNicer = 5;
 
 class PartialPictures {
   public:
@@ -283,8 +296,10 @@ class PartialPictures {
         std::fflush(nullptr);  // nothing buffered is written twice
         const pid_t parent = getpid();
         const pid_t pid = fork();
-        if (pid == 0) draw_in_copy(draw, path_, parent, body_time_limit_);
+        if (pid == 0)
+            draw_in_copy(draw, path_, parent, body_time_limit_, forks_ > 0 ? kPartialCopyNicer : 0);
         if (pid > 0) {
+            ++forks_;
             drawing_ = pid;
             forked_ = begin;
             next_ = begin + std::max(seconds(every_), (begin - start_) / 5);
@@ -342,6 +357,7 @@ class PartialPictures {
     double body_time_limit_;
     Clock::time_point start_, next_, forked_;
     pid_t drawing_ = 0;  // the copy drawing a picture now
+    long forks_ = 0;     // copies made so far
     long published_ = 0;
     long drawn_placed_ = -1;  // the growth's successes when the last picture was taken
     long last_placed_ = -1;   // ... when due() last looked, first seen at placed_at_
