@@ -80,7 +80,7 @@ void check_limits(const Facade& facade, const Options& o) {
     // An opening smaller than a tenth of a brick's face, or narrower than a joint, cannot be
     // left in brickwork (no piece that small is cut, and cells have no holes): a drawing error,
     // named rather than covered by a brick.
-    // One box per outline (edges joined at corners), not per name: two shapes drawn touching
+    // One box per outline (edges joined end to end), not per name: two shapes drawn touching
     // are one opening, and the part of the outline one of them keeps may be a line.
     const std::vector<Edge>& edges = facade.edges();
     std::vector<std::size_t> root(edges.size());
@@ -89,12 +89,16 @@ void check_limits(const Facade& facade, const Options& o) {
         while (root[i] != i) i = root[i] = root[root[i]];
         return i;
     };
-    std::map<int, std::size_t> at_corner;
+    // Joined also where one's end is another's start (a jamb meets a round head smoothly, at
+    // no corner): the outline's own vertices, shared by the two edges.
+    std::map<std::pair<long long, long long>, std::size_t> at_end;
     for (std::size_t i = 0; i < edges.size(); ++i) {
-        if (!edges[i].opening) continue;
-        for (int c : {edges[i].corner_start, edges[i].corner_end}) {
-            if (c < 0) continue;
-            auto [it, fresh] = at_corner.try_emplace(c, i);
+        const Edge& e = edges[i];
+        if (!e.opening || e.segments.empty()) continue;
+        for (Point p : {e.segments.front().a, e.segments.back().b}) {
+            const std::pair<long long, long long> key{std::llround(p.x * 1e6),
+                                                      std::llround(p.y * 1e6)};
+            auto [it, fresh] = at_end.try_emplace(key, i);
             if (!fresh) root[find(i)] = find(it->second);
         }
     }
