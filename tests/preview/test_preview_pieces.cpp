@@ -444,6 +444,32 @@ class CacheDirFor {
     std::string kept_;
 };
 
+// Each command a build runs, recorded in `ran`, then run.
+void record_runs(BuildOptions& options, std::vector<std::vector<std::string>>& ran) {
+    options.runner = [&ran](const std::vector<std::string>& argv, std::string& e) {
+        ran.push_back(argv);
+        return run_process(argv, e);
+    };
+}
+
+// How many of the recorded commands have `word` among their arguments.
+int commands_with(const std::vector<std::vector<std::string>>& ran, const std::string& word) {
+    int n = 0;
+    for (const auto& argv : ran) n += std::find(argv.begin(), argv.end(), word) != argv.end();
+    return n;
+}
+
+// The sum of what the three parts of a split library return; -1 when it does not load.
+int parts_sum(const std::string& library) {
+    void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) return -1;
+    int total = 0;
+    for (const char* name : {"tables_part", "code_part", "rule_part"})
+        if (auto f = reinterpret_cast<int (*)()>(dlsym(handle, name))) total += f();
+    dlclose(handle);
+    return total;
+}
+
 // The preview builds rule code in two processes, neither of them a compiler driver that starts
 // another: the compiler on its own (-c) and the linker itself, with the command the driver gives.
 TEST(PreviewBuild, RuleLibraryCompiledThenLinkedByTheLinkerItself) {
@@ -519,15 +545,7 @@ TEST(PreviewBuild, SplitUnitsTwoAtATimeTheCodeUnitOptimisedLater) {
                  std::find(argv.begin(), argv.end(), std::string("-O") + level) != argv.end();
         return n;
     };
-    const auto sum = [](const std::string& library) {
-        void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (!handle) return -1;
-        int total = 0;
-        for (const char* name : {"tables_part", "code_part", "rule_part"})
-            if (auto f = reinterpret_cast<int (*)()>(dlsym(handle, name))) total += f();
-        dlclose(handle);
-        return total;
-    };
+    const auto sum = parts_sum;
     std::string first, second, third;
     bool splittable = true, code_later = false;
     options.code_unit_later = true;
@@ -602,10 +620,7 @@ TEST(PreviewBuild, SplitUnitsCompiledWithTheirHeaderPrecompiled) {
     BuildOptions options;
     ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
     std::vector<std::vector<std::string>> ran;
-    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
-        ran.push_back(argv);
-        return run_process(argv, e);
-    };
+    record_runs(options, ran);
     options.unit_header =
         "#include <vector>\n"
         "struct Shared { std::vector<int> v{100, 200}; };\n"
@@ -617,20 +632,8 @@ TEST(PreviewBuild, SplitUnitsCompiledWithTheirHeaderPrecompiled) {
     std::vector<std::string> units{
         "extern \"C\" int tables_part() { return 1; }\n",
         options.unit_header + "extern \"C\" int code_part() { return twice(10); }\n", rule(100)};
-    const auto count = [&](const std::string& word) {
-        int n = 0;
-        for (const auto& argv : ran) n += std::find(argv.begin(), argv.end(), word) != argv.end();
-        return n;
-    };
-    const auto sum = [](const std::string& library) {
-        void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (!handle) return -1;
-        int total = 0;
-        for (const char* name : {"tables_part", "code_part", "rule_part"})
-            if (auto f = reinterpret_cast<int (*)()>(dlsym(handle, name))) total += f();
-        dlclose(handle);
-        return total;
-    };
+    const auto count = [&](const std::string& word) { return commands_with(ran, word); };
+    const auto sum = parts_sum;
     std::string library;
     bool splittable = true;
     // Not asked to precompile: the units compiled whole.
@@ -683,10 +686,7 @@ TEST(PreviewBuild, UnitHeaderPrecompiledKeptWhenOnlyItsLinesMove) {
     BuildOptions options;
     ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
     std::vector<std::vector<std::string>> ran;
-    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
-        ran.push_back(argv);
-        return run_process(argv, e);
-    };
+    record_runs(options, ran);
     const auto header_at = [](int line, const std::string& body) {
         return "#line " + std::to_string(line) + " \"p.acr\"\n" + body + "#line 9 \"p.cpp\"\n";
     };
@@ -696,20 +696,8 @@ TEST(PreviewBuild, UnitHeaderPrecompiledKeptWhenOnlyItsLinesMove) {
             header + "extern \"C\" int code_part() { return twice(10); }\n",
             header + "extern \"C\" int rule_part() { return twice(" + std::to_string(n) + "); }\n"};
     };
-    const auto count = [&](const std::string& word) {
-        int n = 0;
-        for (const auto& argv : ran) n += std::find(argv.begin(), argv.end(), word) != argv.end();
-        return n;
-    };
-    const auto sum = [](const std::string& library) {
-        void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (!handle) return -1;
-        int total = 0;
-        for (const char* name : {"tables_part", "code_part", "rule_part"})
-            if (auto f = reinterpret_cast<int (*)()>(dlsym(handle, name))) total += f();
-        dlclose(handle);
-        return total;
-    };
+    const auto count = [&](const std::string& word) { return commands_with(ran, word); };
+    const auto sum = parts_sum;
     for (const std::string& body : {std::string("inline int twice(int x) { return 2 * x; }\n"),
                                     std::string("inline int twice(int x) { return 2 * x + "
                                                 "(__LINE__ - __LINE__); }\n")}) {
@@ -753,10 +741,7 @@ TEST(PreviewBuild, CodeUnitOptimisedBuildsBesideThePrecompiledPrelude) {
     ASSERT_FALSE(options.precompiled_header.empty());
     options.code_unit_optimization = "2";
     std::vector<std::vector<std::string>> ran;
-    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
-        ran.push_back(argv);
-        return run_process(argv, e);
-    };
+    record_runs(options, ran);
     const std::string includes = "#include <acanthus/rules.hpp>\n#include <string>\n";
     const std::vector<std::string> units{
         includes + "extern \"C\" int tables_part() { return 1; }\n",
