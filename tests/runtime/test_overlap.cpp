@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "proxy/overlap.hpp"
 #include "fixtures/proxy_factory.hpp"
+#include "proxy/overlap.hpp"
 
 namespace acanthus {
 namespace {
@@ -66,6 +66,19 @@ TEST(OverlapCircle, CircleCircle) {
     EXPECT_TRUE(overlap(a, circle_proxy(1, 0, 1)));   // contained
     EXPECT_TRUE(overlap(a, circle_proxy(4, 0, 1)));   // contained, internally tangent
     EXPECT_TRUE(overlap(a, circle_proxy(0, 0, 50)));  // containing
+}
+
+// Circles and points are decided on their centres and radii (no curves built): the same
+// rules hold for a circle of radius 0 (a point deeper than the tolerance in the other) and
+// for a circle not set (never overlapping).
+TEST(OverlapCircle, DegenerateAndUnsetCircles) {
+    auto a = circle_proxy(0, 0, 5);
+    EXPECT_TRUE(overlap(a, circle_proxy(4, 0, 0)));
+    EXPECT_FALSE(overlap(a, circle_proxy(5 - 0.5 * tol, 0, 0)));
+    EXPECT_FALSE(overlap(circle_proxy(0, 0, 0), circle_proxy(0, 0, 0)));
+    EXPECT_FALSE(overlap(a, CircleProxy()));
+    EXPECT_FALSE(overlap(point_proxy(0, 0), CircleProxy()));
+    EXPECT_FALSE(overlap(PointProxy(), a));
 }
 
 TEST(OverlapCircle, CirclePolygon) {

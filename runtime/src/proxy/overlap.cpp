@@ -167,6 +167,10 @@ Geom::Point polygon_witness(const Shape& polygon) {
     return best;
 }
 
+bool finite_circle(const CircleProxy& c) {
+    return std::isfinite(c.center.x) && std::isfinite(c.center.y) && std::isfinite(c.radius);
+}
+
 bool circles_overlap(const Shape& a, const Shape& b, double tol) {
     return distance(a.point(), b.point()) < a.radius() + b.radius() - tol;
 }
@@ -297,6 +301,28 @@ bool overlaps(const Proxy& a, const Proxy& b, double tolerance) {
     if ((ca == Category::point && cb == Category::curve) ||
         (ca == Category::curve && cb == Category::point)) {
         return false;
+    }
+    // Two circles, or a point and a circle: the rules below on the centres and radii alone,
+    // without building the exact curves (the same arithmetic, so the same answer to the bit).
+    // Most proxies of a growth are circles or points, and images are tested against their
+    // element one pair at a time.
+    const bool cira = a.kind() == ProxyKind::circle, cirb = b.kind() == ProxyKind::circle;
+    if ((cira || ca == Category::point) && (cirb || cb == Category::point) && (cira || cirb)) {
+        const CircleProxy& c = static_cast<const CircleProxy&>(cira ? a : b);
+        const Proxy& o = cira ? b : a;
+        if (finite_circle(c)) {
+            if (o.kind() == ProxyKind::circle) {
+                const auto& d = static_cast<const CircleProxy&>(o);
+                if (finite_circle(d)) {
+                    const CircleProxy& first = static_cast<const CircleProxy&>(a);
+                    const CircleProxy& second = static_cast<const CircleProxy&>(b);
+                    return distance(first.center, second.center) <
+                           first.radius + second.radius - tolerance;
+                }
+            } else if (const Point p = static_cast<const PointProxy&>(o).point(); p.finite()) {
+                return c.radius - Geom::distance(to_geom(p), to_geom(c.center)) > tolerance;
+            }
+        }
     }
     Shape sa(a), sb(b);
     if (ca == Category::point) return sb.depth(to_geom(sa.point())) > tolerance;
