@@ -166,6 +166,30 @@ TEST(OrnamentNearZone, ForEachMeetingVisitsEveryElementWhoseBoundsMeetTheBox) {
     }
 }
 
+// A query beyond the zone indexes only the deferred elements near it (their buckets of 8 x 8
+// cells): the images far from it, all over the grid, stay out of the index until a query
+// reaches them (or the whole grid is searched).
+TEST(OrnamentNearZone, AQueryBeyondTheZoneIndexesOnlyTheDeferredElementsNearIt) {
+    const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
+    Ornament ornament(region, 1e-9);
+    set_zone_left_of_60(ornament);
+    std::vector<std::unique_ptr<acanthus::Element>> batch;
+    batch.push_back(dot({20, 20}, 1));     // fundamental: indexed
+    batch.push_back(dot({190, 10}, 1));    // deferred, top right
+    batch.push_back(dot({190, 190}, 1));   // deferred, bottom right
+    batch.push_back(dot({-300, 100}, 1));  // deferred, beyond the cells on the left
+    ornament.add_all(std::move(batch), 1);
+    EXPECT_EQ(ornament.indexed(), 1u);
+    const auto top = ornament.within({185, 10}, 5);
+    ASSERT_EQ(top.size(), 1u);
+    EXPECT_EQ(top.front().first->id, 1);
+    EXPECT_EQ(ornament.indexed(), 2u);  // not the dot at the bottom, nor the far one
+    EXPECT_EQ(ornament.within({190, 185}, 5).size(), 1u);
+    EXPECT_EQ(ornament.indexed(), 3u);
+    EXPECT_EQ(ornament.nearest({-400, 100}).first->id, 3);
+    EXPECT_EQ(ornament.indexed(), 4u);
+}
+
 // An image carried over by another transformation in place is the image built anew under it,
 // for the point, circle, segment and polygon proxies.
 TEST(ImageElement, SetTransformIsTheImageBuiltAnew) {

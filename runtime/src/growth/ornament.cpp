@@ -69,7 +69,10 @@ bool Ornament::Zone::meets(const Rect& b) const {
 
 void Ornament::set_near_zone(Point origin, double cell, int columns,
                              const std::vector<bool>& cells) {
+    cover({-1e300, -1e300, 1e300, 1e300});  // the buckets go with the zone
     zone_ = Zone{};
+    buckets_.clear();
+    buckets_w_ = buckets_h_ = 0;
     if (columns <= 0 || cells.empty() || !(cell > 0)) return;
     const int rows = static_cast<int>(cells.size() / static_cast<std::size_t>(columns));
     zone_.origin = origin;
@@ -78,6 +81,9 @@ void Ornament::set_near_zone(Point origin, double cell, int columns,
     zone_.rows = rows;
     const int w = columns + 1;
     zone_.sums.assign(static_cast<std::size_t>(w) * (rows + 1), 0);
+    buckets_w_ = (columns + kBucketCells - 1) / kBucketCells;
+    buckets_h_ = (rows + kBucketCells - 1) / kBucketCells;
+    buckets_.assign(static_cast<std::size_t>(buckets_w_) * buckets_h_, {});
     for (int j = 0; j < rows; ++j)
         for (int i = 0; i < columns; ++i) {
             const auto at = [&](int x, int y) -> int& {
@@ -88,16 +94,37 @@ void Ornament::set_near_zone(Point origin, double cell, int columns,
         }
 }
 
+void Ornament::buckets_of(const Rect& box, int& i0, int& j0, int& i1, int& j1) const {
+    // Monotone in each coordinate: boxes that meet have bucket ranges that meet.
+    const double side = zone_.cell * kBucketCells;
+    auto at = [&](double v, double o, int n) {
+        return static_cast<int>(std::clamp(std::floor((v - o) / side), 0.0, n - 1.0));
+    };
+    i0 = at(box.x0, zone_.origin.x, buckets_w_);
+    i1 = at(box.x1, zone_.origin.x, buckets_w_);
+    j0 = at(box.y0, zone_.origin.y, buckets_h_);
+    j1 = at(box.y1, zone_.origin.y, buckets_h_);
+}
+
 void Ornament::cover(const Rect& box) const {
-    if (deferred_.empty() || zone_.covers(box)) return;
+    if (deferred_ == 0 || zone_.covers(box)) return;
+    int i0 = 0, j0 = 0, i1 = buckets_w_ - 1, j1 = buckets_h_ - 1;
+    if (box.x0 <= box.x1 && box.y0 <= box.y1) buckets_of(box, i0, j0, i1, j1);
     std::vector<std::pair<SpatialIndex::Entry, Rect>> entries;
-    for (int id : deferred_) {
-        const Element& e = at(id);
-        for (std::size_t k = 0; k < e.proxy_count(); ++k)
-            entries.push_back({{id, static_cast<int>(k)}, e.proxy(k).bounds()});
-    }
-    deferred_.clear();
-    index_.insert_all(entries);
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+            std::vector<int>& bucket = buckets_[static_cast<std::size_t>(j * buckets_w_ + i)];
+            for (int id : bucket) {
+                if (!waiting_[static_cast<std::size_t>(id)]) continue;  // in another bucket too
+                waiting_[static_cast<std::size_t>(id)] = 0;
+                --deferred_;
+                const Element& e = at(id);
+                for (std::size_t k = 0; k < e.proxy_count(); ++k)
+                    entries.push_back({{id, static_cast<int>(k)}, e.proxy(k).bounds()});
+            }
+            std::vector<int>().swap(bucket);
+        }
+    if (!entries.empty()) index_.insert_all(entries);
 }
 
 std::vector<Element*> Ornament::add_all(std::vector<std::unique_ptr<Element>> elements,
@@ -105,9 +132,20 @@ std::vector<Element*> Ornament::add_all(std::vector<std::unique_ptr<Element>> el
     std::vector<std::pair<SpatialIndex::Entry, Rect>> entries;
     for (std::size_t n = 0; n < elements.size(); ++n) {
         const int id = static_cast<int>(elements_.size() + n);
-        if (n >= deferrable_from && !zone_.sums.empty() && !zone_.meets(bounds_of(*elements[n]))) {
-            deferred_.push_back(id);
-            continue;
+        if (n >= deferrable_from && !zone_.sums.empty() && !buckets_.empty()) {
+            const Rect b = bounds_of(*elements[n]);
+            if (!zone_.meets(b)) {  // a valid box (meets() takes any other as meeting)
+                int i0, j0, i1, j1;
+                buckets_of(b, i0, j0, i1, j1);
+                for (int j = j0; j <= j1; ++j)
+                    for (int i = i0; i <= i1; ++i)
+                        buckets_[static_cast<std::size_t>(j * buckets_w_ + i)].push_back(id);
+                if (waiting_.size() <= static_cast<std::size_t>(id))
+                    waiting_.resize(static_cast<std::size_t>(id) + 1, 0);
+                waiting_[static_cast<std::size_t>(id)] = 1;
+                ++deferred_;
+                continue;
+            }
         }
         for (std::size_t k = 0; k < elements[n]->proxy_count(); ++k)
             entries.push_back({{id, static_cast<int>(k)}, elements[n]->proxy(k).bounds()});

@@ -6,6 +6,7 @@
 #include <acanthus/element.hpp>
 #include <acanthus/region.hpp>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -37,10 +38,14 @@ class Ornament {
     Element& at(int id) const { return *elements_[static_cast<std::size_t>(id)]; }
     std::vector<const Element*> view() const;
     double tolerance() const { return tolerance_; }
+    // Proxies in the spatial index (deferred elements not yet indexed are not counted).
+    std::size_t indexed() const { return index_.size(); }
     // Frees the spatial index once the growth is over: the queries below answer nothing after.
     void release_index() {
         index_ = SpatialIndex();
-        deferred_.clear();
+        buckets_.clear();
+        waiting_.clear();
+        deferred_ = 0;
     }
 
     // Placed element nearest to p and its distance (ties to the smallest id), or null. The
@@ -81,15 +86,24 @@ class Ornament {
         bool covers(const Rect& box) const;
         bool meets(const Rect& box) const;
     };
-    // Indexes the deferred elements unless `box` lies within the near zone.
+    // Indexes the deferred elements whose bounds may meet `box`, unless it lies within the
+    // near zone.
     void cover(const Rect& box) const;
+    // The buckets of deferred elements a box meets, [i0, i1] x [j0, j1]: squares of
+    // kBucketCells zone cells, those beyond the zone's grid in its edge buckets.
+    static constexpr int kBucketCells = 8;
+    void buckets_of(const Rect& box, int& i0, int& j0, int& i1, int& j1) const;
 
     const Region& region_;
     double tolerance_;
     std::vector<std::unique_ptr<Element>> elements_;
-    // Deferred elements are indexed on the first query beyond the zone (const queries).
+    // Deferred elements are indexed when a query beyond the zone reaches their bucket (const
+    // queries): the images far from the domain that no query reaches are never indexed.
     mutable detail::SpatialIndex index_;
-    mutable std::vector<int> deferred_;
+    mutable std::vector<std::vector<int>> buckets_;  // the ids deferred there, row by row
+    int buckets_w_ = 0, buckets_h_ = 0;
+    mutable std::vector<std::uint8_t> waiting_;  // per id: deferred and not indexed yet
+    mutable std::size_t deferred_ = 0;           // how many are waiting
     Zone zone_;
 };
 
