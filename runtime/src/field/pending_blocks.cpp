@@ -209,26 +209,34 @@ std::uint64_t PendingBlocks::cap_tiles(int block, const Blob& blob) {
         fx[c] = manhattan_ ? ex : ex * ex;
         fy[c] = manhattan_ ? ey : ey * ey;
     }
+    // A row of 8 tiles is two vectors of 4 lanes. The tiles of a block beyond the grid's edge
+    // keep bound 0 (reset()): nothing is below it, so they take no bit, no cap, no part in
+    // the top.
     std::uint64_t lower = 0;
-    bool capped = false;
-    std::int32_t top = 0;
-    const int bi = block % blocks_w_, bj = block / blocks_w_;
-    const int cols = std::min(8, tiles_w_ - (bi << 3));
+    unsigned capped = 0;
+    const Lanes zero = {0, 0, 0, 0};
+    Lanes top = zero;
+    const Lanes gxl[2] = {load_lanes(gx), load_lanes(gx + 4)};
+    const Lanes fxl[2] = {load_lanes(fx), load_lanes(fx + 4)};
+    const int bj = block / blocks_w_;
     const int rows = std::min(8, tiles_h_ - (bj << 3));
     std::int32_t* bound = tile_bound_.data() + slot_at(block, 0);
     for (int row = 0; row < rows; ++row, bound += 8) {
-        std::uint64_t bits = 0;
-        for (int c = 0; c < cols; ++c) {
-            bits |= static_cast<std::uint64_t>(gx[c] + gy[row] < bound[c]) << c;
-            const std::int32_t far =
-                (manhattan_ ? (fx[c] + fy[row]) * (fx[c] + fy[row]) : fx[c] + fy[row]) + 1;
-            capped |= far < bound[c];
-            bound[c] = std::min(bound[c], far);
-            top = std::max(top, bound[c]);
+        unsigned bits = 0;
+        for (int h = 0; h < 2; ++h) {
+            Lanes b = load_lanes(bound + 4 * h);
+            bits |= lane_mask(gxl[h] + gy[row] < b) << (4 * h);
+            const Lanes sum = fxl[h] + fy[row];
+            const Lanes far = (manhattan_ ? sum * sum : sum) + 1;
+            const Lanes cap = far < b;
+            capped |= lane_mask(cap);
+            b = cap ? far : b;
+            store_lanes(bound + 4 * h, b);
+            top = b > top ? b : top;
         }
-        lower |= bits << (8 * row);
+        lower |= static_cast<std::uint64_t>(bits) << (8 * row);
     }
-    if (capped) set_bound(block, top);
+    if (capped) set_bound(block, std::max({top[0], top[1], top[2], top[3]}));
     return lower;
 }
 
