@@ -5,6 +5,7 @@
 #include <acanthus/distance_metric.hpp>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -14,6 +15,29 @@
 namespace acanthus::detail {
 
 enum class ObstacleKind : std::uint8_t { none = 0, boundary = 1, element = 2 };
+
+// An allocator that leaves new ints uninitialised (resize() without a pass over the memory):
+// the field fills its grids itself, once.
+template <class T>
+struct UninitAllocator : std::allocator<T> {
+    using value_type = T;
+    template <class U>
+    struct rebind {
+        using other = UninitAllocator<U>;
+    };
+    UninitAllocator() = default;
+    template <class U>
+    UninitAllocator(const UninitAllocator<U>&) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+using Grid32 = std::vector<std::int32_t, UninitAllocator<std::int32_t>>;
 
 class DistanceField {
   public:
@@ -97,12 +121,12 @@ class DistanceField {
     std::pair<int, int> kept_run(int j, int chunk) const;
     const int* kept_spans() const { return spans_.empty() ? nullptr : spans_.data(); }
     // Updates `d2` (and `site` when not null) for the new sites; returns changed pixels in `out`.
-    void propagate(const std::vector<int>& sites, std::vector<std::int32_t>& d2,
-                   std::vector<std::int32_t>* site, std::vector<int>* out);
+    void propagate(const std::vector<int>& sites, Grid32& d2, std::vector<std::int32_t>* site,
+                   std::vector<int>* out);
     // kCommit: write improvements as they are found (the measure covers the whole grid);
     // otherwise collect them in improved_, to be applied only when the fill did not escape.
     template <bool kCommit, class Measure, class Measurable>
-    bool wavefront(const std::vector<int>& sites, std::vector<std::int32_t>& d2, std::int32_t* site,
+    bool wavefront(const std::vector<int>& sites, Grid32& d2, std::int32_t* site,
                    std::vector<int>* out, Measure& measure, Measurable measurable);
 
     int width_;
@@ -112,9 +136,9 @@ class DistanceField {
     PendingBlocks far_;
     // Lazy, with tiles left out: per row, the columns [2j], [2j + 1] kept exact. Empty: all.
     std::vector<int> spans_;
-    std::vector<std::int32_t> dist2_;      // to the nearest site of any kind
-    std::vector<std::int32_t> boundary2_;  // to the nearest boundary site
-    std::vector<std::int32_t> site_;       // empty without a feature transform
+    Grid32 dist2_;                    // to the nearest site of any kind
+    Grid32 boundary2_;                // to the nearest boundary site
+    std::vector<std::int32_t> site_;  // empty without a feature transform
 
     // Incremental update state: 16-bit stamps (cleared every ~21,000 fills) keep it at 2 bytes
     // per pixel.
