@@ -251,8 +251,27 @@ int PendingBlocks::store(Blob& blob, const std::vector<int>& sites) {
     }
     // By column, then row: (column, row) in one integer each.
     sorted_.clear();
-    for (int p : sites) sorted_.push_back(static_cast<std::int64_t>(p % width_) << 32 | p / width_);
-    std::sort(sorted_.begin(), sorted_.end());
+    if (std::is_sorted(sites.begin(), sites.end())) {
+        // Row by row already (most elements' sites): a counting sort by column keeps each
+        // column's rows in order, the order std::sort gives.
+        const int columns = blob.x1 - blob.x0 + 1;
+        column_count_.assign(static_cast<std::size_t>(columns) + 1, 0);
+        for (int p : sites) ++column_count_[static_cast<std::size_t>(p % width_ - blob.x0) + 1];
+        for (int c = 0; c < columns; ++c)
+            column_count_[static_cast<std::size_t>(c) + 1] +=
+                column_count_[static_cast<std::size_t>(c)];
+        sorted_.resize(sites.size());
+        for (int p : sites) {
+            const int c = p % width_;
+            sorted_[static_cast<std::size_t>(
+                column_count_[static_cast<std::size_t>(c - blob.x0)]++)] =
+                static_cast<std::int64_t>(c) << 32 | p / width_;
+        }
+    } else {
+        for (int p : sites)
+            sorted_.push_back(static_cast<std::int64_t>(p % width_) << 32 | p / width_);
+        std::sort(sorted_.begin(), sorted_.end());
+    }
     for (const std::int64_t key : sorted_) {
         const int c = static_cast<int>(key >> 32);
         const int row = static_cast<int>(key & 0xffffffff);

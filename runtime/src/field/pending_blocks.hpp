@@ -268,6 +268,7 @@ class PendingBlocks {
     std::vector<int> free_blobs_;                      // ids of released blobs, reused
     std::vector<std::pair<std::int64_t, int>> order_;  // settle_tile() scratch: (gap, entry)
     std::vector<std::int64_t> sorted_;                 // defer() scratch: sites by column
+    std::vector<int> column_count_;                    // defer() scratch: sites per column
     std::vector<Lanes> columns_;                       // measure() scratch: 2 per run
 };
 
