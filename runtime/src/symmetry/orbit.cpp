@@ -241,23 +241,32 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     }
     // g(e) = h(e) only when an image other than the identity's coincides with e: only then do
     // the images repeat (once per coset of the stabilizer).
+    // Whether the image is clear of e.
+    auto check = [&](std::size_t k) {
+        // An image whose box is clear of the element's bounds meets none of its proxies' boxes.
+        if (out.clear && !apart[k] && overlaps_any(*images[k], e, tolerance)) out.clear = false;
+        // (Rosettes keep their tested behaviour: their trees stay as they were.)
+        for (std::size_t p = 0; out.clear && !group.rosette() && p < e.proxy_count(); ++p)
+            if (crosses_mirror(e.proxy(p), transforms[k], tolerance)) out.clear = false;
+    };
+    if (!fixed) {  // every image distinct: all kept, in order
+        for (std::size_t k = 0; k < images.size(); ++k) check(k);
+        out.images = std::move(transforms);
+        out.elements = std::move(images);
+        return out;
+    }
     std::vector<const ImageElement*> kept;
     kept.reserve(images.size());
     out.images.reserve(images.size());
     out.elements.reserve(images.size());
     for (std::size_t k = 0; k < images.size(); ++k) {
         bool repeated = false;
-        if (fixed)
-            for (const ImageElement* other : kept)
-                repeated = repeated || same_place(*images[k], *other, tolerance);
+        for (const ImageElement* other : kept)
+            repeated = repeated || same_place(*images[k], *other, tolerance);
         if (repeated) continue;
         kept.push_back(images[k].get());
         out.images.push_back(transforms[k]);
-        // An image whose box is clear of the element's bounds meets none of its proxies' boxes.
-        if (out.clear && !apart[k] && overlaps_any(*images[k], e, tolerance)) out.clear = false;
-        // (Rosettes keep their tested behaviour: their trees stay as they were.)
-        for (std::size_t p = 0; out.clear && !group.rosette() && p < e.proxy_count(); ++p)
-            if (crosses_mirror(e.proxy(p), transforms[k], tolerance)) out.clear = false;
+        check(k);
         out.elements.push_back(std::move(images[k]));  // `kept` still points to it
     }
     return out;
