@@ -219,6 +219,36 @@ TEST(ImageElement, SetTransformIsTheImageBuiltAnew) {
     EXPECT_TRUE(acanthus::detail::same_isometry(moved.transform(), mirror, 1e-12));
 }
 
+// Images share chunks of storage: thousands built and freed in a shuffled order, over several
+// chunks and after every image was freed once, each keeps its own proxy and transformation.
+TEST(ImageElement, ImagesBuiltAndFreedInAnyOrderKeepTheirOwnProxies) {
+    dots::dot e;
+    e.p0.set({10, 0}, 1);
+    std::mt19937 rng(5);
+    for (int round = 0; round < 3; ++round) {
+        std::vector<std::unique_ptr<acanthus::Element>> images;
+        for (int k = 0; k < 3000; ++k) {
+            images.push_back(
+                std::make_unique<ImageElement>(e, Isometry::rotation({0, 0}, k * 1e-3)));
+            if (k % 7 == 3) {  // free one now and then, reused by later images
+                std::uniform_int_distribution<std::size_t> pick(0, images.size() - 1);
+                images.erase(images.begin() + static_cast<std::ptrdiff_t>(pick(rng)));
+            }
+        }
+        std::shuffle(images.begin(), images.end(), rng);
+        images.resize(images.size() / 2);
+        for (const auto& x : images) {
+            const auto& image = static_cast<const ImageElement&>(*x);
+            const double angle = std::atan2(image.transform().b, image.transform().a);
+            const auto& c = static_cast<const acanthus::CircleProxy&>(
+                const_cast<ImageElement&>(image).proxy(0));
+            EXPECT_NEAR(c.center.x, 10 * std::cos(angle), 1e-9);
+            EXPECT_NEAR(c.center.y, 10 * std::sin(angle), 1e-9);
+            EXPECT_EQ(&image.original(), &e);
+        }
+    }
+}
+
 // The incremental engine leaves out of the buffer the images that could lower no distance kept
 // near the domain, and indexes far images only when a query reaches them; the reference engine
 // draws every image into the buffer and measures every pixel. Both grow the same tree, under

@@ -1,5 +1,9 @@
 #include "symmetry/image_element.hpp"
 
+#include <acanthus/rule_call.hpp>
+#include <memory>
+#include <mutex>
+
 namespace acanthus::detail {
 
 void transform_proxy(const Proxy& in, const Isometry& g, Proxy& out) {
@@ -79,6 +83,73 @@ void ImageElement::set_transform(const Isometry& transform) {
     transform_ = transform;
     for (std::size_t k = 0; k < count_; ++k)
         transform_proxy(original_->proxy(k), transform, proxy(k));
+}
+
+namespace {
+
+// Blocks of one size carved out of chunks; a freed block goes back on the free list. The
+// chunks are freed together when no block is in use (a growth's images all go at its end).
+class BlockPool {
+  public:
+    explicit BlockPool(std::size_t size)
+        : size_((size + alignof(std::max_align_t) - 1) / alignof(std::max_align_t) *
+                alignof(std::max_align_t)) {}
+    void* take() {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        ++live_;
+        if (free_) {
+            void* p = free_;
+            free_ = *static_cast<void**>(p);
+            return p;
+        }
+        if (chunks_.empty() || used_ == kBlocks) {
+            // Not value-initialised: each block is constructed when handed out.
+            chunks_.push_back(std::unique_ptr<std::max_align_t[]>(
+                new std::max_align_t[size_ * kBlocks / sizeof(std::max_align_t)]));
+            used_ = 0;
+        }
+        return reinterpret_cast<char*>(chunks_.back().get()) + size_ * used_++;
+    }
+    void give(void* p) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (--live_ == 0) {  // nothing in use: no chunk is needed any more
+            chunks_.clear();
+            free_ = nullptr;
+            used_ = 0;
+            return;
+        }
+        *static_cast<void**>(p) = free_;
+        free_ = p;
+    }
+
+  private:
+    static constexpr std::size_t kBlocks = 512;
+    const std::size_t size_;
+    std::mutex mutex_;
+    std::vector<std::unique_ptr<std::max_align_t[]>> chunks_;
+    std::size_t used_ = 0;  // blocks of the last chunk handed out
+    std::size_t live_ = 0;
+    void* free_ = nullptr;
+};
+
+BlockPool& image_pool() {
+    static BlockPool* pool = new BlockPool(sizeof(ImageElement));  // outlives every image
+    return *pool;
+}
+
+}  // namespace
+
+void* ImageElement::operator new(std::size_t size) {
+    (void)size;  // sizeof(ImageElement): the class is final
+    void* p = image_pool().take();
+    if (RuleCall* call = RuleCall::current()) call->track(static_cast<Element*>(p));
+    return p;
+}
+
+void ImageElement::operator delete(void* p) noexcept {
+    if (!p) return;
+    if (RuleCall* call = RuleCall::current()) call->untrack(static_cast<Element*>(p));
+    image_pool().give(p);
 }
 
 Proxy& ImageElement::proxy(std::size_t k) {

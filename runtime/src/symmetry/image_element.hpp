@@ -23,6 +23,11 @@ class ImageElement final : public Element {
     std::size_t proxy_count() const override { return count_; }
     Proxy& proxy(std::size_t k) override;
 
+    // Images come by the thousand, each built and freed once: they are carved out of shared
+    // chunks (freed when the last image is), with the tracking Element's own operator new does.
+    static void* operator new(std::size_t size);
+    static void operator delete(void* p) noexcept;
+
     // Carries the original's proxies over by another transformation, in place.
     void set_transform(const Isometry& transform);
 
