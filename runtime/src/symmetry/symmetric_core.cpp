@@ -167,9 +167,10 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
                     const bool in = theta + spread < half - kMargin;
                     const bool away = can_be_out && theta - spread > far_angle + kMargin;
                     if (in || away) {
-                        for (int j = j0; j < j1; ++j)
-                            std::fill(out.begin() + j * grid.width + i0,
-                                      out.begin() + j * grid.width + i1, in ? 1 : 0);
+                        if (in)  // (the pixels are 0 already: most tiles are away)
+                            for (int j = j0; j < j1; ++j)
+                                std::fill(out.begin() + j * grid.width + i0,
+                                          out.begin() + j * grid.width + i1, 1);
                         continue;
                     }
                 }
