@@ -68,7 +68,9 @@ bool leaves(const Element& e, const Region* region, double tolerance) {
 // both sides of its mirror: then the proxy crosses the mirror where its image does. The exact
 // curve intersection may miss that meeting, the two curves being one continued.
 bool crosses_mirror(const Proxy& p, const Isometry& g, double tolerance) {
-    if (!g.reverses()) return false;
+    // (Points and circles have no ends: told before composing g with itself.)
+    if (!g.reverses() || p.kind() == ProxyKind::point || p.kind() == ProxyKind::circle)
+        return false;
     const Isometry twice = g.then(g);
     if (std::abs(twice.e) > tolerance || std::abs(twice.f) > tolerance) return false;
     std::vector<Point> ends;
