@@ -290,7 +290,13 @@ void EmptyCircleFinder::rebuild() {
         for (int ti = 0; ti < tiles_w_; ++ti) {  // a tile's row at a time, in vector lanes
             const int i0 = ti << kTileShift, i1 = std::min(grid_.width, i0 + (1 << kTileShift));
             std::int32_t m = floor[ti];
-            for (int i = i0; i < i1; ++i) m = std::min(m, row[i]);
+            if (i1 - i0 == 8) {
+                const Lanes a = load_lanes(row + i0), b = load_lanes(row + i0 + 4);
+                const Lanes v = a < b ? a : b;
+                m = std::min({m, v[0], v[1], v[2], v[3]});
+            } else {
+                for (int i = i0; i < i1; ++i) m = std::min(m, row[i]);
+            }
             floor[ti] = m;
         }
     }
