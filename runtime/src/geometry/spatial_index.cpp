@@ -90,10 +90,15 @@ std::vector<SpatialIndex::Entry> SpatialIndex::query(Rect box) const {
 }
 
 bool SpatialIndex::any_of(Rect box, const std::function<bool(Entry)>& test) const {
-    for (auto it = tree_->rtree.qbegin(bgi::intersects(to_box(box))); it != tree_->rtree.qend();
-         ++it)
-        if (test(it->second)) return true;
-    return false;
+    // One query with the test as its predicate (the query iterators are type-erased and cost
+    // more): once an entry passes, the others are not tested.
+    bool found = false;
+    tree_->rtree.query(bgi::intersects(to_box(box)) && bgi::satisfies([&](const Value& v) {
+                           if (!found && test(v.second)) found = true;
+                           return false;
+                       }),
+                       boost::make_function_output_iterator([](const Value&) {}));
+    return found;
 }
 
 std::vector<SpatialIndex::Entry> SpatialIndex::within(Point p, double radius) const {

@@ -251,22 +251,19 @@ bool Ornament::intersects(const Proxy& p) const {
                                     " proxy that is not set or not finite");
     if (leaves_region(p, region_, tolerance_)) return true;
     cover(p.bounds());
-    for (const auto& en : index_.query(p.bounds())) {
-        if (overlaps(p, at(en.element).proxy(static_cast<std::size_t>(en.proxy)), tolerance_))
-            return true;
-    }
-    return false;
+    // Whether any does: the order the entries are tested in does not matter.
+    return index_.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
+        return overlaps(p, at(en.element).proxy(static_cast<std::size_t>(en.proxy)), tolerance_);
+    });
 }
 
 bool Ornament::overlaps_any(const Proxy& p,
                             const std::function<bool(const Element&)>& which) const {
     cover(p.bounds());
-    for (const auto& en : index_.query(p.bounds())) {
+    return index_.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
         const Element& e = at(en.element);
-        if (which(e) && overlaps(p, e.proxy(static_cast<std::size_t>(en.proxy)), tolerance_))
-            return true;
-    }
-    return false;
+        return which(e) && overlaps(p, e.proxy(static_cast<std::size_t>(en.proxy)), tolerance_);
+    });
 }
 
 void Ornament::for_each_meeting(const Rect& box,
