@@ -41,7 +41,7 @@ void check_bounds(SpatialIndex::Entry e, Rect bounds) {
 }  // namespace
 
 struct SpatialIndex::Tree {
-    bgi::rtree<Value, bgi::quadratic<16>> rtree;
+    bgi::rtree<Value, bgi::linear<16>> rtree;
 };
 
 SpatialIndex::SpatialIndex() : tree_(std::make_unique<Tree>()) {}
@@ -53,7 +53,7 @@ SpatialIndex::SpatialIndex(const std::vector<std::pair<Entry, Rect>>& entries) {
         check_bounds(entry, bounds);
         values.emplace_back(to_box(bounds), entry);
     }
-    tree_ = std::make_unique<Tree>(Tree{bgi::rtree<Value, bgi::quadratic<16>>(values)});
+    tree_ = std::make_unique<Tree>(Tree{bgi::rtree<Value, bgi::linear<16>>(values)});
 }
 SpatialIndex::SpatialIndex(SpatialIndex&&) noexcept = default;
 SpatialIndex& SpatialIndex::operator=(SpatialIndex&&) noexcept = default;
@@ -76,7 +76,7 @@ void SpatialIndex::insert_all(const std::vector<std::pair<Entry, Rect>>& entries
     std::vector<Value> values(tree_->rtree.begin(), tree_->rtree.end());
     values.reserve(values.size() + entries.size());
     for (const auto& [entry, bounds] : entries) values.emplace_back(to_box(bounds), entry);
-    tree_->rtree = bgi::rtree<Value, bgi::quadratic<16>>(values);
+    tree_->rtree = bgi::rtree<Value, bgi::linear<16>>(values);
 }
 
 void SpatialIndex::clear() { tree_->rtree.clear(); }

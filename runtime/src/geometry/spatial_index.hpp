@@ -1,6 +1,7 @@
 // Broad phase over placed proxies: axis-aligned bounds -> (element, proxy), on a Boost.Geometry
-// R-tree with quadratic splits (growth inserts once per proxy, and R* insertion cost several
-// times more for little faster queries). Exact tests (overlaps, distance_to) are the caller's;
+// R-tree with linear splits (growth inserts once per proxy, images by the thousand: R*
+// insertion cost several times more for little faster queries, quadratic splits more than
+// linear ones with no faster growth). Exact tests (overlaps, distance_to) are the caller's;
 // every result order is deterministic (ties broken by element, then proxy).
 #pragma once
 
