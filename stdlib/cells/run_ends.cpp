@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>  // DEBUG
 #include <span>
 #include <utility>
 #include <vector>
@@ -30,7 +31,8 @@ struct Plan {
 
 }  // namespace
 
-void fit_run_ends(const Facade& facade, int face, BrickLayout& layout) {
+void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout) {
+    if (std::getenv("CELLS_NO_FIT")) return;  // DEBUG
     const CourseGrid& g = layout.grid;
     if (layout.relaid.size() != layout.rows.size()) {
         layout.relaid.assign(layout.rows.size(), {});
@@ -151,7 +153,40 @@ void fit_run_ends(const Facade& facade, int face, BrickLayout& layout) {
                     std::size_t zone = 0;
                     double j0 = 0, c0 = 0;  // in s: the joint before the zone, its claims' start
                 } best;
-                long current_cost = 0;
+                // The run as the mason's rule reads it: each piece as laid now, cut at the
+                // jambs; its width when both ends are jambs; whether that forces an odd piece
+                // with `joints` head joints (none is forced without a known width).
+                double xo = 0;
+                const bool known =
+                    jamb_at(row, side > 0 ? ps[a0].start : ps[b - 1].start + ps[b - 1].length - 1,
+                            side > 0, xo);
+                const double width = std::abs(xj - xo);
+                auto forced = [&](std::size_t joints) {
+                    const double k = std::round(width / q);
+                    return !known || k < 1 ||
+                           std::abs(width - k * q) > static_cast<double>(joints) * tol + 1e-9;
+                };
+                std::vector<int> kinds;
+                long odd_run = 0;
+                for (std::size_t i = 0; i < n; ++i) {
+                    const int k = static_cast<int>(at(i));
+                    Rect d = layout.drawn(row, k);
+                    // A piece cut at a jamb: its claim to the jamb less half joints, or laid
+                    // whole into the reveal's half joint (as Context::place lays it).
+                    const Rect claim = layout.claim(row, k);
+                    Rect r = claim;
+                    const bool here = i == 0, there = i + 1 == n && known;
+                    if (here) (side > 0 ? r.x1 : r.x0) = xj;
+                    if (there) (side > 0 ? r.x0 : r.x1) = xo;
+                    if ((here || there) && (r.x0 > claim.x0 + eps || r.x1 < claim.x1 - eps)) {
+                        d.x0 = r.x0 + h, d.x1 = r.x1 - h;
+                        const Rect whole = nominal_at_jamb(r, claim, layout.drawn(row, k), options);
+                        if (whole.width() > 0) d = whole;
+                    }
+                    kinds.push_back(kind(d.width(), ps[at(i)].quoin ? 12 : 4));
+                    odd_run += kinds.back() != 0;
+                }
+                const long unforced_now = std::max(0L, odd_run - (forced(n - 1) ? 1 : 0));
                 for (std::size_t zone = 1; zone <= free; ++zone) {
                     double j0 = 0, c0 = 0;  // in s
                     if (zone == n) {
@@ -178,20 +213,10 @@ void fit_run_ends(const Facade& facade, int face, BrickLayout& layout) {
                         near_head |=
                             hb.x0 < hi && hb.x1 > lo && hb.y0 < g.ys[rr + 1] && hb.y1 > g.ys[rr];
                     if (near_head) continue;
-                    // The zone as laid now, its ends cut at the jambs.
-                    long shaved = 0, odd = 0;
-                    for (std::size_t i = 0; i < zone; ++i) {
-                        Rect d = layout.drawn(row, static_cast<int>(at(i)));
-                        if (i == 0 || (zone == n && i + 1 == zone)) {
-                            d.x0 = std::max(d.x0, std::min(xj, side * j0) + h);
-                            d.x1 = std::min(d.x1, std::max(xj, side * j0) - h);
-                        }
-                        const int k = kind(d.width(), ps[at(i)].quoin ? 12 : 4);
-                        shaved += k == 2, odd += k != 0;
-                    }
-                    const long now = 1000 * shaved + 100 * odd;
-                    if (zone == 1) current_cost = now;
-                    if (now == 0) continue;
+                    long shaved = 0, odd = 0;  // in the zone as laid now
+                    for (std::size_t i = 0; i < zone; ++i)
+                        shaved += kinds[i] == 2, odd += kinds[i] != 0;
+                    if (odd == 0) continue;
                     const double span = side * xj - j0;
                     // Every sequence of up to zone + 1 pieces of one to four quarters (the quoin
                     // keeps its length), none or one of them cut to what is left.
@@ -231,7 +256,9 @@ void fit_run_ends(const Facade& facade, int face, BrickLayout& layout) {
                                          plan.extra / 2;
                                     if (stack) continue;
                                     for (auto [j, room] : near)
-                                        clear &= std::abs(s - j) >= quarter + room - eps;
+                                        clear &= std::abs(s - j) >= quarter + room +
+                                                                        std::abs(plan.extra) / 2 +
+                                                                        tol / 2 - eps;
                                 }
                                 if (!clear) continue;
                                 const bool odd_cut = cut >= 0 && kind(plan.cut_length, 4) == 1;
@@ -242,10 +269,20 @@ void fit_run_ends(const Facade& facade, int face, BrickLayout& layout) {
                                     off_bond += std::find(bond_lengths.begin(), bond_lengths.end(),
                                                           ks[i]) == bond_lengths.end();
                                 }
+                                // No shaved brick left, and no more odd pieces, nor more the
+                                // geometry does not force; else fewer of those.
+                                const long odd_then = odd_run - odd + (odd_cut ? 1 : 0);
+                                const long unforced_then =
+                                    std::max(0L, odd_then - (forced(n - zone + t - 1) ? 1 : 0));
+                                if (shaved > 0 ? unforced_then > unforced_now || odd_then > odd_run
+                                               : unforced_then > unforced_now ||
+                                                     (unforced_then == unforced_now &&
+                                                      odd_then >= odd_run))
+                                    continue;
                                 plan.cost =
-                                    100 * odd_cut + 20 * (cut > 0) + 10 * quarters + 5 * off_bond +
+                                    10000 * unforced_then + 1000 * odd_then + 20 * (cut > 0) +
+                                    10 * quarters + 5 * off_bond +
                                     std::abs(static_cast<long>(t) - static_cast<long>(zone));
-                                if (plan.cost >= now) continue;  // no better than as laid
                                 if (best.plan.cost < 0 || plan.cost < best.plan.cost)
                                     best = {plan, zone, j0, c0};
                             }
@@ -263,7 +300,6 @@ void fit_run_ends(const Facade& facade, int face, BrickLayout& layout) {
                         }
                     }
                 }
-                (void)current_cost;
                 if (best.plan.cost < 0) continue;
                 // Lay it: pieces from the jamb end inward, in s, then in x left to right.
                 const Plan& plan = best.plan;

@@ -14,6 +14,10 @@ namespace acanthus::cells::detail {
 // left, never within 12% of a brick or a header. A quoin at the jamb keeps its length, flush.
 // Only where that leaves no shaved brick and no more odd pieces, no piece narrower than a queen
 // closer and no head joint within a quarter brick of one in the course below or above.
-void fit_run_ends(const Facade& facade, int face, BrickLayout& layout);
+void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout);
+
+// A brick cut off at a jamb a few millimetres off whole quarters, laid whole (context.cpp): the
+// piece `r` (its claim `claim` cut at the jamb) as drawn, or an empty rect when it is not.
+Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o);
 
 }  // namespace acanthus::cells::detail
