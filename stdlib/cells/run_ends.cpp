@@ -218,16 +218,15 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                         shaved += kinds[i] == 2, odd += kinds[i] != 0;
                     if (odd == 0) continue;
                     const double span = side * xj - j0;
-                    // Every sequence of up to zone + 1 pieces of one to four quarters (the quoin
-                    // keeps its length), none or one of them cut to what is left.
+                    // Every sequence of up to zone + 1 pieces of one to four quarters (a quoin at
+                    // the jamb whole, its own length where it can), none or one of them cut to
+                    // what is left.
                     for (std::size_t t = 1; t <= std::min<std::size_t>(zone + 1, 4); ++t) {
                         std::vector<int> ks(t, 1);
                         for (bool more = true; more;) {
-                            if (quoin && ks[0] != quoin) {
-                                ks[0] = quoin;  // the quoin's length, never varied
-                            }
                             for (int cut = -1; cut < static_cast<int>(t); ++cut) {
-                                if (cut == 0 && quoin) continue;
+                                // A quoin is whole, half a brick long at least.
+                                if (quoin && (cut == 0 || ks[0] < 2)) continue;
                                 double sum = 0;
                                 for (std::size_t i = 0; i < t; ++i)
                                     if (static_cast<int>(i) != cut) sum += ks[i] * q;
@@ -265,6 +264,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                                 long quarters = 0, off_bond = 0;
                                 for (std::size_t i = 0; i < t; ++i) {
                                     if (static_cast<int>(i) == cut) continue;
+                                    if (i == 0 && quoin) continue;
                                     quarters += ks[i] == 1;
                                     off_bond += std::find(bond_lengths.begin(), bond_lengths.end(),
                                                           ks[i]) == bond_lengths.end();
@@ -281,7 +281,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                                     continue;
                                 plan.cost =
                                     10000 * unforced_then + 1000 * odd_then + 20 * (cut > 0) +
-                                    10 * quarters + 5 * off_bond +
+                                    10 * quarters + 5 * off_bond + 5 * (quoin && ks[0] != quoin) +
                                     std::abs(static_cast<long>(t) - static_cast<long>(zone));
                                 if (best.plan.cost < 0 || plan.cost < best.plan.cost)
                                     best = {plan, zone, j0, c0};
@@ -289,7 +289,6 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                             // The next sequence of lengths.
                             more = false;
                             for (std::size_t i = t; i-- > 0;) {
-                                if (i == 0 && quoin) break;
                                 if (ks[i] < 4) {
                                     ++ks[i];
                                     for (std::size_t k = i + 1; k < t; ++k) ks[k] = 1;
