@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>  // DEBUG
 #include <span>
 #include <utility>
 #include <vector>
@@ -32,7 +31,6 @@ struct Plan {
 }  // namespace
 
 void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout) {
-    if (std::getenv("CELLS_NO_FIT")) return;  // DEBUG
     const CourseGrid& g = layout.grid;
     if (layout.relaid.size() != layout.rows.size()) {
         layout.relaid.assign(layout.rows.size(), {});
@@ -129,8 +127,6 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                 const int ue = side > 0 ? ps[end].start + ps[end].length - 1 : ps[end].start;
                 double xj = 0;
                 if (!jamb_at(row, ue, side < 0, xj)) continue;
-                const double line = g.xs[static_cast<std::size_t>(side > 0 ? ue + 1 : ue)];
-                if (std::abs(xj - line) <= eps) continue;  // flush with its unit line
                 // How many pieces from the jamb end may be laid again.
                 std::size_t free = 0;
                 for (std::size_t i = 0; i < n && free < 3; ++i) {
