@@ -193,6 +193,8 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                         j0 = c0 = side * xo;
                     } else {
                         const std::size_t p = at(zone), z = at(zone - 1);
+                        // A king closer keeps the stretcher beside it, as the bond laid it.
+                        if (ps[p].king) continue;
                         const double jx = side > 0 ? (layout.drawn(row, static_cast<int>(p)).x1 +
                                                       layout.drawn(row, static_cast<int>(z)).x0) /
                                                          2
