@@ -93,6 +93,27 @@ void record_niceness_in_copies(Canvas&, const Element&) {
 }
 // ... and one that fails in every process.
 void throw_in_draw(Canvas&, const Element&) { throw std::runtime_error("drawn badly"); }
+// ... and one that, in a copy (the one drawing the output beside the view), waits up to 20 s
+// for the file `view_to_wait_for` and writes down whether it came.
+std::string view_to_wait_for;
+void wait_for_view_in_copies(Canvas&, const Element&) {
+    static bool waited = false;
+    if (::getpid() == test_process || waited) return;
+    waited = true;
+    bool seen = false;
+    for (int i = 0; i < 2000 && !seen; ++i) {
+        seen = fs::exists(view_to_wait_for);
+        if (!seen) ::usleep(10000);
+    }
+    std::ofstream(view_to_wait_for + ".seen") << (seen ? "seen" : "not seen");
+}
+// ... and one that crashes in copies and fails in the run after its first picture (one call a
+// dot): the view is drawn, the output (its copy crashed) is not.
+int draws_here = 0;
+void fail_after_first_picture(Canvas&, const Element&) {
+    if (::getpid() != test_process) std::abort();
+    if (++draws_here > dot_count) throw std::runtime_error("second picture refused");
+}
 const ElementType& seed::type() const { return seed_type; }
 const ElementType& dot::type() const { return dot_type; }
 
@@ -563,6 +584,32 @@ TEST_F(Program, OutputDrawnByACopyIsTheRunsPicture) {
         for (const std::string& f : files())  // nothing the copy left
             EXPECT_TRUE(f == "plain.svg" || f == "out.svg" || f == "view.png") << f;
     }
+}
+
+// The view is published as soon as it is drawn, while the output is still being drawn (a
+// viewer shows the finished picture without waiting for the rest of the run).
+TEST_F(Program, ViewPublishedBeforeTheRunEnds) {
+    view_to_wait_for = path("view.png");
+    dot_type.draw = &wait_for_view_in_copies;
+    Outcome o = run({"--region", "circle:200", "--resolution", "256", "--param", "limit=200",
+                     "--view", path("view.png"), "--view-size", "300x300", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(read(path("view.png.seen")), "seen");
+    EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
+}
+
+// A run that fails after its view was published removes it: all or none still.
+TEST_F(Program, ViewPublishedThenRunFailingLeavesNoFile) {
+    draws_here = 0;
+    dot_type.draw = &fail_after_first_picture;
+    Outcome o = run({"--region", "circle:100", "--resolution", "128", "--param", "limit=20",
+                     "--view", path("view.png"), "--view-size", "300x300", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    EXPECT_NE(o.code, 0);
+    EXPECT_GT(draws_here, dot_count);  // the view was drawn
+    EXPECT_NE(o.err.find("second picture refused"), std::string::npos) << o.err;
+    EXPECT_TRUE(files().empty());
 }
 
 // A %draw that fails everywhere is reported once, by the run, and leaves no file.

@@ -575,7 +575,14 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
             return detail::coverage(region, elements,
                                     detail::rendered_line_width(region, o.render.width));
         });
-    if (!o.view.empty()) render_to_file(o.view, pattern, region, elements, view_options);
+    if (!o.view.empty()) {
+        render_to_file(o.view, pattern, region, elements, view_options);
+        // Published now, not with the others at the end: a viewer shows the finished picture
+        // while the output, the coverage and the metrics are still being made. No partial
+        // picture comes after it (a first one still drawing is stopped).
+        partials.settle();
+        outputs.publish(o.view);
+    }
     if (output_copy)
         output_copy->finish([&](const std::string& path) {
             render_to_file(path, pattern, region, elements, o.render);
