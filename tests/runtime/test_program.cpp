@@ -560,6 +560,33 @@ TEST_F(Program, LaterPartialPictureCopiesRunNicer) {
         EXPECT_GT(copies[i].second, run_nice) << "copy " << i;
 }
 
+// The copy drawing the output beside the view runs at a lower priority than the run: a viewer
+// waits for the view alone.
+TEST_F(Program, OutputCopyBesideTheViewRunsNicer) {
+    errno = 0;
+    const int run_nice = ::getpriority(PRIO_PROCESS, 0);
+    ASSERT_EQ(errno, 0);
+    if (run_nice >= 19) GTEST_SKIP() << "already at the lowest priority";
+    fs::create_directories(path("nice"));
+    niceness_dir = path("nice");
+    dot_type.draw = &record_niceness_in_copies;
+    Outcome o = run({"--region", "circle:200", "--resolution", "256", "--param", "limit=200",
+                     "--view", path("view.png"), "--view-size", "300x300", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    int copies = 0;
+    for (const auto& e : fs::directory_iterator(path("nice"))) {
+        if (e.path().extension() == ".tmp") continue;
+        std::istringstream line(read(e.path().string()));
+        long long when = 0;
+        int nice = 0;
+        ASSERT_TRUE(line >> when >> nice) << e.path();
+        EXPECT_GT(nice, run_nice);
+        ++copies;
+    }
+    EXPECT_EQ(copies, 1);
+}
+
 // With --view, the output is drawn by a copy of the program while the run draws the view: the
 // same file as without --view; a copy that crashes leaves the drawing to the run.
 TEST_F(Program, OutputDrawnByACopyIsTheRunsPicture) {
