@@ -674,6 +674,75 @@ TEST(PreviewBuild, SplitUnitsCompiledWithTheirHeaderPrecompiled) {
     EXPECT_EQ(count("c++-header"), 0);
 }
 
+// The unit header is precompiled with the rule units' functions after it (renamed, never
+// compiled): the templates the rules use are instantiated in the .gch, not again by the unit
+// of a save that edits a rule. Seen by a deprecation warning that a template gives only when
+// it is instantiated: printed by the header's compile, not by the rule's.
+TEST(PreviewBuild, UnitHeaderPrecompiledWithTheRulesTemplates) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
+    std::string error;
+    const test::TempDir dir("split-header-warm");
+    const CacheDirFor cache(dir.path().string());
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
+    // Each command's messages in a file of its own (ran[k]: dir/messages-k.txt).
+    std::vector<std::vector<std::string>> ran;
+    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
+        std::string command;
+        for (const std::string& a : argv) command += "'" + a + "' ";
+        command += "2>'" +
+                   (dir.path() / ("messages-" + std::to_string(ran.size()) + ".txt")).string() +
+                   "'";
+        ran.push_back(argv);
+        return run_process({"/bin/sh", "-c", command}, e);
+    };
+    const auto messages_of = [&](const std::string& word) {
+        std::string text;
+        for (std::size_t k = 0; k < ran.size(); ++k)
+            if (std::find(ran[k].begin(), ran[k].end(), word) != ran[k].end()) {
+                std::ifstream in(dir.path() / ("messages-" + std::to_string(k) + ".txt"));
+                text += std::string(std::istreambuf_iterator<char>(in), {});
+            }
+        return text;
+    };
+    options.unit_header =
+        "namespace acanthus { using Result = int; struct RuleCall {}; }\n"
+        "struct Legacy { [[deprecated(\"instantiated\")]] static int value() { return 300; } };\n"
+        "template <class T> int read() { return T::value(); }\n";
+    const auto rule = [&](int n) {
+        return options.unit_header +
+               "\n// seed --> dot\nacanthus::Result acr_rule_0(acanthus::RuleCall& call_) {\n" +
+               "    (void)call_;\n    return read<Legacy>() + " + std::to_string(n) + ";\n}\n";
+    };
+    const std::vector<std::string> units{
+        "namespace acanthus { using Result = int; struct RuleCall {}; }\n"
+        "acanthus::Result acr_rule_0(acanthus::RuleCall&);\n"
+        "extern \"C\" int tables_part() { return 1; }\n"
+        "extern \"C\" int rule_part() { acanthus::RuleCall c; return acr_rule_0(c); }\n",
+        options.unit_header + "extern \"C\" int code_part() { return 20; }\n", rule(0)};
+    std::string library;
+    bool splittable = true;
+    options.precompile_unit_header = true;
+    ASSERT_TRUE(cached_split_library(toolchain, options, "w", units, library, splittable, error))
+        << error;
+    EXPECT_EQ(parts_sum(library), 321);
+    ASSERT_EQ(commands_with(ran, "c++-header"), 1);
+    EXPECT_NE(messages_of("c++-header").find("instantiated"), std::string::npos);
+    EXPECT_EQ(commands_with(ran, "-include-pch"), 2);  // (the code and the rule, with it)
+    // The next save's rule, compiled with the .gch: the template is there already.
+    ran.clear();
+    options.precompile_unit_header = false;
+    std::vector<std::string> saved = units;
+    saved[2] = rule(1);
+    ASSERT_TRUE(cached_split_library(toolchain, options, "w", saved, library, splittable, error))
+        << error;
+    EXPECT_EQ(parts_sum(library), 322);
+    ASSERT_EQ(commands_with(ran, "-include-pch"), 1);
+    EXPECT_EQ(messages_of("-include-pch").find("instantiated"), std::string::npos)
+        << messages_of("-include-pch");
+}
+
 // A rule body that gains a line moves the #line numbers of the %source after it in the header:
 // the header precompiled before is still the same code, and the changed rule is compiled with
 // it, not with the header's text again. A header that uses its line numbers (__LINE__) is not.
