@@ -489,6 +489,11 @@ void RenderJob::fill_units() {
         }
     }
     // Cancelled by the next save (run_child watches cancel_); its objects are kept.
+    status_.set_compiling_units(true);
+    struct Done {
+        PreviewStatus& status;
+        ~Done() { status.set_compiling_units(false); }
+    } done{status_};
     const std::string log = (fs::path(config_.work_dir) / "units.log").string();
     bool cancelled = false;
     BuildOptions options = fill_options_;

@@ -110,6 +110,13 @@ void PreviewStatus::step_at(const std::string& step, double at) {
     if (timeline_.size() < 64) timeline_.push_back(json::array({step, at}));
 }
 
+void PreviewStatus::set_compiling_units(bool compiling) {
+    std::lock_guard lock(mutex_);
+    if (compiling_units_ == compiling) return;
+    compiling_units_ = compiling;
+    changed();
+}
+
 void PreviewStatus::set_command(std::string command) {
     std::lock_guard lock(mutex_);
     command_ = std::move(command);
@@ -202,6 +209,7 @@ PreviewStatus::json PreviewStatus::to_json() const {
             // The partial picture that is the finished one (while it grows, and in the render
             // it became): a page showing it has the render's picture already.
             {"final", final_},
+            {"compiling_units", compiling_units_},
             {"picture", picture_},
             {"version", version_}};
 }

@@ -32,6 +32,9 @@ class PreviewStatus {
     void set_stroke_tools(std::vector<StrokeTool> tools);
     std::vector<StrokeTool> stroke_tools() const;
     void set_command(std::string command);
+    // Whether the units of the last build are being compiled after its picture (for the next
+    // saves; a save stops it).
+    void set_compiling_units(bool compiling);
     // Seconds one phase of the current render took (compile, build, grow): where time goes.
     void set_timing(const std::string& phase, double seconds);
     // The wall-clock steps of the current render (seconds since the epoch, so that a client can
@@ -91,6 +94,7 @@ class PreviewStatus {
     long partial_ = 0;       // how many partial pictures the server has had, ever
     long final_ = 0;         // the number of the one that is the finished picture, or 0
     std::string command_;
+    bool compiling_units_ = false;
     json timings_ = json::object();
     json timeline_ = json::array();  // [[step, seconds since the epoch], ...]
     long elements_ = 0;
