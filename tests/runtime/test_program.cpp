@@ -91,6 +91,18 @@ void record_niceness_in_copies(Canvas&, const Element&) {
         << std::chrono::duration_cast<std::chrono::nanoseconds>(now).count() << " " << nice;
     std::rename((name + ".tmp").c_str(), name.c_str());
 }
+// ... and one that writes, in each copy, the size of a pixel it draws at.
+void record_pixel_in_copies(Canvas& canvas, const Element&) {
+    static bool written = false;
+    if (::getpid() == test_process || written) return;
+    written = true;
+    const auto now = std::chrono::steady_clock::now().time_since_epoch();
+    const std::string name = niceness_dir + "/pixel-" + std::to_string(::getpid());
+    std::ofstream(name + ".tmp")
+        << std::chrono::duration_cast<std::chrono::nanoseconds>(now).count() << " "
+        << canvas.pixel();
+    std::rename((name + ".tmp").c_str(), name.c_str());
+}
 // ... and one that fails in every process.
 void throw_in_draw(Canvas&, const Element&) { throw std::runtime_error("drawn badly"); }
 // ... and one that, in a copy (the one drawing the output beside the view), waits up to 20 s
@@ -471,8 +483,9 @@ TEST_F(Program, ViewPictureFitsTheViewSize) {
     const auto [width, height] = size(view);
     EXPECT_EQ(width, 600);
     EXPECT_NEAR(height, 600.0 * (200 + 16) / (400 + 16), 1.0);  // the page's 2% margins
-    if (fs::exists(path("partial.png"))) {
-        EXPECT_EQ(size(read(path("partial.png"))).first, 600);
+    if (fs::exists(path("partial.png"))) {                      // (the first at half the size)
+        const long partial_width = size(read(path("partial.png"))).first;
+        EXPECT_TRUE(partial_width == 600 || partial_width == 300) << partial_width;
     }
     // A tall page fits by its height.
     o = run({"--region", "rect:100,400", "--param", "limit=50", "--view", path("tall.png"),
@@ -585,6 +598,32 @@ TEST_F(Program, OutputCopyBesideTheViewRunsNicer) {
         ++copies;
     }
     EXPECT_EQ(copies, 1);
+}
+
+// The first PNG partial picture (a viewer's first look) is drawn at half the view's size, the
+// later ones at the view's size: its pixels twice as large.
+TEST_F(Program, FirstPartialPictureAtHalfTheViewSize) {
+    fs::create_directories(path("pixels"));
+    niceness_dir = path("pixels");
+    dot_type.draw = &record_pixel_in_copies;
+    Outcome o = run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000",
+                     "--param", "dot_radius=2", "--partial", path("partial.png"), "--partial-every",
+                     "0.01", "--view-size", "600x600", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    std::vector<std::pair<long long, double>> copies;  // (when it drew, its pixel)
+    for (const auto& e : fs::directory_iterator(path("pixels"))) {
+        if (e.path().extension() == ".tmp") continue;
+        std::istringstream line(read(e.path().string()));
+        long long when = 0;
+        double pixel = 0;
+        ASSERT_TRUE(line >> when >> pixel) << e.path();
+        copies.emplace_back(when, pixel);
+    }
+    ASSERT_GE(copies.size(), 2u) << "too few partial pictures to compare";
+    std::sort(copies.begin(), copies.end());
+    for (std::size_t i = 1; i < copies.size(); ++i)
+        EXPECT_NEAR(copies.front().second, 2 * copies[i].second, 0.02 * copies[i].second) << i;
 }
 
 // With --view, the output is drawn by a copy of the program while the run draws the view: the
