@@ -531,8 +531,17 @@ bool cached_split_library(const Toolchain& toolchain, const BuildOptions& option
             objects[1] = object_of(key);
         }
     }
+    std::vector<bool> optimised(units.size(), false);
+    if (code_options.optimization != options.optimization)
+        for (std::size_t k = 2; k < units.size(); ++k) {
+            const std::string key = key_of(k, code_options);
+            if (!options.optimise_rules && access(object_of(key).c_str(), R_OK) != 0) continue;
+            keys[k] = key;
+            objects[k] = object_of(key);
+            optimised[k] = true;
+        }
     const auto unit_options = [&](std::size_t k) -> const BuildOptions& {
-        return k == 1 && code_optimised ? code_options : options;
+        return (k == 1 && code_optimised) || optimised[k] ? code_options : options;
     };
     std::vector<std::string> key_parts = keys;
     key_parts.insert(key_parts.end(), options.link_command.begin(), options.link_command.end());

@@ -510,8 +510,15 @@ void RenderJob::fill_units() {
                              splittable, error) &&
         !cancel_ && !options.code_unit_optimization.empty()) {
         options.code_unit_later = false;
-        cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
-                             splittable, error);
+        // Then the rule units optimised too, for the saves after (the rules they do not edit
+        // run at that level: chinese_vase's growth took 14% more instructions at -O0).
+        if (cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
+                                 splittable, error) &&
+            !cancel_) {
+            options.optimise_rules = true;
+            cached_split_library(config_.toolchain, options, fill_stem_, units_to_fill_, library,
+                                 splittable, error);
+        }
     }
     units_to_fill_.clear();
 }

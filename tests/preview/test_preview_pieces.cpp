@@ -576,6 +576,71 @@ TEST(PreviewBuild, SplitUnitsTwoAtATimeTheCodeUnitOptimisedLater) {
     EXPECT_EQ(third, second);
 }
 
+// The rule units optimised after a picture (optimise_rules): a save then links the optimised
+// object of each rule it did not edit, and compiles the edited one at the ordinary level.
+TEST(PreviewBuild, RuleUnitsOptimisedAfterAPictureForTheSavesAfter) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
+    std::string error;
+    const test::TempDir dir("split-rules-optimised");
+    const CacheDirFor cache(dir.path().string());
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
+    ASSERT_EQ(options.optimization, "0");
+    options.code_unit_optimization = "2";
+    // Which unit each compile was (its function's name, read while the source is there), at
+    // which level: "rule_part@2".
+    std::vector<std::string> seen;
+    options.runner = [&seen](const std::vector<std::string>& argv, std::string& e) {
+        const auto c = std::find(argv.begin(), argv.end(), "-c");
+        if (c != argv.end() && c + 1 != argv.end()) {
+            std::ifstream in(*(c + 1));
+            const std::string text(std::istreambuf_iterator<char>(in), {});
+            const std::size_t at = text.find("int ") + 4;
+            for (const char* level : {"-O0", "-O2"})
+                if (std::find(argv.begin(), argv.end(), level) != argv.end())
+                    seen.push_back(text.substr(at, text.find("()") - at) + "@" + (level + 2));
+        }
+        return run_process(argv, e);
+    };
+    const auto compiled = [&] {
+        std::sort(seen.begin(), seen.end());
+        return seen;
+    };
+    const auto rule = [](const char* name, int n) {
+        return std::string("extern \"C\" int ") + name + "() { return " + std::to_string(n) +
+               "; }\n";
+    };
+    std::vector<std::string> units{rule("tables_part", 1), rule("code_part", 20),
+                                   rule("rule_part", 300), rule("other_rule", 4000)};
+    std::string library;
+    bool splittable = true;
+    // The build after a picture: every unit, the code and the rules optimised.
+    options.optimise_rules = true;
+    ASSERT_TRUE(cached_split_library(toolchain, options, "r", units, library, splittable, error))
+        << error;
+    EXPECT_EQ(compiled(), (std::vector<std::string>{"code_part@2", "other_rule@2", "rule_part@2",
+                                                    "tables_part@0"}));
+    EXPECT_EQ(parts_sum(library), 321);
+    // A save that edits one rule: that rule at the ordinary level, the other one optimised.
+    seen.clear();
+    options.optimise_rules = false;
+    units[2] = rule("rule_part", 301);
+    ASSERT_TRUE(cached_split_library(toolchain, options, "r", units, library, splittable, error))
+        << error;
+    EXPECT_EQ(compiled(), (std::vector<std::string>{"rule_part@0"}));
+    EXPECT_EQ(parts_sum(library), 322);
+    const std::string edited = library;
+    // Back to the rule as it was: its optimised object, nothing compiled.
+    seen.clear();
+    units[2] = rule("rule_part", 300);
+    ASSERT_TRUE(cached_split_library(toolchain, options, "r", units, library, splittable, error))
+        << error;
+    EXPECT_TRUE(compiled().empty());
+    EXPECT_EQ(parts_sum(library), 321);
+    EXPECT_NE(library, edited);
+}
+
 // The generated units' shared header: what the code unit and every rule unit start with (the
 // %param globals, the %source, the element classes), and not the tables.
 TEST(PreviewBuild, GeneratedUnitsStartWithTheirHeader) {
