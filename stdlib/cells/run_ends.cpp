@@ -185,11 +185,8 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                 const long unforced_now = std::max(0L, odd_run - (forced(n - 1) ? 1 : 0));
                 for (std::size_t zone = 1; zone <= free; ++zone) {
                     double j0 = 0, c0 = 0;  // in s
-                    if (zone == n) {
-                        double xo = 0;
-                        const int uo =
-                            side > 0 ? ps[a0].start : ps[b - 1].start + ps[b - 1].length - 1;
-                        if (!jamb_at(row, uo, side > 0, xo)) continue;
+                    if (zone == n) {        // the whole run, from its other jamb
+                        if (!known) continue;
                         j0 = c0 = side * xo;
                     } else {
                         const std::size_t p = at(zone), z = at(zone - 1);
