@@ -45,15 +45,15 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         bool left;  // the face to its right: a run's left end
     };
     std::vector<Jamb> jambs;
-    // Heads and arcs other generators claim before the bricks: runs there stay as they are.
+    // Runs across a head or an arc (within its outline's bounds) stay as they are. Beside one,
+    // what its generators claim first (a ring, a lintel's bearing, soldiers) cuts the pieces
+    // laid again as it cut those of the bond: that keeps no fewer whole.
     std::vector<Rect> heads;
-    const double reach = 2 * (4 * q);
     for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
         const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
         if (edge.opening && !plumb(edge) && (edge.arc || edge.part != Part::bottom)) {
             const Rect b = edge.bounds;
-            heads.push_back(
-                {b.x0 - reach, b.y0 - reach, b.x1 + reach, edge.arc ? b.y1 + reach : b.y1 + m});
+            heads.push_back({b.x0, b.y0, b.x1, edge.arc ? b.y1 : b.y1 + m});
         }
         if (plumb(edge))
             jambs.push_back({edge.bounds.x0, edge.bounds.y0, edge.bounds.y1,
@@ -185,11 +185,8 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                 const long unforced_now = std::max(0L, odd_run - (forced(n - 1) ? 1 : 0));
                 for (std::size_t zone = 1; zone <= free; ++zone) {
                     double j0 = 0, c0 = 0;  // in s
-                    if (zone == n) {
-                        double xo = 0;
-                        const int uo =
-                            side > 0 ? ps[a0].start : ps[b - 1].start + ps[b - 1].length - 1;
-                        if (!jamb_at(row, uo, side > 0, xo)) continue;
+                    if (zone == n) {        // the whole run, from its other jamb
+                        if (!known) continue;
                         j0 = c0 = side * xo;
                     } else {
                         const std::size_t p = at(zone), z = at(zone - 1);
