@@ -4,7 +4,7 @@
 # from saving a changed rule body to the new revision in /status.json (compile, build with the
 # precompiled prelude, grow, render), and to the new picture painted by the page in headless
 # Chromium (tests/preview/paint_time.js, puppeteer-core from its package-lock.json): the median of
-# 3 edits after a first render. Last line: one JSON object, {"seconds": {"dots": ..., ...},
+# 3 edits after a first render (and its units, compiled after its picture). Last line: one JSON object, {"seconds": {"dots": ..., ...},
 # "max": ..., "build_cpu_seconds": {...}, "grow_cpu_seconds": {...}, "painted_seconds": {...},
 # "painted_max": ...} (server times only without Chromium); the *_cpu_ times are processor
 # seconds of the build's commands and of the program's run, which the load does not stretch.

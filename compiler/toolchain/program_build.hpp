@@ -36,6 +36,11 @@ struct BuildOptions {
     unsigned jobs = 1;
     std::string code_unit_optimization;
     bool code_unit_later = false;
+    // The rule units (units[2...]) at the code unit's level: with `optimise_rules`, each is
+    // compiled so (a build after a picture); without, a rule unit whose object at that level
+    // is in the cache is linked in place of its ordinary one (the rules a save did not edit
+    // run optimised; the edited one, compiled at `optimization`, does not wait for it).
+    bool optimise_rules = false;
     // A split build with clang: the text the code unit and each rule unit start with (the
     // %param globals, %source and element classes: GeneratedUnits::header). Once precompiled
     // (chained on `precompiled_header`), a unit that starts with it compiles only the rest;

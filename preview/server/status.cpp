@@ -47,6 +47,7 @@ void PreviewStatus::begin(const std::string& phase) {
     phase_ = phase;
     if (phase == "compiling") progress_iterations_ = progress_elements_ = 0, progress_seconds_ = 0;
     partial_png_.clear();
+    final_ = 0;
     changed();
 }
 
@@ -59,11 +60,15 @@ void PreviewStatus::progress(long iterations, long elements, double seconds) {
     changed();
 }
 
-void PreviewStatus::set_partial(std::string png) {
+void PreviewStatus::set_partial(std::string png, bool final) {
     std::lock_guard lock(mutex_);
-    if (timeline_.size() < 48) timeline_.push_back(json::array({"partial", now_epoch()}));
+    if (final)
+        timeline_.push_back(json::array({"final", now_epoch()}));
+    else if (timeline_.size() < 48)
+        timeline_.push_back(json::array({"partial", now_epoch()}));
     partial_png_ = std::move(png);
     ++partial_;
+    if (final) final_ = partial_;
     changed();
 }
 
@@ -103,6 +108,13 @@ void PreviewStatus::step(const std::string& step) { step_at(step, now_epoch()); 
 void PreviewStatus::step_at(const std::string& step, double at) {
     std::lock_guard lock(mutex_);
     if (timeline_.size() < 64) timeline_.push_back(json::array({step, at}));
+}
+
+void PreviewStatus::set_compiling_units(bool compiling) {
+    std::lock_guard lock(mutex_);
+    if (compiling_units_ == compiling) return;
+    compiling_units_ = compiling;
+    changed();
 }
 
 void PreviewStatus::set_command(std::string command) {
@@ -148,6 +160,7 @@ void PreviewStatus::fail(const std::string& kind, const std::string& output,
     output_ = output;
     diagnostics_ = std::move(diagnostics);
     partial_png_.clear();
+    final_ = 0;
     seconds_ = seconds;
     changed();
 }
@@ -193,6 +206,10 @@ PreviewStatus::json PreviewStatus::to_json() const {
             {"revisions", kept},
             // The number of the partial picture /partial.png has now; 0 when it has none.
             {"partial", partial_png_.empty() ? 0 : partial_},
+            // The partial picture that is the finished one (while it grows, and in the render
+            // it became): a page showing it has the render's picture already.
+            {"final", final_},
+            {"compiling_units", compiling_units_},
             {"picture", picture_},
             {"version", version_}};
 }

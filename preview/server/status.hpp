@@ -23,13 +23,18 @@ class PreviewStatus {
     // A render began: compiling, then building, then growing.
     void begin(const std::string& phase);
     void progress(long iterations, long elements, double seconds);
-    // A picture of the growth so far (the program's --partial, PNG), while it grows.
-    void set_partial(std::string png);
+    // A picture of the growth so far (the program's --partial, PNG), while it grows; `final`:
+    // the finished picture (the program's --view, published before its run ends), which the
+    // render's revision shows if the run ends well.
+    void set_partial(std::string png, bool final = false);
     void set_params(std::vector<ParamSummary> params);
     // The stroke tools of the libraries the program imports (the page offers them).
     void set_stroke_tools(std::vector<StrokeTool> tools);
     std::vector<StrokeTool> stroke_tools() const;
     void set_command(std::string command);
+    // Whether the units of the last build are being compiled after its picture (for the next
+    // saves; a save stops it).
+    void set_compiling_units(bool compiling);
     // Seconds one phase of the current render took (compile, build, grow): where time goes.
     void set_timing(const std::string& phase, double seconds);
     // The wall-clock steps of the current render (seconds since the epoch, so that a client can
@@ -87,7 +92,9 @@ class PreviewStatus {
     };
     std::deque<Kept> kept_;  // good renders, oldest first
     long partial_ = 0;       // how many partial pictures the server has had, ever
+    long final_ = 0;         // the number of the one that is the finished picture, or 0
     std::string command_;
+    bool compiling_units_ = false;
     json timings_ = json::object();
     json timeline_ = json::array();  // [[step, seconds since the epoch], ...]
     long elements_ = 0;

@@ -11,6 +11,7 @@
 #include "context_data.hpp"
 #include "lintel.hpp"
 #include "quoin_rows.hpp"
+#include "run_ends.hpp"
 #include "sill_rows.hpp"
 
 namespace acanthus::cells::detail {
@@ -776,6 +777,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
         }
         set_joints(layout);
         relay_runs(facade, face, layout);
+        fit_run_ends(facade, face, o, layout);
         // Bond breaks over and under the openings whose width is no whole number of quarters,
         // the piers beside them set out from their jambs: kept when they leave fewer odd pieces
         // the geometry does not force and no straight joint more.
@@ -784,6 +786,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
             if (badness(broken) / 100 <= badness(layout) / 100) {
                 set_joints(broken);
                 relay_runs(facade, face, broken);
+                fit_run_ends(facade, face, o, broken);
                 if (unforced_odd(facade, face, broken) < unforced_odd(facade, face, layout))
                     layout = std::move(broken);
             }

@@ -10,6 +10,7 @@
 #include "facade_data.hpp"
 #include "face_occupancy.hpp"
 #include "feature_walk.hpp"
+#include "run_ends.hpp"
 
 namespace acanthus::cells {
 
@@ -25,6 +26,60 @@ int face_of(const Facade& facade, const FeatureRef& f) {
     }
     return 0;
 }
+
+namespace {
+
+// A brick cut off by a jamb a few millimetres off a whole number of quarter bricks: laid whole.
+// Shorter than its space, it reaches into the reveal's half joint (the brick's face may be the
+// reveal); longer, its head joint opens by the difference. That head joint never closes (past
+// the tolerance, or within a quarter brick of the joint above or below).
+double nominal_width(Rect r, const Options& o) {
+    const double q = (o.brick_length + o.mortar) / 4;
+    const double m = std::round(r.width() / q);
+    return m >= 1 ? m * q - o.mortar : 0;
+}
+
+}  // namespace
+
+// The drawn brick, or an empty rect when the piece is no shaved brick at a jamb.
+Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o) {
+    const double h = o.mortar / 2, w = nominal_width(r, o), short_by = w - (r.width() - o.mortar);
+    const double eps = 1e-9 * std::max(1.0, std::abs(r.x1) + std::abs(r.y1));
+    const bool left = r.x0 > claim.x0 + eps, right = r.x1 < claim.x1 - eps;
+    // Full-height courses only, cut at one end only; short by no more than the reveal's half
+    // joint (and twice the tolerance), or long by no more than the head joint may open.
+    // Never by more than a quarter joint: a quarter brick is a quarter joint shorter than a unit,
+    // so two such joints moved towards each other in consecutive courses stay a quarter brick
+    // apart (no straight joint).
+    // On a grid whose units the joints squeezed to fit the wall, a unit is less than a quarter
+    // joint over a quarter brick: the joint moves by half what the brick reaches into it, and
+    // stays a tenth of a joint clear of that margin.
+    const double most = std::min(o.mortar / 4, o.joint_tolerance);
+    const double units =
+        std::max(1.0, std::round(claim.width() / ((o.brick_length + o.mortar) / 4)));
+    const double margin = claim.width() / units - o.brick_length / 4;
+    const double reach = std::min({h, 2 * most, 2 * margin - 0.1 * o.mortar});
+    // On units the joints opened to bring jambs onto joints, the next brick's joint is open
+    // already, by up to half a stretcher's four units' stretch.
+    const double opened =
+        std::max(0.0, 4 * (claim.width() / units - (o.brick_length + o.mortar) / 4));
+    const bool fits = short_by > 0 ? short_by <= reach + eps : -short_by <= most - opened + eps;
+    if (w <= 0 || std::abs(short_by) <= eps || !fits || left == right || r.y0 > drawn.y0 + eps ||
+        r.y1 < drawn.y1 - eps ||
+        std::abs(r.height() - (drawn.height() + o.mortar)) > o.joint_tolerance + eps)
+        return {0, 0, 0, 0};
+    // Short of its space, the brick keeps its uncut end where a whole brick's is (its head
+    // joint as laid) and reaches into the reveal's half joint, never past the reveal; longer,
+    // it stands a half joint off the reveal and the head joint opens, by a quarter joint at most.
+    if (short_by > 0)
+        return left ? Rect{std::max(r.x0, drawn.x1 - w), drawn.y0, std::max(r.x0, drawn.x1 - w) + w,
+                           drawn.y1}
+                    : Rect{std::min(r.x1, drawn.x0 + w) - w, drawn.y0, std::min(r.x1, drawn.x0 + w),
+                           drawn.y1};
+    return left ? Rect{r.x0 + h, drawn.y0, r.x0 + h + w, drawn.y1}
+                : Rect{r.x1 - h - w, drawn.y0, r.x1 - h, drawn.y1};
+}
+
 }  // namespace detail
 
 Context::Context(const Facade& facade, const Options& options, std::uint64_t seed)
@@ -81,55 +136,6 @@ void Context::begin(const std::string& generator, const FeatureRef& feature) {
 using detail::axis_rect;
 
 namespace {
-
-// A brick cut off by a jamb a few millimetres off a whole number of quarter bricks: laid whole.
-// Shorter than its space, it reaches into the reveal's half joint (the brick's face may be the
-// reveal); longer, its head joint opens by the difference. That head joint never closes (past
-// the tolerance, or within a quarter brick of the joint above or below).
-double nominal_width(Rect r, const Options& o) {
-    const double q = (o.brick_length + o.mortar) / 4;
-    const double m = std::round(r.width() / q);
-    return m >= 1 ? m * q - o.mortar : 0;
-}
-
-// The drawn brick, or an empty rect when the piece is no shaved brick at a jamb.
-Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o) {
-    const double h = o.mortar / 2, w = nominal_width(r, o), short_by = w - (r.width() - o.mortar);
-    const double eps = 1e-9 * std::max(1.0, std::abs(r.x1) + std::abs(r.y1));
-    const bool left = r.x0 > claim.x0 + eps, right = r.x1 < claim.x1 - eps;
-    // Full-height courses only, cut at one end only; short by no more than the reveal's half
-    // joint (and twice the tolerance), or long by no more than the head joint may open.
-    // Never by more than a quarter joint: a quarter brick is a quarter joint shorter than a unit,
-    // so two such joints moved towards each other in consecutive courses stay a quarter brick
-    // apart (no straight joint).
-    // On a grid whose units the joints squeezed to fit the wall, a unit is less than a quarter
-    // joint over a quarter brick: the joint moves by half what the brick reaches into it, and
-    // stays a tenth of a joint clear of that margin.
-    const double most = std::min(o.mortar / 4, o.joint_tolerance);
-    const double units =
-        std::max(1.0, std::round(claim.width() / ((o.brick_length + o.mortar) / 4)));
-    const double margin = claim.width() / units - o.brick_length / 4;
-    const double reach = std::min({h, 2 * most, 2 * margin - 0.1 * o.mortar});
-    // On units the joints opened to bring jambs onto joints, the next brick's joint is open
-    // already, by up to half a stretcher's four units' stretch.
-    const double opened =
-        std::max(0.0, 4 * (claim.width() / units - (o.brick_length + o.mortar) / 4));
-    const bool fits = short_by > 0 ? short_by <= reach + eps : -short_by <= most - opened + eps;
-    if (w <= 0 || std::abs(short_by) <= eps || !fits || left == right || r.y0 > drawn.y0 + eps ||
-        r.y1 < drawn.y1 - eps ||
-        std::abs(r.height() - (drawn.height() + o.mortar)) > o.joint_tolerance + eps)
-        return {0, 0, 0, 0};
-    // Short of its space, the brick keeps its uncut end where a whole brick's is (its head
-    // joint as laid) and reaches into the reveal's half joint, never past the reveal; longer,
-    // it stands a half joint off the reveal and the head joint opens, by a quarter joint at most.
-    if (short_by > 0)
-        return left ? Rect{std::max(r.x0, drawn.x1 - w), drawn.y0, std::max(r.x0, drawn.x1 - w) + w,
-                           drawn.y1}
-                    : Rect{std::min(r.x1, drawn.x0 + w) - w, drawn.y0, std::min(r.x1, drawn.x0 + w),
-                           drawn.y1};
-    return left ? Rect{r.x0 + h, drawn.y0, r.x0 + h + w, drawn.y1}
-                : Rect{r.x1 - h - w, drawn.y0, r.x1 - h, drawn.y1};
-}
 
 // The vertices of `d` (a cut piece drawn inset by `h` from its claim `claimed`) on the claim's
 // beds moved to the drawn brick's beds, unless another vertex lies between, where the move
@@ -244,7 +250,7 @@ int Context::place(const std::vector<Point>& claim, int course, bool clip, const
             drawn_cells.push_back(detail::polygon_of(*drawn));
         } else if (Rect claimed, n;
                    drawn && axis_rect(piece, r) && axis_rect(claim, claimed) &&
-                   (n = nominal_at_jamb(r, claimed, *drawn, data_->options)).width() > 0) {
+                   (n = detail::nominal_at_jamb(r, claimed, *drawn, data_->options)).width() > 0) {
             drawn_cells.push_back(detail::polygon_of(n));
         } else if (axis_rect(piece, r)) {
             // A cut piece keeps its course's beds: where the joints took up a course's

@@ -27,7 +27,7 @@ void quoin(Context& c, detail::BrickLayout& layout, const Edge& e, Point inside)
         if (taken) return;
         taken = 1;
         const Rect drawn = layout.drawn(row, k);
-        c.place(detail::polygon_of(layout.rect(row, k)), layout.grid.course(row), true, &drawn);
+        c.place(detail::polygon_of(layout.claim(row, k)), layout.grid.course(row), true, &drawn);
         return;
     }
     // A bonded-in layout has no quoin in this course (a head or sill falls within it): the

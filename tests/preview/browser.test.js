@@ -585,6 +585,74 @@ async function partialPictures(browser) {
   await page.close();
 }
 
+// The finished picture is shown as soon as the program has drawn it, before the run ends (the
+// SVG drawn by a copy of the program, here held up 1.5 s): the page shows it while the status
+// is still running, and the render's status then names it, so the page does not fetch it again.
+// A run that fails after it (the SVG's drawing crashing) goes back to the last good picture.
+async function finishedPictureEarly(browser) {
+  const work = workDir();
+  const rules = path.join(work, "bubbles.acr");
+  const swap = (text, from, to) => text.split(from).join(to);
+  const fixture = fs.readFileSync(path.join(here, "fixtures", "bubbles.acr"), "utf8");
+  const withDraw = (helper, call) => swap(swap(fixture, "int dot_count = 0;\n",
+                                               "int dot_count = 0;\n#include <unistd.h>\n#include <chrono>\n#include <stdexcept>\n" +
+                                               "#include <thread>\nstatic const pid_t main_process = getpid();\n" + helper),
+                                          "%draw dot\n", `%draw dot\n${call};\n`);
+  // In a copy of the program (the SVG's, the partial pictures'), the first dot waits 1.5 s.
+  const slow = withDraw("static bool slept = false;\nstatic void slow_in_copies() {\n" +
+                        "    if ( slept || getpid() == main_process ) return;\n    slept = true;\n" +
+                        "    std::this_thread::sleep_for( std::chrono::milliseconds( 1500 ) );\n}\n", "slow_in_copies()");
+  check(slow.includes("slow_in_copies();"), "the slow-copy fixture is made");
+  save(rules, slow);
+  const { url } = await startServer("bubbles.acr", ["--region", "rect:120,80"], work);
+  const page = await browser.newPage();
+  await watchPolicy(page);
+  await page.setViewport({ width: 1280, height: 760 });
+  await page.evaluateOnNewDocument(() => {
+    window.pictures = [];  // [data-picture, data-state] each time the picture changed
+    new MutationObserver(() => {
+      const b = document.body.dataset;
+      window.pictures.push([b.picture, b.state, b.final || "", b.shown || ""]);
+    }).observe(document, { attributes: true, subtree: true, attributeFilter: ["data-picture", "data-final", "data-shown"] });
+  });
+  await page.goto(url);
+  const rev = await waitShown(page, 0);
+  const early = await page.evaluate(() => window.pictures);
+  check(early.some(([picture, state]) => picture === "final" && state === "running"),
+        "the finished picture is shown while the run still goes on: " + JSON.stringify(early));
+  const s = await status(url);
+  check(s.final > 0 && early.some(([picture, , n]) => picture === "final" && Number(n) === s.final),
+        `the render's status names the picture shown early as its own (final ${s.final})`);
+  const fetched = await page.evaluate((r) => performance.getEntriesByType("resource")
+    .filter((e) => e.name.includes(`/view.png?revision=${r}`)).length, rev);
+  check(fetched === 0, `the page did not fetch the render's picture again (${fetched} fetches of /view.png)`);
+  const shown = Buffer.from(await page.evaluate(async () => Array.from(new Uint8Array(await page.pictureBytes.arrayBuffer()))));
+  const view = Buffer.from(await (await fetch(url + "view.png")).arrayBuffer());
+  check(shown.equals(view) && await page.evaluate(() => document.body.dataset.picture) === "render",
+        `the picture shown is the render's, byte for byte (${shown.length} and ${view.length} bytes)`);
+
+  // The SVG's drawing fails (in the copy, then 1.5 s into the program's own try) after the view
+  // was drawn: an error, and the last good picture.
+  const before = await page.evaluate(() => window.pictures.length);
+  save(rules, withDraw("static int draws_here = 0;\nstatic void fail_after_first_picture() {\n" +
+                       "    if ( getpid() != main_process ) std::abort();\n" +
+                       "    if ( ++draws_here <= dot_count ) return;\n" +
+                       "    std::this_thread::sleep_for( std::chrono::milliseconds( 1500 ) );\n" +
+                       "    throw std::runtime_error( \"second picture refused\" );\n}\n",
+                       "fail_after_first_picture()"));
+  const failed = await waitShown(page, rev, "error");
+  await page.waitForFunction(() => document.body.dataset.picture === "render", { timeout: 10000, polling: 50 }).catch(() => {});
+  const after = (await page.evaluate(() => window.pictures)).slice(before);
+  const end = await page.evaluate(() => [document.body.dataset.picture, document.getElementById("diagnostics").textContent]);
+  const back = Buffer.from(await page.evaluate(async () => Array.from(new Uint8Array(await page.pictureBytes.arrayBuffer()))));
+  check(after.some(([picture]) => picture === "final"), "the failing run's finished picture was shown: " + JSON.stringify(after));
+  check(end[0] === "render" && back.equals(view) && end[1].includes("second picture refused"),
+        `a run that fails after its finished picture is an error (revision ${failed}) over the last good picture: ` +
+        JSON.stringify(end));
+  await checkPolicy(page, "the finished picture early");
+  await page.close();
+}
+
 (async () => {
   let browser;
   const watchdog = setTimeout(() => { console.log("FAIL: the browser tests took over 8 minutes"); stopServers(); process.exit(1); }, 480000);
@@ -593,8 +661,8 @@ async function partialPictures(browser) {
                                        args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"] });
     // ACANTHUS_BROWSER_TESTS=name,name runs only those.
     const only = (process.env.ACANTHUS_BROWSER_TESTS || "").split(",").filter(Boolean);
-    for (const test of [rulesAndSliders, growthTools, colourPickers, partialPictures, revisionsAndVariations,
-                        manyTabs])
+    for (const test of [rulesAndSliders, growthTools, colourPickers, partialPictures, finishedPictureEarly,
+                        revisionsAndVariations, manyTabs])
       if (!only.length || only.includes(test.name)) await test(browser);
   } catch (e) {
     console.log("FAIL: " + (e && e.stack ? e.stack : e));

@@ -134,6 +134,16 @@ def main():
             s = server.wait_revision(0)
             check(s["state"] == "ok" and s["elements"] > 10 and s["phase"] == "done",
                   "first render ok with elements")
+            if shutil.which("clang++"):
+                # The first build was the whole file; its units are compiled after the picture,
+                # and the status says so while they are.
+                seen, end = [], time.monotonic() + 60
+                while time.monotonic() < end and not (True in seen and seen[-1] is False):
+                    seen.append(server.status()["compiling_units"])
+                    time.sleep(0.01)
+                check(True in seen and seen[-1] is False,
+                      "compiling_units while the first build's units are compiled, then not "
+                      "(%d looks, %d true)" % (len(seen), seen.count(True)))
             check(s["params"][0] == {"name": "max_radius", "type": "double", "default": "3.0",
                                      "range": ["0.5", "10"]}, "params with the declared range")
             check([p["type"] for p in s["params"]] == ["double", "double", "bool"], "param types")

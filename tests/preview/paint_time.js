@@ -4,7 +4,8 @@
 // wall-clock time (ms since the epoch) of the first frame after the page's picture of revision
 // REV or later loaded, or "painted REV none" after 120 s; FIRST the first frame painted after
 // SINCE (ms since the epoch) with the growth so far (a partial picture) or the picture itself:
-// the user's first look. A fifth word, the page's steps for that picture as JSON (ms since the
+// the user's first look. The finished picture may come before its run ends (marked final) and
+// counts as painted for REV when the page takes it as REV's picture. A fifth word, the page's steps for that picture as JSON (ms since the
 // epoch): "event" the status with the revision came, "fetch" and "fetched" the picture's request
 // and its last byte, "loaded" the <img> decoded it.
 "use strict";
@@ -26,21 +27,37 @@ const [url, chromium] = process.argv.slice(2);
       window.partialsAt = [];
       window.eventAt = {};
       window.loadedAt = {};
+      window.finalAt = {};
+      window.finalLoadedAt = {};
       new MutationObserver((records) => {
         const now = Date.now();
-        if (records.some((r) => r.attributeName === "data-revision")) {
+        const changed = (name) => records.some((r) => r.attributeName === name);
+        if (changed("data-revision")) {
           const r = Number(document.body.dataset.revision);
           if (!(r in window.eventAt)) window.eventAt[r] = now;
         }
-        if (!records.some((r) => r.attributeName !== "data-revision")) return;
-        const partial = records.some((r) => r.attributeName === "data-partial");
+        // The finished picture, shown before its run ended (data-final, the partial picture the
+        // server marked final): painted then. It is revision R's picture only once the page
+        // adopts it as R's (data-adopted, when R's status named it): R's paint is the final's.
+        if (changed("data-final")) {
+          const n = Number(document.body.dataset.final);
+          window.finalLoadedAt[n] = now;
+          requestAnimationFrame(() => requestAnimationFrame(() => {
+            window.finalAt[n] = Date.now();
+            window.partialsAt.push(window.finalAt[n]);
+          }));
+        }
+        if (changed("data-partial"))
+          requestAnimationFrame(() => requestAnimationFrame(() => window.partialsAt.push(Date.now())));
+        if (!changed("data-shown")) return;
         const rev = Number(document.body.dataset.shown);
-        if (!partial) window.loadedAt[rev] = now;
+        const adopted = document.body.dataset.adopted;
+        window.loadedAt[rev] = adopted ? window.finalLoadedAt[adopted] : now;
         requestAnimationFrame(() => requestAnimationFrame(() => {
-          if (partial) window.partialsAt.push(Date.now());
-          else window.paintedAt[rev] = Date.now();
+          window.paintedAt[rev] = (adopted && window.finalAt[adopted]) || Date.now();
         }));
-      }).observe(document, { attributes: true, subtree: true, attributeFilter: ["data-shown", "data-partial", "data-revision"] });
+      }).observe(document, { attributes: true, subtree: true,
+                             attributeFilter: ["data-shown", "data-partial", "data-final", "data-revision"] });
     });
     await page.goto(url);
     await page.waitForFunction(() => Object.keys(window.paintedAt).length > 0, { timeout: 300000, polling: 50 });
@@ -62,8 +79,11 @@ const [url, chromium] = process.argv.slice(2);
         steps = await page.evaluate((r) => {
           const shown = Object.keys(window.paintedAt).map(Number).filter((k) => k >= r).sort((a, b) => a - b)[0];
           const at = (t) => Math.round(performance.timeOrigin + t);
+          // (an adopted final picture was fetched as /partial.png?n=N)
+          const adopted = window.eventAt[shown] && document.body.dataset.adopted;
           const fetch = performance.getEntriesByType("resource")
-            .filter((e) => e.name.includes(`/view.png?revision=${shown}`)).pop();
+            .filter((e) => e.name.includes(`/view.png?revision=${shown}`) ||
+                           (adopted && e.name.includes(`/partial.png?n=${adopted}`))).pop();
           return { event: window.eventAt[shown], loaded: window.loadedAt[shown],
                    fetch: fetch && at(fetch.startTime), fetched: fetch && at(fetch.responseEnd) };
         }, rev);

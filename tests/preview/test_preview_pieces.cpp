@@ -576,6 +576,71 @@ TEST(PreviewBuild, SplitUnitsTwoAtATimeTheCodeUnitOptimisedLater) {
     EXPECT_EQ(third, second);
 }
 
+// The rule units optimised after a picture (optimise_rules): a save then links the optimised
+// object of each rule it did not edit, and compiles the edited one at the ordinary level.
+TEST(PreviewBuild, RuleUnitsOptimisedAfterAPictureForTheSavesAfter) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
+    std::string error;
+    const test::TempDir dir("split-rules-optimised");
+    const CacheDirFor cache(dir.path().string());
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
+    ASSERT_EQ(options.optimization, "0");
+    options.code_unit_optimization = "2";
+    // Which unit each compile was (its function's name, read while the source is there), at
+    // which level: "rule_part@2".
+    std::vector<std::string> seen;
+    options.runner = [&seen](const std::vector<std::string>& argv, std::string& e) {
+        const auto c = std::find(argv.begin(), argv.end(), "-c");
+        if (c != argv.end() && c + 1 != argv.end()) {
+            std::ifstream in(*(c + 1));
+            const std::string text(std::istreambuf_iterator<char>(in), {});
+            const std::size_t at = text.find("int ") + 4;
+            for (const char* level : {"-O0", "-O2"})
+                if (std::find(argv.begin(), argv.end(), level) != argv.end())
+                    seen.push_back(text.substr(at, text.find("()") - at) + "@" + (level + 2));
+        }
+        return run_process(argv, e);
+    };
+    const auto compiled = [&] {
+        std::sort(seen.begin(), seen.end());
+        return seen;
+    };
+    const auto rule = [](const char* name, int n) {
+        return std::string("extern \"C\" int ") + name + "() { return " + std::to_string(n) +
+               "; }\n";
+    };
+    std::vector<std::string> units{rule("tables_part", 1), rule("code_part", 20),
+                                   rule("rule_part", 300), rule("other_rule", 4000)};
+    std::string library;
+    bool splittable = true;
+    // The build after a picture: every unit, the code and the rules optimised.
+    options.optimise_rules = true;
+    ASSERT_TRUE(cached_split_library(toolchain, options, "r", units, library, splittable, error))
+        << error;
+    EXPECT_EQ(compiled(), (std::vector<std::string>{"code_part@2", "other_rule@2", "rule_part@2",
+                                                    "tables_part@0"}));
+    EXPECT_EQ(parts_sum(library), 321);
+    // A save that edits one rule: that rule at the ordinary level, the other one optimised.
+    seen.clear();
+    options.optimise_rules = false;
+    units[2] = rule("rule_part", 301);
+    ASSERT_TRUE(cached_split_library(toolchain, options, "r", units, library, splittable, error))
+        << error;
+    EXPECT_EQ(compiled(), (std::vector<std::string>{"rule_part@0"}));
+    EXPECT_EQ(parts_sum(library), 322);
+    const std::string edited = library;
+    // Back to the rule as it was: its optimised object, nothing compiled.
+    seen.clear();
+    units[2] = rule("rule_part", 300);
+    ASSERT_TRUE(cached_split_library(toolchain, options, "r", units, library, splittable, error))
+        << error;
+    EXPECT_TRUE(compiled().empty());
+    EXPECT_EQ(parts_sum(library), 321);
+    EXPECT_NE(library, edited);
+}
+
 // The generated units' shared header: what the code unit and every rule unit start with (the
 // %param globals, the %source, the element classes), and not the tables.
 TEST(PreviewBuild, GeneratedUnitsStartWithTheirHeader) {
@@ -672,6 +737,75 @@ TEST(PreviewBuild, SplitUnitsCompiledWithTheirHeaderPrecompiled) {
     ran.clear();
     EXPECT_FALSE(cached_split_library(toolchain, options, "h", units, library, splittable, error));
     EXPECT_EQ(count("c++-header"), 0);
+}
+
+// The unit header is precompiled with the rule units' functions after it (renamed, never
+// compiled): the templates the rules use are instantiated in the .gch, not again by the unit
+// of a save that edits a rule. Seen by a deprecation warning that a template gives only when
+// it is instantiated: printed by the header's compile, not by the rule's.
+TEST(PreviewBuild, UnitHeaderPrecompiledWithTheRulesTemplates) {
+    if (!has_clang()) GTEST_SKIP() << "no clang++";
+    std::string error;
+    const test::TempDir dir("split-header-warm");
+    const CacheDirFor cache(dir.path().string());
+    Toolchain toolchain = find_toolchain();
+    BuildOptions options;
+    ASSERT_TRUE(clang_library_options(toolchain, options, error)) << error;
+    // Each command's messages in a file of its own (ran[k]: dir/messages-k.txt).
+    std::vector<std::vector<std::string>> ran;
+    options.runner = [&](const std::vector<std::string>& argv, std::string& e) {
+        std::string command;
+        for (const std::string& a : argv) command += "'" + a + "' ";
+        command += "2>'" +
+                   (dir.path() / ("messages-" + std::to_string(ran.size()) + ".txt")).string() +
+                   "'";
+        ran.push_back(argv);
+        return run_process({"/bin/sh", "-c", command}, e);
+    };
+    const auto messages_of = [&](const std::string& word) {
+        std::string text;
+        for (std::size_t k = 0; k < ran.size(); ++k)
+            if (std::find(ran[k].begin(), ran[k].end(), word) != ran[k].end()) {
+                std::ifstream in(dir.path() / ("messages-" + std::to_string(k) + ".txt"));
+                text += std::string(std::istreambuf_iterator<char>(in), {});
+            }
+        return text;
+    };
+    options.unit_header =
+        "namespace acanthus { using Result = int; struct RuleCall {}; }\n"
+        "struct Legacy { [[deprecated(\"instantiated\")]] static int value() { return 300; } };\n"
+        "template <class T> int read() { return T::value(); }\n";
+    const auto rule = [&](int n) {
+        return options.unit_header +
+               "\n// seed --> dot\nacanthus::Result acr_rule_0(acanthus::RuleCall& call_) {\n" +
+               "    (void)call_;\n    return read<Legacy>() + " + std::to_string(n) + ";\n}\n";
+    };
+    const std::vector<std::string> units{
+        "namespace acanthus { using Result = int; struct RuleCall {}; }\n"
+        "acanthus::Result acr_rule_0(acanthus::RuleCall&);\n"
+        "extern \"C\" int tables_part() { return 1; }\n"
+        "extern \"C\" int rule_part() { acanthus::RuleCall c; return acr_rule_0(c); }\n",
+        options.unit_header + "extern \"C\" int code_part() { return 20; }\n", rule(0)};
+    std::string library;
+    bool splittable = true;
+    options.precompile_unit_header = true;
+    ASSERT_TRUE(cached_split_library(toolchain, options, "w", units, library, splittable, error))
+        << error;
+    EXPECT_EQ(parts_sum(library), 321);
+    ASSERT_EQ(commands_with(ran, "c++-header"), 1);
+    EXPECT_NE(messages_of("c++-header").find("instantiated"), std::string::npos);
+    EXPECT_EQ(commands_with(ran, "-include-pch"), 2);  // (the code and the rule, with it)
+    // The next save's rule, compiled with the .gch: the template is there already.
+    ran.clear();
+    options.precompile_unit_header = false;
+    std::vector<std::string> saved = units;
+    saved[2] = rule(1);
+    ASSERT_TRUE(cached_split_library(toolchain, options, "w", saved, library, splittable, error))
+        << error;
+    EXPECT_EQ(parts_sum(library), 322);
+    ASSERT_EQ(commands_with(ran, "-include-pch"), 1);
+    EXPECT_EQ(messages_of("-include-pch").find("instantiated"), std::string::npos)
+        << messages_of("-include-pch");
 }
 
 // A rule body that gains a line moves the #line numbers of the %source after it in the header:

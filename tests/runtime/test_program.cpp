@@ -91,8 +91,41 @@ void record_niceness_in_copies(Canvas&, const Element&) {
         << std::chrono::duration_cast<std::chrono::nanoseconds>(now).count() << " " << nice;
     std::rename((name + ".tmp").c_str(), name.c_str());
 }
+// ... and one that writes, in each copy, the size of a pixel it draws at.
+void record_pixel_in_copies(Canvas& canvas, const Element&) {
+    static bool written = false;
+    if (::getpid() == test_process || written) return;
+    written = true;
+    const auto now = std::chrono::steady_clock::now().time_since_epoch();
+    const std::string name = niceness_dir + "/pixel-" + std::to_string(::getpid());
+    std::ofstream(name + ".tmp")
+        << std::chrono::duration_cast<std::chrono::nanoseconds>(now).count() << " "
+        << canvas.pixel();
+    std::rename((name + ".tmp").c_str(), name.c_str());
+}
 // ... and one that fails in every process.
 void throw_in_draw(Canvas&, const Element&) { throw std::runtime_error("drawn badly"); }
+// ... and one that, in a copy (the one drawing the output beside the view), waits up to 20 s
+// for the file `view_to_wait_for` and writes down whether it came.
+std::string view_to_wait_for;
+void wait_for_view_in_copies(Canvas&, const Element&) {
+    static bool waited = false;
+    if (::getpid() == test_process || waited) return;
+    waited = true;
+    bool seen = false;
+    for (int i = 0; i < 2000 && !seen; ++i) {
+        seen = fs::exists(view_to_wait_for);
+        if (!seen) ::usleep(10000);
+    }
+    std::ofstream(view_to_wait_for + ".seen") << (seen ? "seen" : "not seen");
+}
+// ... and one that crashes in copies and fails in the run after its first picture (one call a
+// dot): the view is drawn, the output (its copy crashed) is not.
+int draws_here = 0;
+void fail_after_first_picture(Canvas&, const Element&) {
+    if (::getpid() != test_process) std::abort();
+    if (++draws_here > dot_count) throw std::runtime_error("second picture refused");
+}
 const ElementType& seed::type() const { return seed_type; }
 const ElementType& dot::type() const { return dot_type; }
 
@@ -450,8 +483,9 @@ TEST_F(Program, ViewPictureFitsTheViewSize) {
     const auto [width, height] = size(view);
     EXPECT_EQ(width, 600);
     EXPECT_NEAR(height, 600.0 * (200 + 16) / (400 + 16), 1.0);  // the page's 2% margins
-    if (fs::exists(path("partial.png"))) {
-        EXPECT_EQ(size(read(path("partial.png"))).first, 600);
+    if (fs::exists(path("partial.png"))) {                      // (the first at half the size)
+        const long partial_width = size(read(path("partial.png"))).first;
+        EXPECT_TRUE(partial_width == 600 || partial_width == 300) << partial_width;
     }
     // A tall page fits by its height.
     o = run({"--region", "rect:100,400", "--param", "limit=50", "--view", path("tall.png"),
@@ -539,6 +573,59 @@ TEST_F(Program, LaterPartialPictureCopiesRunNicer) {
         EXPECT_GT(copies[i].second, run_nice) << "copy " << i;
 }
 
+// The copy drawing the output beside the view runs at a lower priority than the run: a viewer
+// waits for the view alone.
+TEST_F(Program, OutputCopyBesideTheViewRunsNicer) {
+    errno = 0;
+    const int run_nice = ::getpriority(PRIO_PROCESS, 0);
+    ASSERT_EQ(errno, 0);
+    if (run_nice >= 19) GTEST_SKIP() << "already at the lowest priority";
+    fs::create_directories(path("nice"));
+    niceness_dir = path("nice");
+    dot_type.draw = &record_niceness_in_copies;
+    Outcome o = run({"--region", "circle:200", "--resolution", "256", "--param", "limit=200",
+                     "--view", path("view.png"), "--view-size", "300x300", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    int copies = 0;
+    for (const auto& e : fs::directory_iterator(path("nice"))) {
+        if (e.path().extension() == ".tmp") continue;
+        std::istringstream line(read(e.path().string()));
+        long long when = 0;
+        int nice = 0;
+        ASSERT_TRUE(line >> when >> nice) << e.path();
+        EXPECT_GT(nice, run_nice);
+        ++copies;
+    }
+    EXPECT_EQ(copies, 1);
+}
+
+// The first PNG partial picture (a viewer's first look) is drawn at half the view's size, the
+// later ones at the view's size: its pixels twice as large.
+TEST_F(Program, FirstPartialPictureAtHalfTheViewSize) {
+    fs::create_directories(path("pixels"));
+    niceness_dir = path("pixels");
+    dot_type.draw = &record_pixel_in_copies;
+    Outcome o = run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000",
+                     "--param", "dot_radius=2", "--partial", path("partial.png"), "--partial-every",
+                     "0.01", "--view-size", "600x600", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    std::vector<std::pair<long long, double>> copies;  // (when it drew, its pixel)
+    for (const auto& e : fs::directory_iterator(path("pixels"))) {
+        if (e.path().extension() == ".tmp") continue;
+        std::istringstream line(read(e.path().string()));
+        long long when = 0;
+        double pixel = 0;
+        ASSERT_TRUE(line >> when >> pixel) << e.path();
+        copies.emplace_back(when, pixel);
+    }
+    ASSERT_GE(copies.size(), 2u) << "too few partial pictures to compare";
+    std::sort(copies.begin(), copies.end());
+    for (std::size_t i = 1; i < copies.size(); ++i)
+        EXPECT_NEAR(copies.front().second, 2 * copies[i].second, 0.02 * copies[i].second) << i;
+}
+
 // With --view, the output is drawn by a copy of the program while the run draws the view: the
 // same file as without --view; a copy that crashes leaves the drawing to the run.
 TEST_F(Program, OutputDrawnByACopyIsTheRunsPicture) {
@@ -563,6 +650,32 @@ TEST_F(Program, OutputDrawnByACopyIsTheRunsPicture) {
         for (const std::string& f : files())  // nothing the copy left
             EXPECT_TRUE(f == "plain.svg" || f == "out.svg" || f == "view.png") << f;
     }
+}
+
+// The view is published as soon as it is drawn, while the output is still being drawn (a
+// viewer shows the finished picture without waiting for the rest of the run).
+TEST_F(Program, ViewPublishedBeforeTheRunEnds) {
+    view_to_wait_for = path("view.png");
+    dot_type.draw = &wait_for_view_in_copies;
+    Outcome o = run({"--region", "circle:200", "--resolution", "256", "--param", "limit=200",
+                     "--view", path("view.png"), "--view-size", "300x300", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(read(path("view.png.seen")), "seen");
+    EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
+}
+
+// A run that fails after its view was published removes it: all or none still.
+TEST_F(Program, ViewPublishedThenRunFailingLeavesNoFile) {
+    draws_here = 0;
+    dot_type.draw = &fail_after_first_picture;
+    Outcome o = run({"--region", "circle:100", "--resolution", "128", "--param", "limit=20",
+                     "--view", path("view.png"), "--view-size", "300x300", "-o", path("out.svg")});
+    dot_type.draw = nullptr;
+    EXPECT_NE(o.code, 0);
+    EXPECT_GT(draws_here, dot_count);  // the view was drawn
+    EXPECT_NE(o.err.find("second picture refused"), std::string::npos) << o.err;
+    EXPECT_TRUE(files().empty());
 }
 
 // A %draw that fails everywhere is reported once, by the run, and leaves no file.

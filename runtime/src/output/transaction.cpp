@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <new>
 #include <stdexcept>
 #include <vector>
 
@@ -62,10 +63,29 @@ void OutputTransaction::add_created_directory(const std::string& path) {
     head_.store(e);
 }
 
+void OutputTransaction::publish(const std::string& target) {
+    for (Entry* e = head_.load(); e; e = e->next) {
+        if (e->target != target || e->renamed || !e->temporary) continue;
+        // The entry names the target from now on: removed if the run fails, as the temporary
+        // was. (The old name is freed only by clear(): a signal handler may be reading it.)
+        char* published = ::strdup(target.c_str());
+        if (!published) throw std::bad_alloc();
+        if (std::rename(e->temporary, target.c_str()) != 0) {
+            const int error = errno;
+            std::free(published);
+            throw InputError("cannot write '" + target + "': " + std::strerror(error));
+        }
+        e->renamed = e->temporary;
+        e->temporary = published;
+        return;
+    }
+    throw std::logic_error("OutputTransaction::publish: no file for '" + target + "'");
+}
+
 void OutputTransaction::commit() {
     std::vector<Entry*> files;  // oldest first
     for (Entry* e = head_.load(); e; e = e->next)
-        if (!e->target.empty()) files.insert(files.begin(), e);
+        if (!e->target.empty() && !e->renamed) files.insert(files.begin(), e);
     for (Entry* e : files) {
         if (std::rename(e->temporary, e->target.c_str()) != 0) {
             const int error = errno;
@@ -96,6 +116,7 @@ void OutputTransaction::clear() noexcept {
     while (e) {
         Entry* next = e->next;
         std::free(e->temporary);
+        std::free(e->renamed);
         delete e;
         e = next;
     }

@@ -35,6 +35,10 @@ class OutputTransaction {
     void add_file(const std::string& temporary, const std::string& target);
     // A directory this run created; removed (if still empty) when the run fails.
     void add_created_directory(const std::string& path);
+    // Renames the temporary of `target` (added before) into place now, ahead of the others: a
+    // viewer may show it while the run goes on. It stays the run's: a run that fails afterwards
+    // removes it. Throws InputError naming the file if the rename fails.
+    void publish(const std::string& target);
     // Renames every temporary to its target, in the order they were added. Throws InputError
     // naming the file if a rename fails (the remaining temporaries are removed).
     void commit();
@@ -47,6 +51,7 @@ class OutputTransaction {
     struct Entry {
         char* temporary = nullptr;  // malloc'd, so a signal handler can read it
         std::string target;         // empty for a created directory
+        char* renamed = nullptr;    // publish(): the temporary's name before (freed by clear)
         Entry* next = nullptr;
     };
     void clear() noexcept;

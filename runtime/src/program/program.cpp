@@ -2,6 +2,7 @@
 // before growth starts, so a bad argument never costs a long run and never leaves a file behind.
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -263,6 +264,19 @@ constexpr long kPartialCheckEvery = 8;  // iterations between two looks at the c
 // the growth late is the finished picture late).
 constexpr int kPartialCopyNicer = 5;
 
+// The output's copy and the coverage's thread run this much nicer than the view's drawing:
+// a viewer waits for the view alone (published as soon as it is drawn); on a busy machine they
+// take what it leaves.
+constexpr int kBesideViewNicer = 5;
+
+// This thread's priority lowered by `nicer` (Linux: a thread's own niceness).
+void lower_thread_priority(int nicer) {
+    const auto tid = static_cast<id_t>(::syscall(SYS_gettid));
+    errno = 0;
+    const int now = getpriority(PRIO_PROCESS, tid);
+    if (errno == 0) setpriority(PRIO_PROCESS, tid, std::min(now + nicer, 19));
+}
+
 class PartialPictures {
   public:
     PartialPictures(std::string path, double every, double body_time_limit)
@@ -298,6 +312,7 @@ class PartialPictures {
         const pid_t pid = fork();
         if (pid == 0)
             draw_in_copy(draw, path_, parent, body_time_limit_, forks_ > 0 ? kPartialCopyNicer : 0);
+        ++writes_;  // (after the fork: the copy draws with the count before it)
         if (pid > 0) {
             ++forks_;
             drawing_ = pid;
@@ -314,6 +329,9 @@ class PartialPictures {
         const Clock::time_point end = Clock::now();
         next_ = end + std::max({seconds(every_), 4 * (end - begin), (end - start_) / 5});
     }
+
+    // Whether the picture being drawn is the first.
+    bool first() const { return writes_ == 0; }
 
     // The growth is over: the picture being drawn is stopped (the finished one follows; drawn,
     // it would reach a viewer just before that one and hold it up), unless it would be the
@@ -358,6 +376,7 @@ class PartialPictures {
     Clock::time_point start_, next_, forked_;
     pid_t drawing_ = 0;  // the copy drawing a picture now
     long forks_ = 0;     // copies made so far
+    long writes_ = 0;    // pictures begun so far
     long published_ = 0;
     long drawn_placed_ = -1;  // the growth's successes when the last picture was taken
     long last_placed_ = -1;   // ... when due() last looked, first seen at placed_at_
@@ -396,7 +415,7 @@ class OutputCopy {
             pid_ = pid;  // (-1: no copy; drawn by finish)
             return;
         }
-        draw_in_copy(draw, path_, parent, body_time_limit_);
+        draw_in_copy(draw, path_, parent, body_time_limit_, kBesideViewNicer);
     }
 
     // Waits for the copy; draws the picture here when the copy did not.
@@ -486,6 +505,13 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     // drawing it take less of the cores the growth and the viewer need.
     RenderOptions partial_options = view_options;
     partial_options.draft = true;
+    // The first (a viewer's first look: a few elements) at half the size, scaled up by the
+    // viewer: a quarter of the pixels to draw, write, send and decode.
+    RenderOptions first_partial_options = partial_options;
+    if (o.view_width > 0 && o.view_height > 0) {
+        first_partial_options.fit_width = std::max(16, o.view_width / 2);
+        first_partial_options.fit_height = std::max(16, o.view_height / 2);
+    }
     long frames_written = 0, last_frame_iteration = -1;
     PartialPictures partials(o.partial, o.partial_every, o.body_time_limit);
     if (!o.frames_dir.empty() || !o.partial.empty()) {
@@ -503,7 +529,8 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
             for (const RuleStats& r : engine.stats().rules) placed += r.successes;
             if (partials.due(placed))
                 partials.write(placed, [&](const std::string& path) {
-                    render_to_file(path, pattern, region, elements, partial_options);
+                    render_to_file(path, pattern, region, elements,
+                                   partials.first() ? first_partial_options : partial_options);
                 });
         });
     }
@@ -516,7 +543,8 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         const std::function<void(const std::string&, const std::vector<const Element*>&)> draw;
     } body_partials{partials, engine,
                     [&](const std::string& path, const std::vector<const Element*>& elements) {
-                        render_to_file(path, pattern, region, elements, partial_options);
+                        render_to_file(path, pattern, region, elements,
+                                       partials.first() ? first_partial_options : partial_options);
                     }};
     const auto body_partial = [](void* context, long placed, const PartialElements& extra) {
         BodyPartials& b = *static_cast<BodyPartials*>(context);
@@ -572,10 +600,18 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     std::future<double> cover;
     if (o.metrics)
         cover = std::async(std::launch::async, [&] {
+            if (!o.view.empty()) lower_thread_priority(kBesideViewNicer);
             return detail::coverage(region, elements,
                                     detail::rendered_line_width(region, o.render.width));
         });
-    if (!o.view.empty()) render_to_file(o.view, pattern, region, elements, view_options);
+    if (!o.view.empty()) {
+        render_to_file(o.view, pattern, region, elements, view_options);
+        // Published now, not with the others at the end: a viewer shows the finished picture
+        // while the output, the coverage and the metrics are still being made. No partial
+        // picture comes after it (a first one still drawing is stopped).
+        partials.settle();
+        outputs.publish(o.view);
+    }
     if (output_copy)
         output_copy->finish([&](const std::string& path) {
             render_to_file(path, pattern, region, elements, o.render);

@@ -35,10 +35,11 @@ struct MasonReport {
     long head_joints = 0;      // head joints with a joint in the course above to compare
     long straight_joints = 0;  // of those, closer than a quarter brick to one above
     std::vector<Point> straight_at;
-    long whole_bricks = 0;        // stretchers and headers within a third of the tolerance
-    long shaved_bricks = 0;       // within 12% of one but not whole: cuts no mason makes
-    double length_deviation = 0;  // largest |length - nominal| of a whole or shaved brick
-    double height_deviation = 0;  // largest |height - nominal| of a whole brick
+    long whole_bricks = 0;            // stretchers and headers within a third of the tolerance
+    long shaved_bricks = 0;           // within 12% of one but not whole: cuts no mason makes
+    std::vector<std::string> shaved;  // each: its generator, size and place
+    double length_deviation = 0;      // largest |length - nominal| of a whole or shaved brick
+    double height_deviation = 0;      // largest |height - nominal| of a whole brick
     long courses = 0;
     long courses_off_gauge = 0;  // pitches between courses of whole height beyond the tolerance
     long cut_courses = 0;        // courses of cut height along half the wall's width or more
@@ -229,6 +230,8 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         r.length_deviation = std::max(r.length_deviation, std::abs(w - nominal));
         if (std::abs(w - nominal) > s.tolerance / 3) {
             ++r.shaved_bricks;
+            r.shaved.push_back(c.generator + " " + std::to_string(w) + " x " + std::to_string(h) +
+                               " at (" + std::to_string(b.x0) + ", " + std::to_string(b.y0) + ")");
             continue;
         }
         ++r.whole_bricks;

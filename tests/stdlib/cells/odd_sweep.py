@@ -3,7 +3,7 @@
 
 Runs the cells test binary's per-wall checks (CellsMason.ExampleFacades/UnseenFacades,
 CellsUnseen.BrickWalls/NewFacadesForTheJambCheck, CellsFresh.BrickWalls), reads the report line each prints per wall and
-sums odd pieces, the ones the geometry does not force, straight joints and narrow pieces, by
+sums odd pieces, the ones the geometry does not force, straight joints, narrow pieces and shaved bricks, by
 bond; with --walls, one line per wall (to diff two builds).
 
     tests/stdlib/cells/odd_sweep.py BUILD_DIR [--walls]
@@ -42,6 +42,7 @@ def main():
             "unforced": field(rest, r"not forced (\d+)"),
             "straight": field(rest, r"^straight (\d+)/"),
             "narrow": field(rest, r" narrow (\d+)"),
+            "shaved": field(rest, r" shaved (\d+)"),
             "cut": field(rest, r" cut (\d+),"),
         }
     by_bond = collections.defaultdict(lambda: collections.Counter())
@@ -51,7 +52,7 @@ def main():
         for k, v in w.items():
             per_facade[name][k] = max(per_facade[name][k], v)
         if "--walls" in sys.argv:
-            print(f"{name} {bond} {tree}: odd {w['odd']} unforced {w['unforced']} "
+            print(f"{name} {bond} {tree}: odd {w['odd']} unforced {w['unforced']} shaved {w['shaved']} "
                   f"straight {w['straight']} narrow {w['narrow']} cut {w['cut']}")
     total = collections.Counter()
     for c in by_bond.values():
@@ -59,9 +60,11 @@ def main():
     print(f"walls {len(walls)}: odd {total['odd']}, not forced {total['unforced']}, "
           f"straight (bonds but stack) "
           f"{sum(c['straight'] for b, c in by_bond.items() if b != 'stack')}, "
-          f"narrow {total['narrow']}")
+          f"narrow {total['narrow']}, shaved {total['shaved']}")
     print("not forced by bond: " + ", ".join(f"{b} {c['unforced']}" for b, c in
                                              sorted(by_bond.items())))
+    print("shaved by bond: " + ", ".join(f"{b} {c['shaved']}" for b, c in
+                                         sorted(by_bond.items())))
     print("most per facade (odd / not forced / cut courses): " + ", ".join(
         f"{n} {c['odd']}/{c['unforced']}/{c['cut']}" for n, c in sorted(per_facade.items())))
 
