@@ -1300,6 +1300,6 @@ TEST(CellsFresh, RunEndsTakeUpTheDifferenceInJointsAndClosers) {
         }
     EXPECT_EQ(walls, 8 * 5 * 3);
     std::cout << walls << " walls, shaved bricks " << shaved << ", odd pieces " << odd << "\n";
-    EXPECT_LE(shaved, 78);
+    EXPECT_LE(shaved, 77);  // 78 before the pass was taken again until a round lays none more
     EXPECT_LE(odd, 799);
 }
