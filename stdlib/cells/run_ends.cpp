@@ -111,7 +111,16 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         return out;
     };
     const bool stack = layout.bond.bond == Bond::stack;
-    for (std::size_t rr = layout.rows.size(); rr-- > 0;) {
+    // Courses are judged bottom first against their neighbours as laid by then; a course that
+    // found no way clear of the one over it may find one once that is laid again, so the rows
+    // are taken again until a round lays nothing more (each run's end is laid again once).
+    bool changed = false;
+    for (std::size_t rr = layout.rows.size();;) {
+        if (rr == 0) {
+            if (!changed) break;
+            changed = false, rr = layout.rows.size();
+        }
+        --rr;
         const int row = static_cast<int>(rr);
         const std::span<const int> bond_lengths = layout.bond.lengths(g.course(row));
         for (int side : {1, -1}) {
@@ -355,6 +364,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                 relaid.erase(relaid.begin() + l, relaid.begin() + u);
                 relaid.insert(relaid.begin() + l, rects.begin(), rects.end());
                 a = a0 + n - zone + t;
+                changed = true;
             }
         }
         auto& index = layout.piece_of_unit[rr];

@@ -234,9 +234,10 @@ Known known(const std::string& name, bool stone) {
     // Run ends at jambs laid again with whole bricks and standard closers (fit_run_ends): shaved
     // 31 -> 9, 18 -> 17, 20 -> 15, 17 -> 9, 10 -> 8, 21 -> 10, 18 -> 14; odd pieces on the
     // oculus under the top 44 -> 42, not forced 35 -> 28; the segmental ends not forced 20 -> 12.
+    // Taken again until a round lays nothing more: segmental ends 17 -> 10, oculus 9 -> 8.
     static const std::map<std::string, long> shaved{
-        {"gable-pointed-end", 9}, {"segmental-ends", 17}, {"wide-opening", 15},
-        {"oculus-top", 9},        {"door-past-end", 8},   {"ashlar-arches", 10},
+        {"gable-pointed-end", 9}, {"segmental-ends", 10}, {"wide-opening", 15},
+        {"oculus-top", 8},        {"door-past-end", 8},   {"ashlar-arches", 10},
         {"off-gauge-heads", 14},  {"lancet-arcade", 61},  {"narrow-pier", 22}};
     static const std::map<std::string, long> odd{
         {"gable-pointed-end", 65}, {"segmental-ends", 41}, {"wide-opening", 142},
@@ -377,8 +378,9 @@ TEST(CellsUnseen, NewFacadesForTheJambCheck) {
     // and 32 (of the odd pieces, more now fall within 12% of a brick's length). The terrace's
     // narrow piers: few of their jambs are reached with the bricks flush at both.
     // Run ends laid again with whole bricks and closers (fit_run_ends): shaved 114 -> 87 and
-    // 33 -> 24, the terrace's not forced 96 -> 88.
-    const std::map<std::string, Caps> caps{{"terrace-piers", {247, 87, 0, 1, 0, 88}},
+    // 33 -> 24, the terrace's not forced 96 -> 88; taken again until a round lays nothing more:
+    // the terrace's not forced 88 -> 87.
+    const std::map<std::string, Caps> caps{{"terrace-piers", {247, 87, 0, 1, 0, 87}},
                                            {"shop-corner", {116, 24, 0, 2, 0, 18}}};
     Options o = centimetres();
     for (const auto& [name, cap] : caps) {
@@ -1103,9 +1105,9 @@ TEST(CellsFresh, BrickWalls) {
     };
     const std::map<std::string, Caps> caps{
         {"gable-pointed-20", {70, 7, 28}},     {"gable-pointed-door-end", {75, 10, 43}},
-        {"segmental-doors-ends", {72, 4, 28}}, {"wide-2600", {60, 15, 26}},
+        {"segmental-doors-ends", {72, 4, 28}}, {"wide-2600", {60, 12, 26}},
         {"three-storeys", {213, 20, 95}},      {"ashlar-oculus", {68, 7, 40}},
-        {"narrow-80-door", {75, 0, 16}},       {"odd-sizes", {75, 24, 27}}};
+        {"narrow-80-door", {75, 0, 16}},       {"odd-sizes", {75, 19, 27}}};
     Options o = centimetres();
     long straight = 0, compared = 0, walls = 0, shaved = 0;
     for (const char* name : kFresh) {
@@ -1141,8 +1143,10 @@ TEST(CellsFresh, BrickWalls) {
     // A run's end at a jamb laid with whole bricks and standard closers, the difference in its
     // joints or one piece cut clear of a brick's and a header's length (fit_run_ends): 1,121
     // shaved bricks over these 120 walls before, 481 after; what is left are piers whose courses
-    // a quarter brick apart leave no closer a place clear of the joints over and under it.
-    EXPECT_LE(shaved, 481);
+    // a quarter brick apart leave no closer a place clear of the joints over and under it. The
+    // pass taken again until a round lays nothing more (a course judged against the one over it
+    // before that one was laid again): 422.
+    EXPECT_LE(shaved, 422);
 }
 
 // A pier 38.9 cm wide (6.92 quarter bricks) in header bond beside the first floor's windows of
@@ -1296,6 +1300,6 @@ TEST(CellsFresh, RunEndsTakeUpTheDifferenceInJointsAndClosers) {
         }
     EXPECT_EQ(walls, 8 * 5 * 3);
     std::cout << walls << " walls, shaved bricks " << shaved << ", odd pieces " << odd << "\n";
-    EXPECT_LE(shaved, 78);
+    EXPECT_LE(shaved, 77);  // 78 before the pass was taken again until a round lays none more
     EXPECT_LE(odd, 799);
 }
