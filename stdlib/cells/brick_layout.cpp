@@ -9,6 +9,7 @@
 #include "brick_grid.hpp"
 #include "closers.hpp"
 #include "context_data.hpp"
+#include "face_jambs.hpp"
 #include "lintel.hpp"
 #include "quoin_rows.hpp"
 #include "run_ends.hpp"
@@ -291,8 +292,6 @@ void set_joints(BrickLayout& layout) {
 // nearer, the same way in every course beside that jamb, so the courses keep their stagger) and
 // the difference shared by the joints. A run whose joints would come within a quarter brick of
 // a joint in the course below or above is left as it was.
-bool plumb_edge(const Edge& e);
-
 void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
     const CourseGrid& g = layout.grid;
     const double q = layout.unit, m = layout.mortar, h = m / 2, tol = layout.tolerance;
@@ -300,11 +299,7 @@ void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
     layout.relaid.assign(layout.rows.size(), {});
     for (std::size_t r = 0; r < layout.rows.size(); ++r)
         layout.relaid[r].assign(layout.rows[r].size(), {Rect{}, Rect{}});
-    struct Jamb {
-        double x, y0, y1;
-        bool left;  // the face to its right: a run's left end
-    };
-    std::vector<Jamb> jambs;
+    const std::vector<Jamb> jambs = face_jambs(facade, face);
     // Round heads and arcs other generators claim before the bricks (soldiers, lintels and
     // their bearings, rings, walling cut to an extrados): courses there keep their units.
     std::vector<Rect> heads;
@@ -317,23 +312,9 @@ void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
             heads.push_back(
                 {b.x0 - reach, b.y0 - reach, b.x1 + reach, edge.arc ? b.y1 + reach : b.y1 + m});
         }
-        if (!plumb_edge(edge)) continue;
-        jambs.push_back(
-            {edge.bounds.x0, edge.bounds.y0, edge.bounds.y1, edge.inward(edge.length / 2).x > 0});
     }
-    // The jamb bounding unit u's side over the whole of row r: in the unit, or on its line.
-    auto jamb_at = [&](int r, int u, bool left, double& x) {
-        const double lo = g.xs[static_cast<std::size_t>(u)], hi = g.xs[u + 1];
-        for (const Jamb& j : jambs) {
-            if (j.left != left || j.y0 > g.ys[static_cast<std::size_t>(r)] + eps ||
-                j.y1 < g.ys[r + 1] - eps)
-                continue;
-            if (j.x >= lo - 1e-6 * q && j.x <= hi + 1e-6 * q) {
-                x = j.x;
-                return true;
-            }
-        }
-        return false;
+    auto at_jamb = [&](int r, int u, bool left, double& x) {
+        return jamb_at(jambs, g, q, r, u, left, x);
     };
     const double quarter = q - m / 4;
     // Head joints of a row (centres), as laid now.
@@ -355,8 +336,8 @@ void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
                 // The piece as the face cuts it: its claim to the jamb it stops at.
                 const Rect c = layout.rect(row, static_cast<int>(i));
                 double lo = c.x0, hi = c.x1, x = 0;
-                if (jamb_at(row, ps[i].start, true, x)) lo = std::max(lo, x);
-                if (jamb_at(row, ps[i].start + ps[i].length - 1, false, x)) hi = std::min(hi, x);
+                if (at_jamb(row, ps[i].start, true, x)) lo = std::max(lo, x);
+                if (at_jamb(row, ps[i].start + ps[i].length - 1, false, x)) hi = std::min(hi, x);
                 const double w = hi - lo - m;
                 const double off = std::abs(w + m - std::round((w + m) / q) * q);
                 return off > eps && off <= h + eps;
@@ -389,7 +370,7 @@ void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
                 const std::size_t a0 = a;
                 a = b;
                 if (!bricks || relaid_at(layout, row, static_cast<int>(a0)) ||
-                    !jamb_at(row, u0, true, xl) || !jamb_at(row, u1, false, xr))
+                    !at_jamb(row, u0, true, xl) || !at_jamb(row, u1, false, xr))
                     continue;
                 bool near_head = false;
                 for (const Rect& hb : heads)
@@ -604,11 +585,6 @@ long badness(const BrickLayout& layout) {
         }
     const long straight = static_cast<long>(straight_in(layout, &at_heads).size());
     return 100 * straight + 2 * quarters + at_heads;
-}
-
-bool plumb_edge(const Edge& e) {
-    return !e.arc && !e.closed && e.bounds.width() <= 1e-9 * std::max(1.0, std::abs(e.bounds.x1)) &&
-           e.bounds.height() > 0;
 }
 
 // The moves one step from `moves` that could break straight joint (row, unit): a bearing, a

@@ -6,14 +6,11 @@
 #include <utility>
 #include <vector>
 
+#include "face_jambs.hpp"
+
 namespace acanthus::cells::detail {
 
 namespace {
-
-bool plumb(const Edge& e) {
-    return !e.arc && !e.closed && e.bounds.width() <= 1e-9 * std::max(1.0, std::abs(e.bounds.x1)) &&
-           e.bounds.height() > 0;
-}
 
 bool is_relaid(const BrickLayout& l, std::size_t row, std::size_t k) {
     return row < l.relaid.size() && k < l.relaid[row].size() && l.relaid[row][k].second.width() > 0;
@@ -40,37 +37,20 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
     const double q = layout.unit, m = layout.mortar, h = m / 2, tol = layout.tolerance;
     const double eps = 1e-9 * std::max(1.0, std::abs(g.xs.back()));
     const double stretcher = 4 * q - m, header = 2 * q - m;
-    struct Jamb {
-        double x, y0, y1;
-        bool left;  // the face to its right: a run's left end
-    };
-    std::vector<Jamb> jambs;
+    const std::vector<Jamb> jambs = face_jambs(facade, face);
     // Runs across a head or an arc (within its outline's bounds) stay as they are. Beside one,
     // what its generators claim first (a ring, a lintel's bearing, soldiers) cuts the pieces
     // laid again as it cut those of the bond: that keeps no fewer whole.
     std::vector<Rect> heads;
     for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
         const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
-        if (edge.opening && !plumb(edge) && (edge.arc || edge.part != Part::bottom)) {
+        if (edge.opening && !plumb_edge(edge) && (edge.arc || edge.part != Part::bottom)) {
             const Rect b = edge.bounds;
             heads.push_back({b.x0, b.y0, b.x1, edge.arc ? b.y1 : b.y1 + m});
         }
-        if (plumb(edge))
-            jambs.push_back({edge.bounds.x0, edge.bounds.y0, edge.bounds.y1,
-                             edge.inward(edge.length / 2).x > 0});
     }
-    auto jamb_at = [&](int r, int u, bool left, double& x) {
-        const double lo = g.xs[static_cast<std::size_t>(u)], hi = g.xs[u + 1];
-        for (const Jamb& j : jambs) {
-            if (j.left != left || j.y0 > g.ys[static_cast<std::size_t>(r)] + eps ||
-                j.y1 < g.ys[r + 1] - eps)
-                continue;
-            if (j.x >= lo - 1e-6 * q && j.x <= hi + 1e-6 * q) {
-                x = j.x;
-                return true;
-            }
-        }
-        return false;
+    auto at_jamb = [&](int r, int u, bool left, double& x) {
+        return jamb_at(jambs, g, q, r, u, left, x);
     };
     // What a checker reads a piece of width w as: 0 whole (a brick, header, bat or closer, or a
     // quoin of up to `most` quarters), 1 odd, 2 shaved (within 12% of a brick or header), 3 no
@@ -96,8 +76,8 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                 if (ps[i].full || is_relaid(layout, r, i)) return false;
                 const Rect c = layout.rect(row, static_cast<int>(i));
                 double lo = c.x0, hi = c.x1, x = 0;
-                if (jamb_at(row, ps[i].start, true, x)) lo = std::max(lo, x);
-                if (jamb_at(row, ps[i].start + ps[i].length - 1, false, x)) hi = std::min(hi, x);
+                if (at_jamb(row, ps[i].start, true, x)) lo = std::max(lo, x);
+                if (at_jamb(row, ps[i].start + ps[i].length - 1, false, x)) hi = std::min(hi, x);
                 const double w = hi - lo - m;
                 const double off = std::abs(w + m - std::round((w + m) / q) * q);
                 return off > eps && off <= h + eps;
@@ -135,7 +115,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                 const std::size_t end = at(0);
                 const int ue = side > 0 ? ps[end].start + ps[end].length - 1 : ps[end].start;
                 double xj = 0;
-                if (!jamb_at(row, ue, side < 0, xj)) continue;
+                if (!at_jamb(row, ue, side < 0, xj)) continue;
                 // How many pieces from the jamb end may be laid again.
                 std::size_t free = 0;
                 for (std::size_t i = 0; i < n && free < 3; ++i) {
@@ -163,7 +143,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                 // with `joints` head joints (none is forced without a known width).
                 double xo = 0;
                 const bool known =
-                    jamb_at(row, side > 0 ? ps[a0].start : ps[b - 1].start + ps[b - 1].length - 1,
+                    at_jamb(row, side > 0 ? ps[a0].start : ps[b - 1].start + ps[b - 1].length - 1,
                             side > 0, xo);
                 const double width = std::abs(xj - xo);
                 auto forced = [&](std::size_t joints) {
