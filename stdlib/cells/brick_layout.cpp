@@ -317,7 +317,6 @@ void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
         return jamb_at(jambs, g, q, r, u, left, x);
     };
     const double quarter = q - m / 4;
-    // Head joints of a row (centres), as laid now.
     // Head joints of a row (centres), as laid now, each with the room it needs: a joint beside a
     // piece cut at a jamb a few millimetres off whole quarters (not laid again) may still move
     // when the piece is placed (laid whole against a reveal, context.cpp), by up to half a

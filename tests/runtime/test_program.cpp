@@ -222,6 +222,23 @@ class Program : public ::testing::Test {
     static void write(const std::string& p, const std::string& text) {
         std::ofstream(p, std::ios::binary) << text;
     }
+    // What the copies recorded in `dir` (when each drew, and its value), in the order they drew.
+    template <class Value>
+    static std::vector<std::pair<long long, Value>> copy_records(const std::string& dir) {
+        std::vector<std::pair<long long, Value>> out;
+        for (const auto& e : fs::directory_iterator(dir)) {
+            if (e.path().extension() == ".tmp") continue;
+            std::istringstream line(read(e.path().string()));
+            long long when = 0;
+            Value value{};
+            if (line >> when >> value)
+                out.emplace_back(when, value);
+            else
+                ADD_FAILURE() << "unreadable record " << e.path();
+        }
+        std::sort(out.begin(), out.end());  // (copies draw one at a time)
+        return out;
+    }
     // Every file in the test directory except `keep`.
     std::vector<std::string> files() const {
         std::vector<std::string> names;
@@ -557,17 +574,8 @@ TEST_F(Program, LaterPartialPictureCopiesRunNicer) {
                      "0.01", "-o", path("out.svg")});
     dot_type.draw = nullptr;
     ASSERT_EQ(o.code, 0) << o.err;
-    std::vector<std::pair<long long, int>> copies;  // (when it drew, niceness)
-    for (const auto& e : fs::directory_iterator(path("nice"))) {
-        if (e.path().extension() == ".tmp") continue;
-        std::istringstream line(read(e.path().string()));
-        long long when = 0;
-        int nice = 0;
-        ASSERT_TRUE(line >> when >> nice) << e.path();
-        copies.emplace_back(when, nice);
-    }
+    const auto copies = copy_records<int>(path("nice"));  // (when it drew, niceness)
     ASSERT_GE(copies.size(), 2u) << "too few partial pictures to compare";
-    std::sort(copies.begin(), copies.end());  // (copies draw one at a time)
     EXPECT_EQ(copies.front().second, run_nice);
     for (std::size_t i = 1; i < copies.size(); ++i)
         EXPECT_GT(copies[i].second, run_nice) << "copy " << i;
@@ -587,17 +595,9 @@ TEST_F(Program, OutputCopyBesideTheViewRunsNicer) {
                      "--view", path("view.png"), "--view-size", "300x300", "-o", path("out.svg")});
     dot_type.draw = nullptr;
     ASSERT_EQ(o.code, 0) << o.err;
-    int copies = 0;
-    for (const auto& e : fs::directory_iterator(path("nice"))) {
-        if (e.path().extension() == ".tmp") continue;
-        std::istringstream line(read(e.path().string()));
-        long long when = 0;
-        int nice = 0;
-        ASSERT_TRUE(line >> when >> nice) << e.path();
-        EXPECT_GT(nice, run_nice);
-        ++copies;
-    }
-    EXPECT_EQ(copies, 1);
+    const auto copies = copy_records<int>(path("nice"));  // (when it drew, niceness)
+    ASSERT_EQ(copies.size(), 1u);
+    EXPECT_GT(copies.front().second, run_nice);
 }
 
 // The first PNG partial picture (a viewer's first look) is drawn at half the view's size, the
@@ -611,17 +611,8 @@ TEST_F(Program, FirstPartialPictureAtHalfTheViewSize) {
                      "0.01", "--view-size", "600x600", "-o", path("out.svg")});
     dot_type.draw = nullptr;
     ASSERT_EQ(o.code, 0) << o.err;
-    std::vector<std::pair<long long, double>> copies;  // (when it drew, its pixel)
-    for (const auto& e : fs::directory_iterator(path("pixels"))) {
-        if (e.path().extension() == ".tmp") continue;
-        std::istringstream line(read(e.path().string()));
-        long long when = 0;
-        double pixel = 0;
-        ASSERT_TRUE(line >> when >> pixel) << e.path();
-        copies.emplace_back(when, pixel);
-    }
+    const auto copies = copy_records<double>(path("pixels"));  // (when it drew, its pixel)
     ASSERT_GE(copies.size(), 2u) << "too few partial pictures to compare";
-    std::sort(copies.begin(), copies.end());
     for (std::size_t i = 1; i < copies.size(); ++i)
         EXPECT_NEAR(copies.front().second, 2 * copies[i].second, 0.02 * copies[i].second) << i;
 }
