@@ -1,8 +1,11 @@
 #include "run_ends.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <span>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -16,17 +19,30 @@ bool is_relaid(const BrickLayout& l, std::size_t row, std::size_t k) {
     return row < l.relaid.size() && k < l.relaid[row].size() && l.relaid[row][k].second.width() > 0;
 }
 
+// Up to N values in place (a run end's few pieces and joints: no allocation per way tried).
+template <class T, std::size_t N>
+struct Few {
+    std::array<T, N> v{};
+    std::size_t n = 0;
+    void push_back(T x) { v[n++] = x; }
+    std::size_t size() const { return n; }
+    T& operator[](std::size_t i) { return v[i]; }
+    const T& operator[](std::size_t i) const { return v[i]; }
+    const T* begin() const { return v.data(); }
+    const T* end() const { return v.data() + n; }
+};
+
 // One way to lay a zone, in its direction (from the joint before it towards the jamb).
 struct Plan {
-    std::vector<int> quarters;  // per piece; the cut piece's is its nominal before the cut
-    int cut = -1;               // the piece cut to what is left, or none
+    Few<int, 4> quarters;  // per piece; the cut piece's is its nominal before the cut
+    int cut = -1;          // the piece cut to what is left, or none
     double cut_length = 0;
     double extra = 0;  // added to each joint between the zone's pieces
 };
 
 // The ways kept per course (the cheapest that lay distinct joints): enough for the column's
 // choice, few enough that pairs of courses stay cheap to compare.
-constexpr std::size_t kMostWays = 48;
+constexpr std::size_t kMostWays = 160;
 
 }  // namespace
 
@@ -95,10 +111,19 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
     };
     const bool stack = layout.bond.bond == Bond::stack;
     const std::size_t rows = layout.rows.size();
+    // How far from a jamb the joints a run's end is laid again with may lie, and a quarter
+    // brick beyond: the joints of other courses farther off are not compared with them.
+    const double reach = 17 * q;
     // Per row and piece: laid again by this pass (a piece is laid again once; those the runs
     // set out from their jambs laid may be laid again here).
     std::vector<std::vector<char>> here(rows);
     for (std::size_t r = 0; r < rows; ++r) here[r].assign(layout.rows[r].size(), 0);
+    // When each row was last laid again; per column (side, jamb, first row), the last such
+    // time over its rows and the two beside them when it was judged and nothing was laid: a
+    // column nothing round has changed in since is not judged again.
+    std::vector<long> stamp(rows, 0);
+    long clock = 0;
+    std::map<std::tuple<int, long long, std::size_t>, long> judged;
     // A run of `row` (pieces [a0, b)) whose end on `side` is at the jamb at xj.
     struct End {
         std::size_t a0 = 0, b = 0;
@@ -127,13 +152,13 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         std::size_t zone = 0;
         double c0 = 0;  // in s: the start of the zone's claims
         long cost = 0;
-        std::vector<double> joints;
+        Few<double, 3> joints;
         double lo = 0, hi = 0;
     };
     // The ways to lay the end `e` of row rr on `side`, clear of the joints of the courses over
     // and under it that are not in `chain` (those are judged with their own ways).
     auto ways = [&](std::size_t rr, int side, const End& e, const std::vector<char>& chain,
-                    bool all) {
+                    bool all, bool only_now = false) {
         const int row = static_cast<int>(rr);
         const std::span<const int> bond_lengths = layout.bond.lengths(g.course(row));
         const auto& ps = layout.rows[rr];
@@ -155,7 +180,8 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
         for (std::size_t nb : {rr + 1, rr - 1})
             if (nb < layout.rows.size() && !chain[nb])
-                for (auto [j, room] : joints(nb)) near.push_back({side * j, room});
+                for (auto [j, room] : joints(nb))
+                    if (std::abs(j - xj) < reach) near.push_back({side * j, room});
         // The run as the mason's rule reads it: each piece as laid now, cut at the jambs; its
         // width when both ends are jambs; whether that forces an odd piece with `joints` head
         // joints (none is forced without a known width).
@@ -192,6 +218,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         const long unforced_now = std::max(0L, odd_run - (forced(n - 1) ? 1 : 0));
         // As it is: a shaved brick costs more than any odd piece.
         out[0].cost = 1000000 * shaved_run + 10000 * unforced_now + 1000 * odd_run;
+        if (only_now) return out;
         for (std::size_t zone = 1; zone <= free; ++zone) {
             double j0 = 0, c0 = 0;  // in s
             if (zone == n) {        // the whole run, from its other jamb
@@ -223,14 +250,19 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
             // Every sequence of up to zone + 1 pieces of one to four quarters (a quoin at the
             // jamb whole, its own length where it can), none or one of them cut to what is left.
             for (std::size_t t = 1; t <= std::min<std::size_t>(zone + 1, 4); ++t) {
-                std::vector<int> ks(t, 1);
+                Few<int, 4> ks;
+                for (std::size_t i = 0; i < t; ++i) ks.push_back(1);
                 for (bool more = true; more;) {
+                    int total = 0;
+                    for (std::size_t i = 0; i < t; ++i) total += ks[i];
                     for (int cut = -1; cut < static_cast<int>(t); ++cut) {
                         // A quoin is whole, half a brick long at least.
                         if (quoin && (cut == 0 || ks[0] < 2)) continue;
-                        double sum = 0;
-                        for (std::size_t i = 0; i < t; ++i)
-                            if (static_cast<int>(i) != cut) sum += ks[i] * q;
+                        const double sum =
+                            (total - (cut < 0 ? 0 : ks[static_cast<std::size_t>(cut)])) * q;
+                        // A cut piece from a queen closer less the tolerance to a brick.
+                        if (cut >= 0 && (span - sum < q - tol || span - sum > 4 * q + tol / 3))
+                            continue;
                         Way w;
                         Plan& plan = w.plan;
                         plan.quarters = ks;
@@ -406,6 +438,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         relaid.insert(relaid.begin() + l, rects.begin(), rects.end());
         here[rr].erase(here[rr].begin() + l, here[rr].begin() + u);
         here[rr].insert(here[rr].begin() + l, t, 1);
+        stamp[rr] = ++clock;
     };
     // Per jamb, the courses whose runs end at it one above the other (a pier's, or a run end's
     // column) are laid again together: in the bonds whose courses are a quarter brick apart, a
@@ -433,15 +466,25 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                     if (!chain[top]) continue;
                     std::size_t first = top;  // rows [first, top] one above the other
                     while (first > 0 && chain[first - 1]) --first;
+                    long last = 0;
+                    for (std::size_t r = first == 0 ? 0 : first - 1; r <= top + 1 && r < rows; ++r)
+                        last = std::max(last, stamp[r]);
+                    const auto key = std::make_tuple(side, std::llround(x / eps), first);
+                    if (auto it = judged.find(key); it != judged.end() && it->second == last) {
+                        top = first;
+                        if (top == 0) break;
+                        continue;
+                    }
                     std::vector<End> ends(top - first + 1);
                     std::vector<std::vector<Way>> way(ends.size());
                     std::vector<Joints> now(ends.size());
                     std::vector<char> shaved(ends.size(), 0);
                     for (std::size_t i = 0; i < ends.size(); ++i) {
                         find_end(first + i, side, x, ends[i]);
-                        way[i] = ways(first + i, side, ends[i], chain, false);
-                        shaved[i] = way[i][0].cost >= 1000000;
-                        now[i] = joints(first + i);
+                        shaved[i] =
+                            ways(first + i, side, ends[i], chain, false, true)[0].cost >= 1000000;
+                        for (auto j : joints(first + i))
+                            if (std::abs(j.first - x) < reach) now[i].push_back(j);
                     }
                     // Beside a course with a shaved brick, the courses over and under it (two
                     // each way) may lay their ends again though they gain nothing by it.
@@ -449,7 +492,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                         bool by = false;
                         for (std::size_t d = 0; d <= 4; ++d)
                             by |= i + d >= 2 && i + d - 2 < ends.size() && shaved[i + d - 2];
-                        if (by) way[i] = ways(first + i, side, ends[i], chain, true);
+                        way[i] = ways(first + i, side, ends[i], chain, by);
                     }
                     // The cheapest ways, bottom course first (rows ascend downwards).
                     std::vector<std::vector<long>> total(ends.size());
@@ -475,11 +518,14 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                     for (std::size_t l = 0; l < way[0].size(); ++l)
                         if (total[0][l] >= 0 && (total[0][k] < 0 || total[0][l] < total[0][k]))
                             k = l;
+                    bool laid = false;
                     for (std::size_t i = 0; i < ends.size(); ++i) {
                         if (way[i][k].zone > 0)
-                            lay(first + i, side, ends[i], way[i][k]), changed = true;
+                            lay(first + i, side, ends[i], way[i][k]), laid = true;
                         if (i + 1 < ends.size()) k = from[i][k];
                     }
+                    if (!laid) judged[key] = last;
+                    changed |= laid;
                     top = first;
                     if (top == 0) break;
                 }
