@@ -171,12 +171,14 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         std::size_t free = 0;
         for (std::size_t i = 0; i < n && free < 3; ++i) {
             const Piece& p = ps[at(i)];
-            if (p.sill || p.head || p.king || here[rr][at(i)] || (p.quoin && i > 0) ||
+            // A quoin beyond the jamb's only as the run's other end (a pier between two).
+            if (p.sill || p.head || p.king || here[rr][at(i)] || (p.quoin && i > 0 && i + 1 < n) ||
                 (i > 0 && i + 1 < n && !p.full))
                 break;
             ++free;
         }
         const int quoin = ps[end].quoin ? ps[end].length : 0;
+
         std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
         for (std::size_t nb : {rr + 1, rr - 1})
             if (nb < layout.rows.size() && !chain[nb])
@@ -216,6 +218,9 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
             shaved_run += kinds.back() == 2;
         }
         const long unforced_now = std::max(0L, odd_run - (forced(n - 1) ? 1 : 0));
+        // The quoin at the run's other end is laid again only to mend a shaved brick (laid
+        // from here, that end is not laid again from its own jamb).
+        const int far_quoin = n > 1 && ps[at(n - 1)].quoin ? ps[at(n - 1)].length : 0;
         // As it is: a shaved brick costs more than any odd piece.
         out[0].cost = 1000000 * shaved_run + 10000 * unforced_now + 1000 * odd_run;
         if (only_now) return out;
@@ -258,6 +263,9 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                     for (int cut = -1; cut < static_cast<int>(t); ++cut) {
                         // A quoin is whole, half a brick long at least.
                         if (quoin && (cut == 0 || ks[0] < 2)) continue;
+                        const bool far = zone == n && far_quoin;
+                        if (far && (t < 2 || cut + 1 == static_cast<int>(t) || ks[t - 1] < 2))
+                            continue;
                         const double sum =
                             (total - (cut < 0 ? 0 : ks[static_cast<std::size_t>(cut)])) * q;
                         // A cut piece from a queen closer less the tolerance to a brick.
@@ -295,7 +303,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                         long quarters = 0, off_bond = 0;
                         for (std::size_t i = 0; i < t; ++i) {
                             if (static_cast<int>(i) == cut) continue;
-                            if (i == 0 && quoin) continue;
+                            if ((i == 0 && quoin) || (i + 1 == t && far)) continue;
                             quarters += ks[i] == 1;
                             off_bond += std::find(bond_lengths.begin(), bond_lengths.end(),
                                                   ks[i]) == bond_lengths.end();
@@ -310,6 +318,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                         w.cost = 1000000 * (shaved_run - shaved) + 10000 * unforced_then +
                                  1000 * odd_then + 20 * (cut > 0) + 10 * quarters + 5 * off_bond +
                                  5 * (quoin && ks[0] != quoin) +
+                                 5 * (far && ks[t - 1] != far_quoin) +
                                  std::abs(static_cast<long>(t) - static_cast<long>(zone)) + 1;
                         w.zone = zone, w.c0 = c0, w.lo = lo, w.hi = hi;
                         out.push_back(std::move(w));
@@ -378,6 +387,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         const std::size_t a0 = e.a0, b = e.b;
         const std::size_t end = side > 0 ? b - 1 : a0;
         const int quoin = ps[end].quoin ? ps[end].length : 0;
+        const bool far = w.zone == b - a0 && ps[side > 0 ? a0 : b - 1].quoin;
         const double y0 = layout.drawn(row, static_cast<int>(end)).y0,
                      y1 = layout.drawn(row, static_cast<int>(end)).y1;
         const Plan& plan = w.plan;
@@ -417,7 +427,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                     ++stop;
             Piece p;
             p.start = unit, p.length = stop - unit;
-            p.quoin = i == 0 && quoin;
+            p.quoin = (i == 0 && quoin) || (i + 1 == t && far);
             p.cut = static_cast<int>(i) == plan.cut ||
                     std::find(bond_lengths.begin(), bond_lengths.end(), plan.quarters[i]) ==
                         bond_lengths.end();
@@ -449,7 +459,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
     // run's end laid again is not laid again).
     for (bool changed = true; changed;) {
         changed = false;
-        for (int side : {1, -1}) {
+        for (int side : {-1, 1}) {
             std::vector<double> xs;
             for (const Jamb& j : jambs)
                 if (j.left == (side < 0) && std::none_of(xs.begin(), xs.end(), [&](double x) {
