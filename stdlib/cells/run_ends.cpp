@@ -169,7 +169,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         std::vector<Way> out(1);
         // How many pieces from the jamb end may be laid again.
         std::size_t free = 0;
-        for (std::size_t i = 0; i < n && free < 3; ++i) {
+        for (std::size_t i = 0; i < n && free < 4; ++i) {
             const Piece& p = ps[at(i)];
             // A quoin beyond the jamb's only as the run's other end (a pier between two).
             if (p.sill || p.head || p.king || here[rr][at(i)] || (p.quoin && i > 0 && i + 1 < n) ||
@@ -226,7 +226,9 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         if (only_now) return out;
         for (std::size_t zone = 1; zone <= free; ++zone) {
             double j0 = 0, c0 = 0;  // in s
-            if (zone == n) {        // the whole run, from its other jamb
+            // Four pieces from the jamb only to mend a shaved brick (more ways, more to compare).
+            if (zone == 4 && shaved_run == 0 && !all) continue;
+            if (zone == n) {  // the whole run, from its other jamb
                 if (!known) continue;
                 j0 = c0 = side * xo;
             } else {

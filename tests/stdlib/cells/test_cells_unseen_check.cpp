@@ -1105,9 +1105,9 @@ TEST(CellsFresh, BrickWalls) {
     };
     const std::map<std::string, Caps> caps{
         {"gable-pointed-20", {70, 7, 28}},     {"gable-pointed-door-end", {73, 10, 40}},
-        {"segmental-doors-ends", {72, 4, 28}}, {"wide-2600", {60, 2, 24}},
-        {"three-storeys", {213, 19, 87}},      {"ashlar-oculus", {68, 7, 21}},
-        {"narrow-80-door", {75, 0, 16}},       {"odd-sizes", {75, 14, 22}}};
+        {"segmental-doors-ends", {72, 4, 28}}, {"wide-2600", {60, 2, 22}},
+        {"three-storeys", {213, 9, 78}},       {"ashlar-oculus", {68, 7, 21}},
+        {"narrow-80-door", {75, 0, 16}},       {"odd-sizes", {75, 13, 22}}};
     Options o = centimetres();
     long straight = 0, compared = 0, walls = 0, shaved = 0;
     for (const char* name : kFresh) {
@@ -1147,8 +1147,9 @@ TEST(CellsFresh, BrickWalls) {
     // pass taken again until a round lays nothing more (a course judged against the one over it
     // before that one was laid again): 422. The courses whose runs end at one jamb decided
     // together, so that a closer in one finds a place where the courses over and under it move
-    // their joints too: 274.
-    EXPECT_LE(shaved, 274);
+    // their joints too, and up to four pieces from the jamb laid again where a course or one
+    // beside it has a shaved brick: 246.
+    EXPECT_LE(shaved, 246);
 }
 
 // A pier 38.9 cm wide (6.92 quarter bricks) in header bond beside the first floor's windows of
@@ -1300,10 +1301,10 @@ TEST(CellsFresh, BadFacadesRefused) {
 // little, never a brick shaved to fit (fit_run_ends). Walls of widths that are no whole number
 // of quarter bricks with a window whose jambs fall between quarters (its left jamb 33.9 or
 // 41.3 cm from the wall's left end), every bond and tree at seed 1: 226 shaved bricks over the
-// 120 walls before, 78 with run ends laid course by course, 49 with a column's courses decided
+// 120 walls before, 78 with run ends laid course by course, 42 with a column's courses decided
 // together (what is left: piers whose courses, a quarter brick apart, leave no closer a place
 // clear of the joints over and under it); and still no straight joint, no narrow piece, no head
-// joint off, and fewer odd pieces (836 before, 799, now 778).
+// joint off, and fewer odd pieces (836 before, 799, now 771).
 TEST(CellsFresh, RunEndsTakeUpTheDifferenceInJointsAndClosers) {
     Options o = centimetres();
     long walls = 0, shaved = 0, odd = 0;
@@ -1329,6 +1330,6 @@ TEST(CellsFresh, RunEndsTakeUpTheDifferenceInJointsAndClosers) {
         }
     EXPECT_EQ(walls, 8 * 5 * 3);
     std::cout << walls << " walls, shaved bricks " << shaved << ", odd pieces " << odd << "\n";
-    EXPECT_LE(shaved, 49);  // 78 before the pass was taken again until a round lays none more
-    EXPECT_LE(odd, 778);
+    EXPECT_LE(shaved, 42);  // 78 before the pass was taken again until a round lays none more
+    EXPECT_LE(odd, 771);
 }
