@@ -152,7 +152,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         std::size_t zone = 0;
         double c0 = 0;  // in s: the start of the zone's claims
         long cost = 0;
-        Few<double, 3> joints;
+        Few<double, 4> joints;
         double lo = 0, hi = 0;
     };
     // The ways to lay the end `e` of row rr on `side`, clear of the joints of the courses over
@@ -226,6 +226,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         if (only_now) return out;
         for (std::size_t zone = 1; zone <= free; ++zone) {
             double j0 = 0, c0 = 0;  // in s
+            double pe = 0;          // in s: the edge of the piece before the zone, if any
             // Four pieces from the jamb only to mend a shaved brick (more ways, more to compare).
             if (zone == 4 && shaved_run == 0 && !all) continue;
             if (zone == n) {  // the whole run, from its other jamb
@@ -244,6 +245,8 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                 const Rect cp = layout.claim(row, static_cast<int>(p));
                 j0 = side * jx;
                 c0 = side * (side > 0 ? cp.x1 : cp.x0);
+                pe = side * (side > 0 ? layout.drawn(row, static_cast<int>(p)).x1
+                                      : layout.drawn(row, static_cast<int>(p)).x0);
             }
             const double lo = std::min(side * j0, xj), hi = std::max(side * j0, xj);
             bool near_head = false;
@@ -278,18 +281,34 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                         plan.quarters = ks;
                         plan.cut = cut;
                         const double rest = span - sum;
+                        bool open0 = false;  // the joint before the zone takes its share too
                         if (cut < 0) {
                             if (t == 1 ? std::abs(rest) > tol / 3 - 1e-6 * m
-                                       : std::abs(rest) / static_cast<double>(t - 1) > 0.9 * tol)
-                                continue;
-                            plan.extra = t > 1 ? rest / static_cast<double>(t - 1) : 0;
+                                       : std::abs(rest) / static_cast<double>(t - 1) > 0.9 * tol) {
+                                const double e = rest / static_cast<double>(t);
+                                if (zone == n || std::abs(e) > 0.9 * tol ||
+                                    std::abs(j0 + h + e - pe - m) > 0.9 * tol)
+                                    continue;
+                                open0 = true;
+                                plan.extra = e;
+                            } else {
+                                plan.extra = t > 1 ? rest / static_cast<double>(t - 1) : 0;
+                            }
                         } else {
                             plan.cut_length = rest - m;
                             if (kind(plan.cut_length, 4) > 1) continue;
                         }
                         // Joints (piece 0 at the jamb: the joints from j0 outward).
                         bool clear = true;
-                        double s = j0;
+                        double s = j0 + (open0 ? plan.extra : 0);
+                        if (open0) {
+                            const double j = (pe + j0 + h + plan.extra) / 2;
+                            w.joints.push_back(side * j);
+                            for (auto [k, room] : near)
+                                clear &= stack || std::abs(j - k) >= quarter + room +
+                                                                         std::abs(plan.extra) / 2 +
+                                                                         tol / 2 - eps;
+                        }
                         for (std::size_t i = t; i-- > 1;) {
                             const double pw =
                                 static_cast<int>(i) == plan.cut ? plan.cut_length : ks[i] * q - m;
@@ -323,6 +342,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                                  5 * (far && ks[t - 1] != far_quoin) +
                                  std::abs(static_cast<long>(t) - static_cast<long>(zone)) + 1;
                         w.zone = zone, w.c0 = c0, w.lo = lo, w.hi = hi;
+                        if (open0) (side > 0 ? w.lo : w.hi) -= side * 0.1 * m;
                         out.push_back(std::move(w));
                     }
                     // The next sequence of lengths.
