@@ -477,8 +477,9 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
     // closer in one course finds a place only where the course over or under it moves its
     // joints too, which alone would gain that course nothing. The ways of each course are
     // chosen together (the cheapest sum over the column, consecutive courses clear of each
-    // other's joints), courses bottom first; then all again until a round lays nothing more (a
-    // run's end laid again is not laid again).
+    // other's joints), columns bottom first, left ends first (right ends first, a pier laid
+    // whole from the wall's end took the window's end from a column that did better); then all
+    // again until a round lays nothing more (a run's end laid again is not laid again).
     for (bool changed = true; changed;) {
         changed = false;
         for (int side : {-1, 1}) {
