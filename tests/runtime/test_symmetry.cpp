@@ -104,7 +104,7 @@ TEST(SymmetryGroup, DomainPixelsAreThoseInTheDomain) {
     grid.pixel = 0.5;
     grid.x0 = -20;
     grid.y0 = -30;
-    for (const char* name : {"c1", "c2", "c3", "c6", "d1", "d2", "d5", "d12", "c60"})
+    for (const char* name : {"c1", "c2", "c3", "c4", "c6", "d1", "d2", "d5", "d8", "d12", "c60"})
         for (Point c : {Point{55, 25}, Point{3.25, 71}, Point{60, 150}}) {
             const SymmetryGroup g = group_of(name, c);
             const std::vector<std::uint8_t> pixels = domain_pixels(grid, g);
