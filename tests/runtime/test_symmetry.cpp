@@ -121,6 +121,49 @@ TEST(SymmetryGroup, DomainPixelsAreThoseInTheDomain) {
         }
 }
 
+// The near zone: the cells (the field's 8 x 8 tiles, on the grid widened by `cells` cells on
+// every side) within `cells` cells of a domain pixel, as a brute force over the domain's
+// pixels finds them, for a wedge's domain and a scattered one, on grids not a whole number of
+// tiles across.
+TEST(SymmetryGroup, NearZoneIsTheCellsNearTheDomain) {
+    GridFrame grid;
+    grid.width = 203;
+    grid.height = 149;
+    grid.pixel = 1;
+    std::mt19937 rng(3);
+    for (int scene = 0; scene < 4; ++scene) {
+        std::vector<std::uint8_t> domain(static_cast<std::size_t>(grid.width) * grid.height, 0);
+        if (scene == 0) {
+            domain = domain_pixels(grid, group_of("d8", {100, 70}));
+        } else {
+            std::uniform_int_distribution<int> at(0, grid.width * grid.height - 1);
+            for (int k = 0; k < 3 * scene; ++k) domain[static_cast<std::size_t>(at(rng))] = 1;
+        }
+        for (const int cells : {1, 4}) {
+            const std::vector<bool> zone = near_zone(grid, domain, cells);
+            const int cw = (grid.width + 7) / 8 + 2 * cells, ch = (grid.height + 7) / 8 + 2 * cells;
+            ASSERT_EQ(zone.size(), static_cast<std::size_t>(cw) * ch);
+            std::vector<bool> want(zone.size(), false);
+            for (int j = 0; j < grid.height; ++j)
+                for (int i = 0; i < grid.width; ++i) {
+                    if (!domain[static_cast<std::size_t>(j) * grid.width + i]) continue;
+                    const int x = i / 8 + cells, y = j / 8 + cells;
+                    for (int b = y - cells; b <= y + cells; ++b)
+                        for (int a = x - cells; a <= x + cells; ++a)
+                            want[static_cast<std::size_t>(b) * cw + a] = true;
+                }
+            long mismatches = 0, in = 0;
+            for (std::size_t k = 0; k < zone.size(); ++k) {
+                mismatches += zone[k] != want[k];
+                in += zone[k];
+            }
+            EXPECT_EQ(mismatches, 0) << "scene " << scene << ", cells " << cells;
+            EXPECT_GT(in, 0);
+        }
+    }
+    EXPECT_TRUE(near_zone(grid, {}, 4).empty());
+}
+
 // Whether a group maps a panel onto itself (then the core is the whole panel).
 TEST(SymmetryGroup, KnowsWhenItMapsTheRegionOntoItself) {
     const Region circle = Region::from_spec("circle:100");

@@ -101,34 +101,6 @@ struct Setup {
     std::optional<TranslationSetup> translations;
 };
 
-// The cells of 8 x 8 pixels within kNearCells cells of a pixel of `domain`, row by row, on
-// the grid's cells widened by kNearCells on every side (the first at the grid's corner less
-// kNearCells cells); empty without a domain.
-std::vector<bool> near_zone(const GridFrame& g, const std::vector<std::uint8_t>& domain) {
-    if (domain.empty()) return {};
-    const int pad = kNearCells;
-    const int cw = ((g.width - 1) >> kNearCellShift) + 1 + 2 * pad;
-    const int ch = ((g.height - 1) >> kNearCellShift) + 1 + 2 * pad;
-    static_assert(kNearCellShift == 3, "the near zone's cells are the field's tiles");
-    const std::vector<std::uint8_t> tiles = nonzero_tiles(domain, g.width, g.height);
-    const int tw = cw - 2 * pad, th = ch - 2 * pad;
-    std::vector<bool> in(static_cast<std::size_t>(cw) * ch, false);
-    for (int tj = 0; tj < th; ++tj)
-        for (int ti = 0; ti < tw; ++ti)
-            if (tiles[static_cast<std::size_t>(tj) * tw + ti])
-                in[static_cast<std::size_t>(tj + pad) * cw + ti + pad] = true;
-    std::vector<bool> out(in.size(), false);
-    for (int j = 0; j < ch; ++j)
-        for (int i = 0; i < cw; ++i) {
-            if (!in[static_cast<std::size_t>(j) * cw + i]) continue;
-            for (int y = std::max(0, j - kNearCells); y <= std::min(ch - 1, j + kNearCells); ++y)
-                for (int x = std::max(0, i - kNearCells); x <= std::min(cw - 1, i + kNearCells);
-                     ++x)
-                    out[static_cast<std::size_t>(y) * cw + x] = true;
-        }
-    return out;
-}
-
 Setup set_up(const Region& region, GrowthOptions options) {
     const int groups =
         (options.symmetry ? 1 : 0) + (options.frieze ? 1 : 0) + (options.wallpaper ? 1 : 0);
@@ -182,6 +154,7 @@ struct GrowthEngine::Impl {
         if (!near_cells.empty()) {
             const GridFrame& g = raster.grid();
             const double cell = g.pixel * (1 << kNearCellShift);
+            static_assert(kNearCellShift == 3, "the near zone's cells are the field's tiles");
             ornament.set_near_zone({g.x0 - kNearCells * cell, g.y0 - kNearCells * cell}, cell,
                                    ((g.width - 1) >> kNearCellShift) + 1 + 2 * kNearCells,
                                    near_cells);
@@ -201,7 +174,7 @@ struct GrowthEngine::Impl {
         // over the band, and nothing would be deferred. A periodic group checks them through
         // the families near the element (per_orbit()).
         if (group && (group->rosette() || (translations && translations->group.window)))
-            near_cells = near_zone(raster.grid(), o.centres);
+            near_cells = near_zone(raster.grid(), o.centres, kNearCells);
         return options.reference_engine ? reference_circle_source(raster, o)
                                         : incremental_circle_source(raster, o);
     }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "field/empty_circle_finder.hpp"
 #include "geometry/spatial_index.hpp"
 
 namespace acanthus::detail {
@@ -211,6 +212,41 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
             for (int j = j0; j < j1; ++j)
                 for (int i = i0; i < i1; ++i) decide(i, j);
         }
+    return out;
+}
+
+std::vector<bool> near_zone(const GridFrame& g, const std::vector<std::uint8_t>& domain,
+                            int cells) {
+    if (domain.empty()) return {};
+    const int pad = cells;
+    const int cw = ((g.width - 1) >> 3) + 1 + 2 * pad;
+    const int ch = ((g.height - 1) >> 3) + 1 + 2 * pad;
+    const std::vector<std::uint8_t> tiles = nonzero_tiles(domain, g.width, g.height);
+    const int tw = cw - 2 * pad, th = ch - 2 * pad;
+    // The square of side 2 cells + 1 about each domain cell, as two passes of a sliding
+    // count (in bytes: a vector<bool> costs a bit operation per cell).
+    std::vector<std::uint8_t> across(static_cast<std::size_t>(cw) * ch, 0);
+    for (int tj = 0; tj < th; ++tj) {
+        const std::uint8_t* in = tiles.data() + static_cast<std::size_t>(tj) * tw;
+        std::uint8_t* row = across.data() + static_cast<std::size_t>(tj + pad) * cw;
+        int count = 0;  // domain tiles among columns x - cells .. x + cells
+        for (int x = 0; x < cw; ++x) {
+            const int enter = x + cells - pad, leave = x - cells - 1 - pad;
+            if (enter >= 0 && enter < tw && in[enter]) ++count;
+            if (leave >= 0 && leave < tw && in[leave]) --count;
+            row[x] = count > 0;
+        }
+    }
+    std::vector<bool> out(across.size(), false);
+    for (int x = 0; x < cw; ++x) {
+        int count = 0;
+        for (int y = 0; y < ch; ++y) {
+            const int enter = y + cells, leave = y - cells - 1;
+            if (enter < ch && across[static_cast<std::size_t>(enter) * cw + x]) ++count;
+            if (leave >= 0 && across[static_cast<std::size_t>(leave) * cw + x]) --count;
+            if (count > 0) out[static_cast<std::size_t>(y) * cw + x] = true;
+        }
+    }
     return out;
 }
 
