@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "fixtures/dots_pattern.hpp"
 #include "fixtures/growth_tree.hpp"
 #include "program/tree_json.hpp"
 #include "proxy/overlap.hpp"
@@ -162,6 +163,39 @@ TEST(SymmetryGroup, NearZoneIsTheCellsNearTheDomain) {
         }
     }
     EXPECT_TRUE(near_zone(grid, {}, 4).empty());
+}
+
+// A batch of children under a rosette: each is checked against the images of those before it
+// (the batch's own index, made only for a batch of several) and against placed images; a
+// child alone, or clear of the others' images, is placed with its images.
+TEST(SymmetryGroup, PlaceableOrbitsCheckAChildAgainstTheImagesOfThoseBefore) {
+    const SymmetryGroup g = group_of("c4", {0, 0});
+    auto dot = [](Point c) {
+        auto d = std::make_unique<dots::dot>();
+        d->p0.set(c, 1);
+        return d;
+    };
+    const auto a = dot({10, 3});     // images about (-3, 10), (-10, -3), (3, -10)
+    const auto b = dot({-3, 10.5});  // on a's first image
+    const auto c = dot({20, 5});     // clear of everything
+    const auto none_placed = [](const acanthus::Proxy&) { return false; };
+    const auto both = placeable_orbits({a.get(), b.get()}, g, nullptr, 1e-6, none_placed);
+    ASSERT_EQ(both.size(), 2u);
+    ASSERT_TRUE(both[0].has_value());
+    EXPECT_EQ(both[0]->elements.size(), 3u);
+    EXPECT_FALSE(both[1].has_value());
+    const auto alone = placeable_orbits({b.get()}, g, nullptr, 1e-6, none_placed);
+    ASSERT_EQ(alone.size(), 1u);
+    EXPECT_TRUE(alone[0].has_value());
+    const auto clear = placeable_orbits({a.get(), c.get(), b.get()}, g, nullptr, 1e-6, none_placed);
+    ASSERT_EQ(clear.size(), 3u);
+    EXPECT_TRUE(clear[0].has_value());
+    EXPECT_TRUE(clear[1].has_value());
+    EXPECT_FALSE(clear[2].has_value());
+    // A placed image where the child lies refuses it.
+    const auto placed =
+        placeable_orbits({c.get()}, g, nullptr, 1e-6, [](const acanthus::Proxy&) { return true; });
+    EXPECT_FALSE(placed[0].has_value());
 }
 
 // Whether a group maps a panel onto itself (then the core is the whole panel).

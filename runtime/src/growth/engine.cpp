@@ -530,6 +530,7 @@ PixelBox GrowthEngine::Impl::pixel_box(const Element& e) const {
 std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
     std::vector<Point> out{p};
     if (!group) return out;
+    out.reserve(group->size());
     const Rect bounds = region.bounds();
     // distance(o, q) <= tol, by the square where it surely tells (hypot() is dear).
     constexpr double kLoose = 1 + 1e-12;
@@ -667,6 +668,9 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
         child->children = 0;
     }
     const std::size_t count = children.size();
+    std::size_t images = 0;
+    for (const Orbit& orbit : orbits) images += orbit.elements.size();
+    children.reserve(count + images);
     for (std::size_t k = 0; k < orbits.size(); ++k)
         for (auto& image : orbits[k].elements) {
             image->depth = children[k]->depth;  // made before the child had its place
@@ -891,6 +895,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         goals.push_back(g);
     };
     const double reach = goal.radius + epsilon;
+    if (group) goals.reserve(near_goal.size());
     if (near_goal_radius >= reach) {  // refine() found them all
         for (const auto& [e, d] : near_goal)
             if (d <= reach) consider(e);
