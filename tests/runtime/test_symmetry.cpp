@@ -198,6 +198,47 @@ TEST(SymmetryGroup, PlaceableOrbitsCheckAChildAgainstTheImagesOfThoseBefore) {
     EXPECT_FALSE(placed[0].has_value());
 }
 
+// A point's orbit: the point and its images, those within the tolerance of one before left
+// out, as comparing every image with those kept finds them; points anywhere, on the centre and
+// on mirrors, and within a few tolerances of them (where images nearly coincide).
+TEST(SymmetryGroup, PointOrbitKeepsTheDistinctImagesInOrder) {
+    const double tol = 1e-3;
+    const Rect bounds{-1000, -1000, 1000, 1000};
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> at(-50, 50);
+    for (const char* name : {"c1", "c2", "c5", "c6", "d1", "d4", "d8", "d12"}) {
+        const SymmetryGroup g = group_of(name, {3, -7});
+        std::vector<Point> points{g.center(), g.center() + Vector(0.4 * tol, 0),
+                                  g.center() + Vector(1.5 * tol, -0.5 * tol)};
+        for (int k = 0; k < 40; ++k) points.push_back({at(rng), at(rng)});
+        // On each mirror and beside it, at distances about the tolerance.
+        for (const Isometry& t : g.transforms()) {
+            if (!t.reverses()) continue;
+            const Point p{at(rng), at(rng)};
+            const Point on = p + (t.apply(p) - p) * 0.5;
+            const Vector off =
+                (p - on).length() > 0 ? (p - on) * (1 / (p - on).length()) : Vector(1, 0);
+            for (double d : {0.0, 0.3, 0.49, 0.51, 0.9, 1.1, 2.5})
+                points.push_back(on + off * (d * tol));
+        }
+        for (const Point p : points) {
+            std::vector<Point> want{p};
+            for (std::size_t k = 1; k < g.transforms().size(); ++k) {
+                const Point q = g.transforms()[k].apply(p);
+                bool seen = false;
+                for (const Point o : want) seen = seen || distance(o, q) <= tol;
+                if (!seen) want.push_back(q);
+            }
+            const std::vector<Point> got = point_orbit(g, p, tol, bounds);
+            ASSERT_EQ(got.size(), want.size()) << name << " at " << p.x << "," << p.y;
+            for (std::size_t k = 0; k < got.size(); ++k) {
+                EXPECT_EQ(got[k].x, want[k].x) << name;
+                EXPECT_EQ(got[k].y, want[k].y) << name;
+            }
+        }
+    }
+}
+
 // Whether a group maps a panel onto itself (then the core is the whole panel).
 TEST(SymmetryGroup, KnowsWhenItMapsTheRegionOntoItself) {
     const Region circle = Region::from_spec("circle:100");

@@ -528,28 +528,8 @@ PixelBox GrowthEngine::Impl::pixel_box(const Element& e) const {
 }
 
 std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
-    std::vector<Point> out{p};
-    if (!group) return out;
-    out.reserve(group->size());
-    const Rect bounds = region.bounds();
-    // distance(o, q) <= tol, by the square where it surely tells (hypot() is dear).
-    constexpr double kLoose = 1 + 1e-12;
-    const double tol = ornament.tolerance(), tol2 = tol * tol;
-    auto same = [&](Point o, Point q) {
-        const Vector v = q - o;
-        const double s = v.x * v.x + v.y * v.y;
-        if (s * kLoose < tol2) return true;
-        if (s > tol2 * kLoose) return false;
-        return distance(o, q) <= tol;
-    };
-    for (std::size_t k = 1; k < group->size(); ++k) {
-        const Point q = group->transforms()[k].apply(p);
-        if (!group->rosette() && !bounds.contains(q)) continue;  // translates beyond the region
-        bool seen = false;
-        for (Point o : out) seen = seen || same(o, q);
-        if (!seen) out.push_back(q);
-    }
-    return out;
+    if (!group) return {p};
+    return point_orbit(*group, p, ornament.tolerance(), region.bounds());
 }
 
 // An image g(e) overlaps a placed y = t(f) just when e overlaps h(f), h = g^-1 t: an element

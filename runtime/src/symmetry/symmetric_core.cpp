@@ -250,6 +250,43 @@ std::vector<bool> near_zone(const GridFrame& g, const std::vector<std::uint8_t>&
     return out;
 }
 
+std::vector<Point> point_orbit(const SymmetryGroup& group, Point p, double tol,
+                               const Rect& bounds) {
+    std::vector<Point> out{p};
+    out.reserve(group.size());
+    // distance(o, q) <= tol, by the square where it surely tells (hypot() is dear).
+    constexpr double kLoose = 1 + 1e-12;
+    const double tol2 = tol * tol;
+    auto same = [&](Point o, Point q) {
+        const Vector v = q - o;
+        const double s = v.x * v.x + v.y * v.y;
+        if (s * kLoose < tol2) return true;
+        if (s > tol2 * kLoose) return false;
+        return distance(o, q) <= tol;
+    };
+    const auto& g = group.transforms();
+    // Under a rosette (a group, closed) g(p) and h(p) are as far apart as p and g^-1 h (p): when
+    // every transformation moves p by well over the tolerance, no two images are the same and
+    // each is kept, in order, without comparing them pairwise.
+    bool apart = group.rosette();
+    for (std::size_t k = 1; apart && k < g.size(); ++k) {
+        const Vector v = g[k].apply(p) - p;
+        apart = v.x * v.x + v.y * v.y > 4 * tol2;
+    }
+    if (apart) {
+        for (std::size_t k = 1; k < g.size(); ++k) out.push_back(g[k].apply(p));
+        return out;
+    }
+    for (std::size_t k = 1; k < group.size(); ++k) {
+        const Point q = group.transforms()[k].apply(p);
+        if (!group.rosette() && !bounds.contains(q)) continue;  // translates beyond the region
+        bool seen = false;
+        for (Point o : out) seen = seen || same(o, q);
+        if (!seen) out.push_back(q);
+    }
+    return out;
+}
+
 bool maps_onto_itself(const Region& region, const SymmetryGroup& group, double tolerance) {
     // Each sampled point's images are measured against the flattened boundary first (an
     // R-tree of its segments): the flattening is within `slack` of the curves both ways, so

@@ -25,6 +25,11 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
 std::vector<bool> near_zone(const GridFrame& grid, const std::vector<std::uint8_t>& domain,
                             int cells);
 
+// p and its distinct images (within `tolerance`), p first, the others in the group's order;
+// with translations only those inside `bounds` (the region's).
+std::vector<Point> point_orbit(const SymmetryGroup& group, Point p, double tolerance,
+                               const Rect& bounds);
+
 // True when the group maps the region onto itself (its boundary onto its boundary, sampled,
 // within `tolerance`): then the core is the whole region.
 bool maps_onto_itself(const Region& region, const SymmetryGroup& group, double tolerance);
