@@ -312,16 +312,20 @@ bool maps_onto_itself(const Region& region, const SymmetryGroup& group, double t
         const double t = len2 > 0 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
         return distance(q, a + ab * t);
     };
-    // The segment each transformation's last image was nearest to: the next point's image
-    // usually lies by it or by a neighbour, which settles it without a query (a segment that
-    // near makes the nearest at least as near).
+    // The segment each transformation's last image was near: the next point's image usually
+    // lies by it or by a neighbour, which settles it without a query (a segment that near
+    // makes the nearest at least as near); the hint follows the images along the ring.
     std::vector<SpatialIndex::Entry> hint(group.size());
-    auto near_hint = [&](Point q, SpatialIndex::Entry e) {
+    auto near_hint = [&](Point q, SpatialIndex::Entry& e) {
         if (e.element < 0) return false;
         const int n = static_cast<int>(rings[static_cast<std::size_t>(e.element)].size());
-        for (int step = -1; step <= 1; ++step)
-            if (to_segment(q, {e.element, (e.proxy + step + n) % n}) <= tolerance - slack)
+        for (int step : {0, 1, -1}) {
+            const SpatialIndex::Entry at{e.element, (e.proxy + step + n) % n};
+            if (to_segment(q, at) <= tolerance - slack) {
+                e = at;
                 return true;
+            }
+        }
         return false;
     };
     for (const auto& ring : rings)
