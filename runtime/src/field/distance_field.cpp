@@ -444,8 +444,8 @@ static void drop_duplicates(std::vector<int>& pixels) {
 void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
                               std::vector<int>* changed) {
     if (kind == ObstacleKind::none) return;
-    std::vector<int> fresh;
-    fresh.reserve(pixels.size());
+    std::vector<int>& fresh = fresh_;  // kept between calls: most add a few pixels
+    fresh.clear();
     for (int p : pixels) {
         // A site already (distance 0) keeps its kind.
         if (p < 0 || static_cast<std::size_t>(p) >= dist2_.size() || dist2_[p] == 0) continue;

@@ -156,6 +156,7 @@ class DistanceField {
         int x, y, dir, pl, pr;
     };
     std::vector<Seed> stack_;
+    std::vector<int> fresh_;  // add_sites() scratch: the pixels not sites yet
     SiteBlob blob_;
     std::size_t direct_pieces_ = std::size_t{1} << 20;
     std::vector<std::uint8_t> window_sites_;
