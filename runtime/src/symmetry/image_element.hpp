@@ -5,6 +5,7 @@
 #pragma once
 
 #include <acanthus/element.hpp>
+#include <type_traits>
 #include <typeinfo>
 #include <variant>
 #include <vector>
@@ -46,6 +47,8 @@ class ImageElement final : public Element {
     AnyProxy first_;
     std::vector<AnyProxy> more_;
 };
+
+static_assert(std::is_final_v<ImageElement>, "as_image() compares exact types");
 
 // The element as an image, or null for a fundamental element. ImageElement is final, so its
 // type is the element's exact type: a type_info comparison, cheaper than a dynamic_cast (the
