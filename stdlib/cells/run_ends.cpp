@@ -1,8 +1,11 @@
 #include "run_ends.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <span>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -16,14 +19,30 @@ bool is_relaid(const BrickLayout& l, std::size_t row, std::size_t k) {
     return row < l.relaid.size() && k < l.relaid[row].size() && l.relaid[row][k].second.width() > 0;
 }
 
+// Up to N values in place (a run end's few pieces and joints: no allocation per way tried).
+template <class T, std::size_t N>
+struct Few {
+    std::array<T, N> v{};
+    std::size_t n = 0;
+    void push_back(T x) { v[n++] = x; }
+    std::size_t size() const { return n; }
+    T& operator[](std::size_t i) { return v[i]; }
+    const T& operator[](std::size_t i) const { return v[i]; }
+    const T* begin() const { return v.data(); }
+    const T* end() const { return v.data() + n; }
+};
+
 // One way to lay a zone, in its direction (from the joint before it towards the jamb).
 struct Plan {
-    std::vector<int> quarters;  // per piece; the cut piece's is its nominal before the cut
-    int cut = -1;               // the piece cut to what is left, or none
+    Few<int, 4> quarters;  // per piece; the cut piece's is its nominal before the cut
+    int cut = -1;          // the piece cut to what is left, or none
     double cut_length = 0;
     double extra = 0;  // added to each joint between the zone's pieces
-    long cost = -1;    // lower is better; -1: none found
 };
+
+// The ways kept per course (the cheapest that lay distinct joints): enough for the column's
+// choice, few enough that pairs of courses stay cheap to compare.
+constexpr std::size_t kMostWays = 160;
 
 }  // namespace
 
@@ -91,262 +110,441 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         return out;
     };
     const bool stack = layout.bond.bond == Bond::stack;
-    // Courses are judged bottom first against their neighbours as laid by then; a course that
-    // found no way clear of the one over it may find one once that is laid again, so the rows
-    // are taken again until a round lays nothing more (each run's end is laid again once).
-    bool changed = false;
-    for (std::size_t rr = layout.rows.size();;) {
-        if (rr == 0) {
-            if (!changed) break;
-            changed = false, rr = layout.rows.size();
+    const std::size_t rows = layout.rows.size();
+    // How far from a jamb the joints a run's end is laid again with may lie, and a quarter
+    // brick beyond: the joints of other courses farther off are not compared with them.
+    const double reach = 17 * q;
+    // Per row and piece: laid again by this pass (a piece is laid again once; those the runs
+    // set out from their jambs laid may be laid again here).
+    std::vector<std::vector<char>> here(rows);
+    for (std::size_t r = 0; r < rows; ++r) here[r].assign(layout.rows[r].size(), 0);
+    // When each row was last laid again; per column (side, jamb, first row), the last such
+    // time over its rows and the two beside them when it was judged and nothing was laid: a
+    // column nothing round has changed in since is not judged again.
+    std::vector<long> stamp(rows, 0);
+    long clock = 0;
+    std::map<std::tuple<int, long long, std::size_t>, long> judged;
+    // A run of `row` (pieces [a0, b)) whose end on `side` is at the jamb at xj.
+    struct End {
+        std::size_t a0 = 0, b = 0;
+        double xj = 0;
+    };
+    auto find_end = [&](std::size_t rr, int side, double at, End& e) {
+        const auto& ps = layout.rows[rr];
+        for (std::size_t a = 0; a < ps.size();) {
+            std::size_t b = a + 1;
+            while (b < ps.size() && ps[b - 1].start + ps[b - 1].length == ps[b].start) ++b;
+            const std::size_t end = side > 0 ? b - 1 : a;
+            const int ue = side > 0 ? ps[end].start + ps[end].length - 1 : ps[end].start;
+            double xj = 0;
+            if (at_jamb(static_cast<int>(rr), ue, side < 0, xj) && std::abs(xj - at) <= eps) {
+                e = {a, b, xj};
+                return true;
+            }
+            a = b;
         }
-        --rr;
+        return false;
+    };
+    // One way to lay a run's end (zone 0: as it is), its cost (lower is better) and the head
+    // joints it lays, in x, in place of the course's joints strictly between lo and hi.
+    struct Way {
+        Plan plan;
+        std::size_t zone = 0;
+        double c0 = 0;  // in s: the start of the zone's claims
+        long cost = 0;
+        Few<double, 3> joints;
+        double lo = 0, hi = 0;
+    };
+    // The ways to lay the end `e` of row rr on `side`, clear of the joints of the courses over
+    // and under it that are not in `chain` (those are judged with their own ways).
+    auto ways = [&](std::size_t rr, int side, const End& e, const std::vector<char>& chain,
+                    bool all, bool only_now = false) {
         const int row = static_cast<int>(rr);
         const std::span<const int> bond_lengths = layout.bond.lengths(g.course(row));
-        for (int side : {1, -1}) {
-            for (std::size_t a = 0; a < layout.rows[rr].size();) {
-                auto& ps = layout.rows[rr];
-                std::size_t b = a + 1;
-                while (b < ps.size() && ps[b - 1].start + ps[b - 1].length == ps[b].start) ++b;
-                const std::size_t n = b - a, a0 = a;
-                a = b;
-                // The pieces in the zone's direction: the i-th from the jamb end.
-                auto at = [&](std::size_t i) { return side > 0 ? b - 1 - i : a0 + i; };
-                const std::size_t end = at(0);
-                const int ue = side > 0 ? ps[end].start + ps[end].length - 1 : ps[end].start;
-                double xj = 0;
-                if (!at_jamb(row, ue, side < 0, xj)) continue;
-                // How many pieces from the jamb end may be laid again.
-                std::size_t free = 0;
-                for (std::size_t i = 0; i < n && free < 3; ++i) {
-                    const Piece& p = ps[at(i)];
-                    if (p.sill || p.head || p.king || is_relaid(layout, rr, at(i)) ||
-                        (p.quoin && i > 0) || (i > 0 && i + 1 < n && !p.full))
-                        break;
-                    ++free;
-                }
-                if (free == 0) continue;
-                const int quoin = ps[end].quoin ? ps[end].length : 0;
-                const double y0 = layout.drawn(row, static_cast<int>(end)).y0,
-                             y1 = layout.drawn(row, static_cast<int>(end)).y1;
-                std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
-                for (std::size_t nb : {rr + 1, rr - 1})
-                    if (nb < layout.rows.size())
-                        for (auto [j, room] : joints(nb)) near.push_back({side * j, room});
-                struct Best {
-                    Plan plan;
-                    std::size_t zone = 0;
-                    double j0 = 0, c0 = 0;  // in s: the joint before the zone, its claims' start
-                } best;
-                // The run as the mason's rule reads it: each piece as laid now, cut at the
-                // jambs; its width when both ends are jambs; whether that forces an odd piece
-                // with `joints` head joints (none is forced without a known width).
-                double xo = 0;
-                const bool known =
-                    at_jamb(row, side > 0 ? ps[a0].start : ps[b - 1].start + ps[b - 1].length - 1,
-                            side > 0, xo);
-                const double width = std::abs(xj - xo);
-                auto forced = [&](std::size_t joints) {
-                    const double k = std::round(width / q);
-                    return !known || k < 1 ||
-                           std::abs(width - k * q) > static_cast<double>(joints) * tol + 1e-9;
-                };
-                std::vector<int> kinds;
-                long odd_run = 0;
-                for (std::size_t i = 0; i < n; ++i) {
-                    const int k = static_cast<int>(at(i));
-                    Rect d = layout.drawn(row, k);
-                    // A piece cut at a jamb: its claim to the jamb less half joints, or laid
-                    // whole into the reveal's half joint (as Context::place lays it).
-                    const Rect claim = layout.claim(row, k);
-                    Rect r = claim;
-                    const bool here = i == 0, there = i + 1 == n && known;
-                    if (here) (side > 0 ? r.x1 : r.x0) = xj;
-                    if (there) (side > 0 ? r.x0 : r.x1) = xo;
-                    if ((here || there) && (r.x0 > claim.x0 + eps || r.x1 < claim.x1 - eps)) {
-                        d.x0 = r.x0 + h, d.x1 = r.x1 - h;
-                        const Rect whole = nominal_at_jamb(r, claim, layout.drawn(row, k), options);
-                        if (whole.width() > 0) d = whole;
+        const auto& ps = layout.rows[rr];
+        const std::size_t a0 = e.a0, b = e.b, n = b - a0;
+        const double xj = e.xj;
+        auto at = [&](std::size_t i) { return side > 0 ? b - 1 - i : a0 + i; };
+        const std::size_t end = at(0);
+        std::vector<Way> out(1);
+        // How many pieces from the jamb end may be laid again.
+        std::size_t free = 0;
+        for (std::size_t i = 0; i < n && free < 4; ++i) {
+            const Piece& p = ps[at(i)];
+            // A quoin beyond the jamb's only as the run's other end (a pier between two).
+            if (p.sill || p.head || p.king || here[rr][at(i)] || (p.quoin && i > 0 && i + 1 < n) ||
+                (i > 0 && i + 1 < n && !p.full))
+                break;
+            ++free;
+        }
+        const int quoin = ps[end].quoin ? ps[end].length : 0;
+
+        std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
+        for (std::size_t nb : {rr + 1, rr - 1})
+            if (nb < layout.rows.size() && !chain[nb])
+                for (auto [j, room] : joints(nb))
+                    if (std::abs(j - xj) < reach) near.push_back({side * j, room});
+        // The run as the mason's rule reads it: each piece as laid now, cut at the jambs; its
+        // width when both ends are jambs; whether that forces an odd piece with `joints` head
+        // joints (none is forced without a known width).
+        double xo = 0;
+        const bool known = at_jamb(
+            row, side > 0 ? ps[a0].start : ps[b - 1].start + ps[b - 1].length - 1, side > 0, xo);
+        const double width = std::abs(xj - xo);
+        auto forced = [&](std::size_t joints) {
+            const double k = std::round(width / q);
+            return !known || k < 1 ||
+                   std::abs(width - k * q) > static_cast<double>(joints) * tol + 1e-9;
+        };
+        std::vector<int> kinds;
+        long odd_run = 0, shaved_run = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const int k = static_cast<int>(at(i));
+            Rect d = layout.drawn(row, k);
+            // A piece cut at a jamb: its claim to the jamb less half joints, or laid whole into
+            // the reveal's half joint (as Context::place lays it).
+            const Rect claim = layout.claim(row, k);
+            Rect r = claim;
+            const bool here = i == 0, there = i + 1 == n && known;
+            if (here) (side > 0 ? r.x1 : r.x0) = xj;
+            if (there) (side > 0 ? r.x0 : r.x1) = xo;
+            if ((here || there) && (r.x0 > claim.x0 + eps || r.x1 < claim.x1 - eps)) {
+                d.x0 = r.x0 + h, d.x1 = r.x1 - h;
+                const Rect whole = nominal_at_jamb(r, claim, layout.drawn(row, k), options);
+                if (whole.width() > 0) d = whole;
+            }
+            kinds.push_back(kind(d.width(), ps[at(i)].quoin ? 12 : 4));
+            odd_run += kinds.back() != 0;
+            shaved_run += kinds.back() == 2;
+        }
+        const long unforced_now = std::max(0L, odd_run - (forced(n - 1) ? 1 : 0));
+        // The quoin at the run's other end is laid again only to mend a shaved brick (laid
+        // from here, that end is not laid again from its own jamb).
+        const int far_quoin = n > 1 && ps[at(n - 1)].quoin ? ps[at(n - 1)].length : 0;
+        // As it is: a shaved brick costs more than any odd piece.
+        out[0].cost = 1000000 * shaved_run + 10000 * unforced_now + 1000 * odd_run;
+        if (only_now) return out;
+        for (std::size_t zone = 1; zone <= free; ++zone) {
+            double j0 = 0, c0 = 0;  // in s
+            // Four pieces from the jamb only to mend a shaved brick (more ways, more to compare).
+            if (zone == 4 && shaved_run == 0 && !all) continue;
+            if (zone == n) {  // the whole run, from its other jamb
+                if (!known) continue;
+                j0 = c0 = side * xo;
+            } else {
+                const std::size_t p = at(zone), z = at(zone - 1);
+                // A king closer keeps the stretcher beside it, as the bond laid it.
+                if (ps[p].king) continue;
+                const double jx = side > 0 ? (layout.drawn(row, static_cast<int>(p)).x1 +
+                                              layout.drawn(row, static_cast<int>(z)).x0) /
+                                                 2
+                                           : (layout.drawn(row, static_cast<int>(z)).x1 +
+                                              layout.drawn(row, static_cast<int>(p)).x0) /
+                                                 2;
+                const Rect cp = layout.claim(row, static_cast<int>(p));
+                j0 = side * jx;
+                c0 = side * (side > 0 ? cp.x1 : cp.x0);
+            }
+            const double lo = std::min(side * j0, xj), hi = std::max(side * j0, xj);
+            bool near_head = false;
+            for (const Rect& hb : heads)
+                near_head |= hb.x0 < hi && hb.x1 > lo && hb.y0 < g.ys[rr + 1] && hb.y1 > g.ys[rr];
+            if (near_head) continue;
+            long shaved = 0, odd = 0;  // in the zone as laid now
+            for (std::size_t i = 0; i < zone; ++i) shaved += kinds[i] == 2, odd += kinds[i] != 0;
+            if (odd == 0 && !all) continue;
+            const double span = side * xj - j0;
+            // Every sequence of up to zone + 1 pieces of one to four quarters (a quoin at the
+            // jamb whole, its own length where it can), none or one of them cut to what is left.
+            for (std::size_t t = 1; t <= std::min<std::size_t>(zone + 1, 4); ++t) {
+                Few<int, 4> ks;
+                for (std::size_t i = 0; i < t; ++i) ks.push_back(1);
+                for (bool more = true; more;) {
+                    int total = 0;
+                    for (std::size_t i = 0; i < t; ++i) total += ks[i];
+                    for (int cut = -1; cut < static_cast<int>(t); ++cut) {
+                        // A quoin is whole, half a brick long at least.
+                        if (quoin && (cut == 0 || ks[0] < 2)) continue;
+                        const bool far = zone == n && far_quoin;
+                        if (far && (t < 2 || cut + 1 == static_cast<int>(t) || ks[t - 1] < 2))
+                            continue;
+                        const double sum =
+                            (total - (cut < 0 ? 0 : ks[static_cast<std::size_t>(cut)])) * q;
+                        // A cut piece from a queen closer less the tolerance to a brick.
+                        if (cut >= 0 && (span - sum < q - tol || span - sum > 4 * q + tol / 3))
+                            continue;
+                        Way w;
+                        Plan& plan = w.plan;
+                        plan.quarters = ks;
+                        plan.cut = cut;
+                        const double rest = span - sum;
+                        if (cut < 0) {
+                            if (t == 1 ? std::abs(rest) > tol / 3 - 1e-6 * m
+                                       : std::abs(rest) / static_cast<double>(t - 1) > 0.9 * tol)
+                                continue;
+                            plan.extra = t > 1 ? rest / static_cast<double>(t - 1) : 0;
+                        } else {
+                            plan.cut_length = rest - m;
+                            if (kind(plan.cut_length, 4) > 1) continue;
+                        }
+                        // Joints (piece 0 at the jamb: the joints from j0 outward).
+                        bool clear = true;
+                        double s = j0;
+                        for (std::size_t i = t; i-- > 1;) {
+                            const double pw =
+                                static_cast<int>(i) == plan.cut ? plan.cut_length : ks[i] * q - m;
+                            s += (i + 1 == t ? h : h + plan.extra / 2) + pw + h + plan.extra / 2;
+                            w.joints.push_back(side * s);
+                            if (stack) continue;
+                            for (auto [j, room] : near)
+                                clear &= std::abs(s - j) >=
+                                         quarter + room + std::abs(plan.extra) / 2 + tol / 2 - eps;
+                        }
+                        if (!clear) continue;
+                        const bool odd_cut = cut >= 0 && kind(plan.cut_length, 4) == 1;
+                        long quarters = 0, off_bond = 0;
+                        for (std::size_t i = 0; i < t; ++i) {
+                            if (static_cast<int>(i) == cut) continue;
+                            if ((i == 0 && quoin) || (i + 1 == t && far)) continue;
+                            quarters += ks[i] == 1;
+                            off_bond += std::find(bond_lengths.begin(), bond_lengths.end(),
+                                                  ks[i]) == bond_lengths.end();
+                        }
+                        // No more odd pieces, nor more the geometry does not force.
+                        const long odd_then = odd_run - odd + (odd_cut ? 1 : 0);
+                        const long unforced_then =
+                            std::max(0L, odd_then - (forced(n - zone + t - 1) ? 1 : 0));
+                        if (unforced_then > unforced_now || odd_then > odd_run) continue;
+                        // Laid again only where that is better, here or in the courses over
+                        // and under it (a pier's courses are chosen together).
+                        w.cost = 1000000 * (shaved_run - shaved) + 10000 * unforced_then +
+                                 1000 * odd_then + 20 * (cut > 0) + 10 * quarters + 5 * off_bond +
+                                 5 * (quoin && ks[0] != quoin) +
+                                 5 * (far && ks[t - 1] != far_quoin) +
+                                 std::abs(static_cast<long>(t) - static_cast<long>(zone)) + 1;
+                        w.zone = zone, w.c0 = c0, w.lo = lo, w.hi = hi;
+                        out.push_back(std::move(w));
                     }
-                    kinds.push_back(kind(d.width(), ps[at(i)].quoin ? 12 : 4));
-                    odd_run += kinds.back() != 0;
-                }
-                const long unforced_now = std::max(0L, odd_run - (forced(n - 1) ? 1 : 0));
-                for (std::size_t zone = 1; zone <= free; ++zone) {
-                    double j0 = 0, c0 = 0;  // in s
-                    if (zone == n) {        // the whole run, from its other jamb
-                        if (!known) continue;
-                        j0 = c0 = side * xo;
-                    } else {
-                        const std::size_t p = at(zone), z = at(zone - 1);
-                        // A king closer keeps the stretcher beside it, as the bond laid it.
-                        if (ps[p].king) continue;
-                        const double jx = side > 0 ? (layout.drawn(row, static_cast<int>(p)).x1 +
-                                                      layout.drawn(row, static_cast<int>(z)).x0) /
-                                                         2
-                                                   : (layout.drawn(row, static_cast<int>(z)).x1 +
-                                                      layout.drawn(row, static_cast<int>(p)).x0) /
-                                                         2;
-                        const Rect cp = layout.claim(row, static_cast<int>(p));
-                        j0 = side * jx;
-                        c0 = side * (side > 0 ? cp.x1 : cp.x0);
-                    }
-                    const double lo = std::min(side * j0, xj), hi = std::max(side * j0, xj);
-                    bool near_head = false;
-                    for (const Rect& hb : heads)
-                        near_head |=
-                            hb.x0 < hi && hb.x1 > lo && hb.y0 < g.ys[rr + 1] && hb.y1 > g.ys[rr];
-                    if (near_head) continue;
-                    long shaved = 0, odd = 0;  // in the zone as laid now
-                    for (std::size_t i = 0; i < zone; ++i)
-                        shaved += kinds[i] == 2, odd += kinds[i] != 0;
-                    if (odd == 0) continue;
-                    const double span = side * xj - j0;
-                    // Every sequence of up to zone + 1 pieces of one to four quarters (a quoin at
-                    // the jamb whole, its own length where it can), none or one of them cut to
-                    // what is left.
-                    for (std::size_t t = 1; t <= std::min<std::size_t>(zone + 1, 4); ++t) {
-                        std::vector<int> ks(t, 1);
-                        for (bool more = true; more;) {
-                            for (int cut = -1; cut < static_cast<int>(t); ++cut) {
-                                // A quoin is whole, half a brick long at least.
-                                if (quoin && (cut == 0 || ks[0] < 2)) continue;
-                                double sum = 0;
-                                for (std::size_t i = 0; i < t; ++i)
-                                    if (static_cast<int>(i) != cut) sum += ks[i] * q;
-                                Plan plan;
-                                plan.quarters = ks;
-                                plan.cut = cut;
-                                const double rest = span - sum;
-                                if (cut < 0) {
-                                    if (t == 1 ? std::abs(rest) > tol / 3 - 1e-6 * m
-                                               : std::abs(rest) / static_cast<double>(t - 1) >
-                                                     0.9 * tol)
-                                        continue;
-                                    plan.extra = t > 1 ? rest / static_cast<double>(t - 1) : 0;
-                                } else {
-                                    plan.cut_length = rest - m;
-                                    if (kind(plan.cut_length, 4) > 1) continue;
-                                }
-                                // Joints (piece 0 at the jamb: the joints from j0 outward).
-                                bool clear = true;
-                                double s = j0;
-                                for (std::size_t i = t; i-- > 1;) {
-                                    const double w = static_cast<int>(i) == plan.cut
-                                                         ? plan.cut_length
-                                                         : ks[i] * q - m;
-                                    s += (i + 1 == t ? h : h + plan.extra / 2) + w + h +
-                                         plan.extra / 2;
-                                    if (stack) continue;
-                                    for (auto [j, room] : near)
-                                        clear &= std::abs(s - j) >= quarter + room +
-                                                                        std::abs(plan.extra) / 2 +
-                                                                        tol / 2 - eps;
-                                }
-                                if (!clear) continue;
-                                const bool odd_cut = cut >= 0 && kind(plan.cut_length, 4) == 1;
-                                long quarters = 0, off_bond = 0;
-                                for (std::size_t i = 0; i < t; ++i) {
-                                    if (static_cast<int>(i) == cut) continue;
-                                    if (i == 0 && quoin) continue;
-                                    quarters += ks[i] == 1;
-                                    off_bond += std::find(bond_lengths.begin(), bond_lengths.end(),
-                                                          ks[i]) == bond_lengths.end();
-                                }
-                                // No shaved brick left, and no more odd pieces, nor more the
-                                // geometry does not force; else fewer of those.
-                                const long odd_then = odd_run - odd + (odd_cut ? 1 : 0);
-                                const long unforced_then =
-                                    std::max(0L, odd_then - (forced(n - zone + t - 1) ? 1 : 0));
-                                if (shaved > 0 ? unforced_then > unforced_now || odd_then > odd_run
-                                               : unforced_then > unforced_now ||
-                                                     (unforced_then == unforced_now &&
-                                                      odd_then >= odd_run))
-                                    continue;
-                                plan.cost =
-                                    10000 * unforced_then + 1000 * odd_then + 20 * (cut > 0) +
-                                    10 * quarters + 5 * off_bond + 5 * (quoin && ks[0] != quoin) +
-                                    std::abs(static_cast<long>(t) - static_cast<long>(zone));
-                                if (best.plan.cost < 0 || plan.cost < best.plan.cost)
-                                    best = {plan, zone, j0, c0};
-                            }
-                            // The next sequence of lengths.
-                            more = false;
-                            for (std::size_t i = t; i-- > 0;) {
-                                if (ks[i] < 4) {
-                                    ++ks[i];
-                                    for (std::size_t k = i + 1; k < t; ++k) ks[k] = 1;
-                                    more = true;
-                                    break;
-                                }
-                            }
+                    // The next sequence of lengths.
+                    more = false;
+                    for (std::size_t i = t; i-- > 0;) {
+                        if (ks[i] < 4) {
+                            ++ks[i];
+                            for (std::size_t k = i + 1; k < t; ++k) ks[k] = 1;
+                            more = true;
+                            break;
                         }
                     }
                 }
-                if (best.plan.cost < 0) continue;
-                // Lay it: pieces from the jamb end inward, in s, then in x left to right.
-                const Plan& plan = best.plan;
-                const std::size_t t = plan.quarters.size();
-                std::vector<std::pair<double, double>> laid(t), claims(t);
-                double s = side * xj - h;
-                for (std::size_t i = 0; i < t; ++i) {
-                    const double w = static_cast<int>(i) == plan.cut ? plan.cut_length
-                                                                     : plan.quarters[i] * q - m;
-                    laid[i] = {s - w, s};
-                    claims[i].second = i == 0 ? side * xj : s + h + plan.extra / 2;
-                    s -= w + m + plan.extra;
-                }
-                for (std::size_t i = 0; i < t; ++i)
-                    claims[i].first = i + 1 == t ? best.c0 : laid[i].first - h - plan.extra / 2;
-                const std::size_t zone = best.zone;
-                const std::size_t lo = side > 0 ? b - zone : a0, hi = lo + zone;
-                const int u0 = ps[lo].start, u1 = ps[hi - 1].start + ps[hi - 1].length;
-                std::vector<Piece> pieces;
-                std::vector<std::pair<Rect, Rect>> rects;
-                int unit = u0;
-                for (std::size_t j = 0; j < t; ++j) {  // left to right
-                    const std::size_t i = side > 0 ? t - 1 - j : j;
-                    const double cx0 = side > 0 ? claims[i].first : -claims[i].second,
-                                 cx1 = side > 0 ? claims[i].second : -claims[i].first;
-                    const double dx0 = side > 0 ? laid[i].first : -laid[i].second,
-                                 dx1 = side > 0 ? laid[i].second : -laid[i].first;
-                    // Its units: those whose middles its claim holds (the last takes the rest).
-                    int stop = unit;
-                    if (j + 1 == t)
-                        stop = u1;
-                    else
-                        while (stop < u1 && (g.xs[static_cast<std::size_t>(stop)] +
-                                             g.xs[static_cast<std::size_t>(stop) + 1]) /
-                                                    2 <
-                                                cx1)
-                            ++stop;
-                    Piece p;
-                    p.start = unit, p.length = stop - unit;
-                    p.quoin = i == 0 && quoin;
-                    p.cut = static_cast<int>(i) == plan.cut ||
-                            std::find(bond_lengths.begin(), bond_lengths.end(), plan.quarters[i]) ==
-                                bond_lengths.end();
-                    p.full = p.length > 0;
-                    for (int u = p.start; u < p.start + p.length; ++u)
-                        p.full &= g.at(row, u) == kFull;
-                    pieces.push_back(p);
-                    rects.push_back(
-                        {Rect{dx0, y0, dx1, y1}, Rect{cx0, g.ys[rr], cx1, g.ys[rr + 1]}});
-                    unit = stop;
-                }
-                const auto l = static_cast<std::ptrdiff_t>(lo), u = static_cast<std::ptrdiff_t>(hi);
-                ps.erase(ps.begin() + l, ps.begin() + u);
-                ps.insert(ps.begin() + l, pieces.begin(), pieces.end());
-                auto& shift = layout.shift[rr];
-                shift.erase(shift.begin() + l, shift.begin() + u);
-                shift.insert(shift.begin() + l, t, 0.0);
-                auto& relaid = layout.relaid[rr];
-                relaid.erase(relaid.begin() + l, relaid.begin() + u);
-                relaid.insert(relaid.begin() + l, rects.begin(), rects.end());
-                a = a0 + n - zone + t;
-                changed = true;
             }
         }
+        // The cheapest of those that lay the same joints.
+        std::stable_sort(out.begin() + 1, out.end(),
+                         [](const Way& x, const Way& y) { return x.cost < y.cost; });
+        std::vector<Way> kept;
+        for (Way& w : out) {
+            bool seen = false;
+            for (const Way& k : kept) {
+                if (k.zone == 0 || std::abs(k.lo - w.lo) > eps || std::abs(k.hi - w.hi) > eps ||
+                    k.joints.size() != w.joints.size())
+                    continue;
+                bool same = true;
+                for (std::size_t i = 0; i < w.joints.size(); ++i)
+                    same &= std::abs(k.joints[i] - w.joints[i]) <= 0.1 * m;
+                seen |= same;
+            }
+            if (!seen) kept.push_back(std::move(w));
+            if (kept.size() > kMostWays) break;
+        }
+        return kept;
+    };
+    // Whether ways x and y of two consecutive courses (their joints as laid now: jx, jy) leave
+    // no joint within a quarter brick of one in the other course.
+    using Joints = std::vector<std::pair<double, double>>;
+    auto clear_of = [&](const Joints& jx, const Way& x, const Joints& jy, const Way& y) {
+        if (stack) return true;
+        const double ex = std::abs(x.plan.extra) / 2, ey = std::abs(y.plan.extra) / 2;
+        auto inside = [&](const Way& w, double j) {
+            return w.zone > 0 && j > w.lo + eps && j < w.hi - eps;
+        };
+        for (double s : x.joints) {
+            for (auto [j, room] : jy)
+                if (!inside(y, j) && std::abs(s - j) < quarter + room + ex + tol / 2 - eps)
+                    return false;
+            for (double j : y.joints)
+                if (std::abs(s - j) < quarter + ex + ey + tol / 2 - eps) return false;
+        }
+        for (double s : y.joints)
+            for (auto [j, room] : jx)
+                if (!inside(x, j) && std::abs(s - j) < quarter + room + ey + tol / 2 - eps)
+                    return false;
+        return true;
+    };
+    // Lay way w at the end e of row rr: pieces from the jamb end inward, in s, then in x left
+    // to right.
+    auto lay = [&](std::size_t rr, int side, const End& e, const Way& w) {
+        const int row = static_cast<int>(rr);
+        const std::span<const int> bond_lengths = layout.bond.lengths(g.course(row));
+        auto& ps = layout.rows[rr];
+        const std::size_t a0 = e.a0, b = e.b;
+        const std::size_t end = side > 0 ? b - 1 : a0;
+        const int quoin = ps[end].quoin ? ps[end].length : 0;
+        const bool far = w.zone == b - a0 && ps[side > 0 ? a0 : b - 1].quoin;
+        const double y0 = layout.drawn(row, static_cast<int>(end)).y0,
+                     y1 = layout.drawn(row, static_cast<int>(end)).y1;
+        const Plan& plan = w.plan;
+        const std::size_t t = plan.quarters.size();
+        std::vector<std::pair<double, double>> laid(t), claims(t);
+        double s = side * e.xj - h;
+        for (std::size_t i = 0; i < t; ++i) {
+            const double pw =
+                static_cast<int>(i) == plan.cut ? plan.cut_length : plan.quarters[i] * q - m;
+            laid[i] = {s - pw, s};
+            claims[i].second = i == 0 ? side * e.xj : s + h + plan.extra / 2;
+            s -= pw + m + plan.extra;
+        }
+        for (std::size_t i = 0; i < t; ++i)
+            claims[i].first = i + 1 == t ? w.c0 : laid[i].first - h - plan.extra / 2;
+        const std::size_t zone = w.zone;
+        const std::size_t lo = side > 0 ? b - zone : a0, hi = lo + zone;
+        const int u0 = ps[lo].start, u1 = ps[hi - 1].start + ps[hi - 1].length;
+        std::vector<Piece> pieces;
+        std::vector<std::pair<Rect, Rect>> rects;
+        int unit = u0;
+        for (std::size_t j = 0; j < t; ++j) {  // left to right
+            const std::size_t i = side > 0 ? t - 1 - j : j;
+            const double cx0 = side > 0 ? claims[i].first : -claims[i].second,
+                         cx1 = side > 0 ? claims[i].second : -claims[i].first;
+            const double dx0 = side > 0 ? laid[i].first : -laid[i].second,
+                         dx1 = side > 0 ? laid[i].second : -laid[i].first;
+            // Its units: those whose middles its claim holds (the last takes the rest).
+            int stop = unit;
+            if (j + 1 == t)
+                stop = u1;
+            else
+                while (stop < u1 && (g.xs[static_cast<std::size_t>(stop)] +
+                                     g.xs[static_cast<std::size_t>(stop) + 1]) /
+                                            2 <
+                                        cx1)
+                    ++stop;
+            Piece p;
+            p.start = unit, p.length = stop - unit;
+            p.quoin = (i == 0 && quoin) || (i + 1 == t && far);
+            p.cut = static_cast<int>(i) == plan.cut ||
+                    std::find(bond_lengths.begin(), bond_lengths.end(), plan.quarters[i]) ==
+                        bond_lengths.end();
+            p.full = p.length > 0;
+            for (int u = p.start; u < p.start + p.length; ++u) p.full &= g.at(row, u) == kFull;
+            pieces.push_back(p);
+            rects.push_back({Rect{dx0, y0, dx1, y1}, Rect{cx0, g.ys[rr], cx1, g.ys[rr + 1]}});
+            unit = stop;
+        }
+        const auto l = static_cast<std::ptrdiff_t>(lo), u = static_cast<std::ptrdiff_t>(hi);
+        ps.erase(ps.begin() + l, ps.begin() + u);
+        ps.insert(ps.begin() + l, pieces.begin(), pieces.end());
+        auto& shift = layout.shift[rr];
+        shift.erase(shift.begin() + l, shift.begin() + u);
+        shift.insert(shift.begin() + l, t, 0.0);
+        auto& relaid = layout.relaid[rr];
+        relaid.erase(relaid.begin() + l, relaid.begin() + u);
+        relaid.insert(relaid.begin() + l, rects.begin(), rects.end());
+        here[rr].erase(here[rr].begin() + l, here[rr].begin() + u);
+        here[rr].insert(here[rr].begin() + l, t, 1);
+        stamp[rr] = ++clock;
+    };
+    // Per jamb, the courses whose runs end at it one above the other (a pier's, or a run end's
+    // column) are laid again together: in the bonds whose courses are a quarter brick apart, a
+    // closer in one course finds a place only where the course over or under it moves its
+    // joints too, which alone would gain that course nothing. The ways of each course are
+    // chosen together (the cheapest sum over the column, consecutive courses clear of each
+    // other's joints), courses bottom first; then all again until a round lays nothing more (a
+    // run's end laid again is not laid again).
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int side : {-1, 1}) {
+            std::vector<double> xs;
+            for (const Jamb& j : jambs)
+                if (j.left == (side < 0) && std::none_of(xs.begin(), xs.end(), [&](double x) {
+                        return std::abs(x - j.x) <= eps;
+                    }))
+                    xs.push_back(j.x);
+            for (double x : xs) {
+                std::vector<char> chain(rows, 0);
+                for (std::size_t rr = 0; rr < rows; ++rr) {
+                    End e;
+                    chain[rr] = find_end(rr, side, x, e);
+                }
+                for (std::size_t top = rows; top-- > 0;) {
+                    if (!chain[top]) continue;
+                    std::size_t first = top;  // rows [first, top] one above the other
+                    while (first > 0 && chain[first - 1]) --first;
+                    long last = 0;
+                    for (std::size_t r = first == 0 ? 0 : first - 1; r <= top + 1 && r < rows; ++r)
+                        last = std::max(last, stamp[r]);
+                    const auto key = std::make_tuple(side, std::llround(x / eps), first);
+                    if (auto it = judged.find(key); it != judged.end() && it->second == last) {
+                        top = first;
+                        if (top == 0) break;
+                        continue;
+                    }
+                    std::vector<End> ends(top - first + 1);
+                    std::vector<std::vector<Way>> way(ends.size());
+                    std::vector<Joints> now(ends.size());
+                    std::vector<char> shaved(ends.size(), 0);
+                    for (std::size_t i = 0; i < ends.size(); ++i) {
+                        find_end(first + i, side, x, ends[i]);
+                        shaved[i] =
+                            ways(first + i, side, ends[i], chain, false, true)[0].cost >= 1000000;
+                        for (auto j : joints(first + i))
+                            if (std::abs(j.first - x) < reach) now[i].push_back(j);
+                    }
+                    // Beside a course with a shaved brick, the courses over and under it (two
+                    // each way) may lay their ends again though they gain nothing by it.
+                    for (std::size_t i = 0; i < ends.size(); ++i) {
+                        bool by = false;
+                        for (std::size_t d = 0; d <= 4; ++d)
+                            by |= i + d >= 2 && i + d - 2 < ends.size() && shaved[i + d - 2];
+                        way[i] = ways(first + i, side, ends[i], chain, by);
+                    }
+                    // The cheapest ways, bottom course first (rows ascend downwards).
+                    std::vector<std::vector<long>> total(ends.size());
+                    std::vector<std::vector<std::size_t>> from(ends.size());
+                    for (std::size_t i = ends.size(); i-- > 0;) {
+                        total[i].assign(way[i].size(), -1);
+                        from[i].assign(way[i].size(), 0);
+                        for (std::size_t k = 0; k < way[i].size(); ++k) {
+                            if (i + 1 == ends.size()) {
+                                total[i][k] = way[i][k].cost;
+                                continue;
+                            }
+                            for (std::size_t l = 0; l < way[i + 1].size(); ++l) {
+                                if (total[i + 1][l] < 0) continue;
+                                const long c = total[i + 1][l] + way[i][k].cost;
+                                if ((total[i][k] < 0 || c < total[i][k]) &&
+                                    clear_of(now[i], way[i][k], now[i + 1], way[i + 1][l]))
+                                    total[i][k] = c, from[i][k] = l;
+                            }
+                        }
+                    }
+                    std::size_t k = 0;
+                    for (std::size_t l = 0; l < way[0].size(); ++l)
+                        if (total[0][l] >= 0 && (total[0][k] < 0 || total[0][l] < total[0][k]))
+                            k = l;
+                    bool laid = false;
+                    for (std::size_t i = 0; i < ends.size(); ++i) {
+                        if (way[i][k].zone > 0)
+                            lay(first + i, side, ends[i], way[i][k]), laid = true;
+                        if (i + 1 < ends.size()) k = from[i][k];
+                    }
+                    if (!laid) judged[key] = last;
+                    changed |= laid;
+                    top = first;
+                    if (top == 0) break;
+                }
+            }
+        }
+    }
+    for (std::size_t rr = 0; rr < rows; ++rr) {
         auto& index = layout.piece_of_unit[rr];
         index.assign(static_cast<std::size_t>(g.units()), -1);
         const auto& ps = layout.rows[rr];
