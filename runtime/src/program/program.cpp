@@ -26,7 +26,6 @@
 #include <iomanip>
 #include <iostream>
 #include <new>
-#include <numeric>
 #include <optional>
 #include <sstream>
 
@@ -514,24 +513,25 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     }
     long frames_written = 0, last_frame_iteration = -1;
     PartialPictures partials(o.partial, o.partial_every, o.body_time_limit);
-    if (!o.frames_dir.empty() || !o.partial.empty()) {
-        // --partial looks at the clock every few iterations; --frames wants every K-th.
-        const long every = o.partial.empty()      ? o.frames_every
-                           : o.frames_dir.empty() ? kPartialCheckEvery
-                                                  : std::gcd(o.frames_every, kPartialCheckEvery);
-        engine.on_frame(every, [&](long iteration, const std::vector<const Element*>& elements) {
-            if (!o.frames_dir.empty() && iteration % o.frames_every == 0) {
-                render_to_file(frame_path(o.frames_dir, ++frames_written), pattern, region,
-                               elements, frame_options);
-                last_frame_iteration = iteration;
-            }
+    if (!o.frames_dir.empty())
+        engine.on_frame(o.frames_every,
+                        [&](long iteration, const std::vector<const Element*>& elements) {
+                            render_to_file(frame_path(o.frames_dir, ++frames_written), pattern,
+                                           region, elements, frame_options);
+                            last_frame_iteration = iteration;
+                        });
+    if (!o.partial.empty()) {
+        // --partial looks at the clock every few iterations; the list of the elements is made
+        // only for a picture.
+        engine.on_iteration(kPartialCheckEvery, [&](long) {
             long placed = 0;
             for (const RuleStats& r : engine.stats().rules) placed += r.successes;
-            if (partials.due(placed))
-                partials.write(placed, [&](const std::string& path) {
-                    render_to_file(path, pattern, region, elements,
-                                   partials.first() ? first_partial_options : partial_options);
-                });
+            if (!partials.due(placed)) return;
+            const std::vector<const Element*> elements = engine.elements();
+            partials.write(placed, [&](const std::string& path) {
+                render_to_file(path, pattern, region, elements,
+                               partials.first() ? first_partial_options : partial_options);
+            });
         });
     }
 
