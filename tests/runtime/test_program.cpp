@@ -119,6 +119,14 @@ void wait_for_view_in_copies(Canvas&, const Element&) {
     }
     std::ofstream(view_to_wait_for + ".seen") << (seen ? "seen" : "not seen");
 }
+// ... and one that writes down, in a copy, whether `view_to_wait_for` was there when it began.
+void note_view_in_copies(Canvas&, const Element&) {
+    static bool noted = false;
+    if (::getpid() == test_process || noted) return;
+    noted = true;
+    std::ofstream(view_to_wait_for + ".seen")
+        << (fs::exists(view_to_wait_for) ? "seen" : "not seen");
+}
 // ... and one that crashes in copies and fails in the run after its first picture (one call a
 // dot): the view is drawn, the output (its copy crashed) is not.
 int draws_here = 0;
@@ -654,6 +662,20 @@ TEST_F(Program, ViewPublishedBeforeTheRunEnds) {
     ASSERT_EQ(o.code, 0) << o.err;
     EXPECT_EQ(read(path("view.png.seen")), "seen");
     EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
+}
+
+// The output's copy begins once the view is published: drawn beside it, the copy and the
+// coverage took a share of the processor the view needed.
+TEST_F(Program, OutputCopyBeginsAfterTheViewIsPublished) {
+    view_to_wait_for = path("view.png");
+    dot_type.draw = &note_view_in_copies;
+    Outcome o =
+        run({"--region", "circle:200", "--resolution", "256", "--param", "limit=200", "--view",
+             path("view.png"), "--view-size", "300x300", "-o", path("out.svg"), "--metrics"});
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(read(path("view.png.seen")), "seen");
+    EXPECT_NE(o.out.find("\"coverage\""), std::string::npos) << o.out;
 }
 
 // A run that fails after its view was published removes it: all or none still.
