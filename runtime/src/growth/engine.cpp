@@ -269,6 +269,8 @@ struct GrowthEngine::Impl {
     std::function<void(const DebugFrame&)> debug_callback;
     long frame_every = 0;
     std::function<void(long, const std::vector<const Element*>&)> frame_callback;
+    long iteration_every = 0;
+    std::function<void(long)> iteration_callback;
     std::function<void(long, long)> progress_callback;
 };
 
@@ -1046,6 +1048,8 @@ void GrowthEngine::Impl::grow() {
         iterate(*goal);
         if (frame_callback && frame_every > 0 && stats.iterations % frame_every == 0)
             frame_callback(stats.iterations, ornament.view());
+        if (iteration_callback && iteration_every > 0 && stats.iterations % iteration_every == 0)
+            iteration_callback(stats.iterations);
         if (progress_callback && stats.iterations % kProgressEvery == 0)
             progress_callback(stats.iterations, static_cast<long>(ornament.size()));
     }
@@ -1078,6 +1082,11 @@ void GrowthEngine::on_frame(
     long every, std::function<void(long iteration, const std::vector<const Element*>&)> callback) {
     impl_->frame_every = every;
     impl_->frame_callback = std::move(callback);
+}
+
+void GrowthEngine::on_iteration(long every, std::function<void(long iteration)> callback) {
+    impl_->iteration_every = every;
+    impl_->iteration_callback = std::move(callback);
 }
 
 void GrowthEngine::on_progress(std::function<void(long iteration, long elements)> callback) {
