@@ -6,6 +6,7 @@
 #include <acanthus/error.hpp>
 #include <acanthus/growth.hpp>
 #include <acanthus/region.hpp>
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -277,6 +278,35 @@ TEST(Growth, DebugFrameDescribesTheAskedIteration) {
     }
     EXPECT_GT(boundary, 0);
     EXPECT_GT(element, 0);
+}
+
+TEST(Growth, IterationCallbackComesEveryKthIterationBesideTheFrames) {
+    const Region region = Region::from_spec("rect:100,60");
+    const Pattern p = dots::pattern();
+    dots::dot_count = 0;
+    GrowthEngine engine(p, region, small_options());
+    std::vector<long> frames, ticks;
+    std::vector<std::size_t> frame_sizes, tick_sizes;
+    engine.on_frame(6, [&](long iteration, const std::vector<const Element*>& placed) {
+        frames.push_back(iteration);
+        frame_sizes.push_back(placed.size());
+    });
+    engine.on_iteration(4, [&](long iteration) {
+        EXPECT_EQ(iteration % 4, 0);
+        ticks.push_back(iteration);
+        tick_sizes.push_back(engine.elements().size());
+    });
+    engine.run();
+    ASSERT_GT(engine.stats().iterations, 12);
+    EXPECT_EQ(static_cast<long>(ticks.size()), engine.stats().iterations / 4);
+    EXPECT_EQ(static_cast<long>(frames.size()), engine.stats().iterations / 6);
+    // At an iteration both see, the elements are the same.
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const auto at = std::find(ticks.begin(), ticks.end(), frames[i]);
+        if (at == ticks.end()) continue;
+        EXPECT_EQ(frame_sizes[i], tick_sizes[static_cast<std::size_t>(at - ticks.begin())]);
+    }
+    EXPECT_LT(tick_sizes.front(), tick_sizes.back());  // the elements as they are then
 }
 
 TEST(Growth, DebugFrameDrawsOneCirclePerEmptyRegionAndTheExcludedOnes) {

@@ -218,6 +218,40 @@ void expect_distance(const Proxy& p, Point q, double sampled, double spacing) {
     EXPECT_GE(exact, sampled - spacing) << to_string(p.kind());
 }
 
+// Shapes whose bounds no boundary curve meets are answered without the exact tests (inside:
+// no); the answer is the exact tests' one. A tolerance just below 0 takes the exact tests for
+// every shape: the same answers for shapes inside, near the edge, across it and outside, in a
+// disc and in the holed rectangle (both fill rules).
+TEST(LeavesRegion, ShapesFarFromTheBoundaryAnsweredAsByTheExactTests) {
+    const double exact = -1e-300;
+    std::vector<detail::RegionData> regions;
+    regions.push_back(make_region(Geom::PathVector(Geom::Path(Geom::Circle(50, 50, 40))), false));
+    regions.push_back(holed_region(true));
+    regions.push_back(holed_region(false));
+    Lcg rng{29};
+    int inside = 0, leaving = 0;
+    for (const detail::RegionData& r : regions) {
+        for (int i = 0; i < 400; ++i) {
+            const Point c{rng.in(-5, 105), rng.in(-5, 105)};
+            const double size = rng.in(0.5, 12);
+            auto near = [&] { return Point{c.x + rng.in(-size, size), c.y + rng.in(-size, size)}; };
+            const CircleProxy circle = circle_proxy(c.x, c.y, size / 2);
+            const Point a = near(), b = near();
+            const LineSegmentProxy segment = segment_proxy(a, b);
+            const BezierProxy bezier = bezier_proxy(a, near(), near(), b);
+            const PolygonProxy polygon = polygon_proxy({a, near(), b});
+            for (const Proxy* p :
+                 std::initializer_list<const Proxy*>{&circle, &segment, &bezier, &polygon}) {
+                const bool answer = leaves_region(*p, r, 0.0);
+                EXPECT_EQ(answer, leaves_region(*p, r, exact)) << i;
+                (answer ? leaving : inside) += 1;
+            }
+        }
+    }
+    EXPECT_GT(inside, 1000);
+    EXPECT_GT(leaving, 1000);
+}
+
 TEST(DistanceTo, MatchesSamplingOnRandomShapes) {
     Lcg rng{2024};
     for (int i = 0; i < 25; ++i) {

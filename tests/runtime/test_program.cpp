@@ -119,6 +119,14 @@ void wait_for_view_in_copies(Canvas&, const Element&) {
     }
     std::ofstream(view_to_wait_for + ".seen") << (seen ? "seen" : "not seen");
 }
+// ... and one that writes down, in a copy, whether `view_to_wait_for` was there when it began.
+void note_view_in_copies(Canvas&, const Element&) {
+    static bool noted = false;
+    if (::getpid() == test_process || noted) return;
+    noted = true;
+    std::ofstream(view_to_wait_for + ".seen")
+        << (fs::exists(view_to_wait_for) ? "seen" : "not seen");
+}
 // ... and one that crashes in copies and fails in the run after its first picture (one call a
 // dot): the view is drawn, the output (its copy crashed) is not.
 int draws_here = 0;
@@ -600,21 +608,33 @@ TEST_F(Program, OutputCopyBesideTheViewRunsNicer) {
     EXPECT_GT(copies.front().second, run_nice);
 }
 
-// The first PNG partial picture (a viewer's first look) is drawn at half the view's size, the
-// later ones at the view's size: its pixels twice as large.
-TEST_F(Program, FirstPartialPictureAtHalfTheViewSize) {
+// PNG partial pictures are drawn at half the view's size (the viewer scales them up), the
+// first (a viewer's first look) and the later ones alike; the view at its size.
+TEST_F(Program, PartialPicturesAtHalfTheViewSize) {
     fs::create_directories(path("pixels"));
     niceness_dir = path("pixels");
     dot_type.draw = &record_pixel_in_copies;
-    Outcome o = run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000",
-                     "--param", "dot_radius=2", "--partial", path("partial.png"), "--partial-every",
-                     "0.01", "--view-size", "600x600", "-o", path("out.svg")});
+    Outcome o =
+        run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000", "--param",
+             "dot_radius=2", "--partial", path("partial.png"), "--partial-every", "0.01",
+             "--view-size", "600x600", "--view", path("view.png"), "-o", path("out.svg")});
     dot_type.draw = nullptr;
     ASSERT_EQ(o.code, 0) << o.err;
     const auto copies = copy_records<double>(path("pixels"));  // (when it drew, its pixel)
-    ASSERT_GE(copies.size(), 2u) << "too few partial pictures to compare";
-    for (std::size_t i = 1; i < copies.size(); ++i)
-        EXPECT_NEAR(copies.front().second, 2 * copies[i].second, 0.02 * copies[i].second) << i;
+    // (the last copy draws the SVG output at the page's own size)
+    ASSERT_GE(copies.size(), 3u) << "too few partial pictures to compare";
+    for (std::size_t i = 1; i + 1 < copies.size(); ++i)
+        EXPECT_NEAR(copies.front().second, copies[i].second, 0.02 * copies[i].second) << i;
+    // The last partial picture and the view: PNG widths (IHDR) half and whole.
+    const auto width = [](const std::string& png) {
+        if (png.size() < 24) return 0u;
+        unsigned w = 0;
+        for (std::size_t k = 16; k < 20; ++k) w = (w << 8) | static_cast<unsigned char>(png[k]);
+        return w;
+    };
+    const unsigned view = width(read(path("view.png")));
+    EXPECT_GT(view, 500u);
+    EXPECT_NEAR(width(read(path("partial.png"))), view / 2.0, 1.0);
 }
 
 // With --view, the output is drawn by a copy of the program while the run draws the view: the
@@ -654,6 +674,20 @@ TEST_F(Program, ViewPublishedBeforeTheRunEnds) {
     ASSERT_EQ(o.code, 0) << o.err;
     EXPECT_EQ(read(path("view.png.seen")), "seen");
     EXPECT_NE(read(path("out.svg")).find("</svg>"), std::string::npos);
+}
+
+// The output's copy begins once the view is published: drawn beside it, the copy and the
+// coverage took a share of the processor the view needed.
+TEST_F(Program, OutputCopyBeginsAfterTheViewIsPublished) {
+    view_to_wait_for = path("view.png");
+    dot_type.draw = &note_view_in_copies;
+    Outcome o =
+        run({"--region", "circle:200", "--resolution", "256", "--param", "limit=200", "--view",
+             path("view.png"), "--view-size", "300x300", "-o", path("out.svg"), "--metrics"});
+    dot_type.draw = nullptr;
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(read(path("view.png.seen")), "seen");
+    EXPECT_NE(o.out.find("\"coverage\""), std::string::npos) << o.out;
 }
 
 // A run that fails after its view was published removes it: all or none still.

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "fixtures/dots_pattern.hpp"
 #include "fixtures/growth_tree.hpp"
 #include "program/tree_json.hpp"
 #include "proxy/overlap.hpp"
@@ -104,7 +105,7 @@ TEST(SymmetryGroup, DomainPixelsAreThoseInTheDomain) {
     grid.pixel = 0.5;
     grid.x0 = -20;
     grid.y0 = -30;
-    for (const char* name : {"c1", "c2", "c3", "c6", "d1", "d2", "d5", "d12", "c60"})
+    for (const char* name : {"c1", "c2", "c3", "c4", "c6", "d1", "d2", "d5", "d8", "d12", "c60"})
         for (Point c : {Point{55, 25}, Point{3.25, 71}, Point{60, 150}}) {
             const SymmetryGroup g = group_of(name, c);
             const std::vector<std::uint8_t> pixels = domain_pixels(grid, g);
@@ -119,6 +120,123 @@ TEST(SymmetryGroup, DomainPixelsAreThoseInTheDomain) {
             EXPECT_EQ(mismatches, 0) << name << " about " << c.x << "," << c.y;
             EXPECT_GT(in, 0) << name;
         }
+}
+
+// The near zone: the cells (the field's 8 x 8 tiles, on the grid widened by `cells` cells on
+// every side) within `cells` cells of a domain pixel, as a brute force over the domain's
+// pixels finds them, for a wedge's domain and a scattered one, on grids not a whole number of
+// tiles across.
+TEST(SymmetryGroup, NearZoneIsTheCellsNearTheDomain) {
+    GridFrame grid;
+    grid.width = 203;
+    grid.height = 149;
+    grid.pixel = 1;
+    std::mt19937 rng(3);
+    for (int scene = 0; scene < 4; ++scene) {
+        std::vector<std::uint8_t> domain(static_cast<std::size_t>(grid.width) * grid.height, 0);
+        if (scene == 0) {
+            domain = domain_pixels(grid, group_of("d8", {100, 70}));
+        } else {
+            std::uniform_int_distribution<int> at(0, grid.width * grid.height - 1);
+            for (int k = 0; k < 3 * scene; ++k) domain[static_cast<std::size_t>(at(rng))] = 1;
+        }
+        for (const int cells : {1, 4}) {
+            const std::vector<bool> zone = near_zone(grid, domain, cells);
+            const int cw = (grid.width + 7) / 8 + 2 * cells, ch = (grid.height + 7) / 8 + 2 * cells;
+            ASSERT_EQ(zone.size(), static_cast<std::size_t>(cw) * ch);
+            std::vector<bool> want(zone.size(), false);
+            for (int j = 0; j < grid.height; ++j)
+                for (int i = 0; i < grid.width; ++i) {
+                    if (!domain[static_cast<std::size_t>(j) * grid.width + i]) continue;
+                    const int x = i / 8 + cells, y = j / 8 + cells;
+                    for (int b = y - cells; b <= y + cells; ++b)
+                        for (int a = x - cells; a <= x + cells; ++a)
+                            want[static_cast<std::size_t>(b) * cw + a] = true;
+                }
+            long mismatches = 0, in = 0;
+            for (std::size_t k = 0; k < zone.size(); ++k) {
+                mismatches += zone[k] != want[k];
+                in += zone[k];
+            }
+            EXPECT_EQ(mismatches, 0) << "scene " << scene << ", cells " << cells;
+            EXPECT_GT(in, 0);
+        }
+    }
+    EXPECT_TRUE(near_zone(grid, {}, 4).empty());
+}
+
+// A batch of children under a rosette: each is checked against the images of those before it
+// (the batch's own index, made only for a batch of several) and against placed images; a
+// child alone, or clear of the others' images, is placed with its images.
+TEST(SymmetryGroup, PlaceableOrbitsCheckAChildAgainstTheImagesOfThoseBefore) {
+    const SymmetryGroup g = group_of("c4", {0, 0});
+    auto dot = [](Point c) {
+        auto d = std::make_unique<dots::dot>();
+        d->p0.set(c, 1);
+        return d;
+    };
+    const auto a = dot({10, 3});     // images about (-3, 10), (-10, -3), (3, -10)
+    const auto b = dot({-3, 10.5});  // on a's first image
+    const auto c = dot({20, 5});     // clear of everything
+    const auto none_placed = [](const acanthus::Proxy&) { return false; };
+    const auto both = placeable_orbits({a.get(), b.get()}, g, nullptr, 1e-6, none_placed);
+    ASSERT_EQ(both.size(), 2u);
+    ASSERT_TRUE(both[0].has_value());
+    EXPECT_EQ(both[0]->elements.size(), 3u);
+    EXPECT_FALSE(both[1].has_value());
+    const auto alone = placeable_orbits({b.get()}, g, nullptr, 1e-6, none_placed);
+    ASSERT_EQ(alone.size(), 1u);
+    EXPECT_TRUE(alone[0].has_value());
+    const auto clear = placeable_orbits({a.get(), c.get(), b.get()}, g, nullptr, 1e-6, none_placed);
+    ASSERT_EQ(clear.size(), 3u);
+    EXPECT_TRUE(clear[0].has_value());
+    EXPECT_TRUE(clear[1].has_value());
+    EXPECT_FALSE(clear[2].has_value());
+    // A placed image where the child lies refuses it.
+    const auto placed =
+        placeable_orbits({c.get()}, g, nullptr, 1e-6, [](const acanthus::Proxy&) { return true; });
+    EXPECT_FALSE(placed[0].has_value());
+}
+
+// A point's orbit: the point and its images, those within the tolerance of one before left
+// out, as comparing every image with those kept finds them; points anywhere, on the centre and
+// on mirrors, and within a few tolerances of them (where images nearly coincide).
+TEST(SymmetryGroup, PointOrbitKeepsTheDistinctImagesInOrder) {
+    const double tol = 1e-3;
+    const Rect bounds{-1000, -1000, 1000, 1000};
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> at(-50, 50);
+    for (const char* name : {"c1", "c2", "c5", "c6", "d1", "d4", "d8", "d12"}) {
+        const SymmetryGroup g = group_of(name, {3, -7});
+        std::vector<Point> points{g.center(), g.center() + Vector(0.4 * tol, 0),
+                                  g.center() + Vector(1.5 * tol, -0.5 * tol)};
+        for (int k = 0; k < 40; ++k) points.push_back({at(rng), at(rng)});
+        // On each mirror and beside it, at distances about the tolerance.
+        for (const Isometry& t : g.transforms()) {
+            if (!t.reverses()) continue;
+            const Point p{at(rng), at(rng)};
+            const Point on = p + (t.apply(p) - p) * 0.5;
+            const Vector off =
+                (p - on).length() > 0 ? (p - on) * (1 / (p - on).length()) : Vector(1, 0);
+            for (double d : {0.0, 0.3, 0.49, 0.51, 0.9, 1.1, 2.5})
+                points.push_back(on + off * (d * tol));
+        }
+        for (const Point p : points) {
+            std::vector<Point> want{p};
+            for (std::size_t k = 1; k < g.transforms().size(); ++k) {
+                const Point q = g.transforms()[k].apply(p);
+                bool seen = false;
+                for (const Point o : want) seen = seen || distance(o, q) <= tol;
+                if (!seen) want.push_back(q);
+            }
+            const std::vector<Point> got = point_orbit(g, p, tol, bounds);
+            ASSERT_EQ(got.size(), want.size()) << name << " at " << p.x << "," << p.y;
+            for (std::size_t k = 0; k < got.size(); ++k) {
+                EXPECT_EQ(got[k].x, want[k].x) << name;
+                EXPECT_EQ(got[k].y, want[k].y) << name;
+            }
+        }
+    }
 }
 
 // Whether a group maps a panel onto itself (then the core is the whole panel).

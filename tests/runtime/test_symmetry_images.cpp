@@ -26,8 +26,10 @@
 
 using acanthus::Point;
 using acanthus::Rect;
+using acanthus::detail::as_image;
 using acanthus::detail::ImageElement;
 using acanthus::detail::Isometry;
+using acanthus::detail::original_of;
 using acanthus::detail::Ornament;
 
 namespace {
@@ -247,6 +249,23 @@ TEST(ImageElement, ImagesBuiltAndFreedInAnyOrderKeepTheirOwnProxies) {
             EXPECT_EQ(&image.original(), &e);
         }
     }
+}
+
+// as_image() tells an image from a fundamental element by its exact type: an image of an image
+// is an image, and the element an image stands for is not one.
+TEST(ImageElement, AsImageTellsImagesFromFundamentalElements) {
+    dots::dot e;
+    e.p0.set({10, 0}, 1);
+    const ImageElement image(e, Isometry::rotation({0, 0}, 0.5));
+    const ImageElement twice(image, Isometry::rotation({0, 0}, 0.5));
+    const acanthus::Element& as_base = image;
+    EXPECT_EQ(as_image(as_base), &image);
+    EXPECT_EQ(as_image(twice), &twice);
+    EXPECT_EQ(as_image(e), nullptr);
+    EXPECT_EQ(&original_of(image), &e);
+    EXPECT_EQ(&original_of(e), &e);
+    dots::seed s;
+    EXPECT_EQ(as_image(s), nullptr);
 }
 
 // The incremental engine leaves out of the buffer the images that could lower no distance kept

@@ -1,10 +1,13 @@
 // The --json element tree, the --metrics object and the coverage measure.
+#include <cairo.h>
 #include <gtest/gtest.h>
 
+#include <acanthus/canvas.hpp>
 #include <acanthus/error.hpp>
 #include <acanthus/region.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -176,6 +179,88 @@ TEST(Coverage, MeasuresFilledAreasAndStrokedCurves) {
     seed.p.set({50, 40});
     EXPECT_EQ(coverage(region, just(seed), 2.0), 0.0);
     EXPECT_EQ(coverage(region, {}, 2.0), 0.0);
+}
+
+// Every shape drawn through the region's clip, as coverage() measured before it left the clip
+// out for shapes whose pixels the region covers wholly.
+double coverage_all_clipped(const Region& region, const std::vector<const Element*>& elements,
+                            double stroke_width) {
+    const Rect b = region.bounds();
+    const double scale = 1024 / std::max(b.width(), b.height());
+    const int w = static_cast<int>(std::ceil(b.width() * scale));
+    const int h = static_cast<int>(std::ceil(b.height() * scale));
+    auto measure = [&](bool with_elements) {
+        cairo_surface_t* mask = cairo_image_surface_create(CAIRO_FORMAT_A8, w, h);
+        cairo_t* cr = cairo_create(mask);
+        cairo_scale(cr, scale, scale);
+        cairo_translate(cr, -b.x0, -b.y0);
+        for (const auto& ring : region.rings(0.25 / scale)) {
+            cairo_move_to(cr, ring[0].x, ring[0].y);
+            for (std::size_t i = 1; i < ring.size(); ++i) cairo_line_to(cr, ring[i].x, ring[i].y);
+            cairo_close_path(cr);
+        }
+        if (!with_elements) {
+            cairo_fill(cr);
+        } else {
+            cairo_clip(cr);
+            cairo_set_line_width(cr, stroke_width);
+            cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+            cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+            Canvas canvas(cr);
+            for (const Element* e : elements)
+                for (std::size_t k = 0; k < e->proxy_count(); ++k) {
+                    const Proxy& p = e->proxy(k);
+                    if (p.kind() == ProxyKind::point) continue;
+                    if (is_area(p.kind()))
+                        canvas.fill(p);
+                    else
+                        canvas.stroke(p);
+                }
+        }
+        cairo_surface_flush(mask);
+        const unsigned char* data = cairo_image_surface_get_data(mask);
+        double sum = 0;
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i) sum += data[j * cairo_image_surface_get_stride(mask) + i];
+        cairo_destroy(cr);
+        cairo_surface_destroy(mask);
+        return sum;
+    };
+    return measure(true) / measure(false);
+}
+
+TEST(Coverage, ShapesWhollyInsideMeasureAsClippedOnes) {
+    // A disc (its edge no box): stems, curves and discs inside it, across its edge and outside.
+    const Region region = Region::from_spec("circle:50");
+    const Rect b = region.bounds();
+    const Point c = b.center();
+    std::deque<sample::Stem> stems;
+    std::deque<sample::Leaf> leaves;
+    std::deque<sample::Dot> dots;
+    std::vector<const Element*> all;
+    for (int k = 0; k < 24; ++k) {
+        const double a = k * 2 * M_PI / 24, r0 = 5 + 2.2 * k, r1 = r0 + 7;
+        const Point p0{c.x + r0 * std::cos(a), c.y + r0 * std::sin(a)};
+        const Point p1{c.x + r1 * std::cos(a + 0.3), c.y + r1 * std::sin(a + 0.3)};
+        stems.emplace_back().s.set(p0, p1);
+        auto& leaf = leaves.emplace_back();
+        leaf.b.set(p0, {p0.x + 3, p0.y - 4}, {p1.x - 2, p1.y + 5}, p1);
+        dots.emplace_back().c.set(p1, 1.5);
+        all.insert(all.end(), {&stems.back(), &leaves.back(), &dots.back()});
+    }
+    const double measured = coverage(region, all, 1.5);
+    const double reference = coverage_all_clipped(region, all, 1.5);
+    EXPECT_GT(measured, 0.05);
+    // The same up to a few edge pixels that Cairo rounds otherwise without a clip (2e-6 of
+    // the figure here; a shape drawn outside the clip would add its whole outside part).
+    EXPECT_NEAR(measured, reference, 1e-5 * reference);
+    // A stem across the edge counts only inside (half of it here), as clipped.
+    sample::Stem across;
+    across.s.set({c.x + 40, c.y}, {c.x + 60, c.y});
+    sample::Stem inside;
+    inside.s.set({c.x - 10, c.y}, {c.x + 10, c.y});
+    EXPECT_NEAR(coverage(region, just(across), 1.5), 0.5 * coverage(region, just(inside), 1.5),
+                0.05 * coverage(region, just(inside), 1.5));
 }
 
 TEST(Coverage, RespectsHoles) {

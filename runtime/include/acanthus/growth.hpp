@@ -87,6 +87,10 @@ class GrowthEngine {
     // Called after every `every`-th iteration with the placed elements (growth frames).
     void on_frame(long every,
                   std::function<void(long iteration, const std::vector<const Element*>&)> callback);
+    // Called after every `every`-th iteration, without the elements (elements() has them):
+    // for a caller that looks at the clock often and draws seldom (the frames' list of every
+    // element, made each time, was 4% of spiral's growth at every 8th iteration).
+    void on_iteration(long every, std::function<void(long iteration)> callback);
     // Called about every `every` iterations for progress lines.
     void on_progress(std::function<void(long iteration, long elements)> callback);
 

@@ -89,9 +89,13 @@ void edt_columns_kept(int w, int h, int c0, int c1, const ByteSites& is_site, st
         for (; i < c1; ++i)
             if (is_site(i, j)) last[i] = j;
     };
+    // Rows past the last kept one (down) or before the first (up) matter to no kept row.
+    int first_kept = 0, last_kept = h - 1;
+    while (first_kept < h && !row_kept(spans, first_kept)) ++first_kept;
+    while (last_kept >= first_kept && !row_kept(spans, last_kept)) --last_kept;
     s.last.assign(w, -1);
     last = s.last.data();
-    for (int j = 0; j < h; ++j) {
+    for (int j = 0; j <= last_kept; ++j) {
         note_sites(j);
         if (!row_kept(spans, j)) continue;
         std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
@@ -107,7 +111,7 @@ void edt_columns_kept(int w, int h, int c0, int c1, const ByteSites& is_site, st
     }
     s.last.assign(w, -1);
     last = s.last.data();
-    for (int j = h - 1; j >= 0; --j) {
+    for (int j = h - 1; j >= first_kept; --j) {
         std::int32_t* gj = g + static_cast<std::size_t>(j) * w;
         if (!row_kept(spans, j)) {
             note_sites(j);
@@ -440,8 +444,8 @@ static void drop_duplicates(std::vector<int>& pixels) {
 void DistanceField::add_sites(const std::vector<int>& pixels, ObstacleKind kind,
                               std::vector<int>* changed) {
     if (kind == ObstacleKind::none) return;
-    std::vector<int> fresh;
-    fresh.reserve(pixels.size());
+    std::vector<int>& fresh = fresh_;  // kept between calls: most add a few pixels
+    fresh.clear();
     for (int p : pixels) {
         // A site already (distance 0) keeps its kind.
         if (p < 0 || static_cast<std::size_t>(p) >= dist2_.size() || dist2_[p] == 0) continue;

@@ -88,6 +88,13 @@ class DistanceField {
     std::int64_t squared_distance(int index) const { return dist2_[index]; }
     const std::int32_t* squared_distances() const { return dist2_.data(); }
     double distance(int i, int j) const;
+    // Row j's columns [first, second) that may hold a finite distance: outside them a lazy
+    // field with tiles left out holds infinity (whole tiles; every column without).
+    std::pair<int, int> kept_columns(int j) const {
+        if (spans_.empty()) return {0, width_};
+        return {spans_[2 * static_cast<std::size_t>(j)],
+                spans_[2 * static_cast<std::size_t>(j) + 1]};
+    }
     // Squared distance from pixel index to its nearest boundary site.
     std::int64_t boundary_squared_distance(int index) const { return boundary2_[index]; }
     const std::int32_t* boundary_squared_distances() const { return boundary2_.data(); }
@@ -149,6 +156,7 @@ class DistanceField {
         int x, y, dir, pl, pr;
     };
     std::vector<Seed> stack_;
+    std::vector<int> fresh_;  // add_sites() scratch: the pixels not sites yet
     SiteBlob blob_;
     std::size_t direct_pieces_ = std::size_t{1} << 20;
     std::vector<std::uint8_t> window_sites_;

@@ -287,7 +287,10 @@ void EmptyCircleFinder::rebuild() {
             field_.boundary_squared_distances() + static_cast<std::size_t>(j) * grid_.width;
         std::int32_t* floor =
             boundary_floor_.data() + static_cast<std::size_t>(j >> kTileShift) * tiles_w_;
-        for (int ti = 0; ti < tiles_w_; ++ti) {  // a tile's row at a time, in vector lanes
+        // Beyond the kept columns every distance is infinite: those floors stay so.
+        const auto [kept0, kept1] = field_.kept_columns(j);
+        for (int ti = kept0 >> kTileShift; ti < std::min(tiles_w_, ((kept1 - 1) >> kTileShift) + 1);
+             ++ti) {  // a tile's row at a time, in vector lanes
             const int i0 = ti << kTileShift, i1 = std::min(grid_.width, i0 + (1 << kTileShift));
             std::int32_t m = floor[ti];
             if (i1 - i0 == 8) {

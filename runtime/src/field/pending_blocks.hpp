@@ -162,7 +162,7 @@ class PendingBlocks {
                 const int bx0 = gi << kGroupShift, by0 = gj << kGroupShift;
                 const int bx1 = std::min(blocks_w_, bx0 + (1 << kGroupShift)) - 1;
                 const int by1 = std::min(blocks_h_, by0 + (1 << kGroupShift)) - 1;
-                const Rect gr = square_at(bx0 << kShift, by0 << kShift, kShift + kGroupShift);
+                const Rect gr = square_in_grid(bx0 << kShift, by0 << kShift, kShift + kGroupShift);
                 if (gap2(box, gr) >= group_bound_[g]) continue;
                 // A band round the box as wide as the group's largest bound.
                 const int reach =
@@ -174,7 +174,7 @@ class PendingBlocks {
                 for (int bj = jy0; bj <= jy1; ++bj)
                     for (int bi = ix0; bi <= ix1; ++bi) {
                         const int b = bj * blocks_w_ + bi;
-                        const Rect r = block_rect(b);
+                        const Rect r = square_in_grid(bi << kShift, bj << kShift, kShift);
                         if (gap2(box, r) < bound_[b] && visit(b, r)) return true;
                     }
             }
@@ -182,6 +182,11 @@ class PendingBlocks {
     }
     // The square of side 2^shift at (x0, y0), clipped to the grid.
     Rect square_at(int x0, int y0, int shift) const;
+    // The same, inline (for_blocks_near() takes it for every block it visits).
+    Rect square_in_grid(int x0, int y0, int shift) const {
+        return {x0, y0, std::min(width_, x0 + (1 << shift)) - 1,
+                std::min(height_, y0 + (1 << shift)) - 1};
+    }
     Rect block_rect(int block) const;
     Rect tile_rect(int tile) const;
     // The block of the tile in column ti, row tj.

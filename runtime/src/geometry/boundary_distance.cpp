@@ -40,6 +40,14 @@ std::vector<std::size_t> BoundaryDistance::curves_meeting(const Geom::Rect& box)
     return out;
 }
 
+bool BoundaryDistance::any_curve_meets(const Geom::Rect& box) const {
+    if (index_)
+        return !index_->query(Rect{box.left(), box.top(), box.right(), box.bottom()}).empty();
+    for (const Geom::Rect& b : bounds_)
+        if (b.intersects(box)) return true;
+    return false;
+}
+
 BoundaryDistance::Nearest BoundaryDistance::nearest(Geom::Point p) const {
     Nearest best;
     if (index_) {

@@ -41,6 +41,8 @@ class BoundaryDistance {
     // Indices of the curves whose fast bounds may meet `box`, ascending (with few curves,
     // all of them).
     std::vector<std::size_t> curves_meeting(const Geom::Rect& box) const;
+    // Whether the fast bounds of any curve meet `box` (then some curve may pass through it).
+    bool any_curve_meets(const Geom::Rect& box) const;
     // Calls f(index) for those curves; with few curves, no list is built (hot in growth).
     template <class F>
     void for_each_curve_meeting(const Geom::Rect& box, F&& f) const {

@@ -101,34 +101,6 @@ struct Setup {
     std::optional<TranslationSetup> translations;
 };
 
-// The cells of 8 x 8 pixels within kNearCells cells of a pixel of `domain`, row by row, on
-// the grid's cells widened by kNearCells on every side (the first at the grid's corner less
-// kNearCells cells); empty without a domain.
-std::vector<bool> near_zone(const GridFrame& g, const std::vector<std::uint8_t>& domain) {
-    if (domain.empty()) return {};
-    const int pad = kNearCells;
-    const int cw = ((g.width - 1) >> kNearCellShift) + 1 + 2 * pad;
-    const int ch = ((g.height - 1) >> kNearCellShift) + 1 + 2 * pad;
-    static_assert(kNearCellShift == 3, "the near zone's cells are the field's tiles");
-    const std::vector<std::uint8_t> tiles = nonzero_tiles(domain, g.width, g.height);
-    const int tw = cw - 2 * pad, th = ch - 2 * pad;
-    std::vector<bool> in(static_cast<std::size_t>(cw) * ch, false);
-    for (int tj = 0; tj < th; ++tj)
-        for (int ti = 0; ti < tw; ++ti)
-            if (tiles[static_cast<std::size_t>(tj) * tw + ti])
-                in[static_cast<std::size_t>(tj + pad) * cw + ti + pad] = true;
-    std::vector<bool> out(in.size(), false);
-    for (int j = 0; j < ch; ++j)
-        for (int i = 0; i < cw; ++i) {
-            if (!in[static_cast<std::size_t>(j) * cw + i]) continue;
-            for (int y = std::max(0, j - kNearCells); y <= std::min(ch - 1, j + kNearCells); ++y)
-                for (int x = std::max(0, i - kNearCells); x <= std::min(cw - 1, i + kNearCells);
-                     ++x)
-                    out[static_cast<std::size_t>(y) * cw + x] = true;
-        }
-    return out;
-}
-
 Setup set_up(const Region& region, GrowthOptions options) {
     const int groups =
         (options.symmetry ? 1 : 0) + (options.frieze ? 1 : 0) + (options.wallpaper ? 1 : 0);
@@ -182,6 +154,7 @@ struct GrowthEngine::Impl {
         if (!near_cells.empty()) {
             const GridFrame& g = raster.grid();
             const double cell = g.pixel * (1 << kNearCellShift);
+            static_assert(kNearCellShift == 3, "the near zone's cells are the field's tiles");
             ornament.set_near_zone({g.x0 - kNearCells * cell, g.y0 - kNearCells * cell}, cell,
                                    ((g.width - 1) >> kNearCellShift) + 1 + 2 * kNearCells,
                                    near_cells);
@@ -201,7 +174,7 @@ struct GrowthEngine::Impl {
         // over the band, and nothing would be deferred. A periodic group checks them through
         // the families near the element (per_orbit()).
         if (group && (group->rosette() || (translations && translations->group.window)))
-            near_cells = near_zone(raster.grid(), o.centres);
+            near_cells = near_zone(raster.grid(), o.centres, kNearCells);
         return options.reference_engine ? reference_circle_source(raster, o)
                                         : incremental_circle_source(raster, o);
     }
@@ -296,6 +269,8 @@ struct GrowthEngine::Impl {
     std::function<void(const DebugFrame&)> debug_callback;
     long frame_every = 0;
     std::function<void(long, const std::vector<const Element*>&)> frame_callback;
+    long iteration_every = 0;
+    std::function<void(long)> iteration_callback;
     std::function<void(long, long)> progress_callback;
 };
 
@@ -555,27 +530,8 @@ PixelBox GrowthEngine::Impl::pixel_box(const Element& e) const {
 }
 
 std::vector<Point> GrowthEngine::Impl::orbit_of_point(Point p) const {
-    std::vector<Point> out{p};
-    if (!group) return out;
-    const Rect bounds = region.bounds();
-    // distance(o, q) <= tol, by the square where it surely tells (hypot() is dear).
-    constexpr double kLoose = 1 + 1e-12;
-    const double tol = ornament.tolerance(), tol2 = tol * tol;
-    auto same = [&](Point o, Point q) {
-        const Vector v = q - o;
-        const double s = v.x * v.x + v.y * v.y;
-        if (s * kLoose < tol2) return true;
-        if (s > tol2 * kLoose) return false;
-        return distance(o, q) <= tol;
-    };
-    for (std::size_t k = 1; k < group->size(); ++k) {
-        const Point q = group->transforms()[k].apply(p);
-        if (!group->rosette() && !bounds.contains(q)) continue;  // translates beyond the region
-        bool seen = false;
-        for (Point o : out) seen = seen || same(o, q);
-        if (!seen) out.push_back(q);
-    }
-    return out;
+    if (!group) return {p};
+    return point_orbit(*group, p, ornament.tolerance(), region.bounds());
 }
 
 // An image g(e) overlaps a placed y = t(f) just when e overlaps h(f), h = g^-1 t: an element
@@ -694,6 +650,9 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
         child->children = 0;
     }
     const std::size_t count = children.size();
+    std::size_t images = 0;
+    for (const Orbit& orbit : orbits) images += orbit.elements.size();
+    children.reserve(count + images);
     for (std::size_t k = 0; k < orbits.size(); ++k)
         for (auto& image : orbits[k].elements) {
             image->depth = children[k]->depth;  // made before the child had its place
@@ -918,6 +877,7 @@ void GrowthEngine::Impl::iterate(const Circle& goal) {
         goals.push_back(g);
     };
     const double reach = goal.radius + epsilon;
+    if (group) goals.reserve(near_goal.size());
     if (near_goal_radius >= reach) {  // refine() found them all
         for (const auto& [e, d] : near_goal)
             if (d <= reach) consider(e);
@@ -1088,6 +1048,8 @@ void GrowthEngine::Impl::grow() {
         iterate(*goal);
         if (frame_callback && frame_every > 0 && stats.iterations % frame_every == 0)
             frame_callback(stats.iterations, ornament.view());
+        if (iteration_callback && iteration_every > 0 && stats.iterations % iteration_every == 0)
+            iteration_callback(stats.iterations);
         if (progress_callback && stats.iterations % kProgressEvery == 0)
             progress_callback(stats.iterations, static_cast<long>(ornament.size()));
     }
@@ -1120,6 +1082,11 @@ void GrowthEngine::on_frame(
     long every, std::function<void(long iteration, const std::vector<const Element*>&)> callback) {
     impl_->frame_every = every;
     impl_->frame_callback = std::move(callback);
+}
+
+void GrowthEngine::on_iteration(long every, std::function<void(long iteration)> callback) {
+    impl_->iteration_every = every;
+    impl_->iteration_callback = std::move(callback);
 }
 
 void GrowthEngine::on_progress(std::function<void(long iteration, long elements)> callback) {

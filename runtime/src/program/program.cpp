@@ -26,7 +26,6 @@
 #include <iomanip>
 #include <iostream>
 #include <new>
-#include <numeric>
 #include <optional>
 #include <sstream>
 
@@ -264,9 +263,8 @@ constexpr long kPartialCheckEvery = 8;  // iterations between two looks at the c
 // the growth late is the finished picture late).
 constexpr int kPartialCopyNicer = 5;
 
-// The output's copy and the coverage's thread run this much nicer than the view's drawing:
-// a viewer waits for the view alone (published as soon as it is drawn); on a busy machine they
-// take what it leaves.
+// The output's copy and the coverage, made after the view, run this much nicer: a viewer
+// fetches and shows the view meanwhile; on a busy machine they take what it leaves.
 constexpr int kBesideViewNicer = 5;
 
 // This thread's priority lowered by `nicer` (Linux: a thread's own niceness).
@@ -312,7 +310,6 @@ class PartialPictures {
         const pid_t pid = fork();
         if (pid == 0)
             draw_in_copy(draw, path_, parent, body_time_limit_, forks_ > 0 ? kPartialCopyNicer : 0);
-        ++writes_;  // (after the fork: the copy draws with the count before it)
         if (pid > 0) {
             ++forks_;
             drawing_ = pid;
@@ -329,9 +326,6 @@ class PartialPictures {
         const Clock::time_point end = Clock::now();
         next_ = end + std::max({seconds(every_), 4 * (end - begin), (end - start_) / 5});
     }
-
-    // Whether the picture being drawn is the first.
-    bool first() const { return writes_ == 0; }
 
     // The growth is over: the picture being drawn is stopped (the finished one follows; drawn,
     // it would reach a viewer just before that one and hold it up), unless it would be the
@@ -376,14 +370,13 @@ class PartialPictures {
     Clock::time_point start_, next_, forked_;
     pid_t drawing_ = 0;  // the copy drawing a picture now
     long forks_ = 0;     // copies made so far
-    long writes_ = 0;    // pictures begun so far
     long published_ = 0;
     long drawn_placed_ = -1;  // the growth's successes when the last picture was taken
     long last_placed_ = -1;   // ... when due() last looked, first seen at placed_at_
     Clock::time_point placed_at_;
 };
 
-// A picture drawn by a forked copy of the program beside the one this process draws. It is
+// A picture drawn by a forked copy of the program while this process does other work. It is
 // written under a name of its own beside the target (renamed to it with the run's other
 // outputs); a copy that fails or cannot be made leaves the drawing to this process, whose
 // messages and crash reports are the run's.
@@ -501,37 +494,36 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
     view_options.fit_width = o.view_width;
     view_options.fit_height = o.view_height;
     view_options.stored_png = true;
-    // The growth so far, replaced within a tenth of a second: drawn in draft, so that the copies
-    // drawing it take less of the cores the growth and the viewer need.
+    // The growth so far, replaced within a tenth of a second: drawn in draft and at half the
+    // size, scaled up by the viewer (a quarter of the pixels to draw, write, send and decode),
+    // so that the copies drawing it take less of the cores the growth and the viewer need.
+    // At the view's size, chinese_vase's took 15% of its run's processor time.
     RenderOptions partial_options = view_options;
     partial_options.draft = true;
-    // The first (a viewer's first look: a few elements) at half the size, scaled up by the
-    // viewer: a quarter of the pixels to draw, write, send and decode.
-    RenderOptions first_partial_options = partial_options;
     if (o.view_width > 0 && o.view_height > 0) {
-        first_partial_options.fit_width = std::max(16, o.view_width / 2);
-        first_partial_options.fit_height = std::max(16, o.view_height / 2);
+        partial_options.fit_width = std::max(16, o.view_width / 2);
+        partial_options.fit_height = std::max(16, o.view_height / 2);
     }
     long frames_written = 0, last_frame_iteration = -1;
     PartialPictures partials(o.partial, o.partial_every, o.body_time_limit);
-    if (!o.frames_dir.empty() || !o.partial.empty()) {
-        // --partial looks at the clock every few iterations; --frames wants every K-th.
-        const long every = o.partial.empty()      ? o.frames_every
-                           : o.frames_dir.empty() ? kPartialCheckEvery
-                                                  : std::gcd(o.frames_every, kPartialCheckEvery);
-        engine.on_frame(every, [&](long iteration, const std::vector<const Element*>& elements) {
-            if (!o.frames_dir.empty() && iteration % o.frames_every == 0) {
-                render_to_file(frame_path(o.frames_dir, ++frames_written), pattern, region,
-                               elements, frame_options);
-                last_frame_iteration = iteration;
-            }
+    if (!o.frames_dir.empty())
+        engine.on_frame(o.frames_every,
+                        [&](long iteration, const std::vector<const Element*>& elements) {
+                            render_to_file(frame_path(o.frames_dir, ++frames_written), pattern,
+                                           region, elements, frame_options);
+                            last_frame_iteration = iteration;
+                        });
+    if (!o.partial.empty()) {
+        // --partial looks at the clock every few iterations; the list of the elements is made
+        // only for a picture.
+        engine.on_iteration(kPartialCheckEvery, [&](long) {
             long placed = 0;
             for (const RuleStats& r : engine.stats().rules) placed += r.successes;
-            if (partials.due(placed))
-                partials.write(placed, [&](const std::string& path) {
-                    render_to_file(path, pattern, region, elements,
-                                   partials.first() ? first_partial_options : partial_options);
-                });
+            if (!partials.due(placed)) return;
+            const std::vector<const Element*> elements = engine.elements();
+            partials.write(placed, [&](const std::string& path) {
+                render_to_file(path, pattern, region, elements, partial_options);
+            });
         });
     }
 
@@ -543,8 +535,7 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
         const std::function<void(const std::string&, const std::vector<const Element*>&)> draw;
     } body_partials{partials, engine,
                     [&](const std::string& path, const std::vector<const Element*>& elements) {
-                        render_to_file(path, pattern, region, elements,
-                                       partials.first() ? first_partial_options : partial_options);
+                        render_to_file(path, pattern, region, elements, partial_options);
                     }};
     const auto body_partial = [](void* context, long placed, const PartialElements& extra) {
         BodyPartials& b = *static_cast<BodyPartials*>(context);
@@ -584,40 +575,48 @@ int run(const Pattern& pattern, const std::string& program, int argc, char** arg
                        frame_options);
 
     const Clock::time_point render_start = Clock::now();
-    // With --view, the output is drawn by a forked copy while this process draws the view: a
-    // viewer waits for both (spiral's two pictures were a quarter of its run, one after the
-    // other). Forked before the coverage's thread starts: the copy has no half-held locks.
-    std::optional<OutputCopy> output_copy;
-    if (!o.view.empty() && o.output != "-") {
-        output_copy.emplace(o.output, o.body_time_limit, outputs);
-        output_copy->start([&](const std::string& path) {
-            render_to_file(path, pattern, region, elements, o.render);
-        });
-    }
-    // The coverage (a raster of its own, the proxies alone: no rule code runs in it) is
-    // measured on a second thread while the pictures are drawn: 7% of spiral's run,
-    // otherwise after them, before a viewer gets the picture.
+    const auto measure_coverage = [&] {
+        return detail::coverage(region, elements,
+                                detail::rendered_line_width(region, o.render.width));
+    };
     std::future<double> cover;
-    if (o.metrics)
-        cover = std::async(std::launch::async, [&] {
-            if (!o.view.empty()) lower_thread_priority(kBesideViewNicer);
-            return detail::coverage(region, elements,
-                                    detail::rendered_line_width(region, o.render.width));
-        });
     if (!o.view.empty()) {
+        // The view first, alone: a viewer waits for it and nothing else. The output, the
+        // coverage and the metrics come after it; drawn beside it they took a share of the
+        // processor it needed (spiral: coverage 0.39 and SVG 0.25 G instructions beside the
+        // view's 0.32 G).
         render_to_file(o.view, pattern, region, elements, view_options);
-        // Published now, not with the others at the end: a viewer shows the finished picture
-        // while the output, the coverage and the metrics are still being made. No partial
-        // picture comes after it (a first one still drawing is stopped).
+        // Published now, not with the others at the end. No partial picture comes after it
+        // (a first one still drawing is stopped).
         partials.settle();
         outputs.publish(o.view);
-    }
-    if (output_copy)
-        output_copy->finish([&](const std::string& path) {
-            render_to_file(path, pattern, region, elements, o.render);
-        });
-    else
+        // The output drawn by a forked copy while this process measures the coverage; both
+        // nicer than a viewer fetching and showing the view meanwhile.
+        std::optional<OutputCopy> output_copy;
+        if (o.output != "-") {
+            output_copy.emplace(o.output, o.body_time_limit, outputs);
+            output_copy->start([&](const std::string& path) {
+                render_to_file(path, pattern, region, elements, o.render);
+            });
+        }
+        lower_thread_priority(kBesideViewNicer);
+        if (o.metrics) {
+            std::promise<double> measured;
+            measured.set_value(measure_coverage());
+            cover = measured.get_future();
+        }
+        if (output_copy)
+            output_copy->finish([&](const std::string& path) {
+                render_to_file(path, pattern, region, elements, o.render);
+            });
+        else
+            render_to_file(o.output, pattern, region, elements, o.render);
+    } else {
+        // The coverage (a raster of its own, the proxies alone: no rule code runs in it) on a
+        // second thread while the output is drawn.
+        if (o.metrics) cover = std::async(std::launch::async, measure_coverage);
         render_to_file(o.output, pattern, region, elements, o.render);
+    }
     const double render_seconds = seconds_since(render_start);
     partials.settle();
 

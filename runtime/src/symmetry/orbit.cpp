@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "geometry/spatial_index.hpp"
@@ -311,13 +312,17 @@ std::vector<std::optional<Orbit>> placeable_orbits(
     std::vector<std::optional<Orbit>> out;
     out.reserve(batch.size());
     const bool every_image = static_cast<bool>(hits_placed);
-    SpatialIndex index;  // the images of the elements kept so far (and the elements: every_image)
+    // The images of the elements kept so far (and the elements: every_image); made only for a
+    // batch of several (most are one element).
+    std::optional<SpatialIndex> index;
+    if (batch.size() > 1) index.emplace();
     std::vector<const Element*> images;
     std::vector<Isometry> transforms;  // of each entry of `images`
     // True when the proxy, of the image under `g`, overlaps an indexed element or image under
     // another transformation (all of them when `any`).
     auto hits_batch = [&](const Proxy& p, const Isometry& g, bool any) {
-        return index.any_of(p.bounds(), [&](SpatialIndex::Entry en) {
+        if (!index) return false;
+        return index->any_of(p.bounds(), [&](SpatialIndex::Entry en) {
             const auto k = static_cast<std::size_t>(en.element);
             if (!any && same_isometry(transforms[k], g, tolerance)) return false;
             return overlaps(p, images[k]->proxy(static_cast<std::size_t>(en.proxy)), tolerance);
@@ -326,7 +331,7 @@ std::vector<std::optional<Orbit>> placeable_orbits(
     auto add = [&](const Element& e, const Isometry& g) {
         const int id = static_cast<int>(images.size());
         for (std::size_t k = 0; k < e.proxy_count(); ++k)
-            index.insert(id, static_cast<int>(k), e.proxy(k).bounds());
+            index->insert(id, static_cast<int>(k), e.proxy(k).bounds());
         images.push_back(&e);
         transforms.push_back(g);
     };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "field/empty_circle_finder.hpp"
 #include "geometry/spatial_index.hpp"
 
 namespace acanthus::detail {
@@ -110,11 +111,13 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
         return out;
     }
     // in_domain() takes an arc tangent per pixel. Most pixels are decided without one by their
-    // angle to the wedge's bisector: inside the wedge's half angle they are in, beyond it by
-    // more than the widening allows at their radius (at least kFar pixels out) they are out; a
-    // margin keeps rounding from deciding otherwise than in_domain(), which decides the rest
-    // (the centre, and thin bands along the edges).
+    // angle to the wedge's bisector: inside the wedge's half angle they are in; beyond it by
+    // more than the widening allows at their radius they are out (the widening is tol / r, so
+    // at least kFar / 2^k pixels out it is below 2^k / kFar); a margin keeps rounding from
+    // deciding otherwise than in_domain(), which decides the rest (the centre, and thin bands
+    // along the edges).
     constexpr double kFar = 64, kMargin = 1e-9;
+    constexpr int kLevels = 6;  // widenings 1/64, 1/32, ... 1/2
     const double tol = grid.pixel;
     const std::vector<std::pair<Point, Point>> edges = group.domain_edges(1);
     const bool cheap = group.rosette() && edges.size() == 2;
@@ -130,7 +133,16 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
     const double cos_in = std::cos(half);
     const double far_angle = half + 1 / kFar;
     const bool can_be_out = far_angle + kMargin < M_PI;
-    const double cos_out = std::cos(far_angle);
+    // Level k: pixels farther than kFar / 2^k pixels are out beyond half + 2^k / kFar.
+    double level_r[kLevels], level_cos[kLevels];
+    int levels = 0;
+    for (int k = 0; k < kLevels; ++k) {
+        const double angle = half + static_cast<double>(1 << k) / kFar;
+        if (!(angle + kMargin < M_PI)) break;
+        level_r[k] = kFar / (1 << k) * tol;
+        level_cos[k] = std::cos(angle);
+        levels = k + 1;
+    }
     const Point center = group.center();
     auto decide = [&](int i, int j) {
         const Point p = grid.center_of(i, j);
@@ -138,21 +150,36 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
         if (cheap) {
             const Vector v = p - center;
             const double r = std::sqrt(v.dot(v));  // hypot's care is not needed here
-            if (r > kFar * tol) {
+            if (r > 0) {
                 const double cosine = bisector.dot(v) / r;
                 if (cosine >= cos_in + kMargin) {
                     cell = 1;
                     return;
                 }
-                if (can_be_out && cosine <= cos_out - kMargin) return;
+                for (int k = 0; k < levels; ++k)
+                    if (r > level_r[k]) {
+                        if (cosine <= level_cos[k] - kMargin) return;
+                        break;
+                    }
             }
         }
         cell = group.in_domain(p, tol) ? 1 : 0;
     };
-    // A whole 8 x 8 tile at once when every pixel centre of it is seen from the centre within
-    // `spread` of the tile's middle and that decides them all alike; pixel by pixel otherwise.
+    // A whole 8 x 8 tile at once when every pixel centre of it (within `spread_radius` of the
+    // tile's middle) lies on the inner side of both of the wedge's edges (all in), or on the
+    // outer side of an edge of the wedge widened by 1 / kFar, at least kFar pixels from the
+    // centre (all out); pixel by pixel otherwise. Half-planes hold a wedge under a half-turn.
     constexpr int kTile = 8;
     const double spread_radius = (kTile - 1) / 2.0 * M_SQRT2 * grid.pixel;
+    const bool by_edges = cheap && far_angle + kMargin < M_PI / 2;
+    auto turned = [&](double a) {
+        const double c = std::cos(a), sn = std::sin(a);
+        return Vector(bisector.x * c - bisector.y * sn, bisector.x * sn + bisector.y * c);
+    };
+    auto cross = [](Vector a, Vector b) { return a.x * b.y - a.y * b.x; };
+    const Vector in_lo = turned(-half), in_hi = turned(half);
+    const Vector out_lo = turned(-far_angle), out_hi = turned(far_angle);
+    const double bisector_length = std::sqrt(bisector.dot(bisector));
     for (int j0 = 0; j0 < grid.height; j0 += kTile)
         for (int i0 = 0; i0 < grid.width; i0 += kTile) {
             const int i1 = std::min(grid.width, i0 + kTile), j1 = std::min(grid.height, j0 + kTile);
@@ -161,23 +188,102 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
                     grid.center_of(i0, j0) + Vector(1, 1) * ((kTile - 1) / 2.0 * grid.pixel);
                 const Vector v = mid - center;
                 const double r = std::sqrt(v.dot(v));
-                if (r > spread_radius + kFar * tol) {
+                bool in = false, away = false;
+                if (by_edges) {
+                    // Distances to the edges' lines, in units of the bisector's length.
+                    const double reach = (spread_radius + kMargin * (1 + r)) * bisector_length;
+                    in = cross(in_lo, v) > reach && cross(v, in_hi) > reach;
+                    away = !in && r > spread_radius + kFar * tol &&
+                           (cross(out_lo, v) < -reach || cross(v, out_hi) < -reach);
+                } else if (r > spread_radius + kFar * tol) {
                     const double theta = std::acos(std::clamp(bisector.dot(v) / r, -1.0, 1.0));
                     const double spread = std::asin(spread_radius / r);
-                    const bool in = theta + spread < half - kMargin;
-                    const bool away = can_be_out && theta - spread > far_angle + kMargin;
-                    if (in || away) {
-                        if (in)  // (the pixels are 0 already: most tiles are away)
-                            for (int j = j0; j < j1; ++j)
-                                std::fill(out.begin() + j * grid.width + i0,
-                                          out.begin() + j * grid.width + i1, 1);
-                        continue;
-                    }
+                    in = theta + spread < half - kMargin;
+                    away = can_be_out && theta - spread > far_angle + kMargin;
+                }
+                if (in || away) {
+                    if (in)  // (the pixels are 0 already: most tiles are away)
+                        for (int j = j0; j < j1; ++j)
+                            std::fill(out.begin() + j * grid.width + i0,
+                                      out.begin() + j * grid.width + i1, 1);
+                    continue;
                 }
             }
             for (int j = j0; j < j1; ++j)
                 for (int i = i0; i < i1; ++i) decide(i, j);
         }
+    return out;
+}
+
+std::vector<bool> near_zone(const GridFrame& g, const std::vector<std::uint8_t>& domain,
+                            int cells) {
+    if (domain.empty()) return {};
+    const int pad = cells;
+    const int cw = ((g.width - 1) >> 3) + 1 + 2 * pad;
+    const int ch = ((g.height - 1) >> 3) + 1 + 2 * pad;
+    const std::vector<std::uint8_t> tiles = nonzero_tiles(domain, g.width, g.height);
+    const int tw = cw - 2 * pad, th = ch - 2 * pad;
+    // The square of side 2 cells + 1 about each domain cell, as two passes of a sliding
+    // count (in bytes: a vector<bool> costs a bit operation per cell).
+    std::vector<std::uint8_t> across(static_cast<std::size_t>(cw) * ch, 0);
+    for (int tj = 0; tj < th; ++tj) {
+        const std::uint8_t* in = tiles.data() + static_cast<std::size_t>(tj) * tw;
+        std::uint8_t* row = across.data() + static_cast<std::size_t>(tj + pad) * cw;
+        int count = 0;  // domain tiles among columns x - cells .. x + cells
+        for (int x = 0; x < cw; ++x) {
+            const int enter = x + cells - pad, leave = x - cells - 1 - pad;
+            if (enter >= 0 && enter < tw && in[enter]) ++count;
+            if (leave >= 0 && leave < tw && in[leave]) --count;
+            row[x] = count > 0;
+        }
+    }
+    std::vector<bool> out(across.size(), false);
+    for (int x = 0; x < cw; ++x) {
+        int count = 0;
+        for (int y = 0; y < ch; ++y) {
+            const int enter = y + cells, leave = y - cells - 1;
+            if (enter < ch && across[static_cast<std::size_t>(enter) * cw + x]) ++count;
+            if (leave >= 0 && across[static_cast<std::size_t>(leave) * cw + x]) --count;
+            if (count > 0) out[static_cast<std::size_t>(y) * cw + x] = true;
+        }
+    }
+    return out;
+}
+
+std::vector<Point> point_orbit(const SymmetryGroup& group, Point p, double tol,
+                               const Rect& bounds) {
+    std::vector<Point> out{p};
+    out.reserve(group.size());
+    // distance(o, q) <= tol, by the square where it surely tells (hypot() is dear).
+    constexpr double kLoose = 1 + 1e-12;
+    const double tol2 = tol * tol;
+    auto same = [&](Point o, Point q) {
+        const Vector v = q - o;
+        const double s = v.x * v.x + v.y * v.y;
+        if (s * kLoose < tol2) return true;
+        if (s > tol2 * kLoose) return false;
+        return distance(o, q) <= tol;
+    };
+    const auto& g = group.transforms();
+    // Under a rosette (a group, closed) g(p) and h(p) are as far apart as p and g^-1 h (p): when
+    // every transformation moves p by well over the tolerance, no two images are the same and
+    // each is kept, in order, without comparing them pairwise.
+    bool apart = group.rosette();
+    for (std::size_t k = 1; apart && k < g.size(); ++k) {
+        const Vector v = g[k].apply(p) - p;
+        apart = v.x * v.x + v.y * v.y > 4 * tol2;
+    }
+    if (apart) {
+        for (std::size_t k = 1; k < g.size(); ++k) out.push_back(g[k].apply(p));
+        return out;
+    }
+    for (std::size_t k = 1; k < group.size(); ++k) {
+        const Point q = group.transforms()[k].apply(p);
+        if (!group.rosette() && !bounds.contains(q)) continue;  // translates beyond the region
+        bool seen = false;
+        for (Point o : out) seen = seen || same(o, q);
+        if (!seen) out.push_back(q);
+    }
     return out;
 }
 
@@ -206,16 +312,20 @@ bool maps_onto_itself(const Region& region, const SymmetryGroup& group, double t
         const double t = len2 > 0 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
         return distance(q, a + ab * t);
     };
-    // The segment each transformation's last image was nearest to: the next point's image
-    // usually lies by it or by a neighbour, which settles it without a query (a segment that
-    // near makes the nearest at least as near).
+    // The segment each transformation's last image was near: the next point's image usually
+    // lies by it or by a neighbour, which settles it without a query (a segment that near
+    // makes the nearest at least as near); the hint follows the images along the ring.
     std::vector<SpatialIndex::Entry> hint(group.size());
-    auto near_hint = [&](Point q, SpatialIndex::Entry e) {
+    auto near_hint = [&](Point q, SpatialIndex::Entry& e) {
         if (e.element < 0) return false;
         const int n = static_cast<int>(rings[static_cast<std::size_t>(e.element)].size());
-        for (int step = -1; step <= 1; ++step)
-            if (to_segment(q, {e.element, (e.proxy + step + n) % n}) <= tolerance - slack)
+        for (int step : {0, 1, -1}) {
+            const SpatialIndex::Entry at{e.element, (e.proxy + step + n) % n};
+            if (to_segment(q, at) <= tolerance - slack) {
+                e = at;
                 return true;
+            }
+        }
         return false;
     };
     for (const auto& ring : rings)

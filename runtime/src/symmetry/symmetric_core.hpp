@@ -19,6 +19,17 @@ std::vector<int> pixels_outside_core(const RasterBuffer& raster, const SymmetryG
 // domain (widened by a pixel): where C may be centred.
 std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGroup& group);
 
+// The cells of 8 x 8 pixels (the field's tiles) within `cells` cells of a pixel of `domain`
+// (domain_pixels()), row by row, on the grid's cells widened by `cells` on every side (the
+// first at the grid's corner less `cells` cells); empty without a domain.
+std::vector<bool> near_zone(const GridFrame& grid, const std::vector<std::uint8_t>& domain,
+                            int cells);
+
+// p and its distinct images (within `tolerance`), p first, the others in the group's order;
+// with translations only those inside `bounds` (the region's).
+std::vector<Point> point_orbit(const SymmetryGroup& group, Point p, double tolerance,
+                               const Rect& bounds);
+
 // True when the group maps the region onto itself (its boundary onto its boundary, sampled,
 // within `tolerance`): then the core is the whole region.
 bool maps_onto_itself(const Region& region, const SymmetryGroup& group, double tolerance);

@@ -372,16 +372,24 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
             best_mirror[fixed ? 0 : 1] = fixed ? mirror : nullptr;
         }
     };
-    // The spokes' and the search's directions, each angle's cosine and sine taken once.
-    Vector spokes[2][kSpokes], directions[kDirections];
-    for (int odd = 0; odd < 2; ++odd)
-        for (int j = 0; j < kSpokes; ++j) {
-            const double t = 2 * M_PI * (j + 0.5 * odd) / kSpokes;
-            spokes[odd][j] = Vector(std::cos(t), std::sin(t));
+    // The spokes' and the search's directions, each angle's cosine and sine taken once for
+    // every call.
+    struct Directions {
+        Vector spokes[2][kSpokes], search[kDirections];
+        Directions() {
+            for (int odd = 0; odd < 2; ++odd)
+                for (int j = 0; j < kSpokes; ++j) {
+                    const double t = 2 * M_PI * (j + 0.5 * odd) / kSpokes;
+                    spokes[odd][j] = Vector(std::cos(t), std::sin(t));
+                }
+            for (int d = 0; d < kDirections; ++d)
+                search[d] = Vector(std::cos(2 * M_PI * d / kDirections),
+                                   std::sin(2 * M_PI * d / kDirections));
         }
-    for (int d = 0; d < kDirections; ++d)
-        directions[d] =
-            Vector(std::cos(2 * M_PI * d / kDirections), std::sin(2 * M_PI * d / kDirections));
+    };
+    static const Directions kTables;
+    const auto& spokes = kTables.spokes;
+    const auto& directions = kTables.search;
     for (int i = 1; i < kRings; ++i)
         for (int j = 0; j < kSpokes; ++j) {
             const Point p = c.center + spokes[i % 2][j] * (c.radius * i / kRings);
