@@ -577,7 +577,7 @@ TEST_F(Program, LaterPartialPictureCopiesRunNicer) {
     fs::create_directories(path("nice"));
     niceness_dir = path("nice");
     dot_type.draw = &record_niceness_in_copies;
-    Outcome o = run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000",
+    Outcome o = run({"--region", "circle:400", "--resolution", "512", "--param", "limit=6000",
                      "--param", "dot_radius=2", "--partial", path("partial.svg"), "--partial-every",
                      "0.01", "-o", path("out.svg")});
     dot_type.draw = nullptr;
@@ -615,7 +615,7 @@ TEST_F(Program, PartialPicturesAtHalfTheViewSize) {
     niceness_dir = path("pixels");
     dot_type.draw = &record_pixel_in_copies;
     Outcome o =
-        run({"--region", "circle:400", "--resolution", "512", "--param", "limit=3000", "--param",
+        run({"--region", "circle:400", "--resolution", "512", "--param", "limit=6000", "--param",
              "dot_radius=2", "--partial", path("partial.png"), "--partial-every", "0.01",
              "--view-size", "600x600", "--view", path("view.png"), "-o", path("out.svg")});
     dot_type.draw = nullptr;

@@ -149,8 +149,9 @@ double coverage(const Region& region, const std::vector<const Element*>& element
     // wholly is drawn without the clip (a clip that takes nothing away; the order kept: two
     // contexts on one surface): the clip was a third of the measure's time. Cairo rounds a
     // few of the shape's edge pixels otherwise without it: the figure moves by about 1e-6 of
-    // itself, far inside its one-pixel accuracy. Polygons keep the clip: Cairo fills an unclipped rectilinear one as boxes, whose
-    // edge pixels differ from its clipped fill's (facade's coverage 0.81829 -> 0.81848).
+    // itself, far inside its one-pixel accuracy. Polygons keep the clip: Cairo fills an
+    // unclipped rectilinear one as boxes, whose edge pixels differ more from its clipped fill's
+    // (facade's coverage 0.81829 -> 0.81848).
     const WholePixels whole(region_mask.get());
     const auto mask = new_mask();
     const auto clipped = context(mask.get()), unclipped = context(mask.get());
