@@ -307,7 +307,10 @@ std::pair<std::string, std::string> svg_frame(const Region& region, const Render
     const double inv[6] = {ia, ib, ic, id, -(ia * o.x + ic * o.y), -(ib * o.x + id * o.y)};
     auto matrix = [](const double* m) {
         std::string text = "matrix(";
-        for (int i = 0; i < 6; ++i) text += (i ? " " : "") + detail::svg_number(m[i], 6);
+        for (int i = 0; i < 6; ++i) {
+            if (i) text += ' ';
+            text += detail::svg_number(m[i], 6);
+        }
         return text + ")";
     };
     return {"<defs>" + clip + "<pattern id=\"repeat-pattern\" patternUnits=\"userSpaceOnUse\" " +

@@ -217,7 +217,10 @@ void validate(const detail::ProgramOptions& o, const Region& region,
 // name, `.NAME.tmp-XXXXXX` beside it).
 void remove_copy_temporaries(const std::string& path) {
     const fs::path target(path);
-    const std::string prefix = "." + target.filename().string() + ".tmp-";
+    // Appended, not `"." + string`: GCC 12 warns falsely of it at -O3 (-Wrestrict).
+    std::string prefix = ".";
+    prefix += target.filename().string();
+    prefix += ".tmp-";
     std::error_code ec;
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
     for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
@@ -386,9 +389,12 @@ class OutputCopy {
                detail::OutputTransaction& outputs)
         : body_time_limit_(body_time_limit) {
         const fs::path t(target);
-        path_ = (t.parent_path() / ("." + t.stem().string() + ".drawn-" + std::to_string(getpid()) +
-                                    t.extension().string()))
-                    .string();
+        std::string name = ".";  // appended: see remove_copy_temporaries
+        name += t.stem().string();
+        name += ".drawn-";
+        name += std::to_string(getpid());
+        name += t.extension().string();
+        path_ = (t.parent_path() / name).string();
         outputs.add_file(path_, target);  // (removed with the run's temporaries if it fails)
     }
     OutputCopy(const OutputCopy&) = delete;

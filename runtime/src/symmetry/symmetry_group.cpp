@@ -42,7 +42,8 @@ Symmetry Symmetry::parse(std::string_view text) {
 }
 
 std::string Symmetry::name() const {
-    return (kind == Kind::cyclic ? "c" : "d") + std::to_string(order);
+    std::string text(1, kind == Kind::cyclic ? 'c' : 'd');  // not `"c" + string`: GCC 12 -Wrestrict
+    return text += std::to_string(order);
 }
 
 namespace detail {
