@@ -231,7 +231,9 @@ struct GrowthEngine::Impl {
     // The proxies of the families near e, by their bounds' left edge.
     std::vector<NearProxy> family_near(const Element& e) const;
     double near_margin() const;
-    PixelBox pixel_box(const Element& e) const;
+    // The pixels an element with these bounds covers, with a margin.
+    PixelBox pixel_box(const Rect& bounds) const;
+    std::vector<Rect> image_bounds;  // commit()'s scratch
     std::optional<Point> roomiest_in_domain() const;
     void sync_exclude_clears();
     Flow call_exhausted();
@@ -513,14 +515,8 @@ std::optional<Point> GrowthEngine::Impl::roomiest_in_domain() const {
 
 // The pixels (inclusive) an element may cover, with two pixels to spare; clamped far beyond
 // the grid.
-PixelBox GrowthEngine::Impl::pixel_box(const Element& e) const {
+PixelBox GrowthEngine::Impl::pixel_box(const Rect& b) const {
     const GridFrame& g = raster.grid();
-    Rect b{1e300, 1e300, -1e300, -1e300};
-    for (std::size_t k = 0; k < e.proxy_count(); ++k) {
-        const Rect p = e.proxy(k).bounds();
-        b = {std::min(b.x0, p.x0), std::min(b.y0, p.y0), std::max(b.x1, p.x1),
-             std::max(b.y1, p.y1)};
-    }
     auto at = [&](double v, double origin, int size, int spare) {
         const double i = std::floor((v - origin) / g.pixel) + spare;
         return static_cast<int>(std::clamp(i, -2.0 - size, 2.0 + 2 * size));
@@ -670,7 +666,10 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     // library still goes in one).
     const bool one_by_one = group && placed > count && count <= kOneByOne;
     std::size_t n = 0;
-    for (Element* e : ornament.add_all(std::move(children), group ? count : placed)) {
+    // The images' bounds (from `count` on), taken once for the ornament's zone and the
+    // field's test below.
+    for (Element* e :
+         ornament.add_all(std::move(children), group ? count : placed, &image_bounds)) {
         // An image too far from the fundamental domain to change a distance read there stays
         // out of the buffer (it is in the ornament, for the queries and the output); a debug
         // frame shows the buffer, so with one every image goes in.
@@ -680,7 +679,10 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
                 families.resize(static_cast<std::size_t>(f.id) + 1);
             families[static_cast<std::size_t>(f.id)].push_back(e);
         }
-        if (n++ >= count && !debug_callback && !circles->may_change(pixel_box(*e))) continue;
+        const std::size_t at = n++;
+        if (at >= count && !debug_callback &&
+            !circles->may_change(pixel_box(image_bounds[at - count])))
+            continue;
         raster.add_element(*e, fresh);
         if (can_parent(*e)) ++parents_left;
         if (one_by_one) {
