@@ -120,20 +120,6 @@ bool SymmetryGroup::keeps(const Element& image, double tolerance) const {
     return !window_;
 }
 
-int SymmetryGroup::keeps_within(const Rect& box, double margin) const {
-    if (!lattice_) return 1;
-    if (!window_) return -1;
-    const Rect& w = *window_;
-    if (box.x0 > w.x1 + margin || w.x0 > box.x1 + margin || box.y0 > w.y1 + margin ||
-        w.y0 > box.y1 + margin)
-        return 0;
-    // An element has a proxy, and each proxy's bounds then meet the window.
-    if (box.x0 >= w.x0 + margin && box.x1 <= w.x1 - margin && box.y0 >= w.y0 + margin &&
-        box.y1 <= w.y1 - margin)
-        return 1;
-    return -1;
-}
-
 std::vector<Point> SymmetryGroup::centre_classes(double tolerance) const {
     if (!lattice_) return {center_};
     std::vector<Point> out;

@@ -92,8 +92,21 @@ class SymmetryGroup {
     // translations when it meets the window, or without one lies inside the region.
     bool keeps(const Element& image, double tolerance) const;
     // keeps() for an image known only to lie within `box`, where the box alone decides: 1 kept,
-    // 0 not, -1 when only the image itself can tell (`margin` covers rounding).
-    int keeps_within(const Rect& box, double margin) const;
+    // 0 not, -1 when only the image itself can tell (`margin` covers rounding). Inline:
+    // orbit_of() asks it of every transformation, hundreds for a tile's window.
+    int keeps_within(const Rect& box, double margin) const {
+        if (!lattice_) return 1;
+        if (!window_) return -1;
+        const Rect& w = *window_;
+        if (box.x0 > w.x1 + margin || w.x0 > box.x1 + margin || box.y0 > w.y1 + margin ||
+            w.y0 > box.y1 + margin)
+            return 0;
+        // An element has a proxy, and each proxy's bounds then meet the window.
+        if (box.x0 >= w.x0 + margin && box.x1 <= w.x1 - margin && box.y0 >= w.y0 + margin &&
+            box.y1 <= w.y1 - margin)
+            return 1;
+        return -1;
+    }
 
   private:
     Symmetry spec_;
