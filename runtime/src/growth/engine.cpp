@@ -495,17 +495,19 @@ std::optional<Point> GrowthEngine::Impl::roomiest_in_domain() const {
     std::optional<Point> best;
     double room = 0;
     const double tol = ornament.tolerance();
+    std::size_t hint = 0;  // the image that ruled out the last point (clearance())
     for (int j = 0; j < kSamples; ++j)
         for (int i = 0; i < kSamples; ++i) {
             const Point p{box.x0 + (i + 0.5) / kSamples * box.width(),
                           box.y0 + (j + 0.5) / kSamples * box.height()};
-            if (!group->in_domain(p, 0) || !region.contains(p)) continue;
+            if (!group->in_domain(p, 0)) continue;
             // Only a point with more room than the best so far matters: the boundary's distance
-            // first, the images only while it can beat it.
+            // first, the images only while it can beat it, whether the region holds it last
+            // (the dearest test, and the same answer in any order).
             const double boundary = region.distance_to_boundary(p);
             if (!(boundary > room)) continue;
-            const double r = std::min(group->clearance(p, tol, room), boundary);
-            if (r > room) {
+            const double r = std::min(group->clearance(p, tol, room, &hint), boundary);
+            if (r > room && region.contains(p)) {
                 room = r;
                 best = p;
             }

@@ -243,7 +243,8 @@ Point SymmetryGroup::snap(Point p, double tolerance) const {
     return out;
 }
 
-double SymmetryGroup::clearance(Point c, double tolerance, double at_most) const {
+double SymmetryGroup::clearance(Point c, double tolerance, double at_most,
+                                std::size_t* hint) const {
     // Squared distances decide what they surely can; hypot() (distance()) is taken only near
     // the tolerance and for the images that may be the nearest: distance()'s answer to the bit.
     constexpr double kLoose = 1 + 1e-12;
@@ -254,6 +255,11 @@ double SymmetryGroup::clearance(Point c, double tolerance, double at_most) const
         const Vector v = c - transforms_[k].apply(c);
         return v.x * v.x + v.y * v.y;
     };
+    // The loop below returns at_most at the first such transformation, whichever it is.
+    if (hint && *hint > 0 && *hint < transforms_.size()) {
+        const double s = square(*hint);
+        if (s > tol2 * kLoose && s * kLoose < 4 * at_most * at_most) return at_most;
+    }
     for (std::size_t k = 1; k < transforms_.size(); ++k) {
         const double s = square(k);
         if (s * kLoose < tol2) continue;  // surely within the tolerance
@@ -263,7 +269,10 @@ double SymmetryGroup::clearance(Point c, double tolerance, double at_most) const
         } else {
             least = std::min(least, s);
             // Surely beyond the tolerance and surely nearer than 2 at_most: done.
-            if (s * kLoose < 4 * at_most * at_most) return at_most;
+            if (s * kLoose < 4 * at_most * at_most) {
+                if (hint) *hint = k;
+                return at_most;
+            }
         }
     }
     for (std::size_t k = 1; k < transforms_.size(); ++k) {

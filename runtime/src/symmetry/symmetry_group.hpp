@@ -60,7 +60,10 @@ class SymmetryGroup {
     // every image coincides with c): a circle about c no larger stays clear of its images.
     // With `at_most` > 0 the answer may be any value no larger than it once the clearance is
     // known to be below it (the search for the roomiest point needs no more).
-    double clearance(Point c, double tolerance, double at_most = 0) const;
+    // `hint` (may be null) names the transformation that ended the last such search: tried
+    // first, it usually ends the next one, for nearby points, at once.
+    double clearance(Point c, double tolerance, double at_most = 0,
+                     std::size_t* hint = nullptr) const;
     // The largest circles inside `c` (other than `c`) each of which stays clear of its images
     // (radius at most the clearance of its centre): the one touching `c` where `c` is nearest
     // `toward`; then one centred on a mirror and one off every mirror, found on a polar sample
