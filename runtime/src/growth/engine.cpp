@@ -378,9 +378,11 @@ bool GrowthEngine::Impl::centre_seed() {
     if (!group || !options.seeds.empty()) return false;
     const double tol = ornament.tolerance();
     // The hole on c: its distance to the nearest element that is not a seed, or to the
-    // region's boundary (a frieze's band).
-    auto hole = [&](Point c) {
+    // region's boundary (a frieze's band). With `bar`, a hole no larger than it may be
+    // answered by the boundary's distance alone.
+    auto hole = [&](Point c, double bar = -std::numeric_limits<double>::infinity()) {
         const double wall = region.distance_to_boundary(c);
+        if (!(wall > bar)) return wall;
         for (double reach = 4 * epsilon; reach < wall; reach *= 2)
             for (const auto& [e, d] : ornament.within(c, reach))
                 if (&e->type() != pattern.seed) return std::min(d, wall);
@@ -412,9 +414,9 @@ bool GrowthEngine::Impl::centre_seed() {
                 std::optional<Point> at;
                 for (int k = 1; k < n; ++k) {
                     const Point p = a + (b - a) * (static_cast<double>(k) / n);
-                    if (!region.contains(p)) continue;
-                    const double r = hole(p);
-                    if (r > room) {
+                    // Whether the region holds p last: the dearer test, the same answer.
+                    const double r = hole(p, room);
+                    if (r > room && region.contains(p)) {
                         room = r;
                         at = p;
                     }
