@@ -114,7 +114,7 @@ void PendingBlocks::update_bound(int block) {
 void PendingBlocks::set_bound(int block, std::int32_t m) {
     const std::int32_t old = bound_[block];
     bound_[block] = m;
-    if (m > 0) {
+    if (m > old) {  // a rise (from reset()'s 0; later bounds fall): the box only grows
         const Rect r =
             square_in_grid(block % blocks_w_ << kShift, block / blocks_w_ << kShift, kShift);
         if (live_.x0 > live_.x1) {

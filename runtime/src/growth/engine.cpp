@@ -672,8 +672,8 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     std::size_t n = 0;
     // The images' bounds (from `count` on), taken once for the ornament's zone and the
     // field's test below.
-    for (Element* e :
-         ornament.add_all(std::move(children), group ? count : placed, &image_bounds)) {
+    for (Element* e : ornament.add_all(std::move(children), group ? count : placed,
+                                       group ? &image_bounds : nullptr)) {
         // An image too far from the fundamental domain to change a distance read there stays
         // out of the buffer (it is in the ornament, for the queries and the output); a debug
         // frame shows the buffer, so with one every image goes in.
