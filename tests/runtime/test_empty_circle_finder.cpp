@@ -1,12 +1,14 @@
 // EmptyCircleFinder: medial-axis candidates, boundary-stopped and excluded circles, minimum
-// radius, and the incremental search against the full scan.
+// radius, and the incremental search against the full scan; the lazy field's test of new sites.
 #include <gtest/gtest.h>
 
 #include <acanthus/random.hpp>
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "field/empty_circle_finder.hpp"
+#include "field/pending_blocks.hpp"
 #include "growth/exclude_list.hpp"  // the blocker the growth loop hands the finder
 
 using acanthus::Circle;
@@ -347,4 +349,56 @@ TEST(EmptyCircleFinder, NonzeroTilesMarkTheTilesHoldingANonzeroByte) {
                         want[static_cast<std::size_t>(j / 8) * tw + i / 8] = 1;
             EXPECT_EQ(acanthus::detail::nonzero_tiles(bytes, w, h), want) << w << " x " << h;
         }
+}
+
+// PendingBlocks::may_lower() is true just when some block is nearer to the box than its bound
+// (the largest of its tiles' bounds): with tiles left out (bound 0) a box far from the kept
+// ones is told at once, and must be told as the walk over the blocks would.
+TEST(PendingBlocks, MayLowerIsTrueJustWhenABlockIsNearerThanItsBound) {
+    using acanthus::detail::PendingBlocks;
+    using acanthus::detail::PixelBox;
+    acanthus::Random rng(17);
+    int near = 0, far = 0;
+    for (int scene = 0; scene < 6; ++scene) {
+        const int w = static_cast<int>(rng.uniform_int(300, 700));
+        const int h = static_cast<int>(rng.uniform_int(200, 600));
+        std::vector<std::int32_t> d2(static_cast<std::size_t>(w) * h);
+        for (auto& v : d2) v = static_cast<std::int32_t>(rng.uniform_int(0, 900));
+        const int tw = (w - 1) / 8 + 1, th = (h - 1) / 8 + 1;
+        PendingBlocks blocks;
+        if (scene % 3 != 0) {  // centre tiles: a band of tile columns (or none kept at all)
+            std::vector<std::uint8_t> centres(static_cast<std::size_t>(tw) * th, 0);
+            for (int tj = 0; tj < th; ++tj)
+                for (int ti = 8; ti < 16 && scene % 3 == 1; ++ti)
+                    centres[static_cast<std::size_t>(tj * tw + ti)] = 1;
+            blocks.set_centre_tiles(centres);
+        }
+        blocks.reset(w, h, d2.data(), acanthus::DistanceMetric::euclidean);
+        const int bw = (w - 1) / 64 + 1, bh = (h - 1) / 64 + 1;
+        for (int q = 0; q < 500; ++q) {
+            PixelBox box;
+            box.x0 = static_cast<int>(rng.uniform_int(-80, w + 80));
+            box.y0 = static_cast<int>(rng.uniform_int(-80, h + 80));
+            box.x1 = box.x0 + static_cast<int>(rng.uniform_int(0, 40));
+            box.y1 = box.y0 + static_cast<int>(rng.uniform_int(0, 40));
+            bool expected = false;
+            for (int bj = 0; bj < bh; ++bj)
+                for (int bi = 0; bi < bw; ++bi) {
+                    std::int32_t bound = 0;
+                    for (int tj = bj * 8; tj < std::min(th, bj * 8 + 8); ++tj)
+                        for (int ti = bi * 8; ti < std::min(tw, bi * 8 + 8); ++ti)
+                            bound = std::max(bound, blocks.tile_bound(ti, tj));
+                    const int x0 = bi * 64, x1 = std::min(w, x0 + 64) - 1;
+                    const int y0 = bj * 64, y1 = std::min(h, y0 + 64) - 1;
+                    const long long dx = std::max({0, x0 - box.x1, box.x0 - x1});
+                    const long long dy = std::max({0, y0 - box.y1, box.y0 - y1});
+                    expected = expected || dx * dx + dy * dy < bound;
+                }
+            (expected ? near : far) += 1;
+            EXPECT_EQ(blocks.may_lower(box), expected)
+                << "scene " << scene << " box " << box.x0 << "," << box.y0;
+        }
+    }
+    EXPECT_GT(near, 100);
+    EXPECT_GT(far, 100);
 }

@@ -124,3 +124,36 @@ TEST(Ornament, AddAllMatchesAddingOneByOne) {
         EXPECT_EQ(one.intersects(probe), all.intersects(probe));
     }
 }
+
+// add_all() hands back the bounds of the elements from `deferrable_from` on, in order, with a
+// near zone or without one (the growth loop reads them for the field's test of each image).
+TEST(Ornament, AddAllGivesTheBoundsOfTheDeferrableElements) {
+    const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
+    for (const bool zoned : {false, true}) {
+        Ornament ornament(region, 1e-9);
+        if (zoned) {
+            std::vector<bool> cells(20 * 20, false);
+            for (int j = 0; j < 5; ++j)
+                for (int i = 0; i < 5; ++i) cells[static_cast<std::size_t>(j * 20 + i)] = true;
+            ornament.set_near_zone({0, 0}, 10, 20, cells);
+        }
+        acanthus::Random rng(5);
+        std::vector<std::unique_ptr<acanthus::Element>> batch;
+        std::vector<acanthus::Rect> expected;
+        for (int k = 0; k < 50; ++k) {
+            auto d = std::make_unique<dots::dot>();
+            d->p0.set({rng.uniform(10, 190), rng.uniform(10, 190)}, rng.uniform(0.5, 3));
+            if (k >= 20) expected.push_back(d->p0.bounds());
+            batch.push_back(std::move(d));
+        }
+        std::vector<acanthus::Rect> bounds{{1, 2, 3, 4}};  // cleared first
+        ornament.add_all(std::move(batch), 20, &bounds);
+        ASSERT_EQ(bounds.size(), expected.size()) << "zoned " << zoned;
+        for (std::size_t k = 0; k < bounds.size(); ++k) {
+            EXPECT_EQ(bounds[k].x0, expected[k].x0) << k;
+            EXPECT_EQ(bounds[k].y0, expected[k].y0) << k;
+            EXPECT_EQ(bounds[k].x1, expected[k].x1) << k;
+            EXPECT_EQ(bounds[k].y1, expected[k].y1) << k;
+        }
+    }
+}

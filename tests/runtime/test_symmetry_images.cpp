@@ -436,3 +436,36 @@ TEST(SymmetryClearance, IsHalfTheNearestImageDistanceToTheBit) {
         }
     }
 }
+
+// With `at_most` the answer is the clearance when it is above at_most, else at most at_most;
+// a hint (the transformation that ended the last search, however stale) changes nothing.
+TEST(SymmetryClearance, AtMostAndItsHintGiveTheSameAnswers) {
+    std::mt19937 rng(8);
+    for (const PlacedGroup& pg : placed_groups()) {
+        const acanthus::detail::SymmetryGroup& g = *pg.group;
+        const Rect b = pg.region.bounds();
+        std::uniform_real_distribution<double> x(b.x0, b.x1), y(b.y0, b.y1);
+        std::uniform_real_distribution<double> bar(0, 0.2 * std::max(b.width(), b.height()));
+        std::size_t hint = 0;
+        int cut = 0;
+        for (int n = 0; n < 400; ++n) {
+            Point p{x(rng), y(rng)};
+            if (n % 4 == 1) p = g.snap(p, 5);
+            if (n % 7 == 3) hint = static_cast<std::size_t>(n) % (g.size() + 2);  // stale, wild
+            for (double tol : {1e-9, 1e-3, 0.5}) {
+                const double at_most = bar(rng);
+                const double exact = g.clearance(p, tol);
+                const double plain = g.clearance(p, tol, at_most);
+                const double hinted = g.clearance(p, tol, at_most, &hint);
+                EXPECT_EQ(hinted, plain) << pg.name << " at " << p.x << "," << p.y;
+                if (exact > at_most) {
+                    EXPECT_EQ(hinted, exact) << pg.name << " at " << p.x << "," << p.y;
+                } else {
+                    EXPECT_LE(hinted, at_most) << pg.name << " at " << p.x << "," << p.y;
+                    ++cut;
+                }
+            }
+        }
+        EXPECT_GT(cut, 0) << pg.name;
+    }
+}

@@ -47,6 +47,7 @@ void PendingBlocks::reset(int width, int height, const std::int32_t* d2, Distanc
     groups_h_ = ((blocks_h_ - 1) >> kGroupShift) + 1;
     group_bound_.assign(static_cast<std::size_t>(groups_w_) * groups_h_, 0);
     groups_.reset(group_bound_.size());
+    live_ = {0, 0, -1, -1};
     for (int b = 0; b < count(); ++b) update_bound(b);
 }
 
@@ -113,6 +114,16 @@ void PendingBlocks::update_bound(int block) {
 void PendingBlocks::set_bound(int block, std::int32_t m) {
     const std::int32_t old = bound_[block];
     bound_[block] = m;
+    if (m > old) {  // a rise (from reset()'s 0; later bounds fall): the box only grows
+        const Rect r =
+            square_in_grid(block % blocks_w_ << kShift, block / blocks_w_ << kShift, kShift);
+        if (live_.x0 > live_.x1) {
+            live_ = r;
+        } else {
+            live_ = {std::min(live_.x0, r.x0), std::min(live_.y0, r.y0), std::max(live_.x1, r.x1),
+                     std::max(live_.y1, r.y1)};
+        }
+    }
     const int group =
         (block / blocks_w_ >> kGroupShift) * groups_w_ + (block % blocks_w_ >> kGroupShift);
     if (m > group_bound_[group]) {
@@ -183,6 +194,11 @@ void PendingBlocks::defer(const std::vector<int>& sites) {
 
 bool PendingBlocks::may_lower(const PixelBox& box) const {
     if (group_bound_.empty()) return true;
+    // Every block with a bound above 0 lies in live_ (bounds only fall): a box no nearer to it
+    // than the largest bound is no nearer to any block than its bound, as for_blocks_near()
+    // would find block by block (most images far from a rosette's domain).
+    if (live_.x0 > live_.x1 || gap2(box, live_) >= static_cast<std::int64_t>(groups_.max()))
+        return false;
     return for_blocks_near(box, [](int, const Rect&) { return true; });
 }
 

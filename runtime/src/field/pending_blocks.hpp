@@ -269,6 +269,9 @@ class PendingBlocks {
     int groups_w_ = 0, groups_h_ = 0;
     std::vector<std::int32_t> group_bound_;
     MaxTree groups_;  // the same bounds, for the largest of all
+    // Holds every block that has had a bound above 0 since reset() (x0 > x1: none): a box no
+    // nearer to it than the largest bound is near no block's bound.
+    Rect live_{0, 0, -1, -1};
     std::vector<Blob> blobs_;
     std::vector<int> free_blobs_;                      // ids of released blobs, reused
     std::vector<std::pair<std::int64_t, int>> order_;  // settle_tile() scratch: (gap, entry)

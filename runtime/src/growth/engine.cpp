@@ -231,7 +231,9 @@ struct GrowthEngine::Impl {
     // The proxies of the families near e, by their bounds' left edge.
     std::vector<NearProxy> family_near(const Element& e) const;
     double near_margin() const;
-    PixelBox pixel_box(const Element& e) const;
+    // The pixels an element with these bounds covers, with a margin.
+    PixelBox pixel_box(const Rect& bounds) const;
+    std::vector<Rect> image_bounds;  // commit()'s scratch
     std::optional<Point> roomiest_in_domain() const;
     void sync_exclude_clears();
     Flow call_exhausted();
@@ -376,9 +378,11 @@ bool GrowthEngine::Impl::centre_seed() {
     if (!group || !options.seeds.empty()) return false;
     const double tol = ornament.tolerance();
     // The hole on c: its distance to the nearest element that is not a seed, or to the
-    // region's boundary (a frieze's band).
-    auto hole = [&](Point c) {
+    // region's boundary (a frieze's band). With `bar`, a hole no larger than it may be
+    // answered by the boundary's distance alone.
+    auto hole = [&](Point c, double bar = -std::numeric_limits<double>::infinity()) {
         const double wall = region.distance_to_boundary(c);
+        if (!(wall > bar)) return wall;
         for (double reach = 4 * epsilon; reach < wall; reach *= 2)
             for (const auto& [e, d] : ornament.within(c, reach))
                 if (&e->type() != pattern.seed) return std::min(d, wall);
@@ -410,9 +414,9 @@ bool GrowthEngine::Impl::centre_seed() {
                 std::optional<Point> at;
                 for (int k = 1; k < n; ++k) {
                     const Point p = a + (b - a) * (static_cast<double>(k) / n);
-                    if (!region.contains(p)) continue;
-                    const double r = hole(p);
-                    if (r > room) {
+                    // Whether the region holds p last: the dearer test, the same answer.
+                    const double r = hole(p, room);
+                    if (r > room && region.contains(p)) {
                         room = r;
                         at = p;
                     }
@@ -493,17 +497,19 @@ std::optional<Point> GrowthEngine::Impl::roomiest_in_domain() const {
     std::optional<Point> best;
     double room = 0;
     const double tol = ornament.tolerance();
+    std::size_t hint = 0;  // the image that ruled out the last point (clearance())
     for (int j = 0; j < kSamples; ++j)
         for (int i = 0; i < kSamples; ++i) {
             const Point p{box.x0 + (i + 0.5) / kSamples * box.width(),
                           box.y0 + (j + 0.5) / kSamples * box.height()};
-            if (!group->in_domain(p, 0) || !region.contains(p)) continue;
+            if (!group->in_domain(p, 0)) continue;
             // Only a point with more room than the best so far matters: the boundary's distance
-            // first, the images only while it can beat it.
+            // first, the images only while it can beat it, whether the region holds it last
+            // (the dearest test, and the same answer in any order).
             const double boundary = region.distance_to_boundary(p);
             if (!(boundary > room)) continue;
-            const double r = std::min(group->clearance(p, tol, room), boundary);
-            if (r > room) {
+            const double r = std::min(group->clearance(p, tol, room, &hint), boundary);
+            if (r > room && region.contains(p)) {
                 room = r;
                 best = p;
             }
@@ -513,14 +519,8 @@ std::optional<Point> GrowthEngine::Impl::roomiest_in_domain() const {
 
 // The pixels (inclusive) an element may cover, with two pixels to spare; clamped far beyond
 // the grid.
-PixelBox GrowthEngine::Impl::pixel_box(const Element& e) const {
+PixelBox GrowthEngine::Impl::pixel_box(const Rect& b) const {
     const GridFrame& g = raster.grid();
-    Rect b{1e300, 1e300, -1e300, -1e300};
-    for (std::size_t k = 0; k < e.proxy_count(); ++k) {
-        const Rect p = e.proxy(k).bounds();
-        b = {std::min(b.x0, p.x0), std::min(b.y0, p.y0), std::max(b.x1, p.x1),
-             std::max(b.y1, p.y1)};
-    }
     auto at = [&](double v, double origin, int size, int spare) {
         const double i = std::floor((v - origin) / g.pixel) + spare;
         return static_cast<int>(std::clamp(i, -2.0 - size, 2.0 + 2 * size));
@@ -670,7 +670,10 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     // library still goes in one).
     const bool one_by_one = group && placed > count && count <= kOneByOne;
     std::size_t n = 0;
-    for (Element* e : ornament.add_all(std::move(children), group ? count : placed)) {
+    // The images' bounds (from `count` on), taken once for the ornament's zone and the
+    // field's test below.
+    for (Element* e : ornament.add_all(std::move(children), group ? count : placed,
+                                       group ? &image_bounds : nullptr)) {
         // An image too far from the fundamental domain to change a distance read there stays
         // out of the buffer (it is in the ornament, for the queries and the output); a debug
         // frame shows the buffer, so with one every image goes in.
@@ -680,7 +683,10 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
                 families.resize(static_cast<std::size_t>(f.id) + 1);
             families[static_cast<std::size_t>(f.id)].push_back(e);
         }
-        if (n++ >= count && !debug_callback && !circles->may_change(pixel_box(*e))) continue;
+        const std::size_t at = n++;
+        if (at >= count && !debug_callback &&
+            !circles->may_change(pixel_box(image_bounds[at - count])))
+            continue;
         raster.add_element(*e, fresh);
         if (can_parent(*e)) ++parents_left;
         if (one_by_one) {

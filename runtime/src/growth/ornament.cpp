@@ -128,13 +128,19 @@ void Ornament::cover(const Rect& box) const {
 }
 
 std::vector<Element*> Ornament::add_all(std::vector<std::unique_ptr<Element>> elements,
-                                        std::size_t deferrable_from) {
+                                        std::size_t deferrable_from, std::vector<Rect>* bounds) {
     std::vector<std::pair<SpatialIndex::Entry, Rect>> entries;
+    if (bounds) {
+        bounds->clear();
+        if (deferrable_from < elements.size()) bounds->reserve(elements.size() - deferrable_from);
+    }
+    const bool zoned = !zone_.sums.empty() && !buckets_.empty();
     for (std::size_t n = 0; n < elements.size(); ++n) {
         const int id = static_cast<int>(elements_.size() + n);
-        if (n >= deferrable_from && !zone_.sums.empty() && !buckets_.empty()) {
+        if (n >= deferrable_from && (zoned || bounds)) {
             const Rect b = bounds_of(*elements[n]);
-            if (!zone_.meets(b)) {  // a valid box (meets() takes any other as meeting)
+            if (bounds) bounds->push_back(b);
+            if (zoned && !zone_.meets(b)) {  // a valid box (meets() takes any other as meeting)
                 int i0, j0, i1, j1;
                 buckets_of(b, i0, j0, i1, j1);
                 for (int j = j0; j <= j1; ++j)

@@ -27,9 +27,11 @@ class Ornament {
     Element& add(std::unique_ptr<Element> e);
     // The same for many elements in order, indexed in one pass (a bulk placement). Those from
     // `deferrable_from` on whose bounds miss the near zone (set_near_zone()) are indexed only
-    // when a query reaches beyond the zone.
+    // when a query reaches beyond the zone. `bounds`, when given, receives the bounds of the
+    // elements from `deferrable_from` on, in order (the caller's own tests need them too).
     std::vector<Element*> add_all(std::vector<std::unique_ptr<Element>> elements,
-                                  std::size_t deferrable_from = static_cast<std::size_t>(-1));
+                                  std::size_t deferrable_from = static_cast<std::size_t>(-1),
+                                  std::vector<Rect>* bounds = nullptr);
     // The zone the growth loop's queries mostly stay in (under symmetry: round the fundamental
     // domain): `cells` (row by row, `columns` wide) flags the cells of side `cell` from
     // `origin` in it. A query within it needs no element whose bounds miss it.

@@ -205,6 +205,13 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
     const double reach = 0.5 * std::hypot(bounds.width(), bounds.height());
     const double margin =
         10 * tolerance + 1e-9 * (1 + std::abs(middle.x) + std::abs(middle.y) + reach);
+    // Only a proxy with ends can cross a mirror (crosses_mirror()): most elements' tests
+    // below are skipped at once.
+    bool has_ends = false;
+    for (std::size_t p = 0; p < e.proxy_count(); ++p) {
+        const ProxyKind kind = e.proxy(p).kind();
+        has_ends = has_ends || (kind != ProxyKind::point && kind != ProxyKind::circle);
+    }
     // Each image is tried in one scratch element; only those kept are built.
     ImageElement scratch(e, g[1]);
     for (std::size_t k = 1; k < g.size(); ++k) {
@@ -220,7 +227,7 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
                 continue;
             }
             if (kept == 0) {
-                for (std::size_t p = 0; out.clear && p < e.proxy_count(); ++p)
+                for (std::size_t p = 0; has_ends && out.clear && p < e.proxy_count(); ++p)
                     if (crosses_mirror(e.proxy(p), g[k], tolerance)) out.clear = false;
                 continue;
             }
@@ -234,7 +241,7 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
             // Beyond a frieze's ends or the window, not placed; but an element that overlaps it
             // has translates of both (inside the window) that overlap.
             if (out.clear && overlaps_any(scratch, e, tolerance)) out.clear = false;
-            for (std::size_t p = 0; out.clear && p < e.proxy_count(); ++p)
+            for (std::size_t p = 0; has_ends && out.clear && p < e.proxy_count(); ++p)
                 if (crosses_mirror(e.proxy(p), g[k], tolerance)) out.clear = false;
             continue;
         }
@@ -249,7 +256,8 @@ Orbit orbit_of(const Element& e, const SymmetryGroup& group, double tolerance) {
         // An image whose box is clear of the element's bounds meets none of its proxies' boxes.
         if (out.clear && !apart[k] && overlaps_any(*images[k], e, tolerance)) out.clear = false;
         // (Rosettes keep their tested behaviour: their trees stay as they were.)
-        for (std::size_t p = 0; out.clear && !group.rosette() && p < e.proxy_count(); ++p)
+        for (std::size_t p = 0; has_ends && out.clear && !group.rosette() && p < e.proxy_count();
+             ++p)
             if (crosses_mirror(e.proxy(p), transforms[k], tolerance)) out.clear = false;
     };
     if (!fixed) {  // every image distinct: all kept, in order

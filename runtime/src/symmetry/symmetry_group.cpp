@@ -120,20 +120,6 @@ bool SymmetryGroup::keeps(const Element& image, double tolerance) const {
     return !window_;
 }
 
-int SymmetryGroup::keeps_within(const Rect& box, double margin) const {
-    if (!lattice_) return 1;
-    if (!window_) return -1;
-    const Rect& w = *window_;
-    if (box.x0 > w.x1 + margin || w.x0 > box.x1 + margin || box.y0 > w.y1 + margin ||
-        w.y0 > box.y1 + margin)
-        return 0;
-    // An element has a proxy, and each proxy's bounds then meet the window.
-    if (box.x0 >= w.x0 + margin && box.x1 <= w.x1 - margin && box.y0 >= w.y0 + margin &&
-        box.y1 <= w.y1 - margin)
-        return 1;
-    return -1;
-}
-
 std::vector<Point> SymmetryGroup::centre_classes(double tolerance) const {
     if (!lattice_) return {center_};
     std::vector<Point> out;
@@ -257,7 +243,8 @@ Point SymmetryGroup::snap(Point p, double tolerance) const {
     return out;
 }
 
-double SymmetryGroup::clearance(Point c, double tolerance, double at_most) const {
+double SymmetryGroup::clearance(Point c, double tolerance, double at_most,
+                                std::size_t* hint) const {
     // Squared distances decide what they surely can; hypot() (distance()) is taken only near
     // the tolerance and for the images that may be the nearest: distance()'s answer to the bit.
     constexpr double kLoose = 1 + 1e-12;
@@ -268,6 +255,11 @@ double SymmetryGroup::clearance(Point c, double tolerance, double at_most) const
         const Vector v = c - transforms_[k].apply(c);
         return v.x * v.x + v.y * v.y;
     };
+    // The loop below returns at_most at the first such transformation, whichever it is.
+    if (hint && *hint > 0 && *hint < transforms_.size()) {
+        const double s = square(*hint);
+        if (s > tol2 * kLoose && s * kLoose < 4 * at_most * at_most) return at_most;
+    }
     for (std::size_t k = 1; k < transforms_.size(); ++k) {
         const double s = square(k);
         if (s * kLoose < tol2) continue;  // surely within the tolerance
@@ -277,7 +269,10 @@ double SymmetryGroup::clearance(Point c, double tolerance, double at_most) const
         } else {
             least = std::min(least, s);
             // Surely beyond the tolerance and surely nearer than 2 at_most: done.
-            if (s * kLoose < 4 * at_most * at_most) return at_most;
+            if (s * kLoose < 4 * at_most * at_most) {
+                if (hint) *hint = k;
+                return at_most;
+            }
         }
     }
     for (std::size_t k = 1; k < transforms_.size(); ++k) {

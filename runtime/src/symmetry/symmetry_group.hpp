@@ -60,7 +60,10 @@ class SymmetryGroup {
     // every image coincides with c): a circle about c no larger stays clear of its images.
     // With `at_most` > 0 the answer may be any value no larger than it once the clearance is
     // known to be below it (the search for the roomiest point needs no more).
-    double clearance(Point c, double tolerance, double at_most = 0) const;
+    // `hint` (may be null) names the transformation that ended the last such search: tried
+    // first, it usually ends the next one, for nearby points, at once.
+    double clearance(Point c, double tolerance, double at_most = 0,
+                     std::size_t* hint = nullptr) const;
     // The largest circles inside `c` (other than `c`) each of which stays clear of its images
     // (radius at most the clearance of its centre): the one touching `c` where `c` is nearest
     // `toward`; then one centred on a mirror and one off every mirror, found on a polar sample
@@ -92,8 +95,21 @@ class SymmetryGroup {
     // translations when it meets the window, or without one lies inside the region.
     bool keeps(const Element& image, double tolerance) const;
     // keeps() for an image known only to lie within `box`, where the box alone decides: 1 kept,
-    // 0 not, -1 when only the image itself can tell (`margin` covers rounding).
-    int keeps_within(const Rect& box, double margin) const;
+    // 0 not, -1 when only the image itself can tell (`margin` covers rounding). Inline:
+    // orbit_of() asks it of every transformation, hundreds for a tile's window.
+    int keeps_within(const Rect& box, double margin) const {
+        if (!lattice_) return 1;
+        if (!window_) return -1;
+        const Rect& w = *window_;
+        if (box.x0 > w.x1 + margin || w.x0 > box.x1 + margin || box.y0 > w.y1 + margin ||
+            w.y0 > box.y1 + margin)
+            return 0;
+        // An element has a proxy, and each proxy's bounds then meet the window.
+        if (box.x0 >= w.x0 + margin && box.x1 <= w.x1 - margin && box.y0 >= w.y0 + margin &&
+            box.y1 <= w.y1 - margin)
+            return 1;
+        return -1;
+    }
 
   private:
     Symmetry spec_;
