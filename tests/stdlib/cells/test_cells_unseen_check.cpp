@@ -1130,6 +1130,7 @@ TEST(CellsFresh, BrickWalls) {
                 EXPECT_EQ(m.courses_off_gauge, 0);
                 EXPECT_EQ(m.king_closers_misplaced, 0);
                 EXPECT_EQ(arch_check(f, t.cells, kCm).stretched, 0);
+                EXPECT_EQ(m.soldiers_off, 0) << "up to " << m.soldier_deviation;
                 if (bond != Bond::stack) {
                     EXPECT_EQ(m.straight_joints, 0);
                     straight += m.straight_joints, compared += m.head_joints;
