@@ -266,11 +266,12 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                     int total = 0;
                     for (std::size_t i = 0; i < t; ++i) total += ks[i];
                     for (int cut = -1; cut < static_cast<int>(t); ++cut) {
-                        // A quoin is whole, half a brick long at least.
-                        if (quoin && (cut == 0 || ks[0] < 2)) continue;
+                        // The quoin at the jamb is whole (a closer, a bat or a brick). A
+                        // pier's far quoin may be the piece cut: where the pier is too narrow
+                        // for both whole, a mason cuts one clearly rather than shave a brick.
+                        if (quoin && cut == 0) continue;
                         const bool far = zone == n && far_quoin;
-                        if (far && (t < 2 || cut + 1 == static_cast<int>(t) || ks[t - 1] < 2))
-                            continue;
+                        if (far && t < 2) continue;
                         const double sum =
                             (total - (cut < 0 ? 0 : ks[static_cast<std::size_t>(cut)])) * q;
                         // A cut piece from a queen closer less the tolerance to a brick.
