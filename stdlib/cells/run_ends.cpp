@@ -187,11 +187,6 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         }
         const int quoin = ps[end].quoin ? ps[end].length : 0;
 
-        std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
-        for (std::size_t nb : {rr + 1, rr - 1})
-            if (nb < layout.rows.size() && !chain[nb])
-                for (auto [j, room] : joints(nb))
-                    if (std::abs(j - xj) < reach) near.push_back({side * j, room});
         // The run as the mason's rule reads it: each piece as laid now, cut at the jambs; its
         // width when both ends are jambs; whether that forces an odd piece with `joints` head
         // joints (none is forced without a known width).
@@ -232,6 +227,11 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         // As it is: a shaved brick costs more than any odd piece.
         out[0].cost = 1000000 * shaved_run + 10000 * unforced_now + 1000 * odd_run;
         if (only_now) return out;
+        std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
+        for (std::size_t nb : {rr + 1, rr - 1})
+            if (nb < layout.rows.size() && !chain[nb])
+                for (auto [j, room] : joints(nb))
+                    if (std::abs(j - xj) < reach) near.push_back({side * j, room});
         for (std::size_t zone = 1; zone <= free; ++zone) {
             double j0 = 0, c0 = 0;  // in s
             double pe = 0;          // in s: the edge of the piece before the zone, if any
