@@ -285,11 +285,11 @@ std::string list(const std::vector<std::string>& v) {
 }
 
 // The warehouse's pier between the carriage arch and the right window, in Flemish bond with
-// quoins: the window's jamb falls 0.64 cm short of a header in every other course, and the
-// joints of consecutive courses stand 5.625 cm apart, a quarter of a mm past the quarter brick
-// (5.375 cm). With half the tolerance kept past a quarter brick, no joint could take up a mm
+// quoins: the window's jamb leaves the last piece 0.55 cm short of a header or 0.64 cm short of
+// a brick, and the joints of consecutive courses stand 5.625 cm apart, 2.5 mm past the quarter
+// brick (5.375 cm). With half the tolerance kept past a quarter brick, no joint could take up a mm
 // and 19 bricks stood shaved beside the window; with a twentieth of a joint (fit_run_ends) the
-// courses take it up in their joints: one is left, in the course under the window's sill.
+// courses take it up in their joints: one is left, in the column's bottom course.
 TEST(CellsMason, PierJointsTakeUpMillimetres) {
     const Facade f = Facade::from_svg_file(std::string(ACANTHUS_SOURCE_DIR) +
                                            "/tests/stdlib/cells/facades/warehouse.svg");
