@@ -41,8 +41,9 @@ struct Plan {
 };
 
 // The ways kept per course (the cheapest that lay distinct joints): enough for the column's
-// choice, few enough that pairs of courses stay cheap to compare.
-constexpr std::size_t kMostWays = 160;
+// choice (96 lays the same as 160 over the mason's sweep and the fresh facades, 64 and 48
+// leave more shaved), few enough that pairs of courses stay cheap to compare.
+constexpr std::size_t kMostWays = 96;
 
 }  // namespace
 
@@ -83,6 +84,14 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         return 1;
     };
     const double quarter = q - m / 4;
+    // Room kept past a quarter brick between a way's joints and those of the courses over and
+    // under it (`slack`, and `exf` of what each joint of the way takes up): first a twentieth
+    // of a joint, so that joints a quarter brick apart take up a few millimetres; where that
+    // leaves a brick shaved at a jamb, the pass again from the start with half the tolerance
+    // and half of each joint's take-up, the better kept (a way with little room laid in one
+    // column can block a better one in the next). Less than a twentieth of a joint left a
+    // straight joint once the bricks were laid.
+    double slack = tol / 2, exf = 0.5;
     const double margin = std::min(m / 4, tol) / 2;
     // Head joints of a row (centres) as laid now, each with the room it needs (as relay_runs).
     auto joints = [&](std::size_t r) {
@@ -179,11 +188,6 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         }
         const int quoin = ps[end].quoin ? ps[end].length : 0;
 
-        std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
-        for (std::size_t nb : {rr + 1, rr - 1})
-            if (nb < layout.rows.size() && !chain[nb])
-                for (auto [j, room] : joints(nb))
-                    if (std::abs(j - xj) < reach) near.push_back({side * j, room});
         // The run as the mason's rule reads it: each piece as laid now, cut at the jambs; its
         // width when both ends are jambs; whether that forces an odd piece with `joints` head
         // joints (none is forced without a known width).
@@ -224,6 +228,11 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         // As it is: a shaved brick costs more than any odd piece.
         out[0].cost = 1000000 * shaved_run + 10000 * unforced_now + 1000 * odd_run;
         if (only_now) return out;
+        std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
+        for (std::size_t nb : {rr + 1, rr - 1})
+            if (nb < layout.rows.size() && !chain[nb])
+                for (auto [j, room] : joints(nb))
+                    if (std::abs(j - xj) < reach) near.push_back({side * j, room});
         for (std::size_t zone = 1; zone <= free; ++zone) {
             double j0 = 0, c0 = 0;  // in s
             double pe = 0;          // in s: the edge of the piece before the zone, if any
@@ -266,11 +275,12 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                     int total = 0;
                     for (std::size_t i = 0; i < t; ++i) total += ks[i];
                     for (int cut = -1; cut < static_cast<int>(t); ++cut) {
-                        // A quoin is whole, half a brick long at least.
-                        if (quoin && (cut == 0 || ks[0] < 2)) continue;
+                        // The quoin at the jamb is whole (a closer, a bat or a brick). A
+                        // pier's far quoin may be the piece cut: where the pier is too narrow
+                        // for both whole, a mason cuts one clearly rather than shave a brick.
+                        if (quoin && cut == 0) continue;
                         const bool far = zone == n && far_quoin;
-                        if (far && (t < 2 || cut + 1 == static_cast<int>(t) || ks[t - 1] < 2))
-                            continue;
+                        if (far && t < 2) continue;
                         const double sum =
                             (total - (cut < 0 ? 0 : ks[static_cast<std::size_t>(cut)])) * q;
                         // A cut piece from a queen closer less the tolerance to a brick.
@@ -305,9 +315,9 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                             const double j = (pe + j0 + h + plan.extra) / 2;
                             w.joints.push_back(side * j);
                             for (auto [k, room] : near)
-                                clear &= stack || std::abs(j - k) >= quarter + room +
-                                                                         std::abs(plan.extra) / 2 +
-                                                                         tol / 2 - eps;
+                                clear &= stack || std::abs(j - k) >=
+                                                      quarter + room + exf * std::abs(plan.extra) +
+                                                          slack - eps;
                         }
                         for (std::size_t i = t; i-- > 1;) {
                             const double pw =
@@ -317,7 +327,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                             if (stack) continue;
                             for (auto [j, room] : near)
                                 clear &= std::abs(s - j) >=
-                                         quarter + room + std::abs(plan.extra) / 2 + tol / 2 - eps;
+                                         quarter + room + exf * std::abs(plan.extra) + slack - eps;
                         }
                         if (!clear) continue;
                         const bool odd_cut = cut >= 0 && kind(plan.cut_length, 4) == 1;
@@ -383,20 +393,20 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
     using Joints = std::vector<std::pair<double, double>>;
     auto clear_of = [&](const Joints& jx, const Way& x, const Joints& jy, const Way& y) {
         if (stack) return true;
-        const double ex = std::abs(x.plan.extra) / 2, ey = std::abs(y.plan.extra) / 2;
+        const double ex = exf * std::abs(x.plan.extra), ey = exf * std::abs(y.plan.extra);
         auto inside = [&](const Way& w, double j) {
             return w.zone > 0 && j > w.lo + eps && j < w.hi - eps;
         };
         for (double s : x.joints) {
             for (auto [j, room] : jy)
-                if (!inside(y, j) && std::abs(s - j) < quarter + room + ex + tol / 2 - eps)
+                if (!inside(y, j) && std::abs(s - j) < quarter + room + ex + slack - eps)
                     return false;
             for (double j : y.joints)
-                if (std::abs(s - j) < quarter + ex + ey + tol / 2 - eps) return false;
+                if (std::abs(s - j) < quarter + ex + ey + slack - eps) return false;
         }
         for (double s : y.joints)
             for (auto [j, room] : jx)
-                if (!inside(x, j) && std::abs(s - j) < quarter + room + ey + tol / 2 - eps)
+                if (!inside(x, j) && std::abs(s - j) < quarter + room + ey + slack - eps)
                     return false;
         return true;
     };
@@ -480,100 +490,133 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
     // other's joints), columns bottom first, left ends first (right ends first, a pier laid
     // whole from the wall's end took the window's end from a column that did better); then all
     // again until a round lays nothing more (a run's end laid again is not laid again).
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (int side : {-1, 1}) {
-            std::vector<double> xs;
-            for (const Jamb& j : jambs)
-                if (j.left == (side < 0) && std::none_of(xs.begin(), xs.end(), [&](double x) {
-                        return std::abs(x - j.x) <= eps;
-                    }))
-                    xs.push_back(j.x);
-            for (double x : xs) {
-                std::vector<char> chain(rows, 0);
-                for (std::size_t rr = 0; rr < rows; ++rr) {
-                    End e;
-                    chain[rr] = find_end(rr, side, x, e);
-                }
-                for (std::size_t top = rows; top-- > 0;) {
-                    if (!chain[top]) continue;
-                    std::size_t first = top;  // rows [first, top] one above the other
-                    while (first > 0 && chain[first - 1]) --first;
-                    long last = 0;
-                    for (std::size_t r = first == 0 ? 0 : first - 1; r <= top + 1 && r < rows; ++r)
-                        last = std::max(last, stamp[r]);
-                    const auto key = std::make_tuple(side, std::llround(x / eps), first);
-                    if (auto it = judged.find(key); it != judged.end() && it->second == last) {
-                        top = first;
-                        if (top == 0) break;
-                        continue;
+    auto relay_all = [&] {
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (int side : {-1, 1}) {
+                std::vector<double> xs;
+                for (const Jamb& j : jambs)
+                    if (j.left == (side < 0) && std::none_of(xs.begin(), xs.end(), [&](double x) {
+                            return std::abs(x - j.x) <= eps;
+                        }))
+                        xs.push_back(j.x);
+                for (double x : xs) {
+                    std::vector<char> chain(rows, 0);
+                    for (std::size_t rr = 0; rr < rows; ++rr) {
+                        End e;
+                        chain[rr] = find_end(rr, side, x, e);
                     }
-                    std::vector<End> ends(top - first + 1);
-                    std::vector<std::vector<Way>> way(ends.size());
-                    std::vector<Joints> now(ends.size());
-                    std::vector<char> shaved(ends.size(), 0);
-                    for (std::size_t i = 0; i < ends.size(); ++i) {
-                        find_end(first + i, side, x, ends[i]);
-                        shaved[i] =
-                            ways(first + i, side, ends[i], chain, false, true)[0].cost >= 1000000;
-                        for (auto j : joints(first + i))
-                            if (std::abs(j.first - x) < reach) now[i].push_back(j);
-                    }
-                    // Beside a course with a shaved brick, the courses over and under it (two
-                    // each way) may lay their ends again though they gain nothing by it.
-                    for (std::size_t i = 0; i < ends.size(); ++i) {
-                        bool by = false;
-                        for (std::size_t d = 0; d <= 4; ++d)
-                            by |= i + d >= 2 && i + d - 2 < ends.size() && shaved[i + d - 2];
-                        way[i] = ways(first + i, side, ends[i], chain, by);
-                    }
-                    // The cheapest ways, bottom course first (rows ascend downwards).
-                    std::vector<std::vector<long>> total(ends.size());
-                    std::vector<std::vector<std::size_t>> from(ends.size());
-                    for (std::size_t i = ends.size(); i-- > 0;) {
-                        total[i].assign(way[i].size(), -1);
-                        from[i].assign(way[i].size(), 0);
-                        for (std::size_t k = 0; k < way[i].size(); ++k) {
-                            if (i + 1 == ends.size()) {
-                                total[i][k] = way[i][k].cost;
-                                continue;
-                            }
-                            for (std::size_t l = 0; l < way[i + 1].size(); ++l) {
-                                if (total[i + 1][l] < 0) continue;
-                                const long c = total[i + 1][l] + way[i][k].cost;
-                                if ((total[i][k] < 0 || c < total[i][k]) &&
-                                    clear_of(now[i], way[i][k], now[i + 1], way[i + 1][l]))
-                                    total[i][k] = c, from[i][k] = l;
+                    for (std::size_t top = rows; top-- > 0;) {
+                        if (!chain[top]) continue;
+                        std::size_t first = top;  // rows [first, top] one above the other
+                        while (first > 0 && chain[first - 1]) --first;
+                        long last = 0;
+                        for (std::size_t r = first == 0 ? 0 : first - 1; r <= top + 1 && r < rows;
+                             ++r)
+                            last = std::max(last, stamp[r]);
+                        const auto key = std::make_tuple(side, std::llround(x / eps), first);
+                        if (auto it = judged.find(key); it != judged.end() && it->second == last) {
+                            top = first;
+                            if (top == 0) break;
+                            continue;
+                        }
+                        std::vector<End> ends(top - first + 1);
+                        std::vector<std::vector<Way>> way(ends.size());
+                        std::vector<Joints> now(ends.size());
+                        std::vector<char> shaved(ends.size(), 0);
+                        for (std::size_t i = 0; i < ends.size(); ++i) {
+                            find_end(first + i, side, x, ends[i]);
+                            shaved[i] =
+                                ways(first + i, side, ends[i], chain, false, true)[0].cost >=
+                                1000000;
+                            for (auto j : joints(first + i))
+                                if (std::abs(j.first - x) < reach) now[i].push_back(j);
+                        }
+                        // Beside a course with a shaved brick, the courses over and under it (two
+                        // each way) may lay their ends again though they gain nothing by it.
+                        for (std::size_t i = 0; i < ends.size(); ++i) {
+                            bool by = false;
+                            for (std::size_t d = 0; d <= 4; ++d)
+                                by |= i + d >= 2 && i + d - 2 < ends.size() && shaved[i + d - 2];
+                            way[i] = ways(first + i, side, ends[i], chain, by);
+                        }
+                        // The cheapest ways, bottom course first (rows ascend downwards).
+                        std::vector<std::vector<long>> total(ends.size());
+                        std::vector<std::vector<std::size_t>> from(ends.size());
+                        for (std::size_t i = ends.size(); i-- > 0;) {
+                            total[i].assign(way[i].size(), -1);
+                            from[i].assign(way[i].size(), 0);
+                            for (std::size_t k = 0; k < way[i].size(); ++k) {
+                                if (i + 1 == ends.size()) {
+                                    total[i][k] = way[i][k].cost;
+                                    continue;
+                                }
+                                for (std::size_t l = 0; l < way[i + 1].size(); ++l) {
+                                    if (total[i + 1][l] < 0) continue;
+                                    const long c = total[i + 1][l] + way[i][k].cost;
+                                    if ((total[i][k] < 0 || c < total[i][k]) &&
+                                        clear_of(now[i], way[i][k], now[i + 1], way[i + 1][l]))
+                                        total[i][k] = c, from[i][k] = l;
+                                }
                             }
                         }
+                        std::size_t k = 0;
+                        for (std::size_t l = 0; l < way[0].size(); ++l)
+                            if (total[0][l] >= 0 && (total[0][k] < 0 || total[0][l] < total[0][k]))
+                                k = l;
+                        bool laid = false;
+                        for (std::size_t i = 0; i < ends.size(); ++i) {
+                            if (way[i][k].zone > 0)
+                                lay(first + i, side, ends[i], way[i][k]), laid = true;
+                            if (i + 1 < ends.size()) k = from[i][k];
+                        }
+                        if (!laid) judged[key] = last;
+                        changed |= laid;
+                        top = first;
+                        if (top == 0) break;
                     }
-                    std::size_t k = 0;
-                    for (std::size_t l = 0; l < way[0].size(); ++l)
-                        if (total[0][l] >= 0 && (total[0][k] < 0 || total[0][l] < total[0][k]))
-                            k = l;
-                    bool laid = false;
-                    for (std::size_t i = 0; i < ends.size(); ++i) {
-                        if (way[i][k].zone > 0)
-                            lay(first + i, side, ends[i], way[i][k]), laid = true;
-                        if (i + 1 < ends.size()) k = from[i][k];
-                    }
-                    if (!laid) judged[key] = last;
-                    changed |= laid;
-                    top = first;
-                    if (top == 0) break;
                 }
             }
         }
-    }
-    for (std::size_t rr = 0; rr < rows; ++rr) {
-        auto& index = layout.piece_of_unit[rr];
-        index.assign(static_cast<std::size_t>(g.units()), -1);
-        const auto& ps = layout.rows[rr];
-        for (std::size_t k = 0; k < ps.size(); ++k)
-            for (int u = ps[k].start; u < ps[k].start + ps[k].length; ++u)
-                index[static_cast<std::size_t>(u)] = static_cast<int>(k);
-        layout.taken[rr].assign(ps.size(), 0);
-    }
+    };
+    // What the mason's rule reads at every run end at a jamb, as laid now (lower is better).
+    auto score = [&] {
+        long total = 0;
+        const std::vector<char> none(rows, 0);
+        for (const Jamb& j : jambs) {
+            const int side = j.left ? -1 : 1;
+            for (std::size_t rr = 0; rr < rows; ++rr)
+                if (End e; find_end(rr, side, j.x, e))
+                    total += ways(rr, side, e, none, false, true)[0].cost;
+        }
+        return total;
+    };
+    auto finish = [&] {
+        for (std::size_t rr = 0; rr < rows; ++rr) {
+            auto& index = layout.piece_of_unit[rr];
+            index.assign(static_cast<std::size_t>(g.units()), -1);
+            const auto& ps = layout.rows[rr];
+            for (std::size_t k = 0; k < ps.size(); ++k)
+                for (int u = ps[k].start; u < ps[k].start + ps[k].length; ++u)
+                    index[static_cast<std::size_t>(u)] = static_cast<int>(k);
+            layout.taken[rr].assign(ps.size(), 0);
+        }
+    };
+    const BrickLayout start = layout;
+    slack = m / 20, exf = 0;
+    relay_all();
+    const long tight = score();
+    if (tight < 1000000) return finish();  // no shaved brick left at a jamb
+    BrickLayout kept = layout;
+    layout = start;
+    for (std::size_t r = 0; r < rows; ++r) here[r].assign(layout.rows[r].size(), 0);
+    std::fill(stamp.begin(), stamp.end(), 0L);
+    clock = 0;
+    judged.clear();
+    slack = tol / 2, exf = 0.5;
+    relay_all();
+    if (score() > tight) layout = std::move(kept);
+    finish();
 }
 
 }  // namespace acanthus::cells::detail

@@ -8,16 +8,16 @@ namespace acanthus::cells::detail {
 // Where a jamb (or the wall's end) falls between a course's head joints, the piece there would
 // be cut to what is left: within 12% of a brick's or a header's length it is a shaved brick, a
 // cut no mason makes. Per run end at a jamb, the last pieces of the run (up to three, four
-// near a shaved brick, or the whole run between two jambs, a pier's two quoins kept whole) are
-// laid again from the joint before them: whole bricks and standard bats and closers (one to
+// near a shaved brick, or the whole run between two jambs, its far quoin whole or the piece cut)
+// are laid again from the joint before them: whole bricks and standard bats and closers (one to
 // four quarter bricks), the difference taken up first in their head joints (each within the
 // tolerance; the joint before them too where those are too few), and beyond that in one piece
-// cut to what is left, never within 12% of a brick or a header. A quoin at the jamb keeps its
-// length, flush. A way adds no odd piece, none the geometry does not force and no piece
-// narrower than a queen closer. The courses whose runs end at one jamb one above the other are
-// decided together: the cheapest ways over the column (a shaved brick left costs most) that
-// bring no head joint within a quarter brick of one in the course below or above, as each is
-// laid in that choice.
+// cut to what is left, never within 12% of a brick or a header. A quoin at the jamb is whole
+// (its own length where it can, else a closer or bat), flush. A way adds no odd piece, none the
+// geometry does not force and no piece narrower than a queen closer. The courses whose runs end at
+// one jamb one above the other are decided together: the cheapest ways over the column (a shaved
+// brick left costs most) that bring no head joint within a quarter brick of one in the course below
+// or above, as each is laid in that choice.
 void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout);
 
 // A brick cut off at a jamb a few millimetres off whole quarters, laid whole (context.cpp): the

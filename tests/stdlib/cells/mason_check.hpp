@@ -107,6 +107,12 @@ struct MasonReport {
     long relieving_even = 0;       // arches with an even count of voussoirs
     long relieving_open = 0;       // arches with no voussoir over the crown
     long relieving_skewbacks = 0;  // arches without two skewbacks
+    // Soldiers (generator "soldier_course", bricks on end): each a brick's height wide within a
+    // third of the tolerance (the head joints take up the span), a brick's length high or cut
+    // shorter where the head falls off the course lines.
+    long soldiers = 0;
+    long soldiers_off = 0;  // of another width, or longer than a brick
+    double soldier_deviation = 0;
     long openings = 0;
     long openings_without_head = 0;
     std::vector<std::string> headless;
@@ -649,6 +655,16 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         for (const Cell* c : vs) key |= contains(c->polygon, probe);
         r.relieving_open += !key;
     }
+    for (const Cell& c : cells) {
+        Rect b;
+        if (c.generator != "soldier_course" || !is_rect(c.polygon, b) ||
+            b.height() < 1.2 * s.height)
+            continue;  // the bedding beside the jambs under a head within a course
+        ++r.soldiers;
+        const double off = std::max(std::abs(b.width() - s.height), b.height() - s.length);
+        r.soldier_deviation = std::max(r.soldier_deviation, std::abs(b.width() - s.height));
+        r.soldiers_off += off > s.tolerance / 3 + 1e-9;
+    }
     // Heads: above the middle of every top edge of an opening, a lintel, arch or soldier cell.
     std::set<std::string> seen, headless;
     for (const auto& e : facade.edges()) {
@@ -753,7 +769,8 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << ", relieving arches " << r.relieving_arches << " (voussoirs "
                << r.relieving_voussoirs << ", clipped " << r.relieving_clipped << ", even "
                << r.relieving_even << ", open " << r.relieving_open << ", skewbacks wrong "
-               << r.relieving_skewbacks << "), sills " << r.sills << " off centre "
+               << r.relieving_skewbacks << "), soldiers " << r.soldiers << " off " << r.soldiers_off
+               << " (max " << r.soldier_deviation << "), sills " << r.sills << " off centre "
                << r.sills_off_centre << " (max " << r.sill_offset << ")";
 }
 

@@ -235,10 +235,12 @@ Known known(const std::string& name, bool stone) {
     // 31 -> 9, 18 -> 17, 20 -> 15, 17 -> 9, 10 -> 8, 21 -> 10, 18 -> 14; odd pieces on the
     // oculus under the top 44 -> 42, not forced 35 -> 28; the segmental ends not forced 20 -> 12.
     // Taken again until a round lays nothing more: segmental ends 17 -> 10, oculus 9 -> 8.
+    // A pier's far quoin cut where both cannot be whole, joints a quarter brick apart taking up
+    // millimetres: 9 -> 0, 10 -> 5, 15 -> 6, 8 -> 2, 8 -> 6, 10 -> 4, 14 -> 0.
     static const std::map<std::string, long> shaved{
-        {"gable-pointed-end", 9}, {"segmental-ends", 10}, {"wide-opening", 15},
-        {"oculus-top", 8},        {"door-past-end", 8},   {"ashlar-arches", 10},
-        {"off-gauge-heads", 14},  {"lancet-arcade", 61},  {"narrow-pier", 22}};
+        {"gable-pointed-end", 0}, {"segmental-ends", 5}, {"wide-opening", 6},
+        {"oculus-top", 2},        {"door-past-end", 6},  {"ashlar-arches", 4},
+        {"off-gauge-heads", 0},   {"lancet-arcade", 61}, {"narrow-pier", 22}};
     static const std::map<std::string, long> odd{
         {"gable-pointed-end", 65}, {"segmental-ends", 41}, {"wide-opening", 142},
         {"oculus-top", 42},        {"door-past-end", 35},  {"ashlar-arches", 101},
@@ -379,9 +381,10 @@ TEST(CellsUnseen, NewFacadesForTheJambCheck) {
     // narrow piers: few of their jambs are reached with the bricks flush at both.
     // Run ends laid again with whole bricks and closers (fit_run_ends): shaved 114 -> 87 and
     // 33 -> 24, the terrace's not forced 96 -> 88; taken again until a round lays nothing more:
-    // the terrace's not forced 88 -> 87.
-    const std::map<std::string, Caps> caps{{"terrace-piers", {247, 87, 0, 1, 0, 87}},
-                                           {"shop-corner", {116, 24, 0, 2, 0, 18}}};
+    // the terrace's not forced 88 -> 87. A pier's far quoin cut where both cannot be whole,
+    // joints a quarter brick apart taking up millimetres: shaved 87 -> 20 and 24 -> 1.
+    const std::map<std::string, Caps> caps{{"terrace-piers", {247, 20, 0, 1, 0, 87}},
+                                           {"shop-corner", {116, 1, 0, 2, 0, 18}}};
     Options o = centimetres();
     for (const auto& [name, cap] : caps) {
         const Facade f = Facade::from_svg_file(unseen(name));
@@ -1103,11 +1106,13 @@ TEST(CellsFresh, BrickWalls) {
     struct Caps {
         long odd, shaved, unforced;
     };
+    // Shaved caps before a pier's far quoin could be the piece cut and the run ends took up
+    // millimetres in joints a quarter brick apart: 7, 10, 4, 2, 9, 7, 0, 13.
     const std::map<std::string, Caps> caps{
-        {"gable-pointed-20", {70, 7, 28}},     {"gable-pointed-door-end", {73, 10, 40}},
-        {"segmental-doors-ends", {72, 4, 28}}, {"wide-2600", {60, 2, 22}},
-        {"three-storeys", {213, 9, 78}},       {"ashlar-oculus", {68, 7, 21}},
-        {"narrow-80-door", {75, 0, 16}},       {"odd-sizes", {75, 13, 22}}};
+        {"gable-pointed-20", {70, 0, 28}},     {"gable-pointed-door-end", {72, 3, 39}},
+        {"segmental-doors-ends", {72, 4, 28}}, {"wide-2600", {60, 2, 21}},
+        {"three-storeys", {187, 9, 66}},       {"ashlar-oculus", {68, 7, 21}},
+        {"narrow-80-door", {63, 0, 2}},        {"odd-sizes", {75, 1, 22}}};
     Options o = centimetres();
     long straight = 0, compared = 0, walls = 0, shaved = 0;
     for (const char* name : kFresh) {
@@ -1130,6 +1135,7 @@ TEST(CellsFresh, BrickWalls) {
                 EXPECT_EQ(m.courses_off_gauge, 0);
                 EXPECT_EQ(m.king_closers_misplaced, 0);
                 EXPECT_EQ(arch_check(f, t.cells, kCm).stretched, 0);
+                EXPECT_EQ(m.soldiers_off, 0) << "up to " << m.soldier_deviation;
                 if (bond != Bond::stack) {
                     EXPECT_EQ(m.straight_joints, 0);
                     straight += m.straight_joints, compared += m.head_joints;
@@ -1148,8 +1154,10 @@ TEST(CellsFresh, BrickWalls) {
     // before that one was laid again): 422. The courses whose runs end at one jamb decided
     // together, so that a closer in one finds a place where the courses over and under it move
     // their joints too, and up to four pieces from the jamb laid again where a course or one
-    // beside it has a shaved brick: 246.
-    EXPECT_LE(shaved, 246);
+    // beside it has a shaved brick: 246. A pier's far quoin may be the piece cut (a pier too
+    // narrow for two whole quoins): 141. Ways whose joints stand a twentieth of a joint past a
+    // quarter brick from those over and under them (not half the tolerance): 128.
+    EXPECT_LE(shaved, 128);
 }
 
 // A pier 38.9 cm wide (6.92 quarter bricks) in header bond beside the first floor's windows of
@@ -1195,6 +1203,35 @@ TEST(CellsFresh, PierCoursesChosenTogether) {
         const MasonReport m = mason_check(f, pier, kCm);
         EXPECT_LE(m.shaved_bricks, 1) << tree_name << list(m.shaved);
         EXPECT_EQ(m.narrow_pieces, 0) << tree_name;
+    }
+}
+
+// The pier between the odd-sizes front's door and the wall's right end, 32.2 cm: too narrow
+// for two whole quoins (a brick and a header take 32.75 cm), so every other course holds a
+// piece cut. Laid from one jamb to the other with both quoins whole, no way was found and the
+// door's quoin stood shaved 1.7 cm in 12 courses in each bond; a mason cuts the far quoin
+// clearly instead (a whole brick at the door, the wall's end quoin cut to 8.7 cm, as the
+// courses between have a brick at the wall's end and the door's quoin cut to 8.4 cm), which
+// fit_run_ends now lays: no shaved brick in the pier.
+TEST(CellsFresh, NarrowPierCutsAQuoinNotShavesIt) {
+    const Facade f = Facade::from_svg_file(fresh("odd-sizes"));
+    Options o = centimetres();
+    for (Bond bond : kBrickBonds) {
+        o.bond = bond;
+        const Texture t = texture(f, mason_trees().at("framed"), o, 1);
+        std::vector<Cell> pier;  // the pieces beside the door, its head to the ground
+        for (const Cell& c : t.cells) {
+            Rect b;
+            if (mason_detail::is_rect(c.polygon, b) && b.x0 >= 401.5 - 1e-6 && b.y0 >= 103.3)
+                pier.push_back(c);
+        }
+        EXPECT_GT(pier.size(), 40u) << to_string(bond);
+        const MasonReport m = mason_check(f, pier, kCm);
+        EXPECT_EQ(m.shaved_bricks, 0) << to_string(bond) << list(m.shaved);
+        EXPECT_EQ(m.narrow_pieces, 0) << to_string(bond);
+        if (bond != Bond::stack) {
+            EXPECT_EQ(m.straight_joints, 0) << to_string(bond);
+        }
     }
 }
 
@@ -1302,9 +1339,10 @@ TEST(CellsFresh, BadFacadesRefused) {
 // of quarter bricks with a window whose jambs fall between quarters (its left jamb 33.9 or
 // 41.3 cm from the wall's left end), every bond and tree at seed 1: 226 shaved bricks over the
 // 120 walls before, 78 with run ends laid course by course, 41 with a column's courses decided
-// together (what is left: piers whose courses, a quarter brick apart, leave no closer a place
-// clear of the joints over and under it); and still no straight joint, no narrow piece, no head
-// joint off, and fewer odd pieces (836 before, 799, now 749).
+// together, 28 with a pier's far quoin cut where both cannot be whole and joints a quarter brick
+// apart taking up millimetres (what is left: piers whose courses, a quarter brick apart, leave
+// no closer a place clear of the joints over and under it); and still no straight joint, no
+// narrow piece, no head joint off, and fewer odd pieces (836 before, 799, 749, now 695).
 TEST(CellsFresh, RunEndsTakeUpTheDifferenceInJointsAndClosers) {
     Options o = centimetres();
     long walls = 0, shaved = 0, odd = 0;
@@ -1330,6 +1368,8 @@ TEST(CellsFresh, RunEndsTakeUpTheDifferenceInJointsAndClosers) {
         }
     EXPECT_EQ(walls, 8 * 5 * 3);
     std::cout << walls << " walls, shaved bricks " << shaved << ", odd pieces " << odd << "\n";
-    EXPECT_LE(shaved, 41);  // 78 before the pass was taken again until a round lays none more
-    EXPECT_LE(odd, 749);
+    // 78 before the pass was taken again until a round lays none more, 41 before a pier's far
+    // quoin could be cut and joints a quarter brick apart take up millimetres.
+    EXPECT_LE(shaved, 28);
+    EXPECT_LE(odd, 695);
 }
