@@ -160,7 +160,9 @@ void set_joints(BrickLayout& layout) {
         const int row = static_cast<int>(r);
         auto movable = [&](std::size_t k) {
             const Piece& p = pieces[k];
-            return p.full && !p.head && layout.nominal(row, p.start, p.start + p.length);
+            // A window-bottom row stays on its units, set out about the opening's middle.
+            return p.full && !p.head && !(p.sill && layout.centred_sills) &&
+                   layout.nominal(row, p.start, p.start + p.length);
         };
         auto abuts = [&](std::size_t k) {  // piece k - 1 ends where piece k starts
             return k > 0 && pieces[k - 1].start + pieces[k - 1].length == pieces[k].start;
@@ -465,9 +467,11 @@ void cut_at_apexes(const Facade& facade, int face, const Options& o, BrickLayout
 }
 
 BrickLayout lay(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
-                const FramedMoves& moves, bool set_out, bool breaks, bool arched) {
+                const FramedMoves& moves, bool set_out, bool breaks, bool arched, bool centred) {
     BrickLayout layout;
     layout.moves = moves;
+    layout.centred_sills = centred;
+    layout.laid_as = {set_out, breaks, arched};
     layout.grid = make_brick_grid(facade, face, o, set_out, breaks, arched);
     layout.unit = (o.brick_length + o.mortar) / 4;
     layout.gauge = o.brick_height + o.mortar;
@@ -614,11 +618,25 @@ std::vector<FramedMoves> moves_near(const Facade& facade, int face, const Option
         }
         int sr = 0, u0 = 0, u1 = 0;
         if (sill_span(facade, edge, layout, sr, u0, u1) && std::abs(sr - row) <= 40) {
-            for (int side : {0, 1}) {
+            for (int side : {0, 1}) {  // two units past each jamb: one end at a time
                 const int end = side == 0 ? u0 - 2 : u1 + 3;
-                if (std::abs(unit - end) > 6) continue;
+                if (layout.centred_sills || std::abs(unit - end) > 6) continue;
                 for (int d : {1, -1}) add(&FramedMoves::sill_end, e, side, d, -1, 1);
             }
+            // Both ends at once: the row stays as far past one jamb as past the other.
+            if (layout.centred_sills &&
+                (std::abs(unit - (u0 - 2)) <= 6 || std::abs(unit - (u1 + 3)) <= 6))
+                for (int d : {1, -1}) {
+                    FramedMoves m = moves;
+                    bool within = true;
+                    for (int side : {0, 1}) {
+                        int& v = m.sill_end[{e, side}];
+                        v += d;
+                        within &= v >= -1 && v <= 1;
+                        if (v == 0) m.sill_end.erase({e, side});
+                    }
+                    if (within) out.push_back(std::move(m));
+                }
         }
         if (plumb_edge(edge)) {
             const bool right = edge.inward(edge.length / 2).x > 0;
@@ -654,8 +672,9 @@ namespace {
 // ends still meet over each other, move the ones round each such joint a quarter brick, the move
 // that leaves the wall best first, while one helps.
 BrickLayout settled(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
-                    bool set_out, bool breaks = false, bool arched = true) {
-    BrickLayout layout = lay(facade, face, o, quoins, lintels, {}, set_out, breaks, arched);
+                    bool set_out, bool centred, bool breaks = false, bool arched = true) {
+    BrickLayout layout =
+        lay(facade, face, o, quoins, lintels, {}, set_out, breaks, arched, centred);
     if (!quoins || !lintels) return layout;
     long worst = badness(layout);
     for (int step = 0; step < 6 && worst >= 100; ++step) {
@@ -668,7 +687,7 @@ BrickLayout settled(const Facade& facade, int face, const Options& o, bool quoin
             for (FramedMoves& m : moves_near(facade, face, o, layout, layout.moves, row, unit)) {
                 if (!tried.insert(m).second) continue;
                 BrickLayout next =
-                    lay(facade, face, o, quoins, lintels, m, set_out, breaks, arched);
+                    lay(facade, face, o, quoins, lintels, m, set_out, breaks, arched, centred);
                 const long b = badness(next);
                 if (b < best_badness) best_badness = b, best = std::move(next);
             }
@@ -736,17 +755,70 @@ long unforced_odd(const Facade& facade, int face, const BrickLayout& l) {
     return out;
 }
 
-}  // namespace
+// What the mason minds in a face laid two ways, most first: pieces narrower than a queen
+// closer, bricks shaved to fit (run_ends.hpp: within 12% of a brick or a header but not one),
+// odd pieces (no whole number of quarters less a joint), in full-height courses, each as drawn:
+// cut at a plumb side of the facade's outlines (a jamb, or an inset's side, cut out of the face
+// later), or laid whole into the reveal's half joint.
+std::tuple<long, long, long> faults(const Facade& facade, const Options& o, const BrickLayout& l) {
+    const CourseGrid& g = l.grid;
+    std::vector<Rect> plumb;
+    for (const Edge& e : facade.edges())
+        for (const Segment& sg : e.segments)
+            if (!sg.arc && std::abs(sg.a.x - sg.b.x) <= 1e-9 * std::max(1.0, std::abs(sg.a.x)) &&
+                sg.a.y != sg.b.y)
+                plumb.push_back(
+                    {sg.a.x, std::min(sg.a.y, sg.b.y), sg.a.x, std::max(sg.a.y, sg.b.y)});
+    const double m = l.mortar, h = m / 2, q = l.unit;
+    const double eps = 1e-9 * std::max(1.0, std::abs(g.xs.back()));
+    const double stretcher = 4 * q - m, header = 2 * q - m;
+    long out = 0, odd = 0, narrow = 0;
+    for (std::size_t r = 0; r < l.rows.size(); ++r) {
+        const int row = static_cast<int>(r);
+        if (std::abs(g.ys[r + 1] - g.ys[r] - l.gauge) > 0.2 * o.brick_height) continue;
+        std::vector<double> sides;  // over the whole course
+        for (const Rect& b : plumb)
+            if (b.y0 <= g.ys[r] + eps && b.y1 >= g.ys[r + 1] - eps) sides.push_back(b.x0);
+        const auto& ps = l.rows[r];
+        for (std::size_t k = 0; k < ps.size(); ++k) {
+            const int i = static_cast<int>(k);
+            Rect d = l.drawn(row, i);
+            const Rect claim = l.claim(row, i);
+            Rect c = claim;
+            for (double x : sides)
+                if (x > c.x0 + eps && x < c.x1 - eps)
+                    (x > (claim.x0 + claim.x1) / 2 ? c.x1 : c.x0) = x;
+            if (c.x0 > claim.x0 + eps || c.x1 < claim.x1 - eps) {
+                d.x0 = std::max(d.x0, c.x0 + h), d.x1 = std::min(d.x1, c.x1 - h);
+                const Rect whole = nominal_at_jamb(c, claim, l.drawn(row, i), o);
+                if (whole.width() > 0) d = whole;
+            }
+            const double w = d.width();
+            const double nominal = std::abs(w - stretcher) <= 0.12 * stretcher ? stretcher
+                                   : std::abs(w - header) <= 0.12 * header     ? header
+                                                                               : 0;
+            out += nominal > 0 && std::abs(w - nominal) > l.tolerance / 3;
+            narrow += w > 0 && w < q - m - l.tolerance;
+            const double n = std::round((w + m) / q);
+            odd +=
+                n < 1 || n > (ps[k].quoin ? 12 : 4) || std::abs(w - (n * q - m)) > l.tolerance / 3;
+        }
+    }
+    return {narrow, out, odd};
+}
 
-BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins,
-                              bool lintels) {
+// The face laid with its window-bottom rows set out about their openings' middles (`centred`)
+// or two units past each jamb.
+BrickLayout laid(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
+                 bool centred) {
     // Perpends set out from the jambs (with or without those of arched openings, below), kept
     // unless the bond comes out worse for them. Worse is a straight joint more; a queen closer
     // more at a run's end is a standard closer.
     auto set_out = [&](bool arched) {
-        BrickLayout layout = settled(facade, face, o, quoins, lintels, true, false, arched);
+        BrickLayout layout =
+            settled(facade, face, o, quoins, lintels, true, centred, false, arched);
         if (badness(layout) >= 100) {
-            BrickLayout plain = settled(facade, face, o, quoins, lintels, false);
+            BrickLayout plain = settled(facade, face, o, quoins, lintels, false, centred);
             if (plain.grid.xs != layout.grid.xs && badness(plain) / 100 < badness(layout) / 100)
                 layout = std::move(plain);
         }
@@ -757,7 +829,8 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
         // the piers beside them set out from their jambs: kept when they leave fewer odd pieces
         // the geometry does not force and no straight joint more.
         if (!make_brick_grid(facade, face, o, true, true, arched).breaks.empty()) {
-            BrickLayout broken = settled(facade, face, o, quoins, lintels, true, true, arched);
+            BrickLayout broken =
+                settled(facade, face, o, quoins, lintels, true, centred, true, arched);
             if (badness(broken) / 100 <= badness(layout) / 100) {
                 set_joints(broken);
                 relay_runs(facade, face, broken);
@@ -783,6 +856,28 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
             unforced_odd(facade, face, flat) < unforced_odd(facade, face, layout))
             layout = std::move(flat);
     }
+    return layout;
+}
+
+}  // namespace
+
+BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins,
+                              bool lintels) {
+    // Window-bottom rows centred on their openings, unless the courses round a row's kept ends
+    // then come out worse than with every row two units past each jamb (a narrow piece, a shaved
+    // brick or an odd piece more, in that order; no straight joint more): a mason shifts a
+    // sill's row before he cuts the bond worse for it.
+    BrickLayout layout = laid(facade, face, o, quoins, lintels, true);
+    if (!layout.sill_rows) return layout;
+    const auto now = faults(facade, o, layout);
+    // Laid again on the same unit lines, the rows two units past each jamb.
+    const auto [set_out, breaks, arched] = layout.laid_as;
+    BrickLayout plain = settled(facade, face, o, quoins, lintels, set_out, false, breaks, arched);
+    set_joints(plain);
+    relay_runs(facade, face, plain);
+    fit_run_ends(facade, face, o, plain);
+    if (badness(plain) / 100 <= badness(layout) / 100 && faults(facade, o, plain) < now)
+        return plain;
     return layout;
 }
 

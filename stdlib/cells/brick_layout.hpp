@@ -5,6 +5,7 @@
 
 #include <acanthus/stdlib/cells.hpp>
 #include <map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -26,6 +27,12 @@ struct BrickLayout {
     FramedMoves moves;     // fixed ends moved a quarter brick (framed_moves.hpp)
     // Per straight head edge with a lintel in the layout: its units [u0, u1) (lintel.hpp).
     std::map<int, std::pair<int, int>> lintel_units;
+    // Window-bottom rows set out about their openings' middles, their ends kept by the closers
+    // (sill_rows.hpp); `sill_rows`: the face has one.
+    bool centred_sills = true, sill_rows = false;
+    // The unit lines it was laid on: set out from the jambs, with bond breaks, arched jambs
+    // among them (brick_grid.hpp).
+    std::tuple<bool, bool, bool> laid_as{true, false, true};
 
     double unit = 0, gauge = 0, tolerance = 0, mortar = 0;  // nominal, from the options
     // Per row and piece: how far the drawn piece stands right of the centre of its claim

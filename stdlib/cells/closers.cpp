@@ -27,8 +27,10 @@ bool run_end(const std::vector<Piece>& pieces, std::size_t k, bool left) {
 
 // The joint between pieces k and k + 1 moved by d units, if both stay from one to four units
 // and a piece at a run's end keeps two (it may end in a part unit at the jamb).
-bool movable(const std::vector<Piece>& pieces, std::size_t k, int d) {
+bool movable(const std::vector<Piece>& pieces, std::size_t k, int d, bool keep_sill_ends) {
     if (pieces[k].fixed() || pieces[k + 1].fixed()) return false;
+    // A window-bottom row's ends set out about the opening's middle stay: the course below moves.
+    if (keep_sill_ends && pieces[k].sill != pieces[k + 1].sill) return false;
     const int a = pieces[k].length + d, b = pieces[k + 1].length - d;
     if (a < 1 || b < 1 || a > 4 || b > 4) return false;
     if (run_end(pieces, k, true) && a < 2) return false;
@@ -67,7 +69,7 @@ constexpr std::array<int, 5> kMoves{1, -1, 2, -2, kRemove};
 // (a header bond leaves every other line to the course below), the joint goes there and that one
 // of row r + 2 moves in turn, down to `depth` courses.
 void move_below(std::vector<std::vector<Piece>>& rows, int r, int j, const std::set<int>& here,
-                int depth = 8) {
+                bool keep_sill_ends, int depth = 8) {
     if (r + 1 >= static_cast<int>(rows.size()) || depth <= 0) return;
     auto& pieces = rows[static_cast<std::size_t>(r + 1)];
     const std::set<int> under = r + 2 < static_cast<int>(rows.size())
@@ -77,7 +79,8 @@ void move_below(std::vector<std::vector<Piece>>& rows, int r, int j, const std::
         if (pieces[k + 1].start != j || pieces[k].start + pieces[k].length != j) continue;
         int fallback = 0;
         for (int d : kMoves) {
-            if (d == kRemove ? !removable(pieces, k) : !movable(pieces, k, d)) continue;
+            if (d == kRemove ? !removable(pieces, k) : !movable(pieces, k, d, keep_sill_ends))
+                continue;
             if (d != kRemove && here.count(j + d)) continue;
             if (d != kRemove && under.count(j + d)) {
                 if (fallback == 0) fallback = d;
@@ -88,7 +91,7 @@ void move_below(std::vector<std::vector<Piece>>& rows, int r, int j, const std::
         }
         if (fallback == 0) return;
         apply(pieces, k, fallback);
-        move_below(rows, r + 1, j + fallback, joints_of(pieces), depth - 1);
+        move_below(rows, r + 1, j + fallback, joints_of(pieces), keep_sill_ends, depth - 1);
         return;
     }
 }
@@ -292,6 +295,7 @@ void repair_straight_joints(BrickLayout& layout) {
                 // Neither fits between both its neighbours: cut one course off the other alone,
                 // and the courses beyond it again, one by one, wherever that leaves a joint over
                 // one of theirs (a pier's column flipped down to where it can end).
+                bool mended = false;
                 for (int dir : {-1, 1}) {
                     const int cut = dir < 0 ? r : r + 1;
                     const auto saved = rows;
@@ -308,10 +312,17 @@ void repair_straight_joints(BrickLayout& layout) {
                     }
                     if ((recut(row, j, other) || recut_pier(row, j, other)) &&
                         push(rows, cut, dir, 40)) {
-                        changed = true;
+                        changed = mended = true;
                         break;
                     }
                     rows = saved;
+                }
+                // Last (a window-bottom row's ends kept, the courses round it may find none
+                // else): this course cut between both its neighbours, the row's end moved.
+                if (!mended && layout.centred_sills) {
+                    avoid = below;
+                    for (int x : joints(r - 1)) avoid.insert(x);
+                    changed |= recut(rows[static_cast<std::size_t>(r)], j, avoid);
                 }
             }
         }
@@ -400,14 +411,14 @@ void set_closers(BrickLayout& layout) {
                     if (3 < best_cost) best = d, best_cost = 3;
                     continue;
                 }
-                if (!movable(pieces, k, d) || below.count(j + d)) continue;
+                if (!movable(pieces, k, d, layout.centred_sills) || below.count(j + d)) continue;
                 const int cost = (above.count(j + d) ? 10 : 0) + std::abs(d);
                 if (cost < best_cost) best = d, best_cost = cost;
             }
             if (best == 0) {
                 // Fixed here (a quoin's or a head's end): move the joint of the course below
                 // instead, off this course's joints and those of the course under it.
-                move_below(rows, r, j, joints_of(pieces));
+                move_below(rows, r, j, joints_of(pieces), layout.centred_sills);
                 continue;
             }
             apply(pieces, k, best);

@@ -1,6 +1,7 @@
 #include "sill_rows.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -36,6 +37,60 @@ std::vector<int> header_joints(const BrickLayout& layout, int row, int a, int b)
     return joints;
 }
 
+// What is left of the bond's piece that unit line `at` cuts, on its `left` side (0: none cut).
+int remnant(const std::vector<Piece>& pieces, int at, bool left) {
+    for (const Piece& p : pieces)
+        if (p.start < at && at < p.start + p.length)
+            return left ? at - p.start : p.start + p.length - at;
+    return 0;
+}
+
+// The sill row's units [a, b) under an opening over units [u0, u1]: its ends on the unit lines
+// one and a half to three and a half units past the jambs, the pair that stands as far past one
+// jamb as past the other (a sill with one long horn is set out wrong), then one that leaves no
+// quarter bat beside it (unless that costs three tenths of a unit off the middle), then one whose
+// two end pieces match.
+std::pair<int, int> centred_span(const Edge& sill, const BrickLayout& layout, int row, int u0,
+                                 int u1) {
+    const CourseGrid& g = layout.grid;
+    const double w = layout.unit, x0 = std::min(sill.bounds.x0, sill.bounds.x1),
+                 x1 = std::max(sill.bounds.x0, sill.bounds.x1);
+    const auto& pieces = layout.rows[static_cast<std::size_t>(row)];
+    // The run of units the row lies in: an end less than two units short of the run's end
+    // would leave a quarter bat there; it goes on to the end (a wall's end or a reveal).
+    int lo = u0, hi = u1 + 1;
+    while (lo > 0 && g.at(row, lo - 1) != kOutside) --lo;
+    while (hi < g.units() && g.at(row, hi) != kOutside) ++hi;
+    auto ends = [&](int from, int to, int run_end) {
+        std::vector<int> out;
+        for (int u = from; u <= to; ++u)
+            if (u == run_end || std::abs(u - run_end) >= 2) out.push_back(u);
+        return out;
+    };
+    // A quarter bat left beside the row; one in a unit the face cuts would be narrower still.
+    auto quarter_bat = [&](int at, bool left) {
+        if (remnant(pieces, at, left) != 1) return 0.0;
+        return g.at(row, left ? at - 1 : at) == kFull ? 0.3 * w : 10 * w;
+    };
+    std::pair<int, int> best{std::max(lo, u0 - 2), std::min(hi, u1 + 3)};
+    double least = INFINITY;
+    for (int a : ends(std::max(lo, u0 - 4), u0, lo))
+        for (int b : ends(u1 + 1, std::min(hi, u1 + 5), hi)) {
+            const double l = x0 - g.xs[static_cast<std::size_t>(a)],
+                         r = g.xs[static_cast<std::size_t>(b)] - x1;
+            // At the run's end the horn is what is there: no middle to keep.
+            const bool at_end = a == lo || b == hi;
+            if ((a != lo && (l < 1.5 * w - 1e-9 || l > 3.5 * w + 1e-9)) ||
+                (b != hi && (r < 1.5 * w - 1e-9 || r > 3.5 * w + 1e-9)))
+                continue;
+            const double cost = (at_end ? 0 : std::abs(l - r)) + quarter_bat(a, true) +
+                                quarter_bat(b, false) + 0.25 * w * ((b - a) % 2) +
+                                0.01 * std::abs(l + r - 5 * w);
+            if (cost < least - 1e-9) least = cost, best = {a, b};
+        }
+    return best;
+}
+
 }  // namespace
 
 bool sill_span(const Facade& facade, const Edge& sill, const BrickLayout& layout, int& row, int& u0,
@@ -67,10 +122,14 @@ void set_sill_rows(const Facade& facade, int face, BrickLayout& layout) {
         const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
         int row = 0, u0 = 0, u1 = 0;
         if (!sill_span(facade, edge, layout, row, u0, u1)) continue;
-        // Two units past each jamb, or a quarter brick more or less there (framed_moves.hpp).
+        // About a half brick past each jamb, as far past one as past the other, or a quarter
+        // brick more or less there (framed_moves.hpp).
+        // Otherwise (the face laid both ways, brick_layout.cpp) two units past each jamb.
+        const std::pair<int, int> plain{u0 - 2, u1 + 3};
+        const auto [a, b] = layout.centred_sills ? centred_span(edge, layout, row, u0, u1) : plain;
+        layout.sill_rows = true;
         const FramedMoves& m = layout.moves;
-        spans[row].push_back(
-            {u0 - 2 - m.count(m.sill_end, e, 0), u1 + 3 + m.count(m.sill_end, e, 1)});
+        spans[row].push_back({a - m.count(m.sill_end, e, 0), b + m.count(m.sill_end, e, 1)});
     }
     const int units = layout.grid.units();
     for (auto& [row, list] : spans) {
@@ -92,27 +151,11 @@ void set_sill_rows(const Facade& facade, int face, BrickLayout& layout) {
             a = lo, b = hi;
             if (b - a < 2) continue;
             std::vector<int> j = header_joints(layout, row, a, b);
-            // What is left of the bond's pieces either side: no quarter bat beside the row.
-            auto remnant = [&](int at, bool left) {
-                for (const Piece& p : pieces)
-                    if (p.start < at && at < p.start + p.length)
-                        return left ? at - p.start : p.start + p.length - at;
-                return 0;
-            };
-            if (j.size() >= 3 && remnant(a, true) == 1) {
-                int end = j[1] - j[0];  // the first header: 2 or 3
-                if (end == 3)
-                    j[0] += 1;  // shorter, the remnant two
-                else
-                    j[0] -= 1;  // longer, the remnant taken in
-            }
-            if (j.size() >= 3 && remnant(b, false) == 1) {
-                int end = j[j.size() - 1] - j[j.size() - 2];
-                if (end == 3)
-                    j.back() -= 1;
-                else
-                    j.back() += 1;
-            }
+            // Two units past each jamb: no quarter bat beside the row, one end moved a unit.
+            if (!layout.centred_sills && j.size() >= 3 && remnant(pieces, a, true) == 1)
+                j[0] += j[1] - j[0] == 3 ? 1 : -1;
+            if (!layout.centred_sills && j.size() >= 3 && remnant(pieces, b, false) == 1)
+                j.back() += j[j.size() - 1] - j[j.size() - 2] == 3 ? -1 : 1;
             a = j.front(), b = j.back();
             std::vector<Piece> out = cut_out(pieces, a, b);
             for (std::size_t k = 0; k + 1 < j.size(); ++k)

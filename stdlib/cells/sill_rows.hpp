@@ -12,7 +12,8 @@ bool sill_span(const Facade& facade, const Edge& sill, const BrickLayout& layout
                int& u1);
 
 // Replaces the layout's pieces under every sill of `face` (an opening's bottom edge) with
-// headers (Piece::sill) over the sill's units and two more each side, clipped to the run.
+// headers (Piece::sill) over the sill's units and about two more each side, as far past one
+// jamb as past the other (layout.centred_sills; else two units past each), clipped to the run.
 void set_sill_rows(const Facade& facade, int face, BrickLayout& layout);
 
 }  // namespace acanthus::cells::detail

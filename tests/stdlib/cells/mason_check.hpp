@@ -116,6 +116,11 @@ struct MasonReport {
     long openings = 0;
     long openings_without_head = 0;
     std::vector<std::string> headless;
+    // Sills (window_bottom or sill_stones cells in the course under a straight bottom edge):
+    // how much farther past one jamb the row runs than past the other.
+    long sills = 0;
+    long sills_off_centre = 0;  // by more than a quarter brick
+    double sill_offset = 0;     // the largest difference
 };
 
 namespace mason_detail {
@@ -677,6 +682,53 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         }
         if (!head) headless.insert(name);
     }
+    // Sills: the row of sill cells under each straight bottom edge, joined across its joints.
+    for (const auto& e : facade.edges()) {
+        if (!e.opening || e.part != acanthus::cells::Part::bottom || e.arc) continue;
+        const double x0 = std::min(e.bounds.x0, e.bounds.x1),
+                     x1 = std::max(e.bounds.x0, e.bounds.x1);
+        const double y = e.bounds.y0;
+        std::vector<Rect> row;
+        for (const Cell& c : cells) {
+            if (c.generator != "window_bottom" && c.generator != "sill_stones") continue;
+            const Rect b = extent(c.polygon);
+            if (b.y0 < y - 1e-6 || b.y0 > y + s.height + 2 * s.mortar) continue;
+            row.push_back(b);
+        }
+        std::sort(row.begin(), row.end(), [](const Rect& a, const Rect& b) { return a.x0 < b.x0; });
+        double lo = 0, hi = 0;
+        bool found = false;
+        for (const Rect& b : row) {  // the stretch joined to the one under the edge's middle
+            if (!found || b.x0 > hi + 2 * s.mortar) {
+                if (found && lo <= (x0 + x1) / 2 && (x0 + x1) / 2 <= hi) break;
+                lo = b.x0, hi = b.x1, found = true;
+            } else
+                hi = std::max(hi, b.x1);
+        }
+        if (!found || lo > (x0 + x1) / 2 || hi < (x0 + x1) / 2) continue;
+        bool shared = false;  // one row under two openings close together: no middle to keep
+        for (const auto& o : facade.edges())
+            if (&o != &e && o.opening && o.part == acanthus::cells::Part::bottom &&
+                std::abs(o.bounds.y0 - y) < s.height && o.bounds.x1 > lo && o.bounds.x0 < hi)
+                shared = true;
+        // A row that runs on to the wall's end or a reveal has no horn there to match.
+        double y0 = 1e300, y1 = -1e300;
+        for (const Rect& b : row)
+            if (b.x0 >= lo - 1e-9 && b.x1 <= hi + 1e-9)
+                y0 = std::min(y0, b.y0), y1 = std::max(y1, b.y1);
+        bool left = false, right = false;
+        for (const Cell& c : cells) {
+            const Rect b = extent(c.polygon);
+            if (b.y1 <= y0 + 1e-6 || b.y0 >= y1 - 1e-6) continue;
+            left |= b.x1 < lo + 1e-6 && b.x1 > lo - 2 * s.mortar;
+            right |= b.x0 > hi - 1e-6 && b.x0 < hi + 2 * s.mortar;
+        }
+        if (shared || !left || !right) continue;
+        ++r.sills;
+        const double off = std::abs((x0 - lo) - (hi - x1));
+        r.sill_offset = std::max(r.sill_offset, off);
+        r.sills_off_centre += off > (s.length + s.mortar) / 4;
+    }
     r.openings = static_cast<long>(seen.size());
     r.openings_without_head = static_cast<long>(headless.size());
     r.headless.assign(headless.begin(), headless.end());
@@ -718,7 +770,8 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << r.relieving_voussoirs << ", clipped " << r.relieving_clipped << ", even "
                << r.relieving_even << ", open " << r.relieving_open << ", skewbacks wrong "
                << r.relieving_skewbacks << "), soldiers " << r.soldiers << " off " << r.soldiers_off
-               << " (max " << r.soldier_deviation << ")";
+               << " (max " << r.soldier_deviation << "), sills " << r.sills << " off centre "
+               << r.sills_off_centre << " (max " << r.sill_offset << ")";
 }
 
 }  // namespace cells_test
