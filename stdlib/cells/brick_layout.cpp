@@ -807,6 +807,13 @@ std::tuple<long, long, long> faults(const Facade& facade, const Options& o, cons
     return {narrow, out, odd};
 }
 
+// A settled layout's head joints, its runs set out from their jambs, their ends fitted.
+void joints_and_run_ends(const Facade& facade, int face, const Options& o, BrickLayout& layout) {
+    set_joints(layout);
+    relay_runs(facade, face, layout);
+    fit_run_ends(facade, face, o, layout);
+}
+
 // The face laid with its window-bottom rows set out about their openings' middles (`centred`)
 // or two units past each jamb.
 BrickLayout laid(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
@@ -822,9 +829,7 @@ BrickLayout laid(const Facade& facade, int face, const Options& o, bool quoins, 
             if (plain.grid.xs != layout.grid.xs && badness(plain) / 100 < badness(layout) / 100)
                 layout = std::move(plain);
         }
-        set_joints(layout);
-        relay_runs(facade, face, layout);
-        fit_run_ends(facade, face, o, layout);
+        joints_and_run_ends(facade, face, o, layout);
         // Bond breaks over and under the openings whose width is no whole number of quarters,
         // the piers beside them set out from their jambs: kept when they leave fewer odd pieces
         // the geometry does not force and no straight joint more.
@@ -832,9 +837,7 @@ BrickLayout laid(const Facade& facade, int face, const Options& o, bool quoins, 
             BrickLayout broken =
                 settled(facade, face, o, quoins, lintels, true, centred, true, arched);
             if (badness(broken) / 100 <= badness(layout) / 100) {
-                set_joints(broken);
-                relay_runs(facade, face, broken);
-                fit_run_ends(facade, face, o, broken);
+                joints_and_run_ends(facade, face, o, broken);
                 if (unforced_odd(facade, face, broken) < unforced_odd(facade, face, layout))
                     layout = std::move(broken);
             }
@@ -873,9 +876,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
     // Laid again on the same unit lines, the rows two units past each jamb.
     const auto [set_out, breaks, arched] = layout.laid_as;
     BrickLayout plain = settled(facade, face, o, quoins, lintels, set_out, false, breaks, arched);
-    set_joints(plain);
-    relay_runs(facade, face, plain);
-    fit_run_ends(facade, face, o, plain);
+    joints_and_run_ends(facade, face, o, plain);
     if (badness(plain) / 100 <= badness(layout) / 100 && faults(facade, o, plain) < now)
         return plain;
     return layout;

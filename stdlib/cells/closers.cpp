@@ -295,7 +295,6 @@ void repair_straight_joints(BrickLayout& layout) {
                 // Neither fits between both its neighbours: cut one course off the other alone,
                 // and the courses beyond it again, one by one, wherever that leaves a joint over
                 // one of theirs (a pier's column flipped down to where it can end).
-                bool mended = false;
                 for (int dir : {-1, 1}) {
                     const int cut = dir < 0 ? r : r + 1;
                     const auto saved = rows;
@@ -312,17 +311,10 @@ void repair_straight_joints(BrickLayout& layout) {
                     }
                     if ((recut(row, j, other) || recut_pier(row, j, other)) &&
                         push(rows, cut, dir, 40)) {
-                        changed = mended = true;
+                        changed = true;
                         break;
                     }
                     rows = saved;
-                }
-                // Last (a window-bottom row's ends kept, the courses round it may find none
-                // else): this course cut between both its neighbours, the row's end moved.
-                if (!mended && layout.centred_sills) {
-                    avoid = below;
-                    for (int x : joints(r - 1)) avoid.insert(x);
-                    changed |= recut(rows[static_cast<std::size_t>(r)], j, avoid);
                 }
             }
         }
