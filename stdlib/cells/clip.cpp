@@ -92,6 +92,10 @@ std::vector<std::vector<Point>> shrink(const std::vector<Point>& polygon, double
     offset.AddPath(s.to_path(polygon), ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
     ClipperLib::Paths result;
     offset.Execute(result, -distance * s.scale);
+    // A vertex on a straight side (where the booleans met a neighbour's joint) is no corner of
+    // the unit, and a voussoir with one reads as cut off its arcs: dropped, and vertices a
+    // few micrometres apart merged.
+    ClipperLib::CleanPolygons(result, 4e-3 * distance * s.scale);
     for (const ClipperLib::Path& p : result)
         if (p.size() >= 3 && ClipperLib::Orientation(p)) out.push_back(s.to_polygon(p));
     return out;

@@ -73,8 +73,9 @@ struct MasonReport {
     double joint_deviation = 0;
     long voussoirs = 0;
     long voussoirs_clipped = 0;
-    long crowns = 0;       // tops of arches and rings (a pointed arch's apex)
-    long crowns_open = 0;  // of those, a joint at the crown instead of a key
+    std::vector<Point> clipped_at;  // a vertex of each clipped voussoir off both arcs
+    long crowns = 0;                // tops of arches and rings (a pointed arch's apex)
+    long crowns_open = 0;           // of those, a joint at the crown instead of a key
     std::vector<Point> open_crowns;
     // Stone walls (MasonSpec::stone): every rectangular cell, jamb, sill and lintel too.
     long stones = 0;
@@ -364,7 +365,18 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             double d = std::hypot(p.x - o.x, p.y - o.y);
             whole &= std::abs(d - lo) < tol || std::abs(d - hi) < tol;
         }
-        r.voussoirs_clipped += !whole;
+        if (!whole) {
+            ++r.voussoirs_clipped;
+            const std::size_t before = r.clipped_at.size();
+            for (Point p : c.polygon) {
+                double d = std::hypot(p.x - o.x, p.y - o.y);
+                if (std::abs(d - lo) >= tol && std::abs(d - hi) >= tol) {
+                    r.clipped_at.push_back(p);
+                    break;
+                }
+            }
+            if (r.clipped_at.size() == before) r.clipped_at.push_back(c.polygon.front());
+        }
     }
     // Crowns: just into the wall above the top of every arc of an opening (a pointed arch's two
     // arcs share theirs, the apex), an arch cell and not the mortar of a joint.
