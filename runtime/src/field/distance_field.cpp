@@ -463,7 +463,10 @@ void separable_edt(int w, int h, const ByteSites& is_site, std::int32_t* d2, std
             const long long by_rows =
                 static_cast<long long>(w) * (8LL * rows + (last_kept + 1 + h - first_kept));
             const long long by_columns = 12LL * std::max(0, c1 - c0) * h;
-            if (3 * by_columns < 2 * by_rows) {
+            // Its scratch holds a value per pixel of the kept columns: kept within 32 MB.
+            const bool fits =
+                static_cast<long long>(std::max(0, c1 - c0)) * h <= 8 * kTwoThreadPixels;
+            if (fits && 3 * by_columns < 2 * by_rows) {
                 edt_kept_by_columns(w, h, c0, std::max(c0, c1), is_site, d2, spans, s);
                 return;
             }
