@@ -539,6 +539,66 @@ TEST(DistanceField, LazyFieldIsExactOnTheTilesItKeeps) {
     }
 }
 
+// A narrow wedge of kept tiles across half the grid's height (as under d8 or d12): the kept
+// pixels are transformed column by column (few kept columns, many kept rows), with the values
+// of the whole field; so after recompute_elements() with many element sites. Kept columns that
+// reach the grid's right edge, and widths not multiples of 8.
+TEST(DistanceField, LazyFieldOverANarrowWedgeMatchesTheWholeField) {
+    Random rng(11);
+    for (const int w : {203, 330, 517})
+        for (const bool right_edge : {false, true}) {
+            const int h = w * 5 / 4;
+            std::vector<std::uint8_t> occ(static_cast<std::size_t>(w) * h, 1);
+            const double cx = right_edge ? w * 0.6 : w / 2.0, cy = h / 2.0;
+            const double rx = w * 0.45, ry = h * 0.45;
+            for (int j = 0; j < h; ++j)
+                for (int i = 0; i < w; ++i) {
+                    const double u = (i + 0.5 - cx) / rx, v = (j + 0.5 - cy) / ry;
+                    if (u * u + v * v < 1) occ[static_cast<std::size_t>(j) * w + i] = 0;
+                }
+            // A row of boundary sites across the wedge, and a few element sites.
+            for (int i = 0; i < w; ++i) occ[static_cast<std::size_t>(h / 3) * w + i] = 1;
+            for (int k = 0; k < 3; ++k) {
+                const int p = static_cast<int>(rng.uniform_int(0, w * h - 1));
+                if (occ[p] == 0) occ[p] = 2;
+            }
+            const int tw = (w + 7) / 8, th = (h + 7) / 8;
+            std::vector<std::uint8_t> centres(static_cast<std::size_t>(tw) * th, 0);
+            for (int tj = 0; tj < th; ++tj)
+                for (int ti = 0; ti < tw; ++ti) {
+                    const double x = ti - tw * (right_edge ? 0.9 : 0.5), y = th / 2.0 - tj;
+                    centres[static_cast<std::size_t>(tj * tw + ti)] =
+                        y >= 0 && x >= 0 && x <= 0.4 * y;
+                }
+            DistanceField lazy(w, h, /*with_sites=*/false);
+            lazy.set_lazy(true);
+            lazy.far_blocks().set_centre_tiles(centres);
+            auto check = [&](const char* what) {
+                DistanceField whole(w, h, /*with_sites=*/false);
+                whole.compute(occ);
+                long long kept = 0;
+                for (int p = 0; p < w * h; ++p) {
+                    if (!lazy.far_blocks().keeps(p)) continue;
+                    ++kept;
+                    ASSERT_EQ(lazy.squared_distance(p), whole.squared_distance(p))
+                        << what << ", width " << w << ", pixel " << p % w << "," << p / w;
+                    ASSERT_EQ(lazy.boundary_squared_distance(p),
+                              whole.boundary_squared_distance(p));
+                }
+                ASSERT_GT(kept, 0);
+                ASSERT_LT(kept, static_cast<long long>(w) * h / 4);
+            };
+            lazy.compute(occ);
+            check("compute");
+            for (int k = 0; k < 60; ++k) {
+                const int p = static_cast<int>(rng.uniform_int(0, w * h - 1));
+                if (occ[p] == 0) occ[p] = 2;
+            }
+            lazy.recompute_elements(occ);
+            check("recompute_elements");
+        }
+}
+
 // The lazy field over a region as growth has it (everything outside an ellipse a boundary
 // site, the inside free): on the tiles it keeps, the values of a field computed over the whole
 // grid. Rows of sites, free rows and rows partly both test the column pass's eight bytes at a

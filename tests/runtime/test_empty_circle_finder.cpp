@@ -402,3 +402,60 @@ TEST(PendingBlocks, MayLowerIsTrueJustWhenABlockIsNearerThanItsBound) {
     EXPECT_GT(near, 100);
     EXPECT_GT(far, 100);
 }
+
+// PendingBlocks::near() is `tile` just when some tile is nearer to the box than its own
+// bound, else `block` just when may_lower() is true, else `none`: against a brute force over
+// the tiles (bounds that vary from tile to tile, grids not multiples of 8, boxes beyond them).
+TEST(PendingBlocks, NearTellsATileNearerThanItsBoundFromABlock) {
+    using acanthus::detail::PendingBlocks;
+    using acanthus::detail::PixelBox;
+    acanthus::Random rng(23);
+    int counts[3] = {0, 0, 0};
+    for (int scene = 0; scene < 6; ++scene) {
+        const int w = static_cast<int>(rng.uniform_int(300, 700));
+        const int h = static_cast<int>(rng.uniform_int(200, 600));
+        const int tw = (w - 1) / 8 + 1, th = (h - 1) / 8 + 1;
+        // Each tile's values up to its own cap, 0 to 40 pixels squared.
+        std::vector<std::int32_t> caps(static_cast<std::size_t>(tw) * th);
+        for (auto& c : caps) c = static_cast<std::int32_t>(rng.uniform_int(0, 1600));
+        std::vector<std::int32_t> d2(static_cast<std::size_t>(w) * h);
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i)
+                d2[static_cast<std::size_t>(j) * w + i] = static_cast<std::int32_t>(
+                    rng.uniform_int(0, caps[static_cast<std::size_t>(j / 8) * tw + i / 8]));
+        PendingBlocks blocks;
+        if (scene % 2 == 1) {  // centre tiles: a band of tile columns
+            std::vector<std::uint8_t> centres(static_cast<std::size_t>(tw) * th, 0);
+            for (int tj = 0; tj < th; ++tj)
+                for (int ti = 8; ti < 16; ++ti) centres[static_cast<std::size_t>(tj * tw + ti)] = 1;
+            blocks.set_centre_tiles(centres);
+        }
+        blocks.reset(w, h, d2.data(), acanthus::DistanceMetric::euclidean);
+        for (int q = 0; q < 500; ++q) {
+            PixelBox box;
+            box.x0 = static_cast<int>(rng.uniform_int(-80, w + 80));
+            box.y0 = static_cast<int>(rng.uniform_int(-80, h + 80));
+            box.x1 = box.x0 + static_cast<int>(rng.uniform_int(0, 40));
+            box.y1 = box.y0 + static_cast<int>(rng.uniform_int(0, 40));
+            bool tile = false;
+            for (int tj = 0; tj < th; ++tj)
+                for (int ti = 0; ti < tw; ++ti) {
+                    const int x0 = ti * 8, x1 = std::min(w, x0 + 8) - 1;
+                    const int y0 = tj * 8, y1 = std::min(h, y0 + 8) - 1;
+                    const long long dx = std::max({0, x0 - box.x1, box.x0 - x1});
+                    const long long dy = std::max({0, y0 - box.y1, box.y0 - y1});
+                    tile = tile || dx * dx + dy * dy < blocks.tile_bound(ti, tj);
+                }
+            const PendingBlocks::Near expected = tile ? PendingBlocks::Near::tile
+                                                 : blocks.may_lower(box)
+                                                     ? PendingBlocks::Near::block
+                                                     : PendingBlocks::Near::none;
+            counts[static_cast<int>(expected)] += 1;
+            EXPECT_EQ(blocks.near(box), expected)
+                << "scene " << scene << " box " << box.x0 << "," << box.y0;
+        }
+    }
+    EXPECT_GT(counts[0], 50);
+    EXPECT_GT(counts[1], 50);
+    EXPECT_GT(counts[2], 50);
+}

@@ -47,6 +47,13 @@ class CircleSource {
         (void)box;
         return true;
     }
+    // Finer than may_change(): `tile` when element sites within the box may change a distance
+    // the source reads (or it cannot tell); `block` when they change none, though the coarse
+    // test (may_change()) would not tell; `none` when may_change() is false.
+    enum class Reach { none, block, tile };
+    virtual Reach reach(const PixelBox& box) const {
+        return may_change(box) ? Reach::tile : Reach::none;
+    }
 };
 
 struct CircleSourceOptions {

@@ -246,6 +246,182 @@ void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site, Spans
     }
 }
 
+// The same transform for the kept pixels only (`spans` not null, no feature transform), with
+// the passes the other way round: phase 1 along each row, for the columns any row keeps;
+// phase 2 per such column, the lower envelope over the rows, written at its kept pixels (the
+// rest infinite). A rosette's or a tile's domain keeps few columns but rows across the grid:
+// the envelopes then span the kept columns' height, not the grid's width for every kept row.
+// The distances are exact either way, so the values are those of the row-wise passes.
+void edt_kept_by_columns(int w, int h, int c0, int c1, const ByteSites& is_site, std::int32_t* d2,
+                         Spans spans, DistanceField::Scratch& s) {
+    const int n = c1 - c0;
+    const std::size_t hs = static_cast<std::size_t>(h);
+    // Phase 1: each kept column's row distances, column by column (column i at (i - c0) h).
+    const std::size_t cells = static_cast<std::size_t>(n) * hs;
+    if (s.across_size < cells) {  // every value is written below: no initialising
+        s.across.reset(new std::int32_t[cells]);
+        s.across_size = cells;
+    }
+    s.last.resize(static_cast<std::size_t>(n));
+    std::int32_t* across = s.across.get();
+    int* left = s.last.data();
+    for (int j = 0; j < h; ++j) {
+        // The nearest site left of the kept columns, eight bytes at a time where none is.
+        int at = -1;
+        for (int i = c0 - 1; i >= 0;) {
+            if (i >= 7 && is_site.eight(i - 7, j) == 0) {
+                i -= 8;
+                continue;
+            }
+            if (is_site(i, j)) {
+                at = i;
+                break;
+            }
+            --i;
+        }
+        // Eight columns at a time where they are all sites or none (most of a row).
+        int i = c0;
+        for (; i + 8 <= c1; i += 8) {
+            const int all = is_site.eight(i, j);
+            if (all < 0) {
+                for (int k = i; k < i + 8; ++k) {
+                    if (is_site(k, j)) at = k;
+                    left[k - c0] = at;
+                }
+                continue;
+            }
+            if (all > 0) at = i + 7;
+            const Lanes a = all > 0 ? Lanes{i, i + 1, i + 2, i + 3} : Lanes{at, at, at, at};
+            store_lanes(left + (i - c0), a);
+            store_lanes(left + (i - c0) + 4, all > 0 ? a + 4 : a);
+        }
+        for (; i < c1; ++i) {
+            if (is_site(i, j)) at = i;
+            left[i - c0] = at;
+        }
+        at = -1;
+        for (int k = c1; k < w;) {
+            if (k + 8 <= w && is_site.eight(k, j) == 0) {
+                k += 8;
+                continue;
+            }
+            if (is_site(k, j)) {
+                at = k;
+                break;
+            }
+            ++k;
+        }
+        std::int32_t* column = across + j;
+        auto put = [&](int k, std::int32_t g) {
+            column[static_cast<std::size_t>(k - c0) * hs] = g;
+        };
+        i = c1 - 1;
+        // Column k's distance to the nearer of its sites l (left) and r (right), -1: none.
+        auto nearer = [](int k, int l, int r) {
+            std::int32_t g = l >= 0 ? k - l : kInfinite;
+            if (r >= 0 && r - k < g) g = r - k;
+            return g;
+        };
+        for (; i >= c0 && ((i - c0 + 1) & 7) != 0; --i) {
+            if (is_site(i, j)) at = i;
+            put(i, nearer(i, left[i - c0], at));
+        }
+        // Now i + 1 - c0 is a multiple of 8: blocks [i - 7, i].
+        const Lanes none = {-1, -1, -1, -1},
+                    infinite = {kInfinite, kInfinite, kInfinite, kInfinite};
+        for (; i >= c0; i -= 8) {
+            const int b = i - 7;
+            const int all = is_site.eight(b, j);
+            if (all > 0) {
+                at = b;
+                for (int k = b; k <= i; ++k) put(k, 0);
+                continue;
+            }
+            if (all < 0) {
+                for (int k = i; k >= b; --k) {
+                    if (is_site(k, j)) at = k;
+                    put(k, nearer(k, left[k - c0], at));
+                }
+                continue;
+            }
+            // No site among them: the nearer of the last on the left and the next on the right.
+            const Lanes ra = {at, at, at, at};
+            for (int h4 = 0; h4 < 2; ++h4) {
+                const int k0 = b + 4 * h4;
+                const Lanes x = Lanes{k0, k0 + 1, k0 + 2, k0 + 3};
+                const Lanes l = load_lanes(left + (k0 - c0));
+                const Lanes gl = l > none ? x - l : infinite;
+                const Lanes gr = ra > none ? ra - x : infinite;
+                const Lanes g = gr < gl ? gr : gl;
+                for (int q = 0; q < 4; ++q) put(k0 + q, g[q]);
+            }
+        }
+    }
+    // Each kept column's first and last kept row.
+    s.hull_column.assign(static_cast<std::size_t>(n), h);
+    s.column_distance.assign(static_cast<std::size_t>(n), -1);
+    int* first = s.hull_column.data();
+    std::int32_t* end = s.column_distance.data();
+    for (int j = 0; j < h; ++j)
+        for (int i = spans[2 * j]; i < spans[2 * j + 1]; ++i) {
+            first[i - c0] = std::min(first[i - c0], j);
+            end[i - c0] = j + 1;
+        }
+    fill_values(d2, static_cast<std::size_t>(w) * hs, kInfinite);
+    s.hull_f.resize(hs);
+    s.hull_num.resize(hs);
+    s.hull_den.resize(hs);
+    s.column_site_row.resize(hs);
+    int* v = s.column_site_row.data();
+    std::int64_t* f = s.hull_f.data();
+    std::int64_t* num = s.hull_num.data();
+    std::int64_t* den = s.hull_den.data();
+    for (int i = c0; i < c1; ++i) {
+        const int ya = first[i - c0], yb = end[i - c0];
+        if (ya >= yb) continue;
+        const std::int32_t* g = across + static_cast<std::size_t>(i - c0) * hs;
+        // A row farther from the kept ones than the largest of their own row distances is
+        // nearest to none of them.
+        int q0 = 0, q1 = h;
+        const std::int32_t most = *std::max_element(g + ya, g + yb);
+        if (most != kInfinite) {
+            q0 = std::max(0, ya - most);
+            q1 = std::min(h, yb + most);
+        }
+        int k = -1;
+        for (int q = q0; q < q1; ++q) {
+            if (g[q] == kInfinite) continue;
+            const std::int64_t fq =
+                static_cast<std::int64_t>(g[q]) * g[q] + static_cast<std::int64_t>(q) * q;
+            std::int64_t sn = 0, sd = 1;
+            while (k >= 0) {
+                sn = fq - f[k];
+                sd = 2 * static_cast<std::int64_t>(q - v[k]);
+                if (k > 0 && sn * den[k] <= num[k] * sd) {
+                    --k;
+                    continue;
+                }
+                break;
+            }
+            ++k;
+            v[k] = q;
+            f[k] = fq;
+            num[k] = sn;
+            den[k] = sd;
+        }
+        if (k < 0) continue;
+        const int top = k;
+        k = 0;
+        for (int y = ya; y < yb; ++y) {
+            while (k < top && num[k + 1] <= static_cast<std::int64_t>(y) * den[k + 1]) ++k;
+            if (i < spans[2 * y] || i >= spans[2 * y + 1]) continue;
+            const std::int64_t dy = y - v[k];
+            const std::int64_t gc = g[v[k]];
+            d2[static_cast<std::size_t>(y) * w + i] = static_cast<std::int32_t>(dy * dy + gc * gc);
+        }
+    }
+}
+
 // Grids of at least this many pixels are transformed by two threads (columns, then rows, split
 // in halves): the start of a large growth waits for whole-grid transforms.
 constexpr long long kTwoThreadPixels = 1LL << 20;
@@ -266,6 +442,35 @@ void separable_edt(int w, int h, const ByteSites& is_site, std::int32_t* d2, std
         for (int j = 0; j < h; ++j) kept_pixels += std::max(0, spans[2 * j + 1] - spans[2 * j]);
     }
     if (kept_pixels < kTwoThreadPixels) {
+        if (spans && !site) {
+            // The kept columns, and the rows the row-wise passes would visit: the column pass
+            // reads every row up to the last kept one and back to the first, each row's
+            // envelope the grid's width. By columns: each row's bytes near the kept columns,
+            // each kept column's envelope the grid's height.
+            int c0 = w, c1 = 0, rows = 0, first_kept = h, last_kept = -1;
+            for (int j = 0; j < h; ++j)
+                if (spans[2 * j] < spans[2 * j + 1]) {
+                    c0 = std::min(c0, spans[2 * j]);
+                    c1 = std::max(c1, spans[2 * j + 1]);
+                    ++rows;
+                    first_kept = std::min(first_kept, j);
+                    last_kept = j;
+                }
+            // Weighed as measured (instructions a pixel): an envelope's parabola 55 row-wise,
+            // a column pass's pixel 7; by columns 85 a pixel of the kept columns. The row-wise
+            // envelopes often leave out far columns, so by columns only when clearly cheaper
+            // (a wallpaper tile's triangle, as many kept rows as columns, is not).
+            const long long by_rows =
+                static_cast<long long>(w) * (8LL * rows + (last_kept + 1 + h - first_kept));
+            const long long by_columns = 12LL * std::max(0, c1 - c0) * h;
+            // Its scratch holds a value per pixel of the kept columns: kept within 32 MB.
+            const bool fits =
+                static_cast<long long>(std::max(0, c1 - c0)) * h <= 8 * kTwoThreadPixels;
+            if (fits && 3 * by_columns < 2 * by_rows) {
+                edt_kept_by_columns(w, h, c0, std::max(c0, c1), is_site, d2, spans, s);
+                return;
+            }
+        }
         columns(0, w, s);
         edt_rows(w, 0, h, d2, site, spans, s);
         return;

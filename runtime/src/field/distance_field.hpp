@@ -116,6 +116,9 @@ class DistanceField {
         std::vector<int> last;                      // per column, last site row seen
         std::vector<int> hull_column;               // phase 2: lower envelope of parabolas
         std::vector<std::int64_t> hull_f, hull_num, hull_den;
+        // By columns: phase 1's distances, column-major, and how many it holds.
+        std::unique_ptr<std::int32_t[]> across;
+        std::size_t across_size = 0;
     };
 
   private:

@@ -59,6 +59,21 @@ class IncrementalCircleSource final : public FieldCircleSource {
         return !field_.lazy() || field_.far_blocks().may_lower(box);
     }
 
+    // Each tile's bound, not only its block's: sites no nearer to a kept tile than its bound
+    // lower nothing there either (bounds are of the distances once measured, and only fall).
+    Reach reach(const PixelBox& box) const override {
+        if (!field_.lazy()) return Reach::tile;
+        switch (field_.far_blocks().near(box)) {
+            case PendingBlocks::Near::tile:
+                return Reach::tile;
+            case PendingBlocks::Near::block:
+                return Reach::block;
+            case PendingBlocks::Near::none:
+                break;
+        }
+        return Reach::none;
+    }
+
     void release(const std::vector<int>& ids) override { finder_.release(ids); }
     void release_all() override { finder_.release_all(); }
 

@@ -202,6 +202,41 @@ bool PendingBlocks::may_lower(const PixelBox& box) const {
     return for_blocks_near(box, [](int, const Rect&) { return true; });
 }
 
+PendingBlocks::Near PendingBlocks::near(const PixelBox& box) const {
+    if (group_bound_.empty()) return Near::tile;
+    if (live_.x0 > live_.x1 || gap2(box, live_) >= static_cast<std::int64_t>(groups_.max()))
+        return Near::none;
+    bool block = false;
+    const bool tile = for_blocks_near(box, [&](int b, const Rect& r) {
+        block = true;
+        // The gap to a tile is separable in tile columns and rows (boxes may lie far beyond
+        // the grid: 64 bits).
+        std::int64_t gx[8], gy[8];
+        for (int c = 0; c < 8; ++c) {
+            // Tiles as tile_rect() clips them (those beyond the grid have bound 0).
+            const int x0 = r.x0 + (c << kTileShift);
+            const int x1 = std::min(x0 + (1 << kTileShift), width_) - 1;
+            const int y0 = r.y0 + (c << kTileShift);
+            const int y1 = std::min(y0 + (1 << kTileShift), height_) - 1;
+            const std::int64_t dx = std::max({0, x0 - box.x1, box.x0 - x1});
+            const std::int64_t dy = std::max({0, y0 - box.y1, box.y0 - y1});
+            gx[c] = dx * dx;
+            gy[c] = dy * dy;
+        }
+        // Only the tile rows and columns nearer than the block's bound (the largest of its
+        // tiles') can hold one.
+        const std::int64_t most = bound_[b];
+        const std::int32_t* bound = tile_bound_.data() + slot_at(b, 0);
+        for (int ty = 0; ty < 8; ++ty) {
+            if (gy[ty] >= most) continue;
+            for (int tx = 0; tx < 8; ++tx)
+                if (gx[tx] + gy[ty] < bound[ty << 3 | tx]) return true;
+        }
+        return false;
+    });
+    return tile ? Near::tile : block ? Near::block : Near::none;
+}
+
 std::uint64_t PendingBlocks::cap_tiles(int block, const Blob& blob) {
     // The tiles it may lower: the gap to a tile is separable in tile columns and rows. So is
     // the distance from its first site to a tile's farthest pixel: one above it bounds the

@@ -57,6 +57,11 @@ class PendingBlocks {
     // defer()'s tests of groups and blocks, on the box. False only when no site there could.
     // True before the first reset().
     bool may_lower(const PixelBox& box) const;
+    // Finer: whether some tile is nearer to the box than its bound (sites there may lower a
+    // distance kept here), else whether some block is (may_lower()), else neither. A block's
+    // bound is the largest of its tiles': most boxes near a block's are far from every tile's.
+    enum class Near { none, block, tile };
+    Near near(const PixelBox& box) const;
 
     // A tile is trusted when it and its 8 neighbours hold exact distances: every pixel of it
     // and the pixels round it.

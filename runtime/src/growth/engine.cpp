@@ -684,9 +684,15 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
             families[static_cast<std::size_t>(f.id)].push_back(e);
         }
         const std::size_t at = n++;
-        if (at >= count && !debug_callback &&
-            !circles->may_change(pixel_box(image_bounds[at - count])))
-            continue;
+        if (at >= count && !debug_callback) {
+            const CircleSource::Reach reach = circles->reach(pixel_box(image_bounds[at - count]));
+            if (reach != CircleSource::Reach::tile) {
+                // parents_left counts (a guess the loop checks when it reaches 0) as when the
+                // coarse test let such an image in: the loop runs as it did.
+                if (reach == CircleSource::Reach::block && can_parent(*e)) ++parents_left;
+                continue;
+            }
+        }
         raster.add_element(*e, fresh);
         if (can_parent(*e)) ++parents_left;
         if (one_by_one) {

@@ -359,6 +359,14 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
         return s * kLoose < tol2 || (s <= tol2 * kLoose && v.length() <= tolerance);
     };
     auto consider = [&](Point p, const Isometry* mirror) {
+        // room()'s first test, made here: most points of the sample fail it, and then neither
+        // the centre's test nor the call is needed (the same test, so the same answer).
+        const Vector to_centre = p - c.center;
+        const double inside =
+            c.radius -
+            std::sqrt(to_centre.x * to_centre.x + to_centre.y * to_centre.y) * (1 - kBound) +
+            kBound * c.radius;
+        if (inside < std::min(best[0].radius + tolerance, best[1].radius + tolerance)) return;
         if (on_centre(p)) return;  // C itself
         bool fixed = false;
         const double r = room(p, fixed, best[0].radius + tolerance, best[1].radius + tolerance);
