@@ -1,5 +1,6 @@
 #include "brick_layout.hpp"
 
+#include <acanthus/stdlib/cells/head_joints.hpp>
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -10,6 +11,7 @@
 #include "closers.hpp"
 #include "context_data.hpp"
 #include "face_jambs.hpp"
+#include "feature_walk.hpp"
 #include "lintel.hpp"
 #include "quoin_rows.hpp"
 #include "run_ends.hpp"
@@ -807,6 +809,22 @@ std::tuple<long, long, long> faults(const Facade& facade, const Options& o, cons
     return {narrow, out, odd};
 }
 
+// Straight joints between the full-height courses' pieces as drawn, read as the checker and the
+// straight-joint map read laid cells (the layout's own reading, by units, misses a joint that a
+// way's joints moved a millimetre past a quarter brick).
+long drawn_straight_joints(const Options& o, const BrickLayout& l) {
+    std::vector<Cell> cells;
+    for (std::size_t r = 0; r < l.rows.size(); ++r) {
+        if (std::abs(l.grid.ys[r + 1] - l.grid.ys[r] - l.gauge) > 0.2 * o.brick_height) continue;
+        for (std::size_t k = 0; k < l.rows[r].size(); ++k) {
+            Cell& c = cells.emplace_back();
+            c.generator = "bricks";
+            c.polygon = polygon_of(l.drawn(static_cast<int>(r), static_cast<int>(k)));
+        }
+    }
+    return static_cast<long>(straight_joints(cells, o.brick_length, o.mortar).straight.size());
+}
+
 // A settled layout's head joints, its runs set out from their jambs, their ends fitted.
 void joints_and_run_ends(const Facade& facade, int face, const Options& o, BrickLayout& layout) {
     set_joints(layout);
@@ -871,14 +889,29 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
     // brick or an odd piece more, in that order; no straight joint more): a mason shifts a
     // sill's row before he cuts the bond worse for it.
     BrickLayout layout = laid(facade, face, o, quoins, lintels, true);
-    if (!layout.sill_rows) return layout;
-    const auto now = faults(facade, o, layout);
-    // Laid again on the same unit lines, the rows two units past each jamb.
-    const auto [set_out, breaks, arched] = layout.laid_as;
-    BrickLayout plain = settled(facade, face, o, quoins, lintels, set_out, false, breaks, arched);
-    joints_and_run_ends(facade, face, o, plain);
-    if (badness(plain) / 100 <= badness(layout) / 100 && faults(facade, o, plain) < now)
-        return plain;
+    if (layout.sill_rows) {
+        const auto now = faults(facade, o, layout);
+        // Laid again on the same unit lines, the rows two units past each jamb.
+        const auto [set_out, breaks, arched] = layout.laid_as;
+        BrickLayout plain =
+            settled(facade, face, o, quoins, lintels, set_out, false, breaks, arched);
+        joints_and_run_ends(facade, face, o, plain);
+        if (badness(plain) / 100 <= badness(layout) / 100 && faults(facade, o, plain) < now)
+            layout = std::move(plain);
+    }
+    // Closers and cuts set back from the arrises, kept where that costs the wall no narrow
+    // piece, shaved brick or odd piece more, nor a straight joint (the layout's own reading:
+    // a way's pieces beside an arch or a sill row come out other than it reckons).
+    BrickLayout set_back = layout;
+    fit_arrises(facade, face, o, set_back);
+    const auto [narrow, shaved, odd] = faults(facade, o, layout);
+    const auto [narrow2, shaved2, odd2] = faults(facade, o, set_back);
+    if (narrow2 <= narrow && shaved2 <= shaved && odd2 <= odd &&
+        badness(set_back) / 100 <= badness(layout) / 100 &&
+        (layout.bond.bond == Bond::stack ||
+         drawn_straight_joints(o, set_back) <= drawn_straight_joints(o, layout)) &&
+        unforced_odd(facade, face, set_back) <= unforced_odd(facade, face, layout))
+        layout = std::move(set_back);
     return layout;
 }
 

@@ -47,7 +47,10 @@ constexpr std::size_t kMostWays = 96;
 
 }  // namespace
 
-void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout) {
+namespace {
+
+void fit(const Facade& facade, int face, const Options& options, BrickLayout& layout,
+         bool arrises) {
     const CourseGrid& g = layout.grid;
     if (layout.relaid.size() != layout.rows.size()) {
         layout.relaid.assign(layout.rows.size(), {});
@@ -92,6 +95,8 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
     // column can block a better one in the next). Less than a twentieth of a joint left a
     // straight joint once the bricks were laid.
     double slack = tol / 2, exf = 0.5;
+    // What a small piece at an arris costs, where laid for that.
+    const long arris = arrises ? 100 : 0;
     const double margin = std::min(m / 4, tol) / 2;
     // Head joints of a row (centres) as laid now, each with the room it needs (as relay_runs).
     auto joints = [&](std::size_t r) {
@@ -201,6 +206,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                    std::abs(width - k * q) > static_cast<double>(joints) * tol + 1e-9;
         };
         std::vector<int> kinds;
+        std::vector<double> widths;
         long odd_run = 0, shaved_run = 0;
         for (std::size_t i = 0; i < n; ++i) {
             const int k = static_cast<int>(at(i));
@@ -218,6 +224,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                 if (whole.width() > 0) d = whole;
             }
             kinds.push_back(kind(d.width(), ps[at(i)].quoin ? 12 : 4));
+            widths.push_back(d.width());
             odd_run += kinds.back() != 0;
             shaved_run += kinds.back() == 2;
         }
@@ -225,8 +232,15 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
         // The quoin at the run's other end is laid again only to mend a shaved brick (laid
         // from here, that end is not laid again from its own jamb).
         const int far_quoin = n > 1 && ps[at(n - 1)].quoin ? ps[at(n - 1)].length : 0;
-        // As it is: a shaved brick costs more than any odd piece.
-        out[0].cost = 1000000 * shaved_run + 10000 * unforced_now + 1000 * odd_run;
+        // A piece narrower than a header at the jamb, or at the run's other end where that is
+        // a jamb too: a mason keeps closers and cuts back from an arris.
+        auto small = [&](double w) { return w < header - tol ? 1L : 0L; };
+        const long small_far = known && n > 1 ? small(widths[n - 1]) : 0;
+        const long small_now = small(widths[0]) + small_far;
+        // As it is: a shaved brick costs more than any odd piece, an odd piece more than a
+        // small piece at an arris.
+        out[0].cost =
+            1000000 * shaved_run + 10000 * unforced_now + 1000 * odd_run + 100 * small_now;
         if (only_now) return out;
         std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
         for (std::size_t nb : {rr + 1, rr - 1})
@@ -264,7 +278,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
             if (near_head) continue;
             long shaved = 0, odd = 0;  // in the zone as laid now
             for (std::size_t i = 0; i < zone; ++i) shaved += kinds[i] == 2, odd += kinds[i] != 0;
-            if (odd == 0 && !all) continue;
+            if (odd == 0 && (small_now == 0 || arris == 0) && !all) continue;
             const double span = side * xj - j0;
             // Every sequence of up to zone + 1 pieces of one to four quarters (a quoin at the
             // jamb whole, its own length where it can), none or one of them cut to what is left.
@@ -346,9 +360,15 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                         if (unforced_then > unforced_now || odd_then > odd_run) continue;
                         // Laid again only where that is better, here or in the courses over
                         // and under it (a pier's courses are chosen together).
+                        auto width = [&](std::size_t i) {
+                            return static_cast<int>(i) == cut ? plan.cut_length : ks[i] * q - m;
+                        };
+                        const long small_then =
+                            small(width(0)) +
+                            (zone == n ? (t > 1 ? small(width(t - 1)) : 0) : small_far);
                         w.cost = 1000000 * (shaved_run - shaved) + 10000 * unforced_then +
-                                 1000 * odd_then + 20 * (cut > 0) + 10 * quarters + 5 * off_bond +
-                                 5 * (quoin && ks[0] != quoin) +
+                                 1000 * odd_then + arris * small_then + 20 * (cut > 0) +
+                                 10 * quarters + 5 * off_bond + 5 * (quoin && ks[0] != quoin) +
                                  5 * (far && ks[t - 1] != far_quoin) +
                                  std::abs(static_cast<long>(t) - static_cast<long>(zone)) + 1;
                         w.zone = zone, w.c0 = c0, w.lo = lo, w.hi = hi;
@@ -605,6 +625,7 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
     const BrickLayout start = layout;
     slack = m / 20, exf = 0;
     relay_all();
+    if (arrises) return finish();
     const long tight = score();
     if (tight < 1000000) return finish();  // no shaved brick left at a jamb
     BrickLayout kept = layout;
@@ -617,6 +638,16 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
     relay_all();
     if (score() > tight) layout = std::move(kept);
     finish();
+}
+
+}  // namespace
+
+void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout) {
+    fit(facade, face, options, layout, false);
+}
+
+void fit_arrises(const Facade& facade, int face, const Options& options, BrickLayout& layout) {
+    fit(facade, face, options, layout, true);
 }
 
 }  // namespace acanthus::cells::detail

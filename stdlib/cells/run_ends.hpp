@@ -20,6 +20,13 @@ namespace acanthus::cells::detail {
 // or above, as each is laid in that choice.
 void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout);
 
+// The same ways laid again where a piece narrower than a header stands at an arris (the run's
+// end at a jamb, or at its other end where that is a jamb too): a mason keeps queen closers
+// beside the header there and cuts back from the arris, where a small piece is weak and shows
+// on the return. Taken alone, after fit_run_ends: a way that sets a closer back from one jamb
+// took the place of a better way at the next one.
+void fit_arrises(const Facade& facade, int face, const Options& options, BrickLayout& layout);
+
 // A brick cut off at a jamb a few millimetres off whole quarters, laid whole (context.cpp): the
 // piece `r` (its claim `claim` cut at the jamb) as drawn, or an empty rect when it is not.
 Rect nominal_at_jamb(Rect r, Rect claim, Rect drawn, const Options& o);

@@ -122,6 +122,11 @@ struct MasonReport {
     long sills = 0;
     long sills_off_centre = 0;  // by more than a quarter brick
     double sill_offset = 0;     // the largest difference
+    // Pieces at an arris (a run's end at the wall's end, a jamb or a reveal): those narrower
+    // than a header, and of those the ones the run forces (between two arrises, narrower than
+    // two headers, a joint and the quarter brick a course must lap the one beside it).
+    long arris_pieces = 0, arris_small = 0, arris_small_forced = 0;
+    std::vector<Point> arris_small_at;  // the centres of the ones not forced
 };
 
 namespace mason_detail {
@@ -741,6 +746,57 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         r.sill_offset = std::max(r.sill_offset, off);
         r.sills_off_centre += off > (s.length + s.mortar) / 4;
     }
+    // Arrises: a mason keeps closers and cut pieces back from a quoin or a reveal (a queen
+    // closer goes beside the header there; a small piece at the arris is weak and shows on the
+    // return). A piece is at one where nothing lies within a joint and the tolerance of its end.
+    if (!s.stone) {
+        std::map<long long, std::pair<Rect, std::vector<std::pair<double, double>>>> bands;
+        std::vector<std::pair<Rect, Rect>> pieces;  // (piece, its band's key box)
+        for (const Cell& c : cells) {
+            Rect b;
+            if (!coursed(c) || !is_rect(c.polygon, b) || c.generator == "lintel") continue;
+            if (std::abs(b.height() - s.height) > s.tolerance + 1e-9) continue;
+            auto& band = bands[std::llround(b.y0 / (0.05 * s.mortar))];
+            band.first = b;
+        }
+        for (const Cell& c : cells) {
+            const Rect e = extent(c.polygon);
+            for (auto& [key, band] : bands)
+                if (e.y0 < band.first.y1 - 1e-6 && e.y1 > band.first.y0 + 1e-6)
+                    band.second.push_back({e.x0, e.x1});
+        }
+        const double gap = s.mortar + s.tolerance + 1e-6;
+        for (const Cell& c : cells) {
+            Rect b;
+            if (!coursed(c) || !is_rect(c.polygon, b) || c.generator == "lintel") continue;
+            if (std::abs(b.height() - s.height) > s.tolerance + 1e-9) continue;
+            const auto& spans = bands[std::llround(b.y0 / (0.05 * s.mortar))].second;
+            // The nearest neighbour on each side, and how far the run goes past the piece.
+            bool left = false, right = false;
+            for (auto [x0, x1] : spans) {
+                left |= x1 <= b.x0 + 1e-6 && b.x0 - x1 <= gap;
+                right |= x0 >= b.x1 - 1e-6 && x0 - b.x1 <= gap;
+            }
+            if (left && right) continue;
+            ++r.arris_pieces;
+            if (b.width() >= header - s.tolerance) continue;
+            ++r.arris_small;
+            // The run's other end: where the pieces beside it stop.
+            double lo = b.x0, hi = b.x1;
+            const double quarter = (s.length + s.mortar) / 4;
+            for (bool grew = true; grew;) {
+                grew = false;
+                for (auto [x0, x1] : spans) {
+                    if (x1 <= lo + 1e-6 && lo - x1 <= gap && x0 < lo) lo = x0, grew = true;
+                    if (x0 >= hi - 1e-6 && x0 - hi <= gap && x1 > hi) hi = x1, grew = true;
+                }
+            }
+            if (hi - lo < 5 * quarter - s.mortar - s.tolerance)
+                ++r.arris_small_forced;
+            else
+                r.arris_small_at.push_back(b.center());
+        }
+    }
     r.openings = static_cast<long>(seen.size());
     r.openings_without_head = static_cast<long>(headless.size());
     r.headless.assign(headless.begin(), headless.end());
@@ -783,7 +839,9 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
                << r.relieving_even << ", open " << r.relieving_open << ", skewbacks wrong "
                << r.relieving_skewbacks << "), soldiers " << r.soldiers << " off " << r.soldiers_off
                << " (max " << r.soldier_deviation << "), sills " << r.sills << " off centre "
-               << r.sills_off_centre << " (max " << r.sill_offset << ")";
+               << r.sills_off_centre << " (max " << r.sill_offset << "), arris pieces "
+               << r.arris_pieces << " small " << r.arris_small << " (forced "
+               << r.arris_small_forced << ")";
 }
 
 }  // namespace cells_test

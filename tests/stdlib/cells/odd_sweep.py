@@ -3,7 +3,8 @@
 
 Runs the cells test binary's per-wall checks (CellsMason.ExampleFacades/UnseenFacades,
 CellsUnseen.BrickWalls/NewFacadesForTheJambCheck, CellsFresh.BrickWalls), reads the report line each prints per wall and
-sums odd pieces, the ones the geometry does not force, straight joints, narrow pieces and shaved bricks, by
+sums odd pieces, the ones the geometry does not force, straight joints, narrow pieces, shaved bricks and
+small pieces at an arris, by
 bond; with --walls, one line per wall (to diff two builds).
 
     tests/stdlib/cells/odd_sweep.py BUILD_DIR [--walls]
@@ -44,6 +45,8 @@ def main():
             "narrow": field(rest, r" narrow (\d+)"),
             "shaved": field(rest, r" shaved (\d+)"),
             "cut": field(rest, r" cut (\d+),"),
+            "arris": field(rest, r"arris pieces \d+ small (\d+)") -
+                     field(rest, r"arris pieces \d+ small \d+ \(forced (\d+)"),
         }
     by_bond = collections.defaultdict(lambda: collections.Counter())
     per_facade = collections.defaultdict(lambda: collections.Counter())
@@ -53,16 +56,19 @@ def main():
             per_facade[name][k] = max(per_facade[name][k], v)
         if "--walls" in sys.argv:
             print(f"{name} {bond} {tree}: odd {w['odd']} unforced {w['unforced']} shaved {w['shaved']} "
-                  f"straight {w['straight']} narrow {w['narrow']} cut {w['cut']}")
+                  f"straight {w['straight']} narrow {w['narrow']} cut {w['cut']} arris {w['arris']}")
     total = collections.Counter()
     for c in by_bond.values():
         total.update(c)
     print(f"walls {len(walls)}: odd {total['odd']}, not forced {total['unforced']}, "
           f"straight (bonds but stack) "
           f"{sum(c['straight'] for b, c in by_bond.items() if b != 'stack')}, "
-          f"narrow {total['narrow']}, shaved {total['shaved']}")
+          f"narrow {total['narrow']}, shaved {total['shaved']}, "
+          f"small pieces at an arris not forced {total['arris']}")
     print("not forced by bond: " + ", ".join(f"{b} {c['unforced']}" for b, c in
                                              sorted(by_bond.items())))
+    print("small at an arris by bond: " + ", ".join(f"{b} {c['arris']}" for b, c in
+                                                    sorted(by_bond.items())))
     print("shaved by bond: " + ", ".join(f"{b} {c['shaved']}" for b, c in
                                          sorted(by_bond.items())))
     print("most per facade (odd / not forced / cut courses): " + ", ".join(
