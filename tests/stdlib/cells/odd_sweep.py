@@ -45,6 +45,7 @@ def main():
             "narrow": field(rest, r" narrow (\d+)"),
             "shaved": field(rest, r" shaved (\d+)"),
             "cut": field(rest, r" cut (\d+),"),
+            "off_bond": field(rest, r"off bond (\d+)"),
             "arris": field(rest, r"arris pieces \d+ small (\d+)") -
                      field(rest, r"arris pieces \d+ small \d+ \(forced (\d+)"),
         }
@@ -56,7 +57,7 @@ def main():
             per_facade[name][k] = max(per_facade[name][k], v)
         if "--walls" in sys.argv:
             print(f"{name} {bond} {tree}: odd {w['odd']} unforced {w['unforced']} shaved {w['shaved']} "
-                  f"straight {w['straight']} narrow {w['narrow']} cut {w['cut']} arris {w['arris']}")
+                  f"straight {w['straight']} narrow {w['narrow']} cut {w['cut']} arris {w['arris']} off bond {w['off_bond']}")
     total = collections.Counter()
     for c in by_bond.values():
         total.update(c)
@@ -64,11 +65,13 @@ def main():
           f"straight (bonds but stack) "
           f"{sum(c['straight'] for b, c in by_bond.items() if b != 'stack')}, "
           f"narrow {total['narrow']}, shaved {total['shaved']}, "
-          f"small pieces at an arris not forced {total['arris']}")
+          f"small pieces at an arris not forced {total['arris']}, off bond {total['off_bond']}")
     print("not forced by bond: " + ", ".join(f"{b} {c['unforced']}" for b, c in
                                              sorted(by_bond.items())))
     print("small at an arris by bond: " + ", ".join(f"{b} {c['arris']}" for b, c in
                                                     sorted(by_bond.items())))
+    print("off bond by bond: " + ", ".join(f"{b} {c['off_bond']}" for b, c in
+                                           sorted(by_bond.items())))
     print("shaved by bond: " + ", ".join(f"{b} {c['shaved']}" for b, c in
                                          sorted(by_bond.items())))
     print("most per facade (odd / not forced / cut courses): " + ", ".join(
