@@ -398,11 +398,18 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
                             off_bond += std::find(bond_lengths.begin(), bond_lengths.end(),
                                                   ks[i]) == bond_lengths.end();
                         }
-                        // No more odd pieces, nor more the geometry does not force.
+                        // No more odd pieces, nor more the geometry does not force; but a
+                        // shaved brick may give way to a clear cut the geometry does not
+                        // force (more joints could take the difference up, but none clears
+                        // the courses over and under it: the three-storey front's segmental
+                        // window, a header 0.9 cm short in every other course). Not at a
+                        // quoin: there the trade left the ashlar front an odd piece more.
                         const long odd_then = odd_run - odd + (odd_cut ? 1 : 0);
                         const long unforced_then =
                             std::max(0L, odd_then - (forced(n - zone + t - 1) ? 1 : 0));
-                        if (unforced_then > unforced_now || odd_then > odd_run) continue;
+                        const bool trade = shaved > 0 && !quoin;
+                        if ((unforced_then > unforced_now && !trade) || odd_then > odd_run)
+                            continue;
                         // Laid again only where that is better, here or in the courses over
                         // and under it (a pier's courses are chosen together).
                         w.cost = 1000000 * (shaved_run - shaved) + 10000 * unforced_then +
