@@ -826,16 +826,17 @@ long drawn_straight_joints(const Options& o, const BrickLayout& l) {
 }
 
 // A settled layout's head joints, its runs set out from their jambs, their ends fitted.
-void joints_and_run_ends(const Facade& facade, int face, const Options& o, BrickLayout& layout) {
+void joints_and_run_ends(const Facade& facade, int face, const Options& o, BrickLayout& layout,
+                         RunEndsMemo& memo) {
     set_joints(layout);
     relay_runs(facade, face, layout);
-    fit_run_ends(facade, face, o, layout);
+    fit_run_ends(facade, face, o, layout, &memo);
 }
 
 // The face laid with its window-bottom rows set out about their openings' middles (`centred`)
 // or two units past each jamb.
 BrickLayout laid(const Facade& facade, int face, const Options& o, bool quoins, bool lintels,
-                 bool centred) {
+                 bool centred, RunEndsMemo& memo) {
     // Perpends set out from the jambs (with or without those of arched openings, below), kept
     // unless the bond comes out worse for them. Worse is a straight joint more; a queen closer
     // more at a run's end is a standard closer.
@@ -847,7 +848,7 @@ BrickLayout laid(const Facade& facade, int face, const Options& o, bool quoins, 
             if (plain.grid.xs != layout.grid.xs && badness(plain) / 100 < badness(layout) / 100)
                 layout = std::move(plain);
         }
-        joints_and_run_ends(facade, face, o, layout);
+        joints_and_run_ends(facade, face, o, layout, memo);
         // Bond breaks over and under the openings whose width is no whole number of quarters,
         // the piers beside them set out from their jambs: kept when they leave fewer odd pieces
         // the geometry does not force and no straight joint more.
@@ -855,7 +856,7 @@ BrickLayout laid(const Facade& facade, int face, const Options& o, bool quoins, 
             BrickLayout broken =
                 settled(facade, face, o, quoins, lintels, true, centred, true, arched);
             if (badness(broken) / 100 <= badness(layout) / 100) {
-                joints_and_run_ends(facade, face, o, broken);
+                joints_and_run_ends(facade, face, o, broken, memo);
                 if (unforced_odd(facade, face, broken) < unforced_odd(facade, face, layout))
                     layout = std::move(broken);
             }
@@ -888,14 +889,15 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
     // then come out worse than with every row two units past each jamb (a narrow piece, a shaved
     // brick or an odd piece more, in that order; no straight joint more): a mason shifts a
     // sill's row before he cuts the bond worse for it.
-    BrickLayout layout = laid(facade, face, o, quoins, lintels, true);
+    RunEndsMemo memo;  // the ways of run ends the sills do not reach, found once
+    BrickLayout layout = laid(facade, face, o, quoins, lintels, true, memo);
     if (layout.sill_rows) {
         const auto now = faults(facade, o, layout);
         // Laid again on the same unit lines, the rows two units past each jamb.
         const auto [set_out, breaks, arched] = layout.laid_as;
         BrickLayout plain =
             settled(facade, face, o, quoins, lintels, set_out, false, breaks, arched);
-        joints_and_run_ends(facade, face, o, plain);
+        joints_and_run_ends(facade, face, o, plain, memo);
         if (badness(plain) / 100 <= badness(layout) / 100 && faults(facade, o, plain) < now)
             layout = std::move(plain);
     }

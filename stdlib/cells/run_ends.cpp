@@ -5,7 +5,9 @@
 #include <cmath>
 #include <map>
 #include <span>
+#include <string>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -45,12 +47,49 @@ struct Plan {
 // leave more shaved), few enough that pairs of courses stay cheap to compare.
 constexpr std::size_t kMostWays = 96;
 
+// A run of `row` (pieces [a0, b)) whose end on `side` is at the jamb at xj.
+struct End {
+    std::size_t a0 = 0, b = 0;
+    double xj = 0;
+};
+
+// One way to lay a run's end (zone 0: as it is), its cost (lower is better) and the head
+// joints it lays, in x, in place of the course's joints strictly between lo and hi.
+struct Way {
+    Plan plan;
+    std::size_t zone = 0;
+    double c0 = 0;  // in s: the start of the zone's claims
+    long cost = 0;
+    Few<double, 4> joints;
+    double lo = 0, hi = 0;
+};
+
+// A key's bytes: every value the ways of a run's end are found from.
+template <class T>
+void put(std::string& key, T v) {
+    key.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
 }  // namespace
+
+// The most ways a memo keeps (about 17 MB; the fresh facades' largest face finds 85,000): past
+// that, a huge face's run ends are found afresh.
+constexpr std::size_t kMemoWays = std::size_t{1} << 17;
+
+struct RunEndsMemo::Data {
+    std::unordered_map<std::string, std::vector<Way>> ways;
+    std::size_t count = 0;  // ways kept, over all keys
+    std::size_t hits = 0;
+};
+RunEndsMemo::RunEndsMemo() : data(std::make_unique<Data>()) {}
+RunEndsMemo::~RunEndsMemo() = default;
+std::size_t RunEndsMemo::kept() const { return data->ways.size(); }
+std::size_t RunEndsMemo::hits() const { return data->hits; }
 
 namespace {
 
 void fit(const Facade& facade, int face, const Options& options, BrickLayout& layout,
-         bool arrises) {
+         RunEndsMemo* memo, bool arrises) {
     const CourseGrid& g = layout.grid;
     if (layout.relaid.size() != layout.rows.size()) {
         layout.relaid.assign(layout.rows.size(), {});
@@ -138,11 +177,6 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     std::vector<long> stamp(rows, 0);
     long clock = 0;
     std::map<std::tuple<int, long long, std::size_t>, long> judged;
-    // A run of `row` (pieces [a0, b)) whose end on `side` is at the jamb at xj.
-    struct End {
-        std::size_t a0 = 0, b = 0;
-        double xj = 0;
-    };
     auto find_end = [&](std::size_t rr, int side, double at, End& e) {
         const auto& ps = layout.rows[rr];
         for (std::size_t a = 0; a < ps.size();) {
@@ -159,16 +193,6 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         }
         return false;
     };
-    // One way to lay a run's end (zone 0: as it is), its cost (lower is better) and the head
-    // joints it lays, in x, in place of the course's joints strictly between lo and hi.
-    struct Way {
-        Plan plan;
-        std::size_t zone = 0;
-        double c0 = 0;  // in s: the start of the zone's claims
-        long cost = 0;
-        Few<double, 4> joints;
-        double lo = 0, hi = 0;
-    };
     // The ways to lay the end `e` of row rr on `side`, clear of the joints of the courses over
     // and under it that are not in `chain` (those are judged with their own ways).
     auto ways = [&](std::size_t rr, int side, const End& e, const std::vector<char>& chain,
@@ -180,6 +204,43 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         const double xj = e.xj;
         auto at = [&](std::size_t i) { return side > 0 ? b - 1 - i : a0 + i; };
         const std::size_t end = at(0);
+        std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
+        if (!only_now) {
+            for (std::size_t nb : {rr + 1, rr - 1})
+                if (nb < layout.rows.size() && !chain[nb])
+                    for (auto [j, room] : joints(nb))
+                        if (std::abs(j - xj) < reach) near.push_back({side * j, room});
+            // By place, so that a joint is compared only with those that can stand too near it.
+            std::sort(near.begin(), near.end());
+        }
+        // The memo's key: all the ways below are found from (the run's pieces as laid, the
+        // joints over and under it, the pass's room), not where the run stands in its row.
+        std::string key;
+        if (memo && !only_now) {
+            double xo = 0;
+            const bool known =
+                at_jamb(row, side > 0 ? ps[a0].start : ps[b - 1].start + ps[b - 1].length - 1,
+                        side > 0, xo);
+            put(key, side), put(key, all), put(key, known), put(key, xo), put(key, xj);
+            put(key, rr), put(key, g.ys[rr]), put(key, g.ys[rr + 1]), put(key, slack);
+            put(key, exf), put(key, eps), put(key, n), put(key, bond_lengths.size());
+            for (int k : bond_lengths) put(key, k);
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::size_t k = at(i);
+                const Piece& p = ps[k];
+                put(key, p.start), put(key, p.length);
+                put(key, static_cast<char>(p.full | p.sill << 1 | p.quoin << 2 | p.head << 3 |
+                                           p.king << 4 | here[rr][k] << 5));
+                for (const Rect& r : {layout.drawn(row, static_cast<int>(k)),
+                                      layout.claim(row, static_cast<int>(k))})
+                    put(key, r.x0), put(key, r.y0), put(key, r.x1), put(key, r.y1);
+            }
+            for (auto [j, room] : near) put(key, j), put(key, room);
+            if (auto it = memo->data->ways.find(key); it != memo->data->ways.end()) {
+                ++memo->data->hits;
+                return it->second;
+            }
+        }
         std::vector<Way> out(1);
         // How many pieces from the jamb end may be laid again.
         std::size_t free = 0;
@@ -242,11 +303,14 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         out[0].cost =
             1000000 * shaved_run + 10000 * unforced_now + 1000 * odd_run + 100 * small_now;
         if (only_now) return out;
-        std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
-        for (std::size_t nb : {rr + 1, rr - 1})
-            if (nb < layout.rows.size() && !chain[nb])
-                for (auto [j, room] : joints(nb))
-                    if (std::abs(j - xj) < reach) near.push_back({side * j, room});
+        auto clear_near = [&](double s, double room_extra) {
+            const double most = quarter + margin + room_extra + slack;
+            auto it = std::lower_bound(near.begin(), near.end(), std::make_pair(s - most, -1.0));
+            for (; it != near.end() && it->first <= s + most; ++it)
+                if (std::abs(s - it->first) < quarter + it->second + room_extra + slack - eps)
+                    return false;
+            return true;
+        };
         for (std::size_t zone = 1; zone <= free; ++zone) {
             double j0 = 0, c0 = 0;  // in s
             double pe = 0;          // in s: the edge of the piece before the zone, if any
@@ -328,20 +392,14 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
                         if (open0) {
                             const double j = (pe + j0 + h + plan.extra) / 2;
                             w.joints.push_back(side * j);
-                            for (auto [k, room] : near)
-                                clear &= stack || std::abs(j - k) >=
-                                                      quarter + room + exf * std::abs(plan.extra) +
-                                                          slack - eps;
+                            clear = stack || clear_near(j, exf * std::abs(plan.extra));
                         }
-                        for (std::size_t i = t; i-- > 1;) {
+                        for (std::size_t i = t; clear && i-- > 1;) {
                             const double pw =
                                 static_cast<int>(i) == plan.cut ? plan.cut_length : ks[i] * q - m;
                             s += (i + 1 == t ? h : h + plan.extra / 2) + pw + h + plan.extra / 2;
                             w.joints.push_back(side * s);
-                            if (stack) continue;
-                            for (auto [j, room] : near)
-                                clear &= std::abs(s - j) >=
-                                         quarter + room + exf * std::abs(plan.extra) + slack - eps;
+                            if (!stack) clear = clear_near(s, exf * std::abs(plan.extra));
                         }
                         if (!clear) continue;
                         const bool odd_cut = cut >= 0 && kind(plan.cut_length, 4) == 1;
@@ -353,11 +411,18 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
                             off_bond += std::find(bond_lengths.begin(), bond_lengths.end(),
                                                   ks[i]) == bond_lengths.end();
                         }
-                        // No more odd pieces, nor more the geometry does not force.
+                        // No more odd pieces, nor more the geometry does not force; but a
+                        // shaved brick may give way to a clear cut the geometry does not
+                        // force (more joints could take the difference up, but none clears
+                        // the courses over and under it: the three-storey front's segmental
+                        // window, a header 0.9 cm short in every other course). Not at a
+                        // quoin: there the trade left the ashlar front an odd piece more.
                         const long odd_then = odd_run - odd + (odd_cut ? 1 : 0);
                         const long unforced_then =
                             std::max(0L, odd_then - (forced(n - zone + t - 1) ? 1 : 0));
-                        if (unforced_then > unforced_now || odd_then > odd_run) continue;
+                        const bool trade = shaved > 0 && !quoin;
+                        if ((unforced_then > unforced_now && !trade) || odd_then > odd_run)
+                            continue;
                         // Laid again only where that is better, here or in the courses over
                         // and under it (a pier's courses are chosen together).
                         auto width = [&](std::size_t i) {
@@ -399,12 +464,19 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
                     k.joints.size() != w.joints.size())
                     continue;
                 bool same = true;
-                for (std::size_t i = 0; i < w.joints.size(); ++i)
-                    same &= std::abs(k.joints[i] - w.joints[i]) <= 0.1 * m;
-                seen |= same;
+                for (std::size_t i = 0; same && i < w.joints.size(); ++i)
+                    same = std::abs(k.joints[i] - w.joints[i]) <= 0.1 * m;
+                if (same) {
+                    seen = true;
+                    break;
+                }
             }
             if (!seen) kept.push_back(std::move(w));
             if (kept.size() > kMostWays) break;
+        }
+        if (memo && !only_now && memo->data->count + kept.size() <= kMemoWays) {
+            memo->data->count += kept.size();
+            memo->data->ways.emplace(std::move(key), kept);
         }
         return kept;
     };
@@ -642,12 +714,13 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
 
 }  // namespace
 
-void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout) {
-    fit(facade, face, options, layout, false);
+void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout,
+                  RunEndsMemo* memo) {
+    fit(facade, face, options, layout, memo, false);
 }
 
 void fit_arrises(const Facade& facade, int face, const Options& options, BrickLayout& layout) {
-    fit(facade, face, options, layout, true);
+    fit(facade, face, options, layout, nullptr, true);
 }
 
 }  // namespace acanthus::cells::detail

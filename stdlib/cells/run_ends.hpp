@@ -1,6 +1,8 @@
 // The ends of a course's runs at jambs laid as a mason lays them: no brick shaved to fit.
 #pragma once
 
+#include <memory>
+
 #include "brick_layout.hpp"
 
 namespace acanthus::cells::detail {
@@ -18,7 +20,24 @@ namespace acanthus::cells::detail {
 // one jamb one above the other are decided together: the cheapest ways over the column (a shaved
 // brick left costs most) that bring no head joint within a quarter brick of one in the course below
 // or above, as each is laid in that choice.
-void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout);
+// The ways found for a run's end, kept by all they were found from: a face laid twice (its
+// window-bottom rows centred, then two units past each jamb) finds the same ways again in the
+// columns the rows do not reach. One per face and its options; `fit_run_ends` without one finds
+// them all afresh, with the same result.
+class RunEndsMemo {
+  public:
+    RunEndsMemo();
+    ~RunEndsMemo();
+    RunEndsMemo(const RunEndsMemo&) = delete;
+    RunEndsMemo& operator=(const RunEndsMemo&) = delete;
+    std::size_t kept() const;  // run ends whose ways are kept
+    std::size_t hits() const;  // run ends whose ways were taken from it
+    struct Data;
+    std::unique_ptr<Data> data;
+};
+
+void fit_run_ends(const Facade& facade, int face, const Options& options, BrickLayout& layout,
+                  RunEndsMemo* memo = nullptr);
 
 // The same ways laid again where a piece narrower than a header stands at an arris (the run's
 // end at a jamb, or at its other end where that is a jamb too): a mason keeps queen closers

@@ -9,6 +9,7 @@
 #include <acanthus/stdlib/cells/head_joints.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <ostream>
 #include <set>
@@ -38,6 +39,7 @@ struct MasonReport {
     long whole_bricks = 0;            // stretchers and headers within a third of the tolerance
     long shaved_bricks = 0;           // within 12% of one but not whole: cuts no mason makes
     std::vector<std::string> shaved;  // each: its generator, size and place
+    unsigned long long hash = 0;      // of every cell's corners: two builds' walls compared
     double length_deviation = 0;      // largest |length - nominal| of a whole or shaved brick
     double height_deviation = 0;      // largest |height - nominal| of a whole brick
     long courses = 0;
@@ -215,6 +217,11 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
     // Pieces, whole units, and the head joints between neighbours in a course.
     std::vector<double> bottoms;      // of bricks of whole height: the course lines
     std::map<long long, double> cut;  // pieces of cut height: their width by bottom line
+    for (const Cell& c : cells)
+        for (const Point& p : c.polygon)
+            for (double v : {p.x, p.y})
+                r.hash =
+                    r.hash * 1000003ULL ^ static_cast<unsigned long long>(std::llround(v * 1e6));
     for (const Cell& c : cells) {
         double a = acanthus::cells::detail::area_of(c.polygon) / face;
         r.smallest_piece = std::min(r.smallest_piece, a);
@@ -850,28 +857,32 @@ inline std::map<std::string, acanthus::cells::Node> mason_trees() {
 }
 
 inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
-    return out << "straight " << r.straight_joints << "/" << r.head_joints << ", whole "
-               << r.whole_bricks << " shaved " << r.shaved_bricks << " dev L " << r.length_deviation
-               << " H " << r.height_deviation << ", courses " << r.courses << " off-gauge "
-               << r.courses_off_gauge << " (max " << r.gauge_deviation << ") cut " << r.cut_courses
-               << ", smallest " << r.smallest_piece << " slivers " << r.slivers << " narrow "
-               << r.narrow_pieces << ", voussoirs clipped " << r.voussoirs_clipped << "/"
-               << r.voussoirs << ", crowns open " << r.crowns_open << "/" << r.crowns
-               << ", headless " << r.openings_without_head << "/" << r.openings << ", stones "
-               << r.stones << " four-way " << r.four_way << " on end " << r.stones_on_end
-               << " piers " << r.pier_stones << " unit-square pairs " << r.unit_square_pairs
-               << " runs " << r.unit_square_runs << ", king closers " << r.king_closers
-               << " misplaced " << r.king_closers_misplaced << ", odd pieces " << r.odd_pieces
-               << " (not forced " << r.unforced_odd << ", forced runs " << r.forced_runs << ")"
-               << ", head joints off " << r.joints_off << " (max " << r.joint_deviation << ")"
-               << ", relieving arches " << r.relieving_arches << " (voussoirs "
-               << r.relieving_voussoirs << ", clipped " << r.relieving_clipped << ", even "
-               << r.relieving_even << ", open " << r.relieving_open << ", skewbacks wrong "
-               << r.relieving_skewbacks << "), soldiers " << r.soldiers << " off " << r.soldiers_off
-               << " (max " << r.soldier_deviation << "), sills " << r.sills << " off centre "
-               << r.sills_off_centre << " (max " << r.sill_offset << "), arris pieces "
-               << r.arris_pieces << " small " << r.arris_small << " (forced "
-               << r.arris_small_forced << "), off bond " << r.off_bond;
+    out << "straight " << r.straight_joints << "/" << r.head_joints << ", whole " << r.whole_bricks
+        << " shaved " << r.shaved_bricks << " dev L " << r.length_deviation << " H "
+        << r.height_deviation << ", courses " << r.courses << " off-gauge " << r.courses_off_gauge
+        << " (max " << r.gauge_deviation << ") cut " << r.cut_courses << ", smallest "
+        << r.smallest_piece << " slivers " << r.slivers << " narrow " << r.narrow_pieces
+        << ", voussoirs clipped " << r.voussoirs_clipped << "/" << r.voussoirs << ", crowns open "
+        << r.crowns_open << "/" << r.crowns << ", headless " << r.openings_without_head << "/"
+        << r.openings << ", stones " << r.stones << " four-way " << r.four_way << " on end "
+        << r.stones_on_end << " piers " << r.pier_stones << " unit-square pairs "
+        << r.unit_square_pairs << " runs " << r.unit_square_runs << ", king closers "
+        << r.king_closers << " misplaced " << r.king_closers_misplaced << ", odd pieces "
+        << r.odd_pieces << " (not forced " << r.unforced_odd << ", forced runs " << r.forced_runs
+        << ")"
+        << ", head joints off " << r.joints_off << " (max " << r.joint_deviation << ")"
+        << ", relieving arches " << r.relieving_arches << " (voussoirs " << r.relieving_voussoirs
+        << ", clipped " << r.relieving_clipped << ", even " << r.relieving_even << ", open "
+        << r.relieving_open << ", skewbacks wrong " << r.relieving_skewbacks << "), soldiers "
+        << r.soldiers << " off " << r.soldiers_off << " (max " << r.soldier_deviation << "), sills "
+        << r.sills << " off centre " << r.sills_off_centre << " (max " << r.sill_offset
+        << "), arris pieces " << r.arris_pieces << " small " << r.arris_small << " (forced "
+        << r.arris_small_forced << "), off bond " << r.off_bond;
+    // Asked for by odd_sweep.py: the cells' hash, each shaved brick.
+    if (std::getenv("MASON_HASH")) out << " hash " << r.hash;
+    if (std::getenv("MASON_SHAVED"))
+        for (const std::string& s : r.shaved) out << " | " << s;
+    return out;
 }
 
 }  // namespace cells_test

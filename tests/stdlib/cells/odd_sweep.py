@@ -3,11 +3,12 @@
 
 Runs the cells test binary's per-wall checks (CellsMason.ExampleFacades/UnseenFacades,
 CellsUnseen.BrickWalls/NewFacadesForTheJambCheck, CellsFresh.BrickWalls), reads the report line each prints per wall and
-sums odd pieces, the ones the geometry does not force, straight joints, narrow pieces, shaved bricks and
-small pieces at an arris, by
-bond; with --walls, one line per wall (to diff two builds).
+sums odd pieces, the ones the geometry does not force, straight joints, narrow pieces, shaved bricks,
+small pieces at an arris and pieces off the bond, by bond; with --walls, one line per wall (to diff
+two builds), ending in a hash of the wall's cells when MASON_HASH=1 is set (the same hash: the same
+cells). MASON_SHAVED=1 lists each shaved brick in the binaries' output.
 
-    tests/stdlib/cells/odd_sweep.py BUILD_DIR [--walls]
+    MASON_HASH=1 tests/stdlib/cells/odd_sweep.py BUILD_DIR [--walls]
 """
 import collections
 import re
@@ -48,16 +49,20 @@ def main():
             "off_bond": field(rest, r"off bond (\d+)"),
             "arris": field(rest, r"arris pieces \d+ small (\d+)") -
                      field(rest, r"arris pieces \d+ small \d+ \(forced (\d+)"),
+            "hash": (re.search(r" hash (\d+)", rest) or re.search("()", "")).group(1),
         }
     by_bond = collections.defaultdict(lambda: collections.Counter())
     per_facade = collections.defaultdict(lambda: collections.Counter())
     for (name, bond, tree), w in sorted(walls.items()):
+        h = w.pop("hash")
         by_bond[bond].update(w)
-        for k, v in w.items():
+        w["hash"] = h
+        for k, v in ((k, v) for k, v in w.items() if k != "hash"):
             per_facade[name][k] = max(per_facade[name][k], v)
         if "--walls" in sys.argv:
             print(f"{name} {bond} {tree}: odd {w['odd']} unforced {w['unforced']} shaved {w['shaved']} "
-                  f"straight {w['straight']} narrow {w['narrow']} cut {w['cut']} arris {w['arris']} off bond {w['off_bond']}")
+                  f"straight {w['straight']} narrow {w['narrow']} cut {w['cut']} arris {w['arris']} "
+                  f"off bond {w['off_bond']} {w['hash']}")
     total = collections.Counter()
     for c in by_bond.values():
         total.update(c)

@@ -8,6 +8,7 @@
 
 #include "brick_layout.hpp"
 #include "cells_oracle.hpp"
+#include "run_ends.hpp"
 
 using namespace cells_test;
 
@@ -132,4 +133,47 @@ TEST(CellsBricks, Deterministic) {
     ASSERT_EQ(a.cells.size(), b.cells.size());
     for (std::size_t i = 0; i < a.cells.size(); ++i)
         EXPECT_EQ(a.cells[i].polygon, b.cells[i].polygon);
+}
+
+// The ways of run ends kept in a memo and taken from it lay what finding them afresh lays; a
+// course laid otherwise is not answered from the memo (its pieces are in the key).
+TEST(CellsBricks, RunEndsMemoLaysAsFoundAfresh) {
+    using namespace acanthus::cells::detail;
+    Facade f = row_house();
+    for (Bond b : {Bond::running, Bond::english, Bond::flemish, Bond::header}) {
+        SCOPED_TRACE(std::string(to_string(b)));
+        Options o;
+        o.bond = b;
+        const BrickLayout start = make_brick_layout(f, 0, o, true, false);
+        auto same = [](const BrickLayout& x, const BrickLayout& y) {
+            if (x.rows.size() != y.rows.size()) return false;
+            for (std::size_t r = 0; r < x.rows.size(); ++r) {
+                if (x.rows[r].size() != y.rows[r].size()) return false;
+                for (std::size_t k = 0; k < x.rows[r].size(); ++k) {
+                    const acanthus::Rect a = x.drawn(static_cast<int>(r), static_cast<int>(k)),
+                                         b = y.drawn(static_cast<int>(r), static_cast<int>(k));
+                    if (a.x0 != b.x0 || a.x1 != b.x1 || a.y0 != b.y0 || a.y1 != b.y1) return false;
+                }
+            }
+            return true;
+        };
+        // Every course moved a little: the memo filled from `start` answers none of its ends.
+        BrickLayout moved = start;
+        for (auto& row : moved.shift)
+            for (double& s : row) s += 0.25 * o.joint_tolerance;
+        RunEndsMemo memo;
+        BrickLayout warm = start;
+        fit_run_ends(f, 0, o, warm, &memo);
+        EXPECT_GT(memo.kept(), 0u);
+        for (const BrickLayout* from : {&start, static_cast<const BrickLayout*>(&moved)}) {
+            BrickLayout fresh = *from, memoised = *from;
+            fit_run_ends(f, 0, o, fresh);
+            const std::size_t hits = memo.hits();
+            fit_run_ends(f, 0, o, memoised, &memo);
+            EXPECT_TRUE(same(fresh, memoised));
+            if (from == &start) {
+                EXPECT_GT(memo.hits(), hits);
+            }
+        }
+    }
 }

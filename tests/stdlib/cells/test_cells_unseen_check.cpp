@@ -1111,11 +1111,12 @@ TEST(CellsFresh, BrickWalls) {
         long odd, shaved, unforced;
     };
     // Shaved caps before a pier's far quoin could be the piece cut and the run ends took up
-    // millimetres in joints a quarter brick apart: 7, 10, 4, 2, 9, 7, 0, 13.
+    // millimetres in joints a quarter brick apart: 7, 10, 4, 2, 9, 7, 0, 13. The three-storey
+    // front's 9 were 4 before a shaved brick could give way to a cut the geometry does not force.
     const std::map<std::string, Caps> caps{
         {"gable-pointed-20", {70, 0, 28}},     {"gable-pointed-door-end", {72, 3, 39}},
         {"segmental-doors-ends", {72, 4, 28}}, {"wide-2600", {60, 2, 21}},
-        {"three-storeys", {187, 9, 66}},       {"ashlar-oculus", {68, 7, 21}},
+        {"three-storeys", {187, 4, 66}},       {"ashlar-oculus", {68, 7, 21}},
         {"narrow-80-door", {63, 0, 2}},        {"odd-sizes", {75, 1, 22}}};
     Options o = centimetres();
     long straight = 0, compared = 0, walls = 0, shaved = 0;
@@ -1160,8 +1161,9 @@ TEST(CellsFresh, BrickWalls) {
     // their joints too, and up to four pieces from the jamb laid again where a course or one
     // beside it has a shaved brick: 246. A pier's far quoin may be the piece cut (a pier too
     // narrow for two whole quoins): 141. Ways whose joints stand a twentieth of a joint past a
-    // quarter brick from those over and under them (not half the tolerance): 128.
-    EXPECT_LE(shaved, 128);
+    // quarter brick from those over and under them (not half the tolerance): 128. A shaved brick
+    // traded for a cut the geometry does not force where no way keeps both whole: 114.
+    EXPECT_LE(shaved, 114);
 }
 
 // A pier 38.9 cm wide (6.92 quarter bricks) in header bond beside the first floor's windows of
@@ -1208,6 +1210,37 @@ TEST(CellsFresh, PierCoursesChosenTogether) {
         EXPECT_LE(m.shaved_bricks, 1) << tree_name << list(m.shaved);
         EXPECT_EQ(m.narrow_pieces, 0) << tree_name;
     }
+}
+
+// Beside the right jamb of the three-storey front's segmental window in running bond, every
+// other course ended in a header 0.9 cm short (9.36 cm): whole, the difference wants four joints
+// of 2.2 mm, which bring a joint within a quarter brick of the courses over and under it; a
+// clear cut (14.8 cm) with a queen closer at the jamb and a brick clears them, but the geometry
+// does not force that odd piece (more joints could take the difference up), so no way was
+// laid. A shaved brick now gives way to such a cut away from a quoin (fit_run_ends).
+TEST(CellsFresh, ShavedBrickGivesWayToAClearCut) {
+    const Facade f = Facade::from_svg_file(fresh("three-storeys"));
+    Options o = centimetres();
+    o.bond = Bond::running;
+    for (const char* tree_name : {"bricks", "rowlock"}) {
+        const Texture t = texture(f, mason_trees().at(tree_name), o, 1);
+        std::vector<Cell> column;  // bricks from the jamb 39 cm in, springing to sill
+        for (const Cell& c : t.cells) {
+            Rect b;
+            if (mason_detail::is_rect(c.polygon, b) && b.x0 >= 392.7 && b.x1 <= 432 &&
+                b.y0 >= 176 && b.y1 <= 284)
+                column.push_back(c);
+        }
+        EXPECT_GT(column.size(), 20u) << tree_name;
+        const MasonReport m = mason_check(f, column, kCm);
+        EXPECT_EQ(m.shaved_bricks, 0) << tree_name << list(m.shaved);
+        EXPECT_EQ(m.narrow_pieces, 0) << tree_name;
+        EXPECT_EQ(m.straight_joints, 0) << tree_name;
+    }
+    // The whole wall: fewer shaved, no more odd pieces than before (9 and 156).
+    const MasonReport all = mason_check(f, texture(f, mason_trees().at("bricks"), o, 1).cells, kCm);
+    EXPECT_LE(all.shaved_bricks, 2);
+    EXPECT_LE(all.odd_pieces, 156);
 }
 
 // The pier between the odd-sizes front's door and the wall's right end, 32.2 cm: too narrow
@@ -1373,9 +1406,10 @@ TEST(CellsFresh, RunEndsTakeUpTheDifferenceInJointsAndClosers) {
     EXPECT_EQ(walls, 8 * 5 * 3);
     std::cout << walls << " walls, shaved bricks " << shaved << ", odd pieces " << odd << "\n";
     // 78 before the pass was taken again until a round lays none more, 41 before a pier's far
-    // quoin could be cut and joints a quarter brick apart take up millimetres.
-    EXPECT_LE(shaved, 28);
-    EXPECT_LE(odd, 695);
+    // quoin could be cut and joints a quarter brick apart take up millimetres; 28 and 695 odd
+    // pieces before a shaved brick could give way to a cut the geometry does not force.
+    EXPECT_LE(shaved, 26);
+    EXPECT_LE(odd, 693);
 }
 
 namespace {
