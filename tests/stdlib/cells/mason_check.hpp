@@ -129,10 +129,6 @@ struct MasonReport {
     // two headers, a joint and the quarter brick a course must lap the one beside it).
     long arris_pieces = 0, arris_small = 0, arris_small_forced = 0;
     std::vector<Point> arris_small_at;  // the centres of the ones not forced
-    // Stretchers in a course of headers and headers in a course of stretchers, away from the
-    // run's ends: the bond broken.
-    long off_bond = 0;
-    std::vector<Point> off_bond_at;
 };
 
 namespace mason_detail {
@@ -762,14 +758,12 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
     // return). A piece is at one where nothing lies within a joint and the tolerance of its end.
     if (!s.stone) {
         std::map<long long, std::pair<Rect, std::vector<std::pair<double, double>>>> bands;
-        std::map<long long, std::vector<Rect>> courses;  // the rectangular pieces of each
         for (const Cell& c : cells) {
             Rect b;
             if (!coursed(c) || !is_rect(c.polygon, b) || c.generator == "lintel") continue;
             if (std::abs(b.height() - s.height) > s.tolerance + 1e-9) continue;
             auto& band = bands[std::llround(b.y0 / (0.05 * s.mortar))];
             band.first = b;
-            courses[std::llround(b.y0 / (0.05 * s.mortar))].push_back(b);
         }
         for (const Cell& c : cells) {
             const Rect e = extent(c.polygon);
@@ -807,31 +801,6 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
                 ++r.arris_small_forced;
             else
                 r.arris_small_at.push_back(b.center());
-        }
-        // The bond: in a course of headers (header bond, English bond's header courses) no
-        // stretcher, in a course of stretchers no header, but within two pieces of a run's end
-        // (quoins, bats and closers). Courses of both (Flemish) are not read.
-        for (auto& [key, v] : courses) {
-            std::sort(v.begin(), v.end(), [](Rect a, Rect b) { return a.x0 < b.x0; });
-            auto is = [&](Rect b, double nominal) {
-                return std::abs(b.width() - nominal) <= s.tolerance + 1e-9;
-            };
-            long stretchers = 0, headers = 0;
-            for (Rect b : v) stretchers += is(b, s.length), headers += is(b, header);
-            const bool header_course = headers >= 3 * std::max(1L, stretchers);
-            const bool stretcher_course = stretchers >= 3 * std::max(1L, headers);
-            if (!header_course && !stretcher_course) continue;
-            for (std::size_t a = 0; a < v.size();) {
-                std::size_t b = a + 1;
-                while (b < v.size() && v[b].x0 - v[b - 1].x1 <= gap) ++b;
-                for (std::size_t i = a + 2; i + 2 < b; ++i)
-                    if ((header_course && is(v[i], s.length)) ||
-                        (stretcher_course && is(v[i], header))) {
-                        ++r.off_bond;
-                        r.off_bond_at.push_back(v[i].center());
-                    }
-                a = b;
-            }
         }
     }
     r.openings = static_cast<long>(seen.size());
@@ -877,7 +846,7 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
         << r.soldiers << " off " << r.soldiers_off << " (max " << r.soldier_deviation << "), sills "
         << r.sills << " off centre " << r.sills_off_centre << " (max " << r.sill_offset
         << "), arris pieces " << r.arris_pieces << " small " << r.arris_small << " (forced "
-        << r.arris_small_forced << "), off bond " << r.off_bond;
+        << r.arris_small_forced << ")";
     // Asked for by odd_sweep.py: the cells' hash, each shaved brick.
     if (std::getenv("MASON_HASH")) out << " hash " << r.hash;
     if (std::getenv("MASON_SHAVED"))
