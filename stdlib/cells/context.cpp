@@ -156,8 +156,10 @@ void keep_beds(std::vector<Point>& d, Rect claimed, Rect drawn, double h) {
 }
 
 // A rectangle (its outline may hold points along its sides) of whole units whose joints
-// opened, up to the tolerance, is drawn at the brick's nominal length: an end that is its
-// claim's where the layout lays it (`drawn`: flush at a jamb, its joints shared), else centred.
+// opened or closed, up to the tolerance, is drawn at the brick's nominal length: an end that is
+// its claim's where the layout lays it (`drawn`: flush at a jamb, its joints shared), else
+// centred. (Closed: units set out between jambs a little short, the brick's corner cut by a
+// gable's rake; drawn short, it read as a brick shaved 1-3 mm.)
 void nominal_length(std::vector<Point>& d, const Options& o, Rect claimed, Rect drawn) {
     if (d.empty()) return;
     Rect b{d[0].x, d[0].y, d[0].x, d[0].y};
@@ -171,13 +173,17 @@ void nominal_length(std::vector<Point>& d, const Options& o, Rect claimed, Rect 
     if (std::abs(std::abs(detail::area_of(d)) - b.width() * b.height()) > eps * b.height()) return;
     const double q = (o.brick_length + o.mortar) / 4, m = std::round((b.width() + o.mortar) / q);
     const double over = b.width() + o.mortar - m * q;
-    if (m < 1 || over <= eps || over > m * o.joint_tolerance / 4 + eps) return;
+    if (m < 1 || std::abs(over) <= eps || std::abs(over) > m * o.joint_tolerance / 4 + eps)
+        return;
     const double w = m * q - o.mortar, h = o.mortar / 2;
     double x0 = (b.x0 + b.x1 - w) / 2;
     const double at = std::abs(b.x0 - (claimed.x0 + h)) <= eps   ? drawn.x0
                       : std::abs(b.x1 - (claimed.x1 - h)) <= eps ? drawn.x1 - w
                                                                  : x0;
     if (at >= b.x0 - h && at + w <= b.x1 + h) x0 = at;
+    // Its beds the course's, as keep_beds() sets them (a side's extra point can stop it).
+    if (std::abs(b.y0 - (claimed.y0 + h)) <= eps) b.y0 = drawn.y0;
+    if (std::abs(b.y1 - (claimed.y1 - h)) <= eps) b.y1 = drawn.y1;
     d = {{x0, b.y0}, {x0 + w, b.y0}, {x0 + w, b.y1}, {x0, b.y1}};
 }
 
