@@ -164,6 +164,36 @@ void edt_columns(int w, int h, int c0, int c1, const ByteSites& is_site, std::in
     }
 }
 
+// The lower envelope of the parabolas (x - q)^2 + g(q)^2 over q in [q0, q1) with g(q) finite:
+// piece k is q = v[k] (f[k] its value at 0), starting at num[k] / den[k]. Returns the last
+// piece's index, -1 when there is none.
+inline int lower_envelope(const std::int32_t* g, int q0, int q1, int* v, std::int64_t* f,
+                          std::int64_t* num, std::int64_t* den) {
+    int k = -1;
+    for (int q = q0; q < q1; ++q) {
+        if (g[q] == kInfinite) continue;
+        const std::int64_t fq =
+            static_cast<std::int64_t>(g[q]) * g[q] + static_cast<std::int64_t>(q) * q;
+        std::int64_t sn = 0, sd = 1;
+        while (k >= 0) {
+            sn = fq - f[k];
+            sd = 2 * static_cast<std::int64_t>(q - v[k]);
+            // Drop piece k when the new parabola already wins where piece k starts.
+            if (k > 0 && sn * den[k] <= num[k] * sd) {
+                --k;
+                continue;
+            }
+            break;
+        }
+        ++k;
+        v[k] = q;
+        f[k] = fq;
+        num[k] = sn;
+        den[k] = sd;
+    }
+    return k;
+}
+
 // Phase 2, rows [j0, j1): per row, the lower envelope of parabolas (x - q)^2 + g(q)^2 over
 // columns q that have a site, copied one row at a time before the row is overwritten. The
 // envelope piece k starts at num[k] / den[k].
@@ -204,28 +234,7 @@ void edt_rows(int w, int j0, int j1, std::int32_t* d2, std::int32_t* site, Spans
                 q1 = std::min(w, xb + most);
             }
         }
-        int k = -1;
-        for (int q = q0; q < q1; ++q) {
-            if (gj[q] == kInfinite) continue;
-            const std::int64_t fq =
-                static_cast<std::int64_t>(gj[q]) * gj[q] + static_cast<std::int64_t>(q) * q;
-            std::int64_t sn = 0, sd = 1;
-            while (k >= 0) {
-                sn = fq - f[k];
-                sd = 2 * static_cast<std::int64_t>(q - v[k]);
-                // Drop piece k when the new parabola already wins where piece k starts.
-                if (k > 0 && sn * den[k] <= num[k] * sd) {
-                    --k;
-                    continue;
-                }
-                break;
-            }
-            ++k;
-            v[k] = q;
-            f[k] = fq;
-            num[k] = sn;
-            den[k] = sd;
-        }
+        int k = lower_envelope(gj, q0, q1, v, f, num, den);
         if (k < 0) {
             fill_values(d2 + base, static_cast<std::size_t>(w), kInfinite);
             if (site) std::fill(site + base, site + base + w, -1);
@@ -388,27 +397,7 @@ void edt_kept_by_columns(int w, int h, int c0, int c1, const ByteSites& is_site,
             q0 = std::max(0, ya - most);
             q1 = std::min(h, yb + most);
         }
-        int k = -1;
-        for (int q = q0; q < q1; ++q) {
-            if (g[q] == kInfinite) continue;
-            const std::int64_t fq =
-                static_cast<std::int64_t>(g[q]) * g[q] + static_cast<std::int64_t>(q) * q;
-            std::int64_t sn = 0, sd = 1;
-            while (k >= 0) {
-                sn = fq - f[k];
-                sd = 2 * static_cast<std::int64_t>(q - v[k]);
-                if (k > 0 && sn * den[k] <= num[k] * sd) {
-                    --k;
-                    continue;
-                }
-                break;
-            }
-            ++k;
-            v[k] = q;
-            f[k] = fq;
-            num[k] = sn;
-            den[k] = sd;
-        }
+        int k = lower_envelope(g, q0, q1, v, f, num, den);
         if (k < 0) continue;
         const int top = k;
         k = 0;
