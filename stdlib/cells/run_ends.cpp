@@ -134,7 +134,7 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     // column can block a better one in the next). Less than a twentieth of a joint left a
     // straight joint once the bricks were laid.
     double slack = tol / 2, exf = 0.5;
-    // What a small piece at an arris costs, where laid for that.
+    // What a small piece at an arris in a way costs: only where laid for that (fit_arrises).
     const long arris = arrises ? 100 : 0;
     const double margin = std::min(m / 4, tol) / 2;
     // Head joints of a row (centres) as laid now, each with the room it needs (as relay_runs).
@@ -299,7 +299,10 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         const long small_far = known && n > 1 ? small(widths[n - 1]) : 0;
         const long small_now = small(widths[0]) + small_far;
         // As it is: a shaved brick costs more than any odd piece, an odd piece more than a
-        // small piece at an arris.
+        // small piece at an arris. The ways below are charged for theirs only in fit_arrises:
+        // laying run ends for whole bricks, one with a small piece at an arris is laid again by
+        // the cheapest way with no more shaved, odd or unforced pieces (charging the ways too
+        // there left 1,200 more such pieces over the mason's sweep).
         out[0].cost =
             1000000 * shaved_run + 10000 * unforced_now + 1000 * odd_run + 100 * small_now;
         if (only_now) return out;
