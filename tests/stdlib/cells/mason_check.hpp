@@ -36,12 +36,15 @@ struct MasonReport {
     long head_joints = 0;      // head joints with a joint in the course above to compare
     long straight_joints = 0;  // of those, closer than a quarter brick to one above
     std::vector<Point> straight_at;
-    long whole_bricks = 0;            // stretchers and headers within a third of the tolerance
-    long shaved_bricks = 0;           // within 12% of one but not whole: cuts no mason makes
-    std::vector<std::string> shaved;  // each: its generator, size and place
-    unsigned long long hash = 0;      // of every cell's corners: two builds' walls compared
-    double length_deviation = 0;      // largest |length - nominal| of a whole or shaved brick
-    double height_deviation = 0;      // largest |height - nominal| of a whole brick
+    long whole_bricks = 0;   // stretchers and headers within a third of the tolerance
+    long shaved_bricks = 0;  // within 12% of one but not whole: cuts no mason makes
+    // Of those, the ones a run's room forces (room_forces_shaved): at most one a run.
+    long shaved_forced = 0;
+    std::vector<std::string> forcing_rooms;  // each: its width and place
+    std::vector<std::string> shaved;         // each: its generator, size and place
+    unsigned long long hash = 0;             // of every cell's corners: two builds' walls compared
+    double length_deviation = 0;  // largest |length - nominal| of a whole or shaved brick
+    double height_deviation = 0;  // largest |height - nominal| of a whole brick
     long courses = 0;
     long courses_off_gauge = 0;  // pitches between courses of whole height beyond the tolerance
     long cut_courses = 0;        // courses of cut height along half the wall's width or more
@@ -200,6 +203,69 @@ inline bool fit_circle(const std::vector<Point>& pts, Point& center, double& rad
     return true;
 }
 
+// Whether a room `width` wide in a course (reveal to reveal: half a joint at each end) forces a
+// shaved brick: every way to fill it, and the same room in the course over it, with pieces no
+// narrower than a queen closer, head joints within the tolerance and no straight joint between
+// the two courses, has a piece within 12% of a brick or header that is not one. Ways of up to
+// three pieces a course (a room wider than two bricks and a header is never taken as forcing);
+// joints are compared on a grid of a sixteenth of a quarter brick, and a pair of ways counts as
+// clear when its joints are a quarter brick less twice the tolerance and that grid apart, so a
+// room is called forcing only when no way nearly clears.
+inline bool room_forces_shaved(double width, const MasonSpec& s) {
+    const double L = s.length, m = s.mortar, tol = s.tolerance;
+    const double header = (L - m) / 2, closer = (L + m) / 4 - m - tol;
+    if (width > 2 * L + header + 4 * m) return false;
+    auto clean = [&](double w) {  // a piece a mason cuts or lays whole, not a shaved one
+        if (w < closer - 1e-9 || w > L + tol / 3 + 1e-9) return false;
+        for (double n : {L, header})
+            if (std::abs(w - n) <= 0.12 * n && std::abs(w - n) > tol / 3) return false;
+        return true;
+    };
+    // Whether some piece in [lo, hi] is clean: the interval's ends and the clean set's edges.
+    auto clean_in = [&](double lo, double hi) {
+        if (hi < lo) return false;
+        std::vector<double> at{lo, hi};
+        for (double n : {L, header})
+            for (double e : {0.88 * n, n - tol / 3, n + tol / 3, 1.12 * n}) at.push_back(e);
+        at.push_back(closer), at.push_back(L + tol / 3);
+        for (double x : at)
+            for (double e : {-1e-7, 0.0, 1e-7})
+                if (x + e >= lo && x + e <= hi && clean(x + e)) return true;
+        return false;
+    };
+    const double U = width - m;        // the pieces and the head joints between them
+    if (clean_in(U, U)) return false;  // one piece a course: no head joint to be straight
+    const double step = tol / 6, g = (L + m) / 64, clear = L / 4 - 2 * tol - g;
+    std::vector<double> ones;                     // joints of the ways of two pieces
+    std::vector<std::pair<double, double>> twos;  // of three
+    for (double p1 = closer; p1 <= L + tol / 3; p1 += step) {
+        if (!clean(p1)) continue;
+        const double r2 = U - m - p1;
+        if (clean_in(r2 - tol, r2 + tol)) ones.push_back(std::round((p1 + m) / g));
+        for (double p2 = closer; p2 <= L + tol / 3; p2 += step) {
+            if (!clean(p2)) continue;
+            const double r3 = U - 2 * m - p1 - p2;
+            if (clean_in(r3 - 2 * tol, r3 + 2 * tol))
+                twos.push_back({std::round((p1 + m) / g), std::round((p1 + p2 + 2 * m) / g)});
+        }
+    }
+    std::sort(ones.begin(), ones.end());
+    ones.erase(std::unique(ones.begin(), ones.end()), ones.end());
+    std::sort(twos.begin(), twos.end());
+    twos.erase(std::unique(twos.begin(), twos.end()), twos.end());
+    auto apart = [&](double a, double b) { return std::abs(a - b) * g >= clear; };
+    if (!ones.empty() && apart(ones.front(), ones.back())) return false;
+    for (const auto& t : twos) {
+        for (double a : ones)
+            if (apart(a, t.first) && apart(a, t.second)) return false;
+        for (const auto& u : twos)
+            if (apart(t.first, u.first) && apart(t.first, u.second) && apart(t.second, u.first) &&
+                apart(t.second, u.second))
+                return false;
+    }
+    return true;
+}
+
 }  // namespace mason_detail
 
 inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& cells,
@@ -209,6 +275,19 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
     const double face = s.length * s.height, gauge = s.height + s.mortar;
     const double header = (s.length - s.mortar) / 2;
     const double closer = (s.length + s.mortar) / 4 - s.mortar - s.tolerance;
+    // The brick or header a piece of whole height is within 12% of (0: none), and whether it is
+    // shaved: that far off it, but more than a third of the tolerance.
+    auto nominal_of = [&](const Rect& b) {
+        const double w = b.width();
+        return std::abs(w - s.length) <= 0.12 * s.length ? s.length
+               : std::abs(w - header) <= 0.12 * header   ? header
+                                                         : 0.0;
+    };
+    auto is_shaved = [&](const Rect& b) {
+        const double n = nominal_of(b);
+        return n > 0 && std::abs(b.height() - s.height) <= s.tolerance + 1e-9 &&
+               std::abs(b.width() - n) > s.tolerance / 3;
+    };
 
     // Pieces, whole units, and the head joints between neighbours in a course.
     std::vector<double> bottoms;      // of bricks of whole height: the course lines
@@ -246,13 +325,11 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
             cut[std::llround(b.y1 / (0.05 * s.mortar + 1e-9))] += w + s.mortar;
         if (std::abs(h - s.height) > 0.2 * s.height) continue;  // a cut course
         if (w < closer) ++r.narrow_pieces, r.narrow_at.push_back(b.center());
-        const double nominal = std::abs(w - s.length) <= 0.12 * s.length ? s.length
-                               : std::abs(w - header) <= 0.12 * header   ? header
-                                                                         : 0;
+        const double nominal = nominal_of(b);
         if (nominal == 0) continue;                                 // a bat or closer
         if (std::abs(h - s.height) > s.tolerance + 1e-9) continue;  // cut in height
         r.length_deviation = std::max(r.length_deviation, std::abs(w - nominal));
-        if (std::abs(w - nominal) > s.tolerance / 3) {
+        if (is_shaved(b)) {
             ++r.shaved_bricks;
             r.shaved.push_back(c.generator + " " + std::to_string(w) + " x " + std::to_string(h) +
                                " at (" + std::to_string(b.x0) + ", " + std::to_string(b.y0) + ")");
@@ -266,12 +343,14 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
     if (!s.stone) {
         const double quarter = (s.length + s.mortar) / 4;
         std::vector<Rect> pieces;
-        std::vector<char> odd;  // per piece, before sorting
+        std::vector<char> odd;     // per piece, before sorting
+        std::vector<char> shaved;  // as counted above
         for (const Cell& c : cells) {
             Rect b;
             if (!coursed(c) || c.generator == "lintel" || !is_rect(c.polygon, b)) continue;
             if (b.height() > 1.2 * s.height) continue;  // on end or a soldier: not a coursed unit
             pieces.push_back(b);
+            shaved.push_back(is_shaved(b));
             const double k = std::round((b.width() + s.mortar) / quarter);
             odd.push_back(k < 1 || k > 12 ||
                           std::abs(b.width() - (k * quarter - s.mortar)) > s.tolerance / 3 + 1e-9);
@@ -297,10 +376,16 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
                    pieces[order[j]].x0 - pieces[order[j - 1]].x1 > 0 &&
                    pieces[order[j]].x0 - pieces[order[j - 1]].x1 <= 2 * s.mortar)
                 ++j;
-            long n_odd = 0;
-            for (std::size_t k = i; k < j; ++k) n_odd += odd[order[k]];
+            long n_odd = 0, n_shaved = 0;
+            for (std::size_t k = i; k < j; ++k)
+                n_odd += odd[order[k]], n_shaved += shaved[order[k]];
             const Rect &a = pieces[order[i]], &b = pieces[order[j - 1]];
             const double width = b.x1 - a.x0 + s.mortar;  // reveal to reveal
+            if (n_shaved > 0 && room_forces_shaved(width, s)) {
+                ++r.shaved_forced;
+                r.forcing_rooms.push_back(std::to_string(width) + " at (" + std::to_string(a.x0) +
+                                          ", " + std::to_string(a.y0) + ")");
+            }
             const double k = std::round(width / quarter);
             const double joints = static_cast<double>(j - i - 1);
             const bool forced =
@@ -827,18 +912,18 @@ inline std::map<std::string, acanthus::cells::Node> mason_trees() {
 
 inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
     out << "straight " << r.straight_joints << "/" << r.head_joints << ", whole " << r.whole_bricks
-        << " shaved " << r.shaved_bricks << " dev L " << r.length_deviation << " H "
-        << r.height_deviation << ", courses " << r.courses << " off-gauge " << r.courses_off_gauge
-        << " (max " << r.gauge_deviation << ") cut " << r.cut_courses << ", smallest "
-        << r.smallest_piece << " slivers " << r.slivers << " narrow " << r.narrow_pieces
-        << ", voussoirs clipped " << r.voussoirs_clipped << "/" << r.voussoirs << ", crowns open "
-        << r.crowns_open << "/" << r.crowns << ", headless " << r.openings_without_head << "/"
-        << r.openings << ", stones " << r.stones << " four-way " << r.four_way << " on end "
-        << r.stones_on_end << " piers " << r.pier_stones << " unit-square pairs "
-        << r.unit_square_pairs << " runs " << r.unit_square_runs << ", king closers "
-        << r.king_closers << " misplaced " << r.king_closers_misplaced << ", odd pieces "
-        << r.odd_pieces << " (not forced " << r.unforced_odd << ", forced runs " << r.forced_runs
-        << ")"
+        << " shaved " << r.shaved_bricks << " (forced " << r.shaved_forced << ") dev L "
+        << r.length_deviation << " H " << r.height_deviation << ", courses " << r.courses
+        << " off-gauge " << r.courses_off_gauge << " (max " << r.gauge_deviation << ") cut "
+        << r.cut_courses << ", smallest " << r.smallest_piece << " slivers " << r.slivers
+        << " narrow " << r.narrow_pieces << ", voussoirs clipped " << r.voussoirs_clipped << "/"
+        << r.voussoirs << ", crowns open " << r.crowns_open << "/" << r.crowns << ", headless "
+        << r.openings_without_head << "/" << r.openings << ", stones " << r.stones << " four-way "
+        << r.four_way << " on end " << r.stones_on_end << " piers " << r.pier_stones
+        << " unit-square pairs " << r.unit_square_pairs << " runs " << r.unit_square_runs
+        << ", king closers " << r.king_closers << " misplaced " << r.king_closers_misplaced
+        << ", odd pieces " << r.odd_pieces << " (not forced " << r.unforced_odd << ", forced runs "
+        << r.forced_runs << ")"
         << ", head joints off " << r.joints_off << " (max " << r.joint_deviation << ")"
         << ", relieving arches " << r.relieving_arches << " (voussoirs " << r.relieving_voussoirs
         << ", clipped " << r.relieving_clipped << ", even " << r.relieving_even << ", open "
@@ -847,10 +932,12 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
         << r.sills << " off centre " << r.sills_off_centre << " (max " << r.sill_offset
         << "), arris pieces " << r.arris_pieces << " small " << r.arris_small << " (forced "
         << r.arris_small_forced << ")";
-    // Asked for by odd_sweep.py: the cells' hash, each shaved brick.
+    // Asked for by odd_sweep.py: the cells' hash, each shaved brick and forcing room.
     if (std::getenv("MASON_HASH")) out << " hash " << r.hash;
     if (std::getenv("MASON_SHAVED"))
         for (const std::string& s : r.shaved) out << " | " << s;
+    if (std::getenv("MASON_SHAVED"))
+        for (const std::string& s : r.forcing_rooms) out << " | room " << s;
     return out;
 }
 

@@ -3,7 +3,8 @@
 
 Runs the cells test binary's per-wall checks (CellsMason.ExampleFacades/UnseenFacades,
 CellsUnseen.BrickWalls/NewFacadesForTheJambCheck, CellsFresh.BrickWalls), reads the report line each prints per wall and
-sums odd pieces, the ones the geometry does not force, straight joints, narrow pieces, shaved bricks,
+sums odd pieces, the ones the geometry does not force, straight joints, narrow pieces, shaved bricks
+(and those a run's room forces),
 and small pieces at an arris, by bond; with --walls, one line per wall (to diff
 two builds), ending in a hash of the wall's cells when MASON_HASH=1 is set (the same hash: the same
 cells). MASON_SHAVED=1 lists each shaved brick in the binaries' output.
@@ -45,6 +46,7 @@ def main():
             "straight": field(rest, r"^straight (\d+)/"),
             "narrow": field(rest, r" narrow (\d+)"),
             "shaved": field(rest, r" shaved (\d+)"),
+            "shaved_forced": field(rest, r" shaved \d+ \(forced (\d+)\)"),
             "cut": field(rest, r" cut (\d+),"),
             "arris": field(rest, r"arris pieces \d+ small (\d+)") -
                      field(rest, r"arris pieces \d+ small \d+ \(forced (\d+)"),
@@ -60,6 +62,7 @@ def main():
             per_facade[name][k] = max(per_facade[name][k], v)
         if "--walls" in sys.argv:
             print(f"{name} {bond} {tree}: odd {w['odd']} unforced {w['unforced']} shaved {w['shaved']} "
+                  f"forced {w['shaved_forced']} "
                   f"straight {w['straight']} narrow {w['narrow']} cut {w['cut']} arris {w['arris']} "
                   f"{w['hash']}")
     total = collections.Counter()
@@ -68,7 +71,8 @@ def main():
     print(f"walls {len(walls)}: odd {total['odd']}, not forced {total['unforced']}, "
           f"straight (bonds but stack) "
           f"{sum(c['straight'] for b, c in by_bond.items() if b != 'stack')}, "
-          f"narrow {total['narrow']}, shaved {total['shaved']}, "
+          f"narrow {total['narrow']}, shaved {total['shaved']} "
+          f"(a room forces {total['shaved_forced']}), "
           f"small pieces at an arris not forced {total['arris']}")
     print("not forced by bond: " + ", ".join(f"{b} {c['unforced']}" for b, c in
                                              sorted(by_bond.items())))

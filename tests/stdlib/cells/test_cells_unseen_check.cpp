@@ -836,6 +836,28 @@ TEST(CellsUnseen, SameSeedSameBytes) {
     }
 }
 
+// A room forces a shaved brick where no way to fill it, in a course and the course over it, with
+// pieces no narrower than a queen closer and no straight joint, avoids one.
+TEST(MasonCheck, RoomForcesShavedOnlyWhereNoWayAvoidsOne) {
+    // Beside a skewback, 10.15 cm reveal to reveal: one piece of 9.15 cm (a header less 1.1 cm);
+    // two pieces would need 10.25 cm.
+    EXPECT_TRUE(mason_detail::room_forces_shaved(10.15, kCm));
+    // A 12.4 cm pier: one piece 11.4 cm, or two whose joint lies 5.1 to 6.3 cm from the reveal
+    // in every course, a straight joint over the one below.
+    EXPECT_TRUE(mason_detail::room_forces_shaved(12.4, kCm));
+    // A header's room, a brick's, a brick and a header's: whole pieces.
+    for (double w : {11.25, 22.5, 33.75})
+        EXPECT_FALSE(mason_detail::room_forces_shaved(w, kCm)) << w;
+    // 22.9 cm: a three-quarter bat and a 5 cm cut, by turns from each reveal.
+    EXPECT_FALSE(mason_detail::room_forces_shaved(22.9, kCm));
+    // 33.4 cm: two cuts of 16.4 and 15 cm by turns.
+    EXPECT_FALSE(mason_detail::room_forces_shaved(33.4, kCm));
+    // 16.9 cm: one three-quarter bat a course, no head joint.
+    EXPECT_FALSE(mason_detail::room_forces_shaved(16.9, kCm));
+    // Wider than two bricks and a header: never taken as forcing.
+    EXPECT_FALSE(mason_detail::room_forces_shaved(80, kCm));
+}
+
 // The check fails on layouts broken as the issue describes them.
 namespace {
 
