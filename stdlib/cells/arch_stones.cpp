@@ -10,6 +10,7 @@
 #include "context_data.hpp"
 #include "lintel.hpp"
 #include "ring_check.hpp"
+#include "run_ends.hpp"
 #include "voussoirs.hpp"
 
 namespace acanthus::cells {
@@ -346,20 +347,25 @@ void place_skewback(const Corner& k, Context& c, double depth, double bed) {
     std::vector<Point> poly{p, q};
     double x = q.x;
     if (c.options().bond != Bond::ashlar) {
-        const BrickLayout& layout = brick_layout(c, k.face);
+        BrickLayout& layout = brick_layout(c, k.face);
         const CourseGrid& g = layout.grid;
         const double sx = q.x > p.x ? 1 : -1;
         const double tiny = 1e-9 * std::max(1.0, std::abs(g.xs.back()) + std::abs(g.ys.back()));
+        // The runs the plumb side crosses end at it, laid again as at a jamb: the piece beside
+        // it cut at a joint, not shaved (a 20.5 cm brick stood beside a window's skewback).
+        fit_run_ends_at(facade, k.face, c.options(), layout, Jamb{q.x, q.y, yb, sx > 0});
+        const double h = layout.mortar / 2;
         for (int row = std::max(0, g.row_at(q.y + tiny)); row >= 0 && row < g.rows(); ++row) {
             const double top = std::max(g.ys[static_cast<std::size_t>(row)], q.y);
             const double bottom = std::min(g.ys[static_cast<std::size_t>(row) + 1], yb);
             if (bottom <= top + tiny) break;
+            // The course's head joints as laid, beyond the side.
             double gap = 1e300;
-            for (const Piece& piece : layout.rows[static_cast<std::size_t>(row)])
-                for (int unit : {piece.start, piece.start + piece.length}) {
-                    const double d = (g.xs[static_cast<std::size_t>(unit)] - q.x) * sx;
-                    if (d > tiny) gap = std::min(gap, d);
-                }
+            for (std::size_t i = 0; i < layout.rows[static_cast<std::size_t>(row)].size(); ++i) {
+                const Rect d = layout.drawn(row, static_cast<int>(i));
+                for (double x : {d.x0 - h, d.x1 + h})
+                    if ((x - q.x) * sx > tiny) gap = std::min(gap, (x - q.x) * sx);
+            }
             const double to = gap < layout.unit - tiny ? q.x + sx * gap : q.x;
             if (to != x) poly.push_back({to, top});
             poly.push_back({to, bottom});

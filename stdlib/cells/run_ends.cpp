@@ -89,7 +89,7 @@ std::size_t RunEndsMemo::hits() const { return data->hits; }
 namespace {
 
 void fit(const Facade& facade, int face, const Options& options, BrickLayout& layout,
-         RunEndsMemo* memo, bool arrises) {
+         RunEndsMemo* memo, bool arrises, const Jamb* back = nullptr) {
     const CourseGrid& g = layout.grid;
     if (layout.relaid.size() != layout.rows.size()) {
         layout.relaid.assign(layout.rows.size(), {});
@@ -99,7 +99,8 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     const double q = layout.unit, m = layout.mortar, h = m / 2, tol = layout.tolerance;
     const double eps = 1e-9 * std::max(1.0, std::abs(g.xs.back()));
     const double stretcher = 4 * q - m, header = 2 * q - m;
-    const std::vector<Jamb> jambs = face_jambs(facade, face);
+    std::vector<Jamb> jambs = face_jambs(facade, face);
+    if (back) jambs.push_back(*back);
     // Runs across a head or an arc (within its outline's bounds) stay as they are. Beside one,
     // what its generators claim first (a ring, a lintel's bearing, soldiers) cuts the pieces
     // laid again as it cut those of the bond: that keeps no fewer whole.
@@ -113,6 +114,10 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     }
     auto at_jamb = [&](int r, int u, bool left, double& x) {
         return jamb_at(jambs, g, q, r, u, left, x);
+    };
+    // Laid already (a skewback set while the face is being laid): not laid again.
+    auto taken = [&](std::size_t r, std::size_t k) {
+        return r < layout.taken.size() && k < layout.taken[r].size() && layout.taken[r][k];
     };
     // What a checker reads a piece of width w as: 0 whole (a brick, header, bat or closer, or a
     // quoin of up to `most` quarters), 1 odd, 2 shaved (within 12% of a brick or header), 3 no
@@ -177,8 +182,32 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     std::vector<long> stamp(rows, 0);
     long clock = 0;
     std::map<std::tuple<int, long long, std::size_t>, long> judged;
+    // A skewback's back (`back`) ends the run it crosses at the piece whose claim it cuts (the
+    // pieces beyond lie under the skewback), unless the skewback takes that piece in.
+    auto back_covers = [&](std::size_t rr) {
+        return back->y0 <= g.ys[rr] + eps && back->y1 >= g.ys[rr + 1] - eps;
+    };
     auto find_end = [&](std::size_t rr, int side, double at, End& e) {
         const auto& ps = layout.rows[rr];
+        if (back && std::abs(at - back->x) <= eps) {
+            if (!back_covers(rr)) return false;
+            for (std::size_t k = 0; k < ps.size(); ++k) {
+                const Rect c = layout.claim(static_cast<int>(rr), static_cast<int>(k));
+                if (side > 0 ? c.x0 >= at - eps || c.x1 < at - eps
+                             : c.x1 <= at + eps || c.x0 > at + eps)
+                    continue;
+                // Less than a unit of it outside: the skewback takes it in (its side steps to
+                // the joint), and the run ends at that joint as laid.
+                const Rect d = layout.drawn(static_cast<int>(rr), static_cast<int>(k));
+                if ((side > 0 ? at - d.x0 : d.x1 - at) + h < q) return false;
+                std::size_t a = k, b = k + 1;
+                while (a > 0 && ps[a - 1].start + ps[a - 1].length == ps[a].start) --a;
+                while (b < ps.size() && ps[b - 1].start + ps[b - 1].length == ps[b].start) ++b;
+                e = side > 0 ? End{a, k + 1, at} : End{k, b, at};
+                return true;
+            }
+            return false;
+        }
         for (std::size_t a = 0; a < ps.size();) {
             std::size_t b = a + 1;
             while (b < ps.size() && ps[b - 1].start + ps[b - 1].length == ps[b].start) ++b;
@@ -247,8 +276,8 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         for (std::size_t i = 0; i < n && free < 4; ++i) {
             const Piece& p = ps[at(i)];
             // A quoin beyond the jamb's only as the run's other end (a pier between two).
-            if (p.sill || p.head || p.king || here[rr][at(i)] || (p.quoin && i > 0 && i + 1 < n) ||
-                (i > 0 && i + 1 < n && !p.full))
+            if (p.sill || p.head || p.king || here[rr][at(i)] || taken(rr, at(i)) ||
+                (p.quoin && i > 0 && i + 1 < n) || (i > 0 && i + 1 < n && !p.full))
                 break;
             ++free;
         }
@@ -575,6 +604,10 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         relaid.insert(relaid.begin() + l, rects.begin(), rects.end());
         here[rr].erase(here[rr].begin() + l, here[rr].begin() + u);
         here[rr].insert(here[rr].begin() + l, t, 1);
+        if (rr < layout.taken.size() && layout.taken[rr].size() >= hi) {
+            layout.taken[rr].erase(layout.taken[rr].begin() + l, layout.taken[rr].begin() + u);
+            layout.taken[rr].insert(layout.taken[rr].begin() + l, t, 0);
+        }
         stamp[rr] = ++clock;
     };
     // Per jamb, the courses whose runs end at it one above the other (a pier's, or a run end's
@@ -591,9 +624,9 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
             for (int side : {-1, 1}) {
                 std::vector<double> xs;
                 for (const Jamb& j : jambs)
-                    if (j.left == (side < 0) && std::none_of(xs.begin(), xs.end(), [&](double x) {
-                            return std::abs(x - j.x) <= eps;
-                        }))
+                    if (j.left == (side < 0) && (!back || &j == &jambs.back()) &&
+                        std::none_of(xs.begin(), xs.end(),
+                                     [&](double x) { return std::abs(x - j.x) <= eps; }))
                         xs.push_back(j.x);
                 for (double x : xs) {
                     std::vector<char> chain(rows, 0);
@@ -679,6 +712,7 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         long total = 0;
         const std::vector<char> none(rows, 0);
         for (const Jamb& j : jambs) {
+            if (back && &j != &jambs.back()) continue;
             const int side = j.left ? -1 : 1;
             for (std::size_t rr = 0; rr < rows; ++rr)
                 if (End e; find_end(rr, side, j.x, e))
@@ -694,7 +728,7 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
             for (std::size_t k = 0; k < ps.size(); ++k)
                 for (int u = ps[k].start; u < ps[k].start + ps[k].length; ++u)
                     index[static_cast<std::size_t>(u)] = static_cast<int>(k);
-            layout.taken[rr].assign(ps.size(), 0);
+            if (!back) layout.taken[rr].assign(ps.size(), 0);  // (lay() keeps them in step)
         }
     };
     const BrickLayout start = layout;
@@ -724,6 +758,11 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
 
 void fit_arrises(const Facade& facade, int face, const Options& options, BrickLayout& layout) {
     fit(facade, face, options, layout, nullptr, true);
+}
+
+void fit_run_ends_at(const Facade& facade, int face, const Options& options, BrickLayout& layout,
+                     const Jamb& back) {
+    fit(facade, face, options, layout, nullptr, false, &back);
 }
 
 }  // namespace acanthus::cells::detail

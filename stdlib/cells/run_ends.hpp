@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "brick_layout.hpp"
+#include "face_jambs.hpp"
 
 namespace acanthus::cells::detail {
 
@@ -45,6 +46,13 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
 // on the return. Taken alone, after fit_run_ends: a way that sets a closer back from one jamb
 // took the place of a better way at the next one.
 void fit_arrises(const Facade& facade, int face, const Options& options, BrickLayout& layout);
+
+// The same ways laid at a skewback's plumb back (`back`, over the courses it bounds whole) once
+// the skewback is set: the run it crosses ends there as at a jamb, its pieces beyond lying under
+// the skewback, so the walling is cut at a joint there and not shaved. Pieces laid already are
+// not laid again.
+void fit_run_ends_at(const Facade& facade, int face, const Options& options, BrickLayout& layout,
+                     const Jamb& back);
 
 // A brick cut off at a jamb a few millimetres off whole quarters, laid whole (context.cpp): the
 // piece `r` (its claim `claim` cut at the jamb) as drawn, or an empty rect when it is not.

@@ -932,12 +932,15 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
         << r.sills << " off centre " << r.sills_off_centre << " (max " << r.sill_offset
         << "), arris pieces " << r.arris_pieces << " small " << r.arris_small << " (forced "
         << r.arris_small_forced << ")";
-    // Asked for by odd_sweep.py: the cells' hash, each shaved brick and forcing room.
+    // Asked for by odd_sweep.py: the cells' hash, each shaved brick and forcing room; each run
+    // with an odd piece the geometry does not force.
     if (std::getenv("MASON_HASH")) out << " hash " << r.hash;
     if (std::getenv("MASON_SHAVED"))
         for (const std::string& s : r.shaved) out << " | " << s;
     if (std::getenv("MASON_SHAVED"))
         for (const std::string& s : r.forcing_rooms) out << " | room " << s;
+    if (std::getenv("MASON_UNFORCED"))
+        for (const std::string& s : r.unforced) out << " | unforced " << s;
     return out;
 }
 
