@@ -353,7 +353,7 @@ void place_skewback(const Corner& k, Context& c, double depth, double bed) {
         const double tiny = 1e-9 * std::max(1.0, std::abs(g.xs.back()) + std::abs(g.ys.back()));
         // The runs the plumb side crosses end at it, laid again as at a jamb: the piece beside
         // it cut at a joint, not shaved (a 20.5 cm brick stood beside a window's skewback).
-        fit_run_ends_at(facade, k.face, c.options(), layout, Jamb{q.x, q.y, yb, sx > 0});
+        fit_run_ends_at(facade, k.face, c.options(), layout, Jamb{q.x, q.y, yb, sx > 0}, p.x);
         const double h = layout.mortar / 2;
         for (int row = std::max(0, g.row_at(q.y + tiny)); row >= 0 && row < g.rows(); ++row) {
             const double top = std::max(g.ys[static_cast<std::size_t>(row)], q.y);

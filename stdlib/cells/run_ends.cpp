@@ -89,7 +89,7 @@ std::size_t RunEndsMemo::hits() const { return data->hits; }
 namespace {
 
 void fit(const Facade& facade, int face, const Options& options, BrickLayout& layout,
-         RunEndsMemo* memo, bool arrises, const Jamb* back = nullptr) {
+         RunEndsMemo* memo, bool arrises, const Jamb* back = nullptr, double reveal = 0) {
     const CourseGrid& g = layout.grid;
     if (layout.relaid.size() != layout.rows.size()) {
         layout.relaid.assign(layout.rows.size(), {});
@@ -114,6 +114,20 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     }
     auto at_jamb = [&](int r, int u, bool left, double& x) {
         return jamb_at(jambs, g, q, r, u, left, x);
+    };
+    // A skewback's plumb side (`back`, the skewback between it and the reveal at `reveal`): the
+    // courses it bounds whole, the joints under the skewback (their pieces are not laid), and the
+    // courses near it whose runs end at a jamb (laid again with those joints gone).
+    auto back_covers = [&](std::size_t rr) {
+        return back->y0 <= g.ys[rr] + eps && back->y1 >= g.ys[rr + 1] - eps;
+    };
+    auto under_skewback = [&](std::size_t rr, double x) {
+        return back && back_covers(rr) && x > std::min(back->x, reveal) + eps &&
+               x < std::max(back->x, reveal) - eps;
+    };
+    auto near_back = [&](std::size_t rr) {
+        const double reach_y = 2 * layout.gauge + eps;
+        return g.ys[rr] >= back->y0 - reach_y && g.ys[rr + 1] <= back->y1 + reach_y;
     };
     // Laid already (a skewback set while the face is being laid): not laid again.
     auto taken = [&](std::size_t r, std::size_t k) {
@@ -160,10 +174,10 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
                 return off > eps && off <= h + eps;
             };
             const bool cut = moves(k) || moves(k + 1);
-            out.push_back({(layout.drawn(row, static_cast<int>(k)).x1 +
-                            layout.drawn(row, static_cast<int>(k + 1)).x0) /
-                               2,
-                           cut ? margin : 0.0});
+            const double x = (layout.drawn(row, static_cast<int>(k)).x1 +
+                              layout.drawn(row, static_cast<int>(k + 1)).x0) /
+                             2;
+            if (!under_skewback(r, x)) out.push_back({x, cut ? margin : 0.0});
         }
         return out;
     };
@@ -182,13 +196,12 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     std::vector<long> stamp(rows, 0);
     long clock = 0;
     std::map<std::tuple<int, long long, std::size_t>, long> judged;
-    // A skewback's back (`back`) ends the run it crosses at the piece whose claim it cuts (the
-    // pieces beyond lie under the skewback), unless the skewback takes that piece in.
-    auto back_covers = [&](std::size_t rr) {
-        return back->y0 <= g.ys[rr] + eps && back->y1 >= g.ys[rr + 1] - eps;
-    };
     auto find_end = [&](std::size_t rr, int side, double at, End& e) {
         const auto& ps = layout.rows[rr];
+        // (Where the side bounds the course, only its run ends there: a way from a jamb could
+        // reach past the side, and the skewback would cut it.)
+        if (back && (!near_back(rr) || (back_covers(rr) && std::abs(at - back->x) > eps)))
+            return false;
         if (back && std::abs(at - back->x) <= eps) {
             if (!back_covers(rr)) return false;
             for (std::size_t k = 0; k < ps.size(); ++k) {
@@ -624,9 +637,9 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
             for (int side : {-1, 1}) {
                 std::vector<double> xs;
                 for (const Jamb& j : jambs)
-                    if (j.left == (side < 0) && (!back || &j == &jambs.back()) &&
-                        std::none_of(xs.begin(), xs.end(),
-                                     [&](double x) { return std::abs(x - j.x) <= eps; }))
+                    if (j.left == (side < 0) && std::none_of(xs.begin(), xs.end(), [&](double x) {
+                            return std::abs(x - j.x) <= eps;
+                        }))
                         xs.push_back(j.x);
                 for (double x : xs) {
                     std::vector<char> chain(rows, 0);
@@ -712,7 +725,6 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         long total = 0;
         const std::vector<char> none(rows, 0);
         for (const Jamb& j : jambs) {
-            if (back && &j != &jambs.back()) continue;
             const int side = j.left ? -1 : 1;
             for (std::size_t rr = 0; rr < rows; ++rr)
                 if (End e; find_end(rr, side, j.x, e))
@@ -761,8 +773,8 @@ void fit_arrises(const Facade& facade, int face, const Options& options, BrickLa
 }
 
 void fit_run_ends_at(const Facade& facade, int face, const Options& options, BrickLayout& layout,
-                     const Jamb& back) {
-    fit(facade, face, options, layout, nullptr, false, &back);
+                     const Jamb& back, double reveal) {
+    fit(facade, face, options, layout, nullptr, false, &back, reveal);
 }
 
 }  // namespace acanthus::cells::detail

@@ -47,12 +47,14 @@ void fit_run_ends(const Facade& facade, int face, const Options& options, BrickL
 // took the place of a better way at the next one.
 void fit_arrises(const Facade& facade, int face, const Options& options, BrickLayout& layout);
 
-// The same ways laid at a skewback's plumb back (`back`, over the courses it bounds whole) once
-// the skewback is set: the run it crosses ends there as at a jamb, its pieces beyond lying under
-// the skewback, so the walling is cut at a joint there and not shaved. Pieces laid already are
-// not laid again.
+// The same ways laid at a skewback's plumb side (`back`, over the courses it bounds whole; the
+// skewback reaches from it to the reveal at x = `reveal`) once the skewback is set: the run it
+// crosses ends there as at a jamb, its pieces beyond lying under the skewback, so the walling is
+// cut at a joint there and not shaved; the run ends at jambs in the courses near it are laid
+// again too, the joints under the skewback no longer in their way. Pieces laid already are not
+// laid again.
 void fit_run_ends_at(const Facade& facade, int face, const Options& options, BrickLayout& layout,
-                     const Jamb& back);
+                     const Jamb& back, double reveal);
 
 // A brick cut off at a jamb a few millimetres off whole quarters, laid whole (context.cpp): the
 // piece `r` (its claim `claim` cut at the jamb) as drawn, or an empty rect when it is not.

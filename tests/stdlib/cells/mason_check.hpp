@@ -939,6 +939,8 @@ inline std::ostream& operator<<(std::ostream& out, const MasonReport& r) {
         for (const std::string& s : r.shaved) out << " | " << s;
     if (std::getenv("MASON_SHAVED"))
         for (const std::string& s : r.forcing_rooms) out << " | room " << s;
+    if (std::getenv("MASON_SHAVED"))
+        for (const Point& p : r.narrow_at) out << " | narrow at (" << p.x << ", " << p.y << ")";
     if (std::getenv("MASON_UNFORCED"))
         for (const std::string& s : r.unforced) out << " | unforced " << s;
     return out;

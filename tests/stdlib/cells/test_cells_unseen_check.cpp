@@ -1199,8 +1199,10 @@ TEST(CellsFresh, BrickWalls) {
     // traded for a cut the geometry does not force where no way keeps both whole: 114. A brick
     // whose units were set out a little short drawn at its nominal length when its corner is cut
     // (a gable's rake), not 1-3 mm short: 76. The runs a segmental arch's skewback cuts laid
-    // again to end at its plumb side as at a jamb (fit_run_ends_at): 46.
-    EXPECT_LE(shaved, 46);
+    // again to end at its plumb side as at a jamb (fit_run_ends_at): 46; the runs ending at
+    // jambs in the courses near it laid again too, the joints under the skewback out of their
+    // way: 44.
+    EXPECT_LE(shaved, 44);
 }
 
 // A pier 38.9 cm wide (6.92 quarter bricks) in header bond beside the first floor's windows of
@@ -1479,17 +1481,21 @@ TEST(CellsOutside, BrickWalls) {
     long arris = 0;
     // 201 before a brick whose units were set out a little short was drawn at its nominal
     // length where a gable's rake cuts its corner, 136 before the runs a skewback cuts were laid
-    // again to end at its plumb side.
-    EXPECT_LE(brick_walls(caps, outside, &arris), 118);
-    // Closers and cuts set back from the arrises (fit_arrises): 2,350 before.
-    EXPECT_LE(arris, 437);
+    // again to end at its plumb side (118 before the courses near it were laid again too).
+    EXPECT_LE(brick_walls(caps, outside, &arris), 111);
+    // Closers and cuts set back from the arrises (fit_arrises): 2,350 before; 437 before the
+    // courses beside a skewback were laid again as it is set (three shaved bricks there gave way
+    // to a small piece at an arris).
+    EXPECT_LE(arris, 440);
 }
 
 // Beside a segmental arch's skewback the courses run to its plumb side: each run it cuts is laid
 // again to end there as at a jamb (fit_run_ends_at), so the piece against it is cut clear of a
-// brick's and a header's length. Four facades with segmental arches near a wall's end or a door,
-// the bricks tree in every bond: 34 shaved bricks before, 15 after (none where the room between
-// the wall's end and the skewback forces one).
+// brick's and a header's length, and the runs ending at jambs in the courses near it are laid
+// again with the joints under the skewback out of their way. Four facades with segmental arches
+// near a wall's end or a door, the bricks tree in every bond: 34 shaved bricks before, 15 with
+// the runs it cuts laid again, 11 with the courses near it too (none where the room between the
+// wall's end and the skewback forces one).
 TEST(CellsUnseen, RunsEndAtASkewbacksSide) {
     Options o = centimetres();
     long shaved = 0, forced = 0, straight = 0;
@@ -1507,7 +1513,7 @@ TEST(CellsUnseen, RunsEndAtASkewbacksSide) {
     }
     EXPECT_EQ(straight, 0);
     EXPECT_EQ(forced, 0);
-    EXPECT_LE(shaved, 15);
+    EXPECT_LE(shaved, 11);
 }
 
 // Stone walls on the same facades: the default unit and the pictures' 15 cm grid, seeds 1-3.
