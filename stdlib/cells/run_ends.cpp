@@ -46,6 +46,7 @@ struct Plan {
 // choice (96 lays the same as 160 over the mason's sweep and the fresh facades, 64 and 48
 // leave more shaved), few enough that pairs of courses stay cheap to compare.
 constexpr std::size_t kMostWays = 96;
+constexpr std::size_t kFewPerZone = 8;
 
 // A run of `row` (pieces [a0, b)) whose end on `side` is at the jamb at xj.
 struct End {
@@ -502,7 +503,14 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         std::stable_sort(out.begin() + 1, out.end(),
                          [](const Way& x, const Way& y) { return x.cost < y.cost; });
         std::vector<Way> kept;
+        std::array<std::size_t, 5> per_zone{};  // kept, by how many pieces they lay again
         for (Way& w : out) {
+            const std::size_t z = std::min<std::size_t>(w.zone, 4);
+            // Past the most, still the cheapest few of each zone: the cheapest ways lay the
+            // most pieces again, and where their joints meet the courses over and under it a
+            // way of one piece may be the only one left (a closer at the jamb and a cut, the
+            // round-ended front in Flemish bond, where a brick stood 7 mm short).
+            if (kept.size() > kMostWays && per_zone[z] >= kFewPerZone) continue;
             bool seen = false;
             for (const Way& k : kept) {
                 if (k.zone == 0 || std::abs(k.lo - w.lo) > eps || std::abs(k.hi - w.hi) > eps ||
@@ -516,8 +524,7 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
                     break;
                 }
             }
-            if (!seen) kept.push_back(std::move(w));
-            if (kept.size() > kMostWays) break;
+            if (!seen) kept.push_back(std::move(w)), ++per_zone[z];
         }
         if (memo && !only_now && memo->data->count + kept.size() <= kMemoWays) {
             memo->data->count += kept.size();
