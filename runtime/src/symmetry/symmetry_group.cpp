@@ -58,6 +58,10 @@ SymmetryGroup::SymmetryGroup(const Symmetry& spec, Point center)
     if (dihedral)
         for (int k = 0; k < n; ++k)
             transforms_.push_back(Isometry::reflection(center, kStart + M_PI * k / n));
+    gap_edges_[0] = Vector(std::cos(kStart), std::sin(kStart));
+    gap_edges_[1] = Vector(std::cos(kStart + wedge_), std::sin(kStart + wedge_));
+    gap_bisector_ = Vector(std::cos(kStart + wedge_ / 2), std::sin(kStart + wedge_ / 2));
+    gap_cos_ = std::cos(wedge_ / 2) - 1e-9;
 }
 
 namespace {
@@ -165,6 +169,19 @@ bool SymmetryGroup::in_domain(Point p, double tolerance) const {
     t -= 2 * M_PI * std::floor(t / (2 * M_PI));  // [0, 2 pi)
     const double slack = tolerance / r;
     return t <= wedge_ + slack || t >= 2 * M_PI - slack;
+}
+
+double SymmetryGroup::domain_gap(Point p) const {
+    if (lattice_ || transforms_.size() < 2 || !(wedge_ < 0.99 * M_PI)) return 0;
+    const Vector a = p - center_;
+    const double r = std::sqrt(a.x * a.x + a.y * a.y);  // hypot()'s care is not needed
+    // Inside, or within rounding of an edge (the margin moves the test by 1e-9 of r): 0.
+    if (a.dot(gap_bisector_) >= r * gap_cos_) return 0;
+    // Outside a convex wedge the nearest point lies on an edge's ray.
+    double gap = r;
+    for (const Vector& u : gap_edges_)
+        if (a.dot(u) > 0) gap = std::min(gap, std::abs(a.x * u.y - a.y * u.x));
+    return gap * (1 - 1e-9);
 }
 
 std::vector<Point> SymmetryGroup::domain_part(const Circle& c, double tolerance,

@@ -53,6 +53,9 @@ class SymmetryGroup {
     // True when p lies in the fundamental domain widened by `tolerance` on each side: for a
     // rosette the wedge whose first edge points up from the centre, else the Dirichlet domain.
     bool in_domain(Point p, double tolerance) const;
+    // For a rosette whose wedge is narrower than a half-plane: no more than the distance from
+    // p to the wedge (0 inside it and within rounding of its edges). 0 for any other group.
+    double domain_gap(Point p) const;
     // p moved onto the nearest rotation centre, or else onto the nearest mirror, when it lies
     // within `tolerance` of one, so that its images coincide with it exactly; else p.
     Point snap(Point p, double tolerance) const;
@@ -116,6 +119,11 @@ class SymmetryGroup {
     std::string name_;
     Point center_;
     double wedge_ = 0;  // the rosette's domain's angle
+    // domain_gap()'s wedge: its edges' and its bisector's directions, the cosine of its half
+    // angle less a margin.
+    Vector gap_edges_[2] = {{0, 0}, {0, 0}};
+    Vector gap_bisector_{0, 0};
+    double gap_cos_ = 1;
     std::vector<Isometry> transforms_;
     // Groups with translations.
     bool lattice_ = false;
