@@ -383,10 +383,22 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
             c.radius -
             std::sqrt(to_centre.x * to_centre.x + to_centre.y * to_centre.y) * (1 - kBound) +
             kBound * c.radius;
-        if (inside < std::min(best[0].radius + tolerance, best[1].radius + tolerance)) return;
+        const double bar_fixed = best[0].radius + tolerance;
+        double bar_free = best[1].radius + tolerance;
+        if (inside < std::min(bar_fixed, bar_free)) return;
+        // A point on a mirror is fixed by it (room() tells so by the same test): then only
+        // bar_fixed decides, and room() rules the point out by it (the same answer).
+        if (mirror) {
+            const Vector v = mirror->apply(p) - p;
+            const double s = v.x * v.x + v.y * v.y;
+            if (s * kLoose < tol2 || (s <= tol2 * kLoose && v.length() <= tolerance)) {
+                if (inside < bar_fixed) return;
+                bar_free = bar_fixed;
+            }
+        }
         if (on_centre(p)) return;  // C itself
         bool fixed = false;
-        const double r = room(p, fixed, best[0].radius + tolerance, best[1].radius + tolerance);
+        const double r = room(p, fixed, bar_fixed, bar_free);
         Circle& b = best[fixed ? 0 : 1];
         if (r > b.radius + tolerance) {
             b = {p, r};
