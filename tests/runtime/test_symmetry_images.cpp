@@ -13,6 +13,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "fixtures/dots_pattern.hpp"
@@ -249,6 +250,39 @@ TEST(ImageElement, ImagesBuiltAndFreedInAnyOrderKeepTheirOwnProxies) {
             EXPECT_EQ(&image.original(), &e);
         }
     }
+}
+
+// The shared storage is taken and given back under a lock: images built and freed on several
+// threads at once, interleaved, each keep their own proxy (a lost lock corrupts the free list).
+TEST(ImageElement, ImagesBuiltAndFreedOnSeveralThreadsKeepTheirOwnProxies) {
+    constexpr int kThreads = 4;
+    std::vector<std::thread> threads;
+    std::vector<int> wrong(kThreads, 0);
+    for (int t = 0; t < kThreads; ++t)
+        threads.emplace_back([t, &wrong] {
+            dots::dot e;
+            e.p0.set({10.0 + t, 0}, 1);
+            std::mt19937 rng(static_cast<unsigned>(t));
+            std::vector<std::unique_ptr<acanthus::Element>> images;
+            for (int k = 0; k < 20000; ++k) {
+                images.push_back(
+                    std::make_unique<ImageElement>(e, Isometry::rotation({0, 0}, k * 1e-4)));
+                if (k % 3 == 1) {
+                    std::uniform_int_distribution<std::size_t> pick(0, images.size() - 1);
+                    images.erase(images.begin() + static_cast<std::ptrdiff_t>(pick(rng)));
+                }
+            }
+            for (const auto& x : images) {
+                auto& image = static_cast<ImageElement&>(*x);
+                const double angle = std::atan2(image.transform().b, image.transform().a);
+                const auto& c = static_cast<const acanthus::CircleProxy&>(image.proxy(0));
+                if (std::abs(c.center.x - (10.0 + t) * std::cos(angle)) > 1e-9 ||
+                    &image.original() != &e)
+                    ++wrong[static_cast<std::size_t>(t)];
+            }
+        });
+    for (auto& th : threads) th.join();
+    for (int t = 0; t < kThreads; ++t) EXPECT_EQ(wrong[static_cast<std::size_t>(t)], 0) << t;
 }
 
 // as_image() tells an image from a fundamental element by its exact type: an image of an image
