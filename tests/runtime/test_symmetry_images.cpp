@@ -367,6 +367,61 @@ std::vector<PlacedGroup> placed_groups() {
 
 }  // namespace
 
+// moves_apart() says every isometry moves a point by more than d only when each listed one does
+// (points anywhere, on mirrors, at rotation centres and a fraction of d beside them), and says
+// so of most points of a group with translations; point_orbit(), which takes its images without
+// comparing them when it does, keeps the images a pairwise comparison keeps, in order.
+TEST(SymmetryGroup, MovesApartAndPointOrbitUnderEveryKindOfGroup) {
+    using acanthus::Vector;
+    using acanthus::detail::point_orbit;
+    using acanthus::detail::SymmetryGroup;
+    std::mt19937 rng(13);
+    for (const PlacedGroup& pg : placed_groups()) {
+        const SymmetryGroup& g = *pg.group;
+        const Rect b = pg.region.bounds();
+        const double tol = 1e-6 * std::max(b.width(), b.height());
+        std::uniform_real_distribution<double> x(b.x0, b.x1), y(b.y0, b.y1);
+        std::vector<Point> points;
+        for (int k = 0; k < 60; ++k) points.push_back({x(rng), y(rng)});
+        for (const Point c : g.centre_classes(tol))
+            for (double d : {0.0, 0.4, 0.6, 1.2, 3.0}) points.push_back(c + Vector(d * tol, 0));
+        for (const Isometry& t : g.transforms()) {
+            if (!t.reverses() || points.size() > 400) continue;
+            const Point p{x(rng), y(rng)};
+            const Point on = p + (t.apply(p) - p) * 0.5;
+            const Vector off =
+                (p - on).length() > 0 ? (p - on) * (1 / (p - on).length()) : Vector(1, 0);
+            for (double d : {0.0, 0.3, 0.49, 0.51, 0.9, 1.1, 2.5})
+                points.push_back(on + off * (d * tol));
+        }
+        int apart = 0;
+        for (const Point p : points) {
+            const double d = 2 * tol;
+            if (g.moves_apart(p, d)) {
+                ++apart;
+                for (std::size_t k = 1; k < g.transforms().size(); ++k)
+                    EXPECT_GT(distance(g.transforms()[k].apply(p), p), d)
+                        << pg.name << " at " << p.x << "," << p.y << " by " << k;
+            }
+            std::vector<Point> want{p};
+            for (std::size_t k = 1; k < g.transforms().size(); ++k) {
+                const Point q = g.transforms()[k].apply(p);
+                if (!g.rosette() && !b.contains(q)) continue;
+                bool seen = false;
+                for (const Point o : want) seen = seen || distance(o, q) <= tol;
+                if (!seen) want.push_back(q);
+            }
+            const std::vector<Point> got = point_orbit(g, p, tol, b);
+            ASSERT_EQ(got.size(), want.size()) << pg.name << " at " << p.x << "," << p.y;
+            for (std::size_t k = 0; k < got.size(); ++k) {
+                EXPECT_EQ(got[k].x, want[k].x) << pg.name;
+                EXPECT_EQ(got[k].y, want[k].y) << pg.name;
+            }
+        }
+        EXPECT_GT(apart, 40) << pg.name;
+    }
+}
+
 // The domain's pixels under friezes and wallpaper groups (found a row's run at a time) are those
 // in_domain() accepts, pixel by pixel, on grids whose origin and pixel fall anywhere.
 TEST(SymmetryDomainPixels, RowRunsAreThePixelsInTheDomain) {

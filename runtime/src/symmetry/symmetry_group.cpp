@@ -78,7 +78,10 @@ SymmetryGroup::SymmetryGroup(TranslationGroup group, const Region& region)
       lattice_(true),
       window_(group.window),
       frame_(group.frame),
-      region_(&region) {
+      region_(&region),
+      cosets_(std::move(group.cosets)),
+      lattice_a_(group.a),
+      lattice_b_(group.b) {
     for (std::size_t k = 1; k < transforms_.size(); ++k) {
         const Isometry& g = transforms_[k];
         const Point q = g.apply(center_);
@@ -169,6 +172,41 @@ bool SymmetryGroup::in_domain(Point p, double tolerance) const {
     t -= 2 * M_PI * std::floor(t / (2 * M_PI));  // [0, 2 pi)
     const double slack = tolerance / r;
     return t <= wedge_ + slack || t >= 2 * M_PI - slack;
+}
+
+bool SymmetryGroup::moves_apart(Point p, double d) const {
+    const double d2 = d * d;
+    if (!lattice_) {  // a rosette's transformations are the whole group
+        for (std::size_t k = 1; k < transforms_.size(); ++k) {
+            const Vector v = transforms_[k].apply(p) - p;
+            if (!(v.x * v.x + v.y * v.y > d2)) return false;
+        }
+        return true;
+    }
+    const Vector a = lattice_a_, b = lattice_b_;
+    const double a2 = a.dot(a), det = a.cross(b);
+    const bool flat = b.x == 0 && b.y == 0;  // a frieze
+    if (cosets_.empty() || !(a2 > 0) || (!flat && !(std::abs(det) > 0))) return false;
+    // A lattice point two steps or more from the nearest in a coordinate is at least 1.5
+    // times the spacing of the lattice's lines across that coordinate away.
+    const double spacing =
+        flat ? std::sqrt(a2)
+             : std::min(std::abs(det) / std::sqrt(b.dot(b)), std::abs(det) / std::sqrt(a2));
+    if (!(1.5 * spacing > d)) return false;
+    for (std::size_t h = 0; h < cosets_.size(); ++h) {
+        // The coset's isometries move p by v + i a + j b: the nearest 3 x 3 of them.
+        const Vector v = cosets_[h].apply(p) - p;
+        const double u = flat ? v.dot(a) / a2 : v.cross(b) / det;
+        const double w = flat ? 0 : a.cross(v) / det;
+        const long i0 = std::lround(-u), j0 = flat ? 0 : std::lround(-w);
+        for (long i = i0 - 1; i <= i0 + 1; ++i)
+            for (long j = flat ? 0 : j0 - 1; j <= (flat ? 0 : j0 + 1); ++j) {
+                if (h == 0 && i == 0 && j == 0) continue;  // the identity (first coset)
+                const Vector m = v + a * static_cast<double>(i) + b * static_cast<double>(j);
+                if (!(m.x * m.x + m.y * m.y > d2)) return false;
+            }
+    }
+    return true;
 }
 
 double SymmetryGroup::domain_gap(Point p) const {
