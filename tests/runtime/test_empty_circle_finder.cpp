@@ -403,6 +403,68 @@ TEST(PendingBlocks, MayLowerIsTrueJustWhenABlockIsNearerThanItsBound) {
     EXPECT_GT(far, 100);
 }
 
+// A box whose pixels' centres all lie farther than centre_reach() from every pixel of a centre
+// tile is near no tile (near() is not `tile`): kept tiles lie within one tile of a centre tile,
+// the others' bounds are 0. Infinite without centre tiles (every tile kept).
+TEST(PendingBlocks, CentreReachBoundsWhereABoxIsNearATile) {
+    using acanthus::detail::PendingBlocks;
+    using acanthus::detail::PixelBox;
+    acanthus::Random rng(29);
+    int beyond = 0;
+    for (int scene = 0; scene < 6; ++scene) {
+        const int w = static_cast<int>(rng.uniform_int(300, 600));
+        const int h = static_cast<int>(rng.uniform_int(200, 500));
+        const int tw = (w - 1) / 8 + 1, th = (h - 1) / 8 + 1;
+        std::vector<std::int32_t> caps(static_cast<std::size_t>(tw) * th);
+        for (auto& c : caps) c = static_cast<std::int32_t>(rng.uniform_int(0, 1600));
+        std::vector<std::int32_t> d2(static_cast<std::size_t>(w) * h);
+        for (int j = 0; j < h; ++j)
+            for (int i = 0; i < w; ++i)
+                d2[static_cast<std::size_t>(j) * w + i] =
+                    caps[static_cast<std::size_t>(j / 8) * tw + i / 8];
+        PendingBlocks blocks;
+        std::vector<std::uint8_t> centres(static_cast<std::size_t>(tw) * th, 0);
+        if (scene % 3 == 0) {  // a band of tile columns
+            for (int tj = 0; tj < th; ++tj)
+                for (int ti = 10; ti < 14; ++ti)
+                    centres[static_cast<std::size_t>(tj * tw + ti)] = 1;
+        } else {  // a few tiles
+            for (int k = 0; k < 2 * scene; ++k)
+                centres[static_cast<std::size_t>(rng.uniform_int(0, tw * th - 1))] = 1;
+        }
+        blocks.set_centre_tiles(centres);
+        blocks.reset(w, h, d2.data(), acanthus::DistanceMetric::euclidean);
+        const double reach = blocks.centre_reach();
+        ASSERT_TRUE(std::isfinite(reach));
+        for (int q = 0; q < 600; ++q) {
+            PixelBox box;
+            box.x0 = static_cast<int>(rng.uniform_int(-80, w + 80));
+            box.y0 = static_cast<int>(rng.uniform_int(-80, h + 80));
+            box.x1 = box.x0 + static_cast<int>(rng.uniform_int(0, 20));
+            box.y1 = box.y0 + static_cast<int>(rng.uniform_int(0, 20));
+            double gap = INFINITY;
+            for (int tj = 0; tj < th; ++tj)
+                for (int ti = 0; ti < tw; ++ti) {
+                    if (!centres[static_cast<std::size_t>(tj * tw + ti)]) continue;
+                    const int x0 = ti * 8, x1 = std::min(w, x0 + 8) - 1;
+                    const int y0 = tj * 8, y1 = std::min(h, y0 + 8) - 1;
+                    const double dx = std::max({0, x0 - box.x1, box.x0 - x1});
+                    const double dy = std::max({0, y0 - box.y1, box.y0 - y1});
+                    gap = std::min(gap, std::sqrt(dx * dx + dy * dy));
+                }
+            if (!(gap > reach)) continue;
+            ++beyond;
+            EXPECT_NE(blocks.near(box), PendingBlocks::Near::tile)
+                << "scene " << scene << " box " << box.x0 << "," << box.y0 << " gap " << gap;
+        }
+    }
+    EXPECT_GT(beyond, 300);
+    PendingBlocks all;
+    std::vector<std::int32_t> d2(100 * 80, 25);
+    all.reset(100, 80, d2.data(), acanthus::DistanceMetric::euclidean);
+    EXPECT_FALSE(std::isfinite(all.centre_reach()));
+}
+
 // PendingBlocks::near() is `tile` just when some tile is nearer to the box than its own
 // bound, else `block` just when may_lower() is true, else `none`: against a brute force over
 // the tiles (bounds that vary from tile to tile, grids not multiples of 8, boxes beyond them).

@@ -157,3 +157,32 @@ TEST(Ornament, AddAllGivesTheBoundsOfTheDeferrableElements) {
         }
     }
 }
+
+// Elements add_all() is told lie far from the near zone are deferred without the zone's test
+// (one flagged inside the zone too, which only the flag defers), and a query reaching one beyond
+// the zone finds it, as it finds one the zone's test deferred.
+TEST(Ornament, AddAllDefersTheElementsFlaggedFar) {
+    const acanthus::Region region = acanthus::Region::from_spec("rect:200,200");
+    Ornament ornament(region, 1e-9);
+    std::vector<bool> cells(20 * 20, false);
+    for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 5; ++i) cells[static_cast<std::size_t>(j * 20 + i)] = true;
+    ornament.set_near_zone({0, 0}, 10, 20, cells);
+    const Point at[4] = {{20, 20}, {20, 25}, {150, 150}, {160, 40}};
+    std::vector<std::unique_ptr<acanthus::Element>> batch;
+    for (const Point p : at) {
+        auto d = std::make_unique<dots::dot>();
+        d->p0.set(p, 2);
+        batch.push_back(std::move(d));
+    }
+    const std::vector<std::uint8_t> far{0, 1, 1, 0};  // in the zone, flagged in it, beyond it
+    ornament.add_all(std::move(batch), 0, nullptr, &far);
+    EXPECT_EQ(ornament.indexed(), 1u);  // the first alone
+    EXPECT_TRUE(ornament.within({20, 20}, 1).size() == 1);
+    for (const Point p : {at[2], at[3]}) {
+        const auto hits = ornament.within(p, 1);
+        ASSERT_EQ(hits.size(), 1u) << p.x << "," << p.y;
+        EXPECT_EQ(hits[0].second, 0);
+    }
+    EXPECT_EQ(ornament.indexed(), 3u);
+}

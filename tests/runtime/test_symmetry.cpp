@@ -18,6 +18,7 @@
 
 #include "fixtures/dots_pattern.hpp"
 #include "fixtures/growth_tree.hpp"
+#include "growth/ornament.hpp"
 #include "program/tree_json.hpp"
 #include "proxy/overlap.hpp"
 #include "symmetry/image_element.hpp"
@@ -163,6 +164,97 @@ TEST(SymmetryGroup, NearZoneIsTheCellsNearTheDomain) {
         }
     }
     EXPECT_TRUE(near_zone(grid, {}, 4).empty());
+}
+
+// domain_gap() is never more than the distance to the rosette's wedge (brute force: points along
+// its edges 0.025 apart, 0 for a point in_domain() holds) and within that spacing of it; 0
+// for a wedge of a half-plane or more. The growth loop leaves images farther than its margins
+// out of the near zone's and the field's tests.
+TEST(SymmetryGroup, DomainGapIsNoMoreThanTheDistanceToTheWedge) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-60, 60);
+    const Point centre{3, -2};
+    for (const char* name : {"c3", "c6", "d2", "d4", "d8", "d12"}) {
+        const SymmetryGroup g = group_of(name, centre);
+        const auto edges = g.domain_edges(100);
+        int outside = 0;
+        for (int k = 0; k < 150; ++k) {
+            const Point p{centre.x + u(rng), centre.y + u(rng)};
+            const double gap = g.domain_gap(p);
+            if (g.in_domain(p, 0)) {
+                EXPECT_EQ(gap, 0) << name << " " << p.x << "," << p.y;
+                continue;
+            }
+            double d = INFINITY;
+            for (const auto& [a, b] : edges)
+                for (int s = 0; s <= 4000; ++s)
+                    d = std::min(d, distance(p, a + (b - a) * (s / 4000.0)));
+            EXPECT_LE(gap, d) << name << " " << p.x << "," << p.y;
+            EXPECT_GE(gap, d - 0.03) << name << " " << p.x << "," << p.y;
+            ++outside;
+        }
+        EXPECT_GT(outside, 60) << name;
+    }
+    for (const char* name : {"c1", "c2", "d1"})
+        EXPECT_EQ(group_of(name, centre).domain_gap({centre.x + 40, centre.y + 30}), 0) << name;
+}
+
+// A box farther than near_zone_reach() pixels from the centre of every domain pixel misses the
+// near zone as the ornament tests a box (widened by a cell): an element with such bounds, added
+// as deferrable, is not indexed. The zone is set up as the growth loop sets it.
+TEST(SymmetryGroup, BoxesBeyondTheNearZoneReachMissTheZone) {
+    GridFrame grid;
+    grid.x0 = -7.5;
+    grid.y0 = 3.25;
+    grid.width = 203;
+    grid.height = 149;
+    grid.pixel = 0.75;
+    const Region region = Region::from_spec("rect:400,400");
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> along(-60, 260), half(0, 4);
+    for (int scene = 0; scene < 3; ++scene) {
+        std::vector<std::uint8_t> domain(static_cast<std::size_t>(grid.width) * grid.height, 0);
+        if (scene == 0) {
+            domain = domain_pixels(grid, group_of("d8", grid.center_of(100, 70)));
+        } else {
+            std::uniform_int_distribution<int> at(0, grid.width * grid.height - 1);
+            for (int k = 0; k < 4 * scene; ++k) domain[static_cast<std::size_t>(at(rng))] = 1;
+        }
+        std::vector<Point> centres;
+        for (int j = 0; j < grid.height; ++j)
+            for (int i = 0; i < grid.width; ++i)
+                if (domain[static_cast<std::size_t>(j) * grid.width + i])
+                    centres.push_back(grid.center_of(i, j));
+        for (const int cells : {1, 4}) {
+            Ornament ornament(region, 1e-9);
+            const double cell = grid.pixel * 8;
+            ornament.set_near_zone({grid.x0 - cells * cell, grid.y0 - cells * cell}, cell,
+                                   ((grid.width - 1) >> 3) + 1 + 2 * cells,
+                                   near_zone(grid, domain, cells));
+            int beyond = 0;
+            for (int q = 0; q < 1500; ++q) {
+                const Point c{grid.x0 + along(rng) * grid.pixel, grid.y0 + along(rng) * grid.pixel};
+                const double r = half(rng) * grid.pixel;
+                double d = INFINITY;  // pixels from the box [c - r, c + r] to a domain pixel
+                for (const Point p : centres) {
+                    const double dx = std::max(0.0, std::abs(p.x - c.x) - r);
+                    const double dy = std::max(0.0, std::abs(p.y - c.y) - r);
+                    d = std::min(d, std::sqrt(dx * dx + dy * dy) / grid.pixel);
+                }
+                if (!(d > near_zone_reach(cells))) continue;
+                ++beyond;
+                auto dot = std::make_unique<dots::dot>();
+                dot->p0.set(c, r);
+                std::vector<std::unique_ptr<Element>> one;
+                one.push_back(std::move(dot));
+                const std::size_t before = ornament.indexed();
+                ornament.add_all(std::move(one), 0);
+                EXPECT_EQ(ornament.indexed(), before)
+                    << "scene " << scene << ", cells " << cells << ", " << d << " pixels";
+            }
+            EXPECT_GT(beyond, 100) << "scene " << scene << ", cells " << cells;
+        }
+    }
 }
 
 // A batch of children under a rosette: each is checked against the images of those before it

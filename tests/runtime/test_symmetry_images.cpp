@@ -13,6 +13,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "fixtures/dots_pattern.hpp"
@@ -251,6 +252,39 @@ TEST(ImageElement, ImagesBuiltAndFreedInAnyOrderKeepTheirOwnProxies) {
     }
 }
 
+// The shared storage is taken and given back under a lock: images built and freed on several
+// threads at once, interleaved, each keep their own proxy (a lost lock corrupts the free list).
+TEST(ImageElement, ImagesBuiltAndFreedOnSeveralThreadsKeepTheirOwnProxies) {
+    constexpr int kThreads = 4;
+    std::vector<std::thread> threads;
+    std::vector<int> wrong(kThreads, 0);
+    for (int t = 0; t < kThreads; ++t)
+        threads.emplace_back([t, &wrong] {
+            dots::dot e;
+            e.p0.set({10.0 + t, 0}, 1);
+            std::mt19937 rng(static_cast<unsigned>(t));
+            std::vector<std::unique_ptr<acanthus::Element>> images;
+            for (int k = 0; k < 20000; ++k) {
+                images.push_back(
+                    std::make_unique<ImageElement>(e, Isometry::rotation({0, 0}, k * 1e-4)));
+                if (k % 3 == 1) {
+                    std::uniform_int_distribution<std::size_t> pick(0, images.size() - 1);
+                    images.erase(images.begin() + static_cast<std::ptrdiff_t>(pick(rng)));
+                }
+            }
+            for (const auto& x : images) {
+                auto& image = static_cast<ImageElement&>(*x);
+                const double angle = std::atan2(image.transform().b, image.transform().a);
+                const auto& c = static_cast<const acanthus::CircleProxy&>(image.proxy(0));
+                if (std::abs(c.center.x - (10.0 + t) * std::cos(angle)) > 1e-9 ||
+                    &image.original() != &e)
+                    ++wrong[static_cast<std::size_t>(t)];
+            }
+        });
+    for (auto& th : threads) th.join();
+    for (int t = 0; t < kThreads; ++t) EXPECT_EQ(wrong[static_cast<std::size_t>(t)], 0) << t;
+}
+
 // as_image() tells an image from a fundamental element by its exact type: an image of an image
 // is an image, and the element an image stands for is not one.
 TEST(ImageElement, AsImageTellsImagesFromFundamentalElements) {
@@ -332,6 +366,61 @@ std::vector<PlacedGroup> placed_groups() {
 }
 
 }  // namespace
+
+// moves_apart() says every isometry moves a point by more than d only when each listed one does
+// (points anywhere, on mirrors, at rotation centres and a fraction of d beside them), and says
+// so of most points of a group with translations; point_orbit(), which takes its images without
+// comparing them when it does, keeps the images a pairwise comparison keeps, in order.
+TEST(SymmetryGroup, MovesApartAndPointOrbitUnderEveryKindOfGroup) {
+    using acanthus::Vector;
+    using acanthus::detail::point_orbit;
+    using acanthus::detail::SymmetryGroup;
+    std::mt19937 rng(13);
+    for (const PlacedGroup& pg : placed_groups()) {
+        const SymmetryGroup& g = *pg.group;
+        const Rect b = pg.region.bounds();
+        const double tol = 1e-6 * std::max(b.width(), b.height());
+        std::uniform_real_distribution<double> x(b.x0, b.x1), y(b.y0, b.y1);
+        std::vector<Point> points;
+        for (int k = 0; k < 60; ++k) points.push_back({x(rng), y(rng)});
+        for (const Point c : g.centre_classes(tol))
+            for (double d : {0.0, 0.4, 0.6, 1.2, 3.0}) points.push_back(c + Vector(d * tol, 0));
+        for (const Isometry& t : g.transforms()) {
+            if (!t.reverses() || points.size() > 400) continue;
+            const Point p{x(rng), y(rng)};
+            const Point on = p + (t.apply(p) - p) * 0.5;
+            const Vector off =
+                (p - on).length() > 0 ? (p - on) * (1 / (p - on).length()) : Vector(1, 0);
+            for (double d : {0.0, 0.3, 0.49, 0.51, 0.9, 1.1, 2.5})
+                points.push_back(on + off * (d * tol));
+        }
+        int apart = 0;
+        for (const Point p : points) {
+            const double d = 2 * tol;
+            if (g.moves_apart(p, d)) {
+                ++apart;
+                for (std::size_t k = 1; k < g.transforms().size(); ++k)
+                    EXPECT_GT(distance(g.transforms()[k].apply(p), p), d)
+                        << pg.name << " at " << p.x << "," << p.y << " by " << k;
+            }
+            std::vector<Point> want{p};
+            for (std::size_t k = 1; k < g.transforms().size(); ++k) {
+                const Point q = g.transforms()[k].apply(p);
+                if (!g.rosette() && !b.contains(q)) continue;
+                bool seen = false;
+                for (const Point o : want) seen = seen || distance(o, q) <= tol;
+                if (!seen) want.push_back(q);
+            }
+            const std::vector<Point> got = point_orbit(g, p, tol, b);
+            ASSERT_EQ(got.size(), want.size()) << pg.name << " at " << p.x << "," << p.y;
+            for (std::size_t k = 0; k < got.size(); ++k) {
+                EXPECT_EQ(got[k].x, want[k].x) << pg.name;
+                EXPECT_EQ(got[k].y, want[k].y) << pg.name;
+            }
+        }
+        EXPECT_GT(apart, 40) << pg.name;
+    }
+}
 
 // The domain's pixels under friezes and wallpaper groups (found a row's run at a time) are those
 // in_domain() accepts, pixel by pixel, on grids whose origin and pixel fall anywhere.

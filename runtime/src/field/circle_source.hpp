@@ -8,6 +8,7 @@
 #include <acanthus/distance_metric.hpp>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -54,6 +55,9 @@ class CircleSource {
     virtual Reach reach(const PixelBox& box) const {
         return may_change(box) ? Reach::tile : Reach::none;
     }
+    // Sites whose pixels' centres all lie farther than this (pixels) from every pixel that may
+    // centre a circle have reach() other than `tile`; infinite when the source cannot tell.
+    virtual double centre_reach_pixels() const { return std::numeric_limits<double>::infinity(); }
 };
 
 struct CircleSourceOptions {

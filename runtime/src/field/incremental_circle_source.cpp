@@ -2,6 +2,7 @@
 // (docs/field.md, "Bulk placement").
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "field/field_circle_source.hpp"
 
@@ -72,6 +73,11 @@ class IncrementalCircleSource final : public FieldCircleSource {
                 break;
         }
         return Reach::none;
+    }
+
+    double centre_reach_pixels() const override {
+        return field_.lazy() ? field_.far_blocks().centre_reach()
+                             : std::numeric_limits<double>::infinity();
     }
 
     void release(const std::vector<int>& ids) override { finder_.release(ids); }

@@ -202,6 +202,14 @@ bool PendingBlocks::may_lower(const PixelBox& box) const {
     return for_blocks_near(box, [](int, const Rect&) { return true; });
 }
 
+double PendingBlocks::centre_reach() const {
+    if (group_bound_.empty() || kept_.empty() || manhattan_)
+        return std::numeric_limits<double>::infinity();
+    // A kept pixel is at most 2 tiles less a pixel from a centre tile's pixel on each axis.
+    const double ring = ((2 << kTileShift) - 1) * std::sqrt(2.0);
+    return std::sqrt(static_cast<double>(largest_bound())) + ring + 0.5;
+}
+
 PendingBlocks::Near PendingBlocks::near(const PixelBox& box) const {
     if (group_bound_.empty()) return Near::tile;
     if (live_.x0 > live_.x1 || gap2(box, live_) >= static_cast<std::int64_t>(groups_.max()))

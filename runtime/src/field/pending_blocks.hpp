@@ -47,6 +47,12 @@ class PendingBlocks {
     int count() const { return blocks_w_ * blocks_h_; }
     // >= every squared distance in the field.
     std::int64_t largest_bound() const { return static_cast<std::int64_t>(groups_.max()); }
+    // Sites whose pixels' centres are all farther than this (pixels) from every pixel of a
+    // centre tile lower no kept distance, now or later (near() is never `tile` for them): a
+    // kept tile lies within one tile of a centre tile, the others' bounds are 0, and no bound
+    // exceeds largest_bound(). Infinite when it cannot tell (before the first reset(), with
+    // every tile kept, or with city-block distances).
+    double centre_reach() const;
     int tile_of(int pixel) const {
         return (pixel / width_ >> kTileShift) * tiles_w_ + (pixel % width_ >> kTileShift);
     }

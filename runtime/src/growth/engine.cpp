@@ -234,6 +234,11 @@ struct GrowthEngine::Impl {
     // The pixels an element with these bounds covers, with a margin.
     PixelBox pixel_box(const Rect& bounds) const;
     std::vector<Rect> image_bounds;  // commit()'s scratch
+    // Per image of a commit, whether it lies too far from the domain to meet the ornament's
+    // near zone or to reach a distance the field reads (commit()'s scratch).
+    std::vector<std::uint8_t> far_images;
+    void mark_far_images(const std::vector<std::unique_ptr<Element>>& children,
+                         const std::vector<Orbit>& orbits);
     std::optional<Point> roomiest_in_domain() const;
     void sync_exclude_clears();
     Flow call_exhausted();
@@ -584,6 +589,34 @@ std::vector<GrowthEngine::Impl::NearProxy> GrowthEngine::Impl::family_near(const
     return out;
 }
 
+// far_images[k] for the k-th image of a commit: true when the image lies too far from a
+// rosette's wedge to meet the ornament's near zone or to reach a distance the field reads, so
+// that neither test is made. The image lies within `reach` of g(middle) (its element within
+// `reach` of the middle of its bounds), so its bounds within reach * sqrt(2) of it. A domain
+// pixel's centre lies within a pixel of the wedge; pixel_box() widens a box by 2 pixels and
+// rounds it out by a third.
+void GrowthEngine::Impl::mark_far_images(const std::vector<std::unique_ptr<Element>>& children,
+                                         const std::vector<Orbit>& orbits) {
+    far_images.clear();
+    if (!group->rosette() || debug_callback) return;
+    const double px = raster.grid().pixel;
+    const double zone = near_zone_reach(kNearCells) + 2;
+    const double field = circles->centre_reach_pixels() + 3 * std::sqrt(2.0) + 2;
+    const double apart = std::max(zone, field) * px;
+    if (!std::isfinite(apart)) return;
+    for (std::size_t k = 0; k < orbits.size(); ++k) {
+        const Element& e = *children[k];
+        const bool boxed = e.proxy_count() > 0;
+        const Rect b = boxed ? bounds_of(e) : Rect{};
+        const Point middle = b.center();
+        const double reach = 0.5 * std::hypot(b.width(), b.height());
+        const double margin = px + 1e-9 * (1 + std::abs(middle.x) + std::abs(middle.y) + reach);
+        for (const Isometry& g : orbits[k].images)
+            far_images.push_back(boxed && group->domain_gap(g.apply(middle)) >
+                                              apart + reach * std::sqrt(2.0) + margin);
+    }
+}
+
 // Commits the children of one success. Under symmetry each comes with its images, after them
 // in id order; a child whose images clash (orbit.hpp) is dropped, and when none is left nothing
 // is committed (false).
@@ -669,11 +702,14 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
     // time, each a local update, not as one placement spanning the grid (a bulk placement of a
     // library still goes in one).
     const bool one_by_one = group && placed > count && count <= kOneByOne;
+    if (group) mark_far_images(children, orbits);
+    const bool any_far = !far_images.empty();
     std::size_t n = 0;
     // The images' bounds (from `count` on), taken once for the ornament's zone and the
     // field's test below.
-    for (Element* e : ornament.add_all(std::move(children), group ? count : placed,
-                                       group ? &image_bounds : nullptr)) {
+    for (Element* e :
+         ornament.add_all(std::move(children), group ? count : placed,
+                          group ? &image_bounds : nullptr, any_far ? &far_images : nullptr)) {
         // An image too far from the fundamental domain to change a distance read there stays
         // out of the buffer (it is in the ornament, for the queries and the output); a debug
         // frame shows the buffer, so with one every image goes in.
@@ -685,6 +721,8 @@ bool GrowthEngine::Impl::commit(std::vector<std::unique_ptr<Element>> children, 
         }
         const std::size_t at = n++;
         if (at >= count && !debug_callback) {
+            // Sterile, so no parent either way (images are).
+            if (any_far && far_images[at - count]) continue;
             const CircleSource::Reach reach = circles->reach(pixel_box(image_bounds[at - count]));
             if (reach != CircleSource::Reach::tile) {
                 // parents_left counts (a guess the loop checks when it reaches 0) as when the

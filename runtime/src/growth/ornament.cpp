@@ -128,7 +128,8 @@ void Ornament::cover(const Rect& box) const {
 }
 
 std::vector<Element*> Ornament::add_all(std::vector<std::unique_ptr<Element>> elements,
-                                        std::size_t deferrable_from, std::vector<Rect>* bounds) {
+                                        std::size_t deferrable_from, std::vector<Rect>* bounds,
+                                        const std::vector<std::uint8_t>* far) {
     std::vector<std::pair<SpatialIndex::Entry, Rect>> entries;
     if (bounds) {
         bounds->clear();
@@ -140,7 +141,8 @@ std::vector<Element*> Ornament::add_all(std::vector<std::unique_ptr<Element>> el
         if (n >= deferrable_from && (zoned || bounds)) {
             const Rect b = bounds_of(*elements[n]);
             if (bounds) bounds->push_back(b);
-            if (zoned && !zone_.meets(b)) {  // a valid box (meets() takes any other as meeting)
+            // (A valid box: meets() takes any other as meeting.)
+            if (zoned && ((far && (*far)[n - deferrable_from]) || !zone_.meets(b))) {
                 int i0, j0, i1, j1;
                 buckets_of(b, i0, j0, i1, j1);
                 for (int j = j0; j <= j1; ++j)

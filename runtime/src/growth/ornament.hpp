@@ -29,9 +29,12 @@ class Ornament {
     // `deferrable_from` on whose bounds miss the near zone (set_near_zone()) are indexed only
     // when a query reaches beyond the zone. `bounds`, when given, receives the bounds of the
     // elements from `deferrable_from` on, in order (the caller's own tests need them too).
+    // `far`, when given, flags (from `deferrable_from` on) elements the caller knows to miss
+    // the near zone: they are deferred without the zone's test.
     std::vector<Element*> add_all(std::vector<std::unique_ptr<Element>> elements,
                                   std::size_t deferrable_from = static_cast<std::size_t>(-1),
-                                  std::vector<Rect>* bounds = nullptr);
+                                  std::vector<Rect>* bounds = nullptr,
+                                  const std::vector<std::uint8_t>* far = nullptr);
     // The zone the growth loop's queries mostly stay in (under symmetry: round the fundamental
     // domain): `cells` (row by row, `columns` wide) flags the cells of side `cell` from
     // `origin` in it. A query within it needs no element whose bounds miss it.

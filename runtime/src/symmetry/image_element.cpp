@@ -1,8 +1,10 @@
 #include "symmetry/image_element.hpp"
 
 #include <acanthus/rule_call.hpp>
+#include <atomic>
 #include <memory>
 #include <mutex>
+#include <thread>
 
 namespace acanthus::detail {
 
@@ -87,6 +89,19 @@ void ImageElement::set_transform(const Isometry& transform) {
 
 namespace {
 
+// The pool's lock: taken for a few instructions, by one growth at a time but for rare overlaps
+// (a mutex's lock and unlock cost more than the pool's own work).
+class SpinLock {
+  public:
+    void lock() {
+        while (flag_.test_and_set(std::memory_order_acquire)) std::this_thread::yield();
+    }
+    void unlock() { flag_.clear(std::memory_order_release); }
+
+  private:
+    std::atomic_flag flag_ = ATOMIC_FLAG_INIT;
+};
+
 // Blocks of one size carved out of chunks; a freed block goes back on the free list. The
 // chunks are freed together when no block is in use (a growth's images all go at its end).
 class BlockPool {
@@ -95,7 +110,7 @@ class BlockPool {
         : size_((size + alignof(std::max_align_t) - 1) / alignof(std::max_align_t) *
                 alignof(std::max_align_t)) {}
     void* take() {
-        const std::lock_guard<std::mutex> lock(mutex_);
+        const std::lock_guard<SpinLock> lock(lock_);
         ++live_;
         if (free_) {
             void* p = free_;
@@ -111,7 +126,7 @@ class BlockPool {
         return reinterpret_cast<char*>(chunks_.back().get()) + size_ * used_++;
     }
     void give(void* p) {
-        const std::lock_guard<std::mutex> lock(mutex_);
+        const std::lock_guard<SpinLock> lock(lock_);
         if (--live_ == 0) {  // nothing in use: no chunk is needed any more
             chunks_.clear();
             free_ = nullptr;
@@ -125,7 +140,7 @@ class BlockPool {
   private:
     static constexpr std::size_t kBlocks = 512;
     const std::size_t size_;
-    std::mutex mutex_;
+    SpinLock lock_;
     std::vector<std::unique_ptr<std::max_align_t[]>> chunks_;
     std::size_t used_ = 0;  // blocks of the last chunk handed out
     std::size_t live_ = 0;

@@ -265,16 +265,17 @@ std::vector<Point> point_orbit(const SymmetryGroup& group, Point p, double tol,
         return distance(o, q) <= tol;
     };
     const auto& g = group.transforms();
-    // Under a rosette (a group, closed) g(p) and h(p) are as far apart as p and g^-1 h (p): when
-    // every transformation moves p by well over the tolerance, no two images are the same and
-    // each is kept, in order, without comparing them pairwise.
-    bool apart = group.rosette();
-    for (std::size_t k = 1; apart && k < g.size(); ++k) {
-        const Vector v = g[k].apply(p) - p;
-        apart = v.x * v.x + v.y * v.y > 4 * tol2;
-    }
-    if (apart) {
-        for (std::size_t k = 1; k < g.size(); ++k) out.push_back(g[k].apply(p));
+    // g(p) and h(p) are as far apart as p and g^-1 h (p), an isometry of the group: when every
+    // one moves p by well over the tolerance, no two images are the same and each is kept (a
+    // translate only inside the bounds), in order, without comparing them pairwise. (The
+    // margin covers the rounding of the images.)
+    const double margin = 1e-9 * (1 + std::abs(p.x) + std::abs(p.y) + std::abs(bounds.x0) +
+                                  std::abs(bounds.x1) + std::abs(bounds.y0) + std::abs(bounds.y1));
+    if (group.moves_apart(p, 2 * tol + margin)) {
+        for (std::size_t k = 1; k < g.size(); ++k) {
+            const Point q = g[k].apply(p);
+            if (group.rosette() || bounds.contains(q)) out.push_back(q);
+        }
         return out;
     }
     for (std::size_t k = 1; k < group.size(); ++k) {

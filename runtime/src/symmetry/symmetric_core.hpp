@@ -24,6 +24,11 @@ std::vector<std::uint8_t> domain_pixels(const GridFrame& grid, const SymmetryGro
 // first at the grid's corner less `cells` cells); empty without a domain.
 std::vector<bool> near_zone(const GridFrame& grid, const std::vector<std::uint8_t>& domain,
                             int cells);
+// A box (user units) whose every point is farther than this many pixels from the centre of
+// every pixel of the domain misses the zone near_zone(..., cells) flags, as Ornament's zone
+// tests a box (widened by a cell): a zone cell lies within `cells` cells of a domain cell on
+// each axis, with one cell to spare.
+inline double near_zone_reach(int cells) { return (cells + 2) * 8 * 1.4142135623730951; }
 
 // p and its distinct images (within `tolerance`), p first, the others in the group's order;
 // with translations only those inside `bounds` (the region's).

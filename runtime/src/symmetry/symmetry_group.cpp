@@ -58,6 +58,10 @@ SymmetryGroup::SymmetryGroup(const Symmetry& spec, Point center)
     if (dihedral)
         for (int k = 0; k < n; ++k)
             transforms_.push_back(Isometry::reflection(center, kStart + M_PI * k / n));
+    gap_edges_[0] = Vector(std::cos(kStart), std::sin(kStart));
+    gap_edges_[1] = Vector(std::cos(kStart + wedge_), std::sin(kStart + wedge_));
+    gap_bisector_ = Vector(std::cos(kStart + wedge_ / 2), std::sin(kStart + wedge_ / 2));
+    gap_cos_ = std::cos(wedge_ / 2) - 1e-9;
 }
 
 namespace {
@@ -74,7 +78,10 @@ SymmetryGroup::SymmetryGroup(TranslationGroup group, const Region& region)
       lattice_(true),
       window_(group.window),
       frame_(group.frame),
-      region_(&region) {
+      region_(&region),
+      cosets_(std::move(group.cosets)),
+      lattice_a_(group.a),
+      lattice_b_(group.b) {
     for (std::size_t k = 1; k < transforms_.size(); ++k) {
         const Isometry& g = transforms_[k];
         const Point q = g.apply(center_);
@@ -165,6 +172,54 @@ bool SymmetryGroup::in_domain(Point p, double tolerance) const {
     t -= 2 * M_PI * std::floor(t / (2 * M_PI));  // [0, 2 pi)
     const double slack = tolerance / r;
     return t <= wedge_ + slack || t >= 2 * M_PI - slack;
+}
+
+bool SymmetryGroup::moves_apart(Point p, double d) const {
+    const double d2 = d * d;
+    if (!lattice_) {  // a rosette's transformations are the whole group
+        for (std::size_t k = 1; k < transforms_.size(); ++k) {
+            const Vector v = transforms_[k].apply(p) - p;
+            if (!(v.x * v.x + v.y * v.y > d2)) return false;
+        }
+        return true;
+    }
+    const Vector a = lattice_a_, b = lattice_b_;
+    const double a2 = a.dot(a), det = a.cross(b);
+    const bool flat = b.x == 0 && b.y == 0;  // a frieze
+    if (cosets_.empty() || !(a2 > 0) || (!flat && !(std::abs(det) > 0))) return false;
+    // A lattice point two steps or more from the nearest in a coordinate is at least 1.5
+    // times the spacing of the lattice's lines across that coordinate away.
+    const double spacing =
+        flat ? std::sqrt(a2)
+             : std::min(std::abs(det) / std::sqrt(b.dot(b)), std::abs(det) / std::sqrt(a2));
+    if (!(1.5 * spacing > d)) return false;
+    for (std::size_t h = 0; h < cosets_.size(); ++h) {
+        // The coset's isometries move p by v + i a + j b: the nearest 3 x 3 of them.
+        const Vector v = cosets_[h].apply(p) - p;
+        const double u = flat ? v.dot(a) / a2 : v.cross(b) / det;
+        const double w = flat ? 0 : a.cross(v) / det;
+        const long i0 = std::lround(-u), j0 = flat ? 0 : std::lround(-w);
+        for (long i = i0 - 1; i <= i0 + 1; ++i)
+            for (long j = flat ? 0 : j0 - 1; j <= (flat ? 0 : j0 + 1); ++j) {
+                if (h == 0 && i == 0 && j == 0) continue;  // the identity (first coset)
+                const Vector m = v + a * static_cast<double>(i) + b * static_cast<double>(j);
+                if (!(m.x * m.x + m.y * m.y > d2)) return false;
+            }
+    }
+    return true;
+}
+
+double SymmetryGroup::domain_gap(Point p) const {
+    if (lattice_ || transforms_.size() < 2 || !(wedge_ < 0.99 * M_PI)) return 0;
+    const Vector a = p - center_;
+    const double r = std::sqrt(a.x * a.x + a.y * a.y);  // hypot()'s care is not needed
+    // Inside, or within rounding of an edge (the margin moves the test by 1e-9 of r): 0.
+    if (a.dot(gap_bisector_) >= r * gap_cos_) return 0;
+    // Outside a convex wedge the nearest point lies on an edge's ray.
+    double gap = r;
+    for (const Vector& u : gap_edges_)
+        if (a.dot(u) > 0) gap = std::min(gap, std::abs(a.x * u.y - a.y * u.x));
+    return gap * (1 - 1e-9);
 }
 
 std::vector<Point> SymmetryGroup::domain_part(const Circle& c, double tolerance,
@@ -366,10 +421,22 @@ std::vector<Circle> SymmetryGroup::clear_circles_in(const Circle& c, Point towar
             c.radius -
             std::sqrt(to_centre.x * to_centre.x + to_centre.y * to_centre.y) * (1 - kBound) +
             kBound * c.radius;
-        if (inside < std::min(best[0].radius + tolerance, best[1].radius + tolerance)) return;
+        const double bar_fixed = best[0].radius + tolerance;
+        double bar_free = best[1].radius + tolerance;
+        if (inside < std::min(bar_fixed, bar_free)) return;
+        // A point on a mirror is fixed by it (room() tells so by the same test): then only
+        // bar_fixed decides, and room() rules the point out by it (the same answer).
+        if (mirror) {
+            const Vector v = mirror->apply(p) - p;
+            const double s = v.x * v.x + v.y * v.y;
+            if (s * kLoose < tol2 || (s <= tol2 * kLoose && v.length() <= tolerance)) {
+                if (inside < bar_fixed) return;
+                bar_free = bar_fixed;
+            }
+        }
         if (on_centre(p)) return;  // C itself
         bool fixed = false;
-        const double r = room(p, fixed, best[0].radius + tolerance, best[1].radius + tolerance);
+        const double r = room(p, fixed, bar_fixed, bar_free);
         Circle& b = best[fixed ? 0 : 1];
         if (r > b.radius + tolerance) {
             b = {p, r};

@@ -28,6 +28,10 @@ struct TranslationGroup {
     // (a frieze's band ends there).
     std::optional<Rect> window;
     Rect frame;  // where domain_edges() clips the domain (the region's or the window's bounds)
+    // The whole group (moves_apart()): these isometries composed with the translations
+    // i a + j b (b zero for a frieze); empty when not known.
+    std::vector<Isometry> cosets;
+    Vector a{0, 0}, b{0, 0};
 };
 
 class SymmetryGroup {
@@ -53,6 +57,9 @@ class SymmetryGroup {
     // True when p lies in the fundamental domain widened by `tolerance` on each side: for a
     // rosette the wedge whose first edge points up from the centre, else the Dirichlet domain.
     bool in_domain(Point p, double tolerance) const;
+    // For a rosette whose wedge is narrower than a half-plane: no more than the distance from
+    // p to the wedge (0 inside it and within rounding of its edges). 0 for any other group.
+    double domain_gap(Point p) const;
     // p moved onto the nearest rotation centre, or else onto the nearest mirror, when it lies
     // within `tolerance` of one, so that its images coincide with it exactly; else p.
     Point snap(Point p, double tolerance) const;
@@ -94,6 +101,10 @@ class SymmetryGroup {
     // True when an image of an element is placed: always for a rosette; for a group with
     // translations when it meets the window, or without one lies inside the region.
     bool keeps(const Element& image, double tolerance) const;
+    // True when every isometry of the group but the identity (the whole group, not only those
+    // listed) moves p by more than `d`: then no two images of p are within d / 2 of each
+    // other... nor within d of p. False when it cannot tell.
+    bool moves_apart(Point p, double d) const;
     // keeps() for an image known only to lie within `box`, where the box alone decides: 1 kept,
     // 0 not, -1 when only the image itself can tell (`margin` covers rounding). Inline:
     // orbit_of() asks it of every transformation, hundreds for a tile's window.
@@ -116,12 +127,19 @@ class SymmetryGroup {
     std::string name_;
     Point center_;
     double wedge_ = 0;  // the rosette's domain's angle
+    // domain_gap()'s wedge: its edges' and its bisector's directions, the cosine of its half
+    // angle less a margin.
+    Vector gap_edges_[2] = {{0, 0}, {0, 0}};
+    Vector gap_bisector_{0, 0};
+    double gap_cos_ = 1;
     std::vector<Isometry> transforms_;
     // Groups with translations.
     bool lattice_ = false;
     std::optional<Rect> window_;
     Rect frame_;
     const Region* region_ = nullptr;
+    std::vector<Isometry> cosets_;  // TranslationGroup's, for moves_apart()
+    Vector lattice_a_{0, 0}, lattice_b_{0, 0};
     std::vector<Point> centres_;                        // rotation centres
     std::vector<std::pair<Point, Vector>> mirrors_;     // a point and the unit direction
     std::vector<std::pair<Point, Vector>> halfplanes_;  // the domain: (p - m) . n <= 0

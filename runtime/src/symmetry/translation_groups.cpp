@@ -85,6 +85,8 @@ TranslationSetup frieze_setup(const Frieze& frieze, const Region& region,
     const int reach = static_cast<int>(std::ceil(2 * box.width() / period)) + 2;
     out.group.name = "frieze " + catalog.name;
     out.group.transforms = reaching(cosets, Vector(period, 0), Vector(0, 0), reach, 0, box);
+    out.group.cosets = cosets;
+    out.group.a = Vector(period, 0);
     const double cells = std::floor(bounds.width() / period / 2);
     out.group.generic = {x0 + (cells + kGenericX) * period, cy + kGenericY * bounds.height()};
     out.group.frame = box;
@@ -115,6 +117,9 @@ TranslationSetup wallpaper_setup(const Wallpaper& wallpaper) {
     const int reach_a = static_cast<int>(std::ceil(2 * diagonal / (area / vb.length()))) + 1;
     const int reach_b = static_cast<int>(std::ceil(2 * diagonal / (area / va.length()))) + 1;
     out.group.transforms = reaching(catalog.transforms, va, vb, reach_a, reach_b, box);
+    out.group.cosets = catalog.transforms;
+    out.group.a = va;
+    out.group.b = vb;
     out.group.generic = Point{0, 0} + va * (0.5 + kGenericX) + vb * (0.5 + kGenericY);
     out.group.frame = box;
     return out;
