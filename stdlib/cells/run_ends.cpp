@@ -286,13 +286,17 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         }
         std::vector<Way> out(1);
         // How many pieces from the jamb end may be laid again.
-        std::size_t free = 0;
+        std::size_t free = 0, king = n;
         for (std::size_t i = 0; i < n && free < 4; ++i) {
             const Piece& p = ps[at(i)];
-            // A quoin beyond the jamb's only as the run's other end (a pier between two).
-            if (p.sill || p.head || p.king || here[rr][at(i)] || taken(rr, at(i)) ||
+            // A quoin beyond the jamb's only as the run's other end (a pier between two). A king
+            // closer keeps the stretcher beside it as the bond laid it, but beside a shaved
+            // piece at the jamb it is laid again with it (else the piece stayed shaved: a
+            // Flemish jamb quoin 1 cm short in every other course of a window; below).
+            if (p.sill || p.head || (p.king && i == 0) || here[rr][at(i)] || taken(rr, at(i)) ||
                 (p.quoin && i > 0 && i + 1 < n) || (i > 0 && i + 1 < n && !p.full))
                 break;
+            if (p.king && king == n) king = i;
             ++free;
         }
         const int quoin = ps[end].quoin ? ps[end].length : 0;
@@ -333,6 +337,7 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
             shaved_run += kinds.back() == 2;
         }
         const long unforced_now = std::max(0L, odd_run - (forced(n - 1) ? 1 : 0));
+        if (shaved_run == 0) free = std::min(free, king);
         // The quoin at the run's other end is laid again only to mend a shaved brick (laid
         // from here, that end is not laid again from its own jamb).
         const int far_quoin = n > 1 && ps[at(n - 1)].quoin ? ps[at(n - 1)].length : 0;
