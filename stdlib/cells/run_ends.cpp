@@ -126,6 +126,9 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         return back && back_covers(rr) && x > std::min(back->x, reveal) + eps &&
                x < std::max(back->x, reveal) - eps;
     };
+    auto near_x = [&](double x) {
+        return !back || std::abs(x - back->x) <= 40 * q + std::abs(reveal - back->x) + eps;
+    };
     auto near_back = [&](std::size_t rr) {
         const double reach_y = 2 * layout.gauge + eps;
         return g.ys[rr] >= back->y0 - reach_y && g.ys[rr + 1] <= back->y1 + reach_y;
@@ -184,6 +187,15 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     };
     const bool stack = layout.bond.bond == Bond::stack;
     const std::size_t rows = layout.rows.size();
+    // The rows and jambs a pass looks at: at a skewback's side, those near it only (a face
+    // with many arches sets many skewbacks, each a pass).
+    std::size_t r_lo = 0, r_hi = rows;
+    if (back) {
+        r_lo = rows, r_hi = 0;
+        for (std::size_t rr = 0; rr < rows; ++rr)
+            if (near_back(rr)) r_lo = std::min(r_lo, rr), r_hi = rr + 1;
+        if (r_lo >= r_hi) return;
+    }
     // How far from a jamb the joints a run's end is laid again with may lie, and a quarter
     // brick beyond: the joints of other courses farther off are not compared with them.
     const double reach = 17 * q;
@@ -649,17 +661,17 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
             for (int side : {-1, 1}) {
                 std::vector<double> xs;
                 for (const Jamb& j : jambs)
-                    if (j.left == (side < 0) && std::none_of(xs.begin(), xs.end(), [&](double x) {
-                            return std::abs(x - j.x) <= eps;
-                        }))
+                    if (j.left == (side < 0) && near_x(j.x) &&
+                        std::none_of(xs.begin(), xs.end(),
+                                     [&](double x) { return std::abs(x - j.x) <= eps; }))
                         xs.push_back(j.x);
                 for (double x : xs) {
                     std::vector<char> chain(rows, 0);
-                    for (std::size_t rr = 0; rr < rows; ++rr) {
+                    for (std::size_t rr = r_lo; rr < r_hi; ++rr) {
                         End e;
                         chain[rr] = find_end(rr, side, x, e);
                     }
-                    for (std::size_t top = rows; top-- > 0;) {
+                    for (std::size_t top = r_hi; top-- > r_lo;) {
                         if (!chain[top]) continue;
                         std::size_t first = top;  // rows [first, top] one above the other
                         while (first > 0 && chain[first - 1]) --first;
@@ -737,15 +749,16 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         long total = 0;
         const std::vector<char> none(rows, 0);
         for (const Jamb& j : jambs) {
+            if (!near_x(j.x)) continue;
             const int side = j.left ? -1 : 1;
-            for (std::size_t rr = 0; rr < rows; ++rr)
+            for (std::size_t rr = r_lo; rr < r_hi; ++rr)
                 if (End e; find_end(rr, side, j.x, e))
                     total += ways(rr, side, e, none, false, true)[0].cost;
         }
         return total;
     };
     auto finish = [&] {
-        for (std::size_t rr = 0; rr < rows; ++rr) {
+        for (std::size_t rr = r_lo; rr < r_hi; ++rr) {
             auto& index = layout.piece_of_unit[rr];
             index.assign(static_cast<std::size_t>(g.units()), -1);
             const auto& ps = layout.rows[rr];
@@ -755,21 +768,51 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
             if (!back) layout.taken[rr].assign(ps.size(), 0);  // (lay() keeps them in step)
         }
     };
-    const BrickLayout start = layout;
+    // The rows a pass may lay again, kept and put back (at a skewback only those near it: a
+    // face with many arches sets many skewbacks).
+    struct Rows {
+        std::vector<std::vector<Piece>> pieces;
+        std::vector<std::vector<double>> shift;
+        std::vector<std::vector<std::pair<Rect, Rect>>> relaid;
+        std::vector<std::vector<char>> taken;
+    };
+    auto keep = [&] {
+        Rows k;
+        for (std::size_t rr = r_lo; rr < r_hi; ++rr) {
+            k.pieces.push_back(layout.rows[rr]);
+            k.shift.push_back(layout.shift[rr]);
+            k.relaid.push_back(layout.relaid[rr]);
+            k.taken.push_back(rr < layout.taken.size() ? layout.taken[rr] : std::vector<char>{});
+        }
+        return k;
+    };
+    auto put_back = [&](Rows&& k) {
+        for (std::size_t rr = r_lo; rr < r_hi; ++rr) {
+            const std::size_t i = rr - r_lo;
+            layout.rows[rr] = std::move(k.pieces[i]);
+            layout.shift[rr] = std::move(k.shift[i]);
+            layout.relaid[rr] = std::move(k.relaid[i]);
+            if (rr < layout.taken.size()) layout.taken[rr] = std::move(k.taken[i]);
+        }
+    };
     slack = m / 20, exf = 0;
+    if (arrises) {
+        relay_all();
+        return finish();
+    }
+    Rows start = keep();
     relay_all();
-    if (arrises) return finish();
     const long tight = score();
     if (tight < 1000000) return finish();  // no shaved brick left at a jamb
-    BrickLayout kept = layout;
-    layout = start;
-    for (std::size_t r = 0; r < rows; ++r) here[r].assign(layout.rows[r].size(), 0);
+    Rows kept = keep();
+    put_back(std::move(start));
+    for (std::size_t r = r_lo; r < r_hi; ++r) here[r].assign(layout.rows[r].size(), 0);
     std::fill(stamp.begin(), stamp.end(), 0L);
     clock = 0;
     judged.clear();
     slack = tol / 2, exf = 0.5;
     relay_all();
-    if (score() > tight) layout = std::move(kept);
+    if (score() > tight) put_back(std::move(kept));
     finish();
 }
 
