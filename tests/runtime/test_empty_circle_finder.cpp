@@ -403,6 +403,33 @@ TEST(PendingBlocks, MayLowerIsTrueJustWhenABlockIsNearerThanItsBound) {
     EXPECT_GT(far, 100);
 }
 
+namespace {
+
+// A grid for PendingBlocks: 300 to w_hi by 200 to h_hi pixels, each 8 x 8 tile with a cap of 0
+// to 40 pixels squared, its pixels at the cap or (with `spread`) drawn up to it.
+struct TileScene {
+    int w = 0, h = 0, tw = 0, th = 0;
+    std::vector<std::int32_t> caps, d2;
+};
+TileScene tile_scene(acanthus::Random& rng, int w_hi, int h_hi, bool spread) {
+    TileScene s;
+    s.w = static_cast<int>(rng.uniform_int(300, w_hi));
+    s.h = static_cast<int>(rng.uniform_int(200, h_hi));
+    s.tw = (s.w - 1) / 8 + 1, s.th = (s.h - 1) / 8 + 1;
+    s.caps.resize(static_cast<std::size_t>(s.tw) * s.th);
+    for (auto& c : s.caps) c = static_cast<std::int32_t>(rng.uniform_int(0, 1600));
+    s.d2.resize(static_cast<std::size_t>(s.w) * s.h);
+    for (int j = 0; j < s.h; ++j)
+        for (int i = 0; i < s.w; ++i) {
+            const std::int32_t cap = s.caps[static_cast<std::size_t>(j / 8) * s.tw + i / 8];
+            s.d2[static_cast<std::size_t>(j) * s.w + i] =
+                spread ? static_cast<std::int32_t>(rng.uniform_int(0, cap)) : cap;
+        }
+    return s;
+}
+
+}  // namespace
+
 // A box whose pixels' centres all lie farther than centre_reach() from every pixel of a centre
 // tile is near no tile (near() is not `tile`): kept tiles lie within one tile of a centre tile,
 // the others' bounds are 0. Infinite without centre tiles (every tile kept).
@@ -412,16 +439,9 @@ TEST(PendingBlocks, CentreReachBoundsWhereABoxIsNearATile) {
     acanthus::Random rng(29);
     int beyond = 0;
     for (int scene = 0; scene < 6; ++scene) {
-        const int w = static_cast<int>(rng.uniform_int(300, 600));
-        const int h = static_cast<int>(rng.uniform_int(200, 500));
-        const int tw = (w - 1) / 8 + 1, th = (h - 1) / 8 + 1;
-        std::vector<std::int32_t> caps(static_cast<std::size_t>(tw) * th);
-        for (auto& c : caps) c = static_cast<std::int32_t>(rng.uniform_int(0, 1600));
-        std::vector<std::int32_t> d2(static_cast<std::size_t>(w) * h);
-        for (int j = 0; j < h; ++j)
-            for (int i = 0; i < w; ++i)
-                d2[static_cast<std::size_t>(j) * w + i] =
-                    caps[static_cast<std::size_t>(j / 8) * tw + i / 8];
+        const TileScene s = tile_scene(rng, 600, 500, false);
+        const int w = s.w, h = s.h, tw = s.tw, th = s.th;
+        const std::vector<std::int32_t>& d2 = s.d2;
         PendingBlocks blocks;
         std::vector<std::uint8_t> centres(static_cast<std::size_t>(tw) * th, 0);
         if (scene % 3 == 0) {  // a band of tile columns
@@ -474,17 +494,10 @@ TEST(PendingBlocks, NearTellsATileNearerThanItsBoundFromABlock) {
     acanthus::Random rng(23);
     int counts[3] = {0, 0, 0};
     for (int scene = 0; scene < 6; ++scene) {
-        const int w = static_cast<int>(rng.uniform_int(300, 700));
-        const int h = static_cast<int>(rng.uniform_int(200, 600));
-        const int tw = (w - 1) / 8 + 1, th = (h - 1) / 8 + 1;
-        // Each tile's values up to its own cap, 0 to 40 pixels squared.
-        std::vector<std::int32_t> caps(static_cast<std::size_t>(tw) * th);
-        for (auto& c : caps) c = static_cast<std::int32_t>(rng.uniform_int(0, 1600));
-        std::vector<std::int32_t> d2(static_cast<std::size_t>(w) * h);
-        for (int j = 0; j < h; ++j)
-            for (int i = 0; i < w; ++i)
-                d2[static_cast<std::size_t>(j) * w + i] = static_cast<std::int32_t>(
-                    rng.uniform_int(0, caps[static_cast<std::size_t>(j / 8) * tw + i / 8]));
+        // Each tile's values up to its own cap.
+        const TileScene s = tile_scene(rng, 700, 600, true);
+        const int w = s.w, h = s.h, tw = s.tw, th = s.th;
+        const std::vector<std::int32_t>& d2 = s.d2;
         PendingBlocks blocks;
         if (scene % 2 == 1) {  // centre tiles: a band of tile columns
             std::vector<std::uint8_t> centres(static_cast<std::size_t>(tw) * th, 0);
