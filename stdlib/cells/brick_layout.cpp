@@ -2,7 +2,9 @@
 
 #include <acanthus/stdlib/cells/head_joints.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <utility>
@@ -303,7 +305,7 @@ void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
     layout.relaid.assign(layout.rows.size(), {});
     for (std::size_t r = 0; r < layout.rows.size(); ++r)
         layout.relaid[r].assign(layout.rows[r].size(), {Rect{}, Rect{}});
-    const std::vector<Jamb> jambs = face_jambs(facade, face);
+    const JambIndex jambs(face_jambs(facade, face));
     // Round heads and arcs other generators claim before the bricks (soldiers, lintels and
     // their bearings, rings, walling cut to an extrados): courses there keep their units.
     std::vector<Rect> heads;
@@ -318,7 +320,7 @@ void relay_runs(const Facade& facade, int face, BrickLayout& layout) {
         }
     }
     auto at_jamb = [&](int r, int u, bool left, double& x) {
-        return jamb_at(jambs, g, q, r, u, left, x);
+        return jambs.jamb_at(g, q, r, u, left, x);
     };
     const double quarter = q - m / 4;
     // Head joints of a row (centres), as laid now, each with the room it needs: a joint beside a
@@ -762,7 +764,8 @@ long unforced_odd(const Facade& facade, int face, const BrickLayout& l) {
 // odd pieces (no whole number of quarters less a joint), in full-height courses, each as drawn:
 // cut at a plumb side of the facade's outlines (a jamb, or an inset's side, cut out of the face
 // later), or laid whole into the reveal's half joint.
-std::tuple<long, long, long> faults(const Facade& facade, const Options& o, const BrickLayout& l) {
+std::tuple<long, long, long> faults(const Facade& facade, const Options& o, const BrickLayout& l,
+                                    std::vector<std::pair<int, Rect>>* shaved_at = nullptr) {
     const CourseGrid& g = l.grid;
     std::vector<Rect> plumb;
     for (const Edge& e : facade.edges())
@@ -799,7 +802,9 @@ std::tuple<long, long, long> faults(const Facade& facade, const Options& o, cons
             const double nominal = std::abs(w - stretcher) <= 0.12 * stretcher ? stretcher
                                    : std::abs(w - header) <= 0.12 * header     ? header
                                                                                : 0;
-            out += nominal > 0 && std::abs(w - nominal) > l.tolerance / 3;
+            const bool shaved = nominal > 0 && std::abs(w - nominal) > l.tolerance / 3;
+            out += shaved;
+            if (shaved && shaved_at) shaved_at->push_back({row, d});
             narrow += w > 0 && w < q - m - l.tolerance;
             const double n = std::round((w + m) / q);
             odd +=
@@ -881,6 +886,158 @@ BrickLayout laid(const Facade& facade, int face, const Options& o, bool quoins, 
     return layout;
 }
 
+// How far a window-bottom row stands further past one jamb of its opening than past the other
+// (its sill pieces joined under the opening's middle), or 0 where there is none or it runs on
+// to a reveal or the wall's end.
+double sill_row_offset(const Facade& facade, const Edge& edge, const BrickLayout& layout) {
+    int row = 0, u0 = 0, u1 = 0;
+    if (!sill_span(facade, edge, layout, row, u0, u1)) return 0;
+    const auto& ps = layout.rows[static_cast<std::size_t>(row)];
+    const int mid = (u0 + u1) / 2;
+    std::size_t k = 0;
+    while (k < ps.size() && ps[k].start + ps[k].length <= mid) ++k;
+    if (k == ps.size() || !ps[k].sill || ps[k].start > mid) return 0;
+    std::size_t a = k, b = k + 1;
+    while (a > 0 && ps[a - 1].sill && ps[a - 1].start + ps[a - 1].length == ps[a].start) --a;
+    while (b < ps.size() && ps[b].sill && ps[b - 1].start + ps[b - 1].length == ps[b].start) ++b;
+    // Run on to a reveal or the wall's end: no horn there to match.
+    if (a == 0 || ps[a - 1].start + ps[a - 1].length != ps[a].start || b == ps.size() ||
+        ps[b - 1].start + ps[b - 1].length != ps[b].start)
+        return 0;
+    const double lo = layout.claim(row, static_cast<int>(a)).x0,
+                 hi = layout.claim(row, static_cast<int>(b - 1)).x1;
+    const double x0 = std::min(edge.bounds.x0, edge.bounds.x1),
+                 x1 = std::max(edge.bounds.x0, edge.bounds.x1);
+    return std::abs((x0 - lo) - (hi - x1));
+}
+
+// A window-bottom row's ends moved a quarter brick (a centred row's both, so that it stays
+// centred; another's the end with the shaved brick) where a shaved brick stands in the courses
+// round the row's end: the courses beside the jamb over the row are bonded to the wall above, the
+// row to its opening's middle, and where the two miss each other by less than a quarter brick no
+// way at the run's end clears both. Every such row is moved out, then in, at once; a row keeps a
+// move that leaves fewer shaved bricks round it and the row about its opening's middle, and the
+// moves kept are laid together where the wall then has fewer shaved bricks and nothing worse
+// (else one at a time: a face of a hundred windows is laid a few times, not once per sill).
+BrickLayout sills_moved_for_shaved(const Facade& facade, int face, const Options& o, bool quoins,
+                                   bool lintels, BrickLayout layout, RunEndsMemo& memo) {
+    if (!layout.sill_rows) return layout;
+    const CourseGrid& g = layout.grid;
+    const auto [set_out, breaks, arched] = layout.laid_as;
+    const bool centred = layout.centred_sills;
+    std::vector<std::pair<int, Rect>> shaved;
+    const auto now = faults(facade, o, layout, &shaved);
+    if (std::get<1>(now) == 0) return layout;
+    struct Sill {
+        int edge = 0, row = 0;
+        double x0 = 0, x1 = 0, a = 0, b = 0;  // the neighbourhood; the row's first and last unit
+        std::array<bool, 2> side{};           // a shaved brick beyond its left, right end
+        double offset = 0;
+        int moved = 0;
+    };
+    // Shaved bricks within two courses of the row and eight units past either end.
+    auto count_near = [&](const Sill& s, const std::vector<std::pair<int, Rect>>& list,
+                          std::array<bool, 2>* side = nullptr) {
+        long n = 0;
+        for (const auto& [r, d] : list) {
+            if (std::abs(r - s.row) > 2 || d.x1 <= s.x0 || d.x0 >= s.x1) continue;
+            if (d.x1 < s.a) {
+                ++n;
+                if (side) (*side)[0] = true;
+            } else if (d.x0 > s.b) {
+                ++n;
+                if (side) (*side)[1] = true;
+            }
+        }
+        return n;
+    };
+    std::vector<Sill> sills;
+    for (int e : facade.faces()[static_cast<std::size_t>(face)].edges) {
+        const Edge& edge = facade.edges()[static_cast<std::size_t>(e)];
+        Sill s;
+        int u0 = 0, u1 = 0;
+        if (!sill_span(facade, edge, layout, s.row, u0, u1)) continue;
+        s.edge = e;
+        s.x0 = g.xs[static_cast<std::size_t>(std::max(0, u0 - 8))];
+        s.x1 = g.xs[static_cast<std::size_t>(std::min(g.units(), u1 + 9))];
+        s.a = g.xs[static_cast<std::size_t>(std::min(g.units(), u0 + 1))];
+        s.b = g.xs[static_cast<std::size_t>(u1)];
+        if (count_near(s, shaved, &s.side) == 0) continue;
+        s.offset = sill_row_offset(facade, edge, layout);
+        sills.push_back(s);
+    }
+    if (sills.empty()) return layout;
+    auto move = [&](FramedMoves& m, const Sill& s, int d) {
+        bool within = true;
+        for (int end : {0, 1}) {
+            if (!centred && !s.side[static_cast<std::size_t>(end)]) continue;
+            int& v = m.sill_end[{s.edge, end}];
+            v += d;
+            within &= v >= -1 && v <= 1;
+            if (v == 0) m.sill_end.erase({s.edge, end});
+        }
+        return within;
+    };
+    auto relaid = [&](const FramedMoves& m) {
+        BrickLayout next =
+            lay(facade, face, o, quoins, lintels, m, set_out, breaks, arched, centred);
+        joints_and_run_ends(facade, face, o, next, memo);
+        return next;
+    };
+    const auto about_middle = [&](const Sill& s, const BrickLayout& l) {
+        // (A row cut short by a run's end on one side only is off its opening's middle.)
+        return sill_row_offset(facade, facade.edges()[static_cast<std::size_t>(s.edge)], l) <=
+               std::max(s.offset, layout.unit / 2) + 1e-9;
+    };
+    FramedMoves kept = layout.moves;
+    bool any = false;
+    for (int d : {1, -1}) {
+        FramedMoves m = kept;
+        std::vector<std::size_t> tried;
+        for (std::size_t i = 0; i < sills.size(); ++i) {
+            FramedMoves one = m;
+            if (sills[i].moved == 0 && move(one, sills[i], d))
+                m = std::move(one), tried.push_back(i);
+        }
+        if (tried.empty()) continue;
+        const BrickLayout next = relaid(m);
+        std::vector<std::pair<int, Rect>> shaved_next;
+        faults(facade, o, next, &shaved_next);
+        for (std::size_t i : tried)
+            if (count_near(sills[i], shaved_next) < count_near(sills[i], shaved) &&
+                about_middle(sills[i], next)) {
+                move(kept, sills[i], d);
+                sills[i].moved = d;
+                any = true;
+            }
+    }
+    if (!any) return layout;
+    // Nothing worse than before: no narrow, shaved or odd piece, straight joint or odd piece
+    // the geometry does not force more, and fewer shaved bricks.
+    const long straight = layout.bond.bond == Bond::stack ? 0 : drawn_straight_joints(o, layout);
+    const long unforced = unforced_odd(facade, face, layout);
+    auto better = [&](const BrickLayout& next, const std::tuple<long, long, long>& base) {
+        const auto then = faults(facade, o, next);
+        return badness(next) / 100 <= badness(layout) / 100 &&
+               std::get<1>(then) < std::get<1>(base) && std::get<0>(then) <= std::get<0>(base) &&
+               std::get<2>(then) <= std::get<2>(base) &&
+               (layout.bond.bond == Bond::stack || drawn_straight_joints(o, next) <= straight) &&
+               unforced_odd(facade, face, next) <= unforced;
+    };
+    BrickLayout all = relaid(kept);
+    if (better(all, now)) return all;
+    auto base = now;
+    for (const Sill& s : sills) {
+        if (s.moved == 0) continue;
+        FramedMoves m = layout.moves;
+        move(m, s, s.moved);
+        BrickLayout next = relaid(m);
+        if (about_middle(s, next) && better(next, base))
+            base = faults(facade, o, next), layout = std::move(next);
+    }
+    return layout;
+}
+
 }  // namespace
 
 BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, bool quoins,
@@ -901,6 +1058,7 @@ BrickLayout make_brick_layout(const Facade& facade, int face, const Options& o, 
         if (badness(plain) / 100 <= badness(layout) / 100 && faults(facade, o, plain) < now)
             layout = std::move(plain);
     }
+    layout = sills_moved_for_shaved(facade, face, o, quoins, lintels, std::move(layout), memo);
     // Closers and cuts set back from the arrises, kept where that costs the wall no narrow
     // piece, shaved brick or odd piece more, nor a straight joint (the layout's own reading:
     // a way's pieces beside an arch or a sill row come out other than it reckons).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace acanthus::cells::detail {
 
@@ -21,20 +22,29 @@ std::vector<Jamb> face_jambs(const Facade& facade, int face) {
     return jambs;
 }
 
-bool jamb_at(const std::vector<Jamb>& jambs, const CourseGrid& g, double q, int r, int u, bool left,
-             double& x) {
-    const double eps = 1e-9 * std::max(1.0, std::abs(g.xs.back()));
-    const double lo = g.xs[static_cast<std::size_t>(u)], hi = g.xs[static_cast<std::size_t>(u) + 1];
-    for (const Jamb& j : jambs) {
-        if (j.left != left || j.y0 > g.ys[static_cast<std::size_t>(r)] + eps ||
-            j.y1 < g.ys[static_cast<std::size_t>(r) + 1] - eps)
-            continue;
-        if (j.x >= lo - 1e-6 * q && j.x <= hi + 1e-6 * q) {
-            x = j.x;
-            return true;
-        }
+JambIndex::JambIndex(std::vector<Jamb> jambs) : jambs_(std::move(jambs)), by_x_(jambs_.size()) {
+    for (std::size_t i = 0; i < by_x_.size(); ++i) by_x_[i] = i;
+    std::stable_sort(by_x_.begin(), by_x_.end(),
+                     [&](std::size_t a, std::size_t b) { return jambs_[a].x < jambs_[b].x; });
+}
+
+bool JambIndex::jamb_at(const CourseGrid& g, double q, int r, int u, bool left, double& x) const {
+    // A jamb's ends come from the outline's segments (an arc's springing a micrometre off the
+    // course line it was drawn on): compared with the course lines at the outline's precision.
+    const double eps = 1e-6 * std::max(1.0, std::abs(g.ys.back()));
+    const double lo = g.xs[static_cast<std::size_t>(u)] - 1e-6 * q,
+                 hi = g.xs[static_cast<std::size_t>(u) + 1] + 1e-6 * q;
+    const double y0 = g.ys[static_cast<std::size_t>(r)], y1 = g.ys[static_cast<std::size_t>(r) + 1];
+    auto it = std::lower_bound(by_x_.begin(), by_x_.end(), lo,
+                               [&](std::size_t i, double v) { return jambs_[i].x < v; });
+    std::size_t best = jambs_.size();
+    for (; it != by_x_.end() && jambs_[*it].x <= hi; ++it) {
+        const Jamb& j = jambs_[*it];
+        if (j.left == left && j.y0 <= y0 + eps && j.y1 >= y1 - eps) best = std::min(best, *it);
     }
-    return false;
+    if (best == jambs_.size()) return false;
+    x = jambs_[best].x;
+    return true;
 }
 
 }  // namespace acanthus::cells::detail

@@ -20,9 +20,20 @@ bool plumb_edge(const Edge& e);
 // The plumb edges of face `face`.
 std::vector<Jamb> face_jambs(const Facade& facade, int face);
 
-// The jamb bounding unit u's `left` (or right) side over the whole of row r, in the unit or on
-// its line (q: the unit's width); its x in `x`.
-bool jamb_at(const std::vector<Jamb>& jambs, const CourseGrid& g, double q, int r, int u, bool left,
-             double& x);
+// A face's jambs ordered by x for jamb_at: a run's ends are looked up at every layout pass,
+// and a face of a hundred windows has some four hundred jambs.
+class JambIndex {
+  public:
+    explicit JambIndex(std::vector<Jamb> jambs);
+    const std::vector<Jamb>& jambs() const { return jambs_; }
+
+    // The jamb bounding unit u's `left` (or right) side over the whole of row r, in the unit or
+    // on its line (q: the unit's width); its x in `x`. Of two, the first given.
+    bool jamb_at(const CourseGrid& g, double q, int r, int u, bool left, double& x) const;
+
+  private:
+    std::vector<Jamb> jambs_;
+    std::vector<std::size_t> by_x_;  // indices into jambs_, by x
+};
 
 }  // namespace acanthus::cells::detail

@@ -102,6 +102,7 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     const double stretcher = 4 * q - m, header = 2 * q - m;
     std::vector<Jamb> jambs = face_jambs(facade, face);
     if (back) jambs.push_back(*back);
+    const JambIndex index(jambs);
     // Runs across a head or an arc (within its outline's bounds) stay as they are. Beside one,
     // what its generators claim first (a ring, a lintel's bearing, soldiers) cuts the pieces
     // laid again as it cut those of the bond: that keeps no fewer whole.
@@ -114,7 +115,7 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         }
     }
     auto at_jamb = [&](int r, int u, bool left, double& x) {
-        return jamb_at(jambs, g, q, r, u, left, x);
+        return index.jamb_at(g, q, r, u, left, x);
     };
     // A skewback's plumb side (`back`, the skewback between it and the reveal at `reveal`): the
     // courses it bounds whole, the joints under the skewback (their pieces are not laid), and the

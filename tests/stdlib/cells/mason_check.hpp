@@ -331,8 +331,20 @@ inline MasonReport mason_check(const Facade& facade, const std::vector<Cell>& ce
         r.length_deviation = std::max(r.length_deviation, std::abs(w - nominal));
         if (is_shaved(b)) {
             ++r.shaved_bricks;
+            // Asked for by MASON_TAG: the other generators within about a brick and a course of
+            // it (a sill row, an arch's stones), to sort what is left by what it stands beside.
+            std::string tag;
+            if (std::getenv("MASON_TAG"))
+                for (const Cell& o : cells) {
+                    if (o.generator == "bricks" || o.generator == "quoins") continue;
+                    const Rect e = extent(o.polygon);
+                    if (e.x1 > b.x0 - s.length && e.x0 < b.x1 + s.length && e.y1 > b.y0 - gauge &&
+                        e.y0 < b.y1 + gauge && tag.find(o.generator) == std::string::npos)
+                        tag += "/" + o.generator;
+                }
             r.shaved.push_back(c.generator + " " + std::to_string(w) + " x " + std::to_string(h) +
-                               " at (" + std::to_string(b.x0) + ", " + std::to_string(b.y0) + ")");
+                               " at (" + std::to_string(b.x0) + ", " + std::to_string(b.y0) + ")" +
+                               tag);
             continue;
         }
         ++r.whole_bricks;
