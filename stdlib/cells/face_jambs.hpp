@@ -25,7 +25,6 @@ std::vector<Jamb> face_jambs(const Facade& facade, int face);
 class JambIndex {
   public:
     explicit JambIndex(std::vector<Jamb> jambs);
-    const std::vector<Jamb>& jambs() const { return jambs_; }
 
     // The jamb bounding unit u's `left` (or right) side over the whole of row r, in the unit or
     // on its line (q: the unit's width); its x in `x`. Of two, the first given.
