@@ -7,7 +7,8 @@ sums odd pieces, the ones the geometry does not force, straight joints, narrow p
 (and those a run's room forces),
 and small pieces at an arris, by bond; with --walls, one line per wall (to diff
 two builds), ending in a hash of the wall's cells when MASON_HASH=1 is set (the same hash: the same
-cells). MASON_SHAVED=1 lists each shaved brick in the binaries' output.
+cells). MASON_SHAVED=1 lists each shaved brick in the binaries' output; with MASON_TAG=1 too,
+each is followed by the other generators within a brick and a course of it (a sill row, a ring).
 
     MASON_HASH=1 tests/stdlib/cells/odd_sweep.py BUILD_DIR [--walls]
 """
