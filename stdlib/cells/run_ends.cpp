@@ -161,9 +161,17 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     // What a small piece at an arris in a way costs: only where laid for that (fit_arrises).
     const long arris = arrises ? 100 : 0;
     const double margin = std::min(m / 4, tol) / 2;
-    // Head joints of a row (centres) as laid now, each with the room it needs (as relay_runs).
-    auto joints = [&](std::size_t r) {
-        std::vector<std::pair<double, double>> out;
+    // Head joints of a row (centres) as laid now, each with the room it needs (as relay_runs),
+    // in x order; kept per row until the row is laid again (`stamp`, below: a long wall's rows
+    // are read again for every run end beside them).
+    std::vector<std::vector<std::pair<double, double>>> joints_of(layout.rows.size());
+    std::vector<long> joints_when(layout.rows.size(), -1);
+    std::vector<long> stamp(layout.rows.size(), 0);
+    auto joints = [&](std::size_t r) -> const std::vector<std::pair<double, double>>& {
+        if (joints_when[r] == stamp[r]) return joints_of[r];
+        joints_when[r] = stamp[r];
+        std::vector<std::pair<double, double>>& out = joints_of[r];
+        out.clear();
         const auto& ps = layout.rows[r];
         const int row = static_cast<int>(r);
         for (std::size_t k = 0; k + 1 < ps.size(); ++k) {
@@ -184,7 +192,7 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
                              2;
             if (!under_skewback(r, x)) out.push_back({x, cut ? margin : 0.0});
         }
-        return out;
+        return joints_of[r];
     };
     const bool stack = layout.bond.bond == Bond::stack;
     const std::size_t rows = layout.rows.size();
@@ -207,7 +215,6 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     // When each row was last laid again; per column (side, jamb, first row), the last such
     // time over its rows and the two beside them when it was judged and nothing was laid: a
     // column nothing round has changed in since is not judged again.
-    std::vector<long> stamp(rows, 0);
     long clock = 0;
     std::map<std::tuple<int, long long, std::size_t>, long> judged;
     auto find_end = [&](std::size_t rr, int side, double at, End& e) {
@@ -262,10 +269,15 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
         const std::size_t end = at(0);
         std::vector<std::pair<double, double>> near;  // neighbours' joints, in s = side x
         if (!only_now) {
-            for (std::size_t nb : {rr + 1, rr - 1})
-                if (nb < layout.rows.size() && !chain[nb])
-                    for (auto [j, room] : joints(nb))
-                        if (std::abs(j - xj) < reach) near.push_back({side * j, room});
+            for (std::size_t nb : {rr + 1, rr - 1}) {
+                if (nb >= layout.rows.size() || chain[nb]) continue;
+                const auto& js = joints(nb);
+                for (auto it =
+                         std::lower_bound(js.begin(), js.end(), std::make_pair(xj - reach, -1.0));
+                     it != js.end() && it->first < xj + reach; ++it)
+                    if (std::abs(it->first - xj) < reach)
+                        near.push_back({side * it->first, it->second});
+            }
             // By place, so that a joint is compared only with those that can stand too near it.
             std::sort(near.begin(), near.end());
         }
@@ -807,6 +819,7 @@ void fit(const Facade& facade, int face, const Options& options, BrickLayout& la
     if (tight < 1000000) return finish();  // no shaved brick left at a jamb
     Rows kept = keep();
     put_back(std::move(start));
+    std::fill(joints_when.begin(), joints_when.end(), -1L);
     for (std::size_t r = r_lo; r < r_hi; ++r) here[r].assign(layout.rows[r].size(), 0);
     std::fill(stamp.begin(), stamp.end(), 0L);
     clock = 0;
