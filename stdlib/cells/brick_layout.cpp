@@ -632,12 +632,7 @@ std::vector<FramedMoves> moves_near(const Facade& facade, int face, const Option
                 for (int d : {1, -1}) {
                     FramedMoves m = moves;
                     bool within = true;
-                    for (int side : {0, 1}) {
-                        int& v = m.sill_end[{e, side}];
-                        v += d;
-                        within &= v >= -1 && v <= 1;
-                        if (v == 0) m.sill_end.erase({e, side});
-                    }
+                    for (int side : {0, 1}) within &= m.move_sill_end(e, side, d);
                     if (within) out.push_back(std::move(m));
                 }
         }
@@ -968,13 +963,9 @@ BrickLayout sills_moved_for_shaved(const Facade& facade, int face, const Options
     if (sills.empty()) return layout;
     auto move = [&](FramedMoves& m, const Sill& s, int d) {
         bool within = true;
-        for (int end : {0, 1}) {
-            if (!centred && !s.side[static_cast<std::size_t>(end)]) continue;
-            int& v = m.sill_end[{s.edge, end}];
-            v += d;
-            within &= v >= -1 && v <= 1;
-            if (v == 0) m.sill_end.erase({s.edge, end});
-        }
+        for (int end : {0, 1})
+            if (centred || s.side[static_cast<std::size_t>(end)])
+                within &= m.move_sill_end(s.edge, end, d);
         return within;
     };
     auto relaid = [&](const FramedMoves& m) {

@@ -21,6 +21,16 @@ struct FramedMoves {
     // other one, or a three-quarter bat).
     std::map<std::pair<int, int>, int> quoin_length;
 
+    // Window-bottom row `edge`'s end (0 left, 1 right) moved d quarters further past its jamb;
+    // false where that takes it more than a quarter either way.
+    bool move_sill_end(int edge, int end, int d) {
+        int& v = sill_end[{edge, end}];
+        v += d;
+        const bool within = v >= -1 && v <= 1;
+        if (v == 0) sill_end.erase({edge, end});
+        return within;
+    }
+
     bool empty() const { return bearing.empty() && sill_end.empty() && quoin_length.empty(); }
     bool operator<(const FramedMoves& o) const {
         return std::tie(bearing, sill_end, quoin_length) <
